@@ -1,0 +1,27 @@
+#pragma once
+// Parsing of request bodies. A body that is not JSON is an fsdb::Error with code malformed_json
+// and a message that gives the byte offset; nesting deeper than `maxDepth` is limit_exceeded
+// (path "body", the limit named) so a hostile document cannot exhaust the stack.
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace fsdb {
+
+nlohmann::json parseJsonBody(const std::string& body, int maxDepth);
+
+// Typed access with the JSON path of the value in the error. Each throws fsdb::Error
+// (invalid_document) naming `path` and what was expected.
+const nlohmann::json& requireObject(const nlohmann::json& j, const std::string& path);
+const nlohmann::json& requireArray(const nlohmann::json& j, const std::string& path);
+double requireNumber(const nlohmann::json& j, const std::string& path);
+const std::string& requireString(const nlohmann::json& j, const std::string& path);
+// `j[key]` of an object, or invalid_document "missing required field".
+const nlohmann::json& requireField(const nlohmann::json& obj, const std::string& key, const std::string& path);
+// "a.b" from ("a","b"); "b" from ("","b").
+std::string joinPath(const std::string& parent, const std::string& key);
+// "a[3]" from ("a",3).
+std::string indexPath(const std::string& parent, size_t index);
+// The JSON type name used in messages: "string", "number", "object", ...
+std::string jsonTypeName(const nlohmann::json& j);
+
+}  // namespace fsdb

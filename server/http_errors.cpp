@@ -1,0 +1,24 @@
+#include "server/http_errors.h"
+
+#include <map>
+
+#include "geometry/error.h"
+
+namespace fsdb {
+
+int httpStatusFor(const std::string& code) {
+  static const std::map<std::string, int> kStatus = {
+      {errc::kMalformedJson, 400},    {errc::kNotFound, 404},
+      {errc::kLimitExceeded, 413},    {errc::kInvalidParameter, 422},
+      {errc::kInvalidDocument, 422},  {errc::kUnknownName, 422},
+      {errc::kDomainError, 422},      {"method_not_allowed", 405},
+      {"unsupported_media_type", 415}};
+  auto it = kStatus.find(code);
+  return it == kStatus.end() ? 500 : it->second;
+}
+
+nlohmann::json errorBody(const std::string& code, const std::string& message, const std::string& path) {
+  return {{"error", {{"code", code}, {"message", message}, {"path", path}}}};
+}
+
+}  // namespace fsdb

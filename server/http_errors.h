@@ -1,0 +1,17 @@
+#pragma once
+// The HTTP face of fsdb::Error. Every failure a client sees is the JSON body
+//   {"error":{"code":"...","message":"...","path":"..."}}
+// with the status that matches the code (SPEC §4). One table maps codes to statuses so that a
+// new error code cannot silently become a 500.
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace fsdb {
+
+// HTTP status for an fsdb::Error code; 500 for codes the table does not know.
+int httpStatusFor(const std::string& code);
+
+// {"error":{"code","message","path"}}; path is always present ("" when the error has none).
+nlohmann::json errorBody(const std::string& code, const std::string& message, const std::string& path);
+
+}  // namespace fsdb

@@ -1,0 +1,159 @@
+#include "server/http_server.h"
+
+#include <httplib.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
+#include <regex>
+#include <thread>
+
+#include "geometry/error.h"
+#include "query/json_body.h"
+#include "server/http_errors.h"
+
+namespace fsdb {
+namespace {
+
+// Start time of the request a worker thread is serving; set by the pre-routing handler and
+// read by the logger, both of which run on the thread that serves the request.
+thread_local std::chrono::steady_clock::time_point tRequestStart;
+
+// "/parts/{id}/mesh" -> "^/parts/([^/]+)/mesh$"
+std::string routeRegex(const std::string& openapiPath) {
+  static const std::regex param("\\{[^}/]+\\}");
+  return std::regex_replace(openapiPath, param, "([^/]+)");
+}
+
+void sendJson(httplib::Response& res, int status, const nlohmann::json& body) {
+  res.status = status;
+  // error_handler_t::replace: a stray invalid UTF-8 byte in an echoed string must not turn a
+  // client error into a server exception.
+  res.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), "application/json");
+}
+
+void sendError(httplib::Response& res, const Error& e) {
+  sendJson(res, httpStatusFor(e.code()), errorBody(e.code(), e.what(), e.path()));
+}
+
+}  // namespace
+
+std::string ApiRequest::queryParam(const std::string& name) const {
+  return raw.has_param(name.c_str()) ? raw.get_param_value(name.c_str()) : std::string();
+}
+
+bool ApiRequest::hasQueryParam(const std::string& name) const { return raw.has_param(name.c_str()); }
+
+HttpServer::HttpServer(ServerOptions options)
+    : options_(std::move(options)), server_(std::make_unique<httplib::Server>()) {
+  installHandlers();
+}
+
+HttpServer::~HttpServer() = default;
+
+void HttpServer::addRoute(const std::string& method, const std::string& openapiPath, ApiHandler handler) {
+  routes_.push_back({method, openapiPath});
+  const int maxDepth = options_.limits.maxJsonDepth;
+  auto wrapped = [handler = std::move(handler), maxDepth](const httplib::Request& req, httplib::Response& res) {
+    try {
+      ApiRequest api{req, nullptr, {}};
+      for (size_t i = 1; i < req.matches.size(); ++i) api.pathParams.push_back(req.matches[i].str());
+      if (req.method == "POST" || req.method == "PUT") api.body = parseJsonBody(req.body, maxDepth);
+      ApiResponse out = handler(api);
+      if (out.contentType.empty()) {
+        sendJson(res, out.status, out.json);
+      } else {
+        res.status = out.status;
+        res.set_content(out.rawBody, out.contentType.c_str());
+      }
+    } catch (const Error& e) {
+      sendError(res, e);
+    }
+    // Anything else propagates to the exception handler: a 500 with a JSON body.
+  };
+  const std::string pattern = routeRegex(openapiPath);
+  if (method == "GET") server_->Get(pattern, wrapped);
+  else if (method == "POST") server_->Post(pattern, wrapped);
+  else if (method == "PUT") server_->Put(pattern, wrapped);
+  else if (method == "DELETE") server_->Delete(pattern, wrapped);
+  else throw std::logic_error("unsupported method " + method);
+}
+
+void HttpServer::installHandlers() {
+  auto& s = *server_;
+  s.set_payload_max_length(options_.limits.maxBodyBytes);
+  const int threads = options_.threads > 0 ? options_.threads
+                                           : std::max(2u, std::thread::hardware_concurrency());
+  s.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<size_t>(threads)); };
+
+  s.set_pre_routing_handler([](const httplib::Request&, httplib::Response&) {
+    tRequestStart = std::chrono::steady_clock::now();
+    return httplib::Server::HandlerResponse::Unhandled;
+  });
+
+  // Called for every status >= 400 whose body is still empty: unknown routes, wrong methods and
+  // bodies over the limit, which httplib answers before any handler runs.
+  s.set_error_handler([this](const httplib::Request& req, httplib::Response& res) {
+    if (!res.body.empty()) return;
+    if (res.status == 413) {
+      sendError(res, Error(errc::kLimitExceeded,
+                           "request body larger than max_body_bytes=" +
+                               std::to_string(options_.limits.maxBodyBytes),
+                           "body"));
+      return;
+    }
+    if (res.status == 404) {
+      std::vector<std::string> allowed;
+      for (const Route& r : routes_)
+        if (std::regex_match(req.path, std::regex(routeRegex(r.openapiPath)))) allowed.push_back(r.method);
+      if (!allowed.empty()) {
+        std::string allow;
+        for (const auto& m : allowed) allow += (allow.empty() ? "" : ", ") + m;
+        res.set_header("Allow", allow);
+        sendError(res, Error("method_not_allowed", req.method + " is not allowed on " + req.path +
+                                                       "; allowed: " + allow, ""));
+        return;
+      }
+      sendError(res, Error(errc::kNotFound, "no endpoint " + req.method + " " + req.path +
+                                                "; GET /openapi.json lists every endpoint", ""));
+      return;
+    }
+    sendJson(res, res.status, errorBody("http_" + std::to_string(res.status), "request failed", ""));
+  });
+
+  s.set_exception_handler([](const httplib::Request& req, httplib::Response& res, std::exception_ptr ep) {
+    std::string what = "unknown exception";
+    try {
+      std::rethrow_exception(ep);
+    } catch (const std::exception& e) {
+      what = e.what();
+    } catch (...) {
+    }
+    spdlog::error("{} {}: internal error: {}", req.method, req.path, what);
+    sendJson(res, 500, errorBody("internal", "internal error: " + what, ""));
+  });
+
+  s.set_logger([](const httplib::Request& req, const httplib::Response& res) {
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - tRequestStart).count();
+    spdlog::info("{} {} {} {}B {:.2f}ms", req.method, req.path, res.status, res.body.size(), ms);
+  });
+}
+
+int HttpServer::bind() {
+  int port = options_.port;
+  if (port == 0) {
+    port = server_->bind_to_any_port(options_.host);
+    if (port < 0) throw std::runtime_error("cannot bind " + options_.host + " on any port");
+  } else if (!server_->bind_to_port(options_.host, port)) {
+    throw std::runtime_error("cannot bind " + options_.host + ":" + std::to_string(port) +
+                             " (in use, or not an address of this machine); try --port 0");
+  }
+  return port;
+}
+
+void HttpServer::listen() { server_->listen_after_bind(); }
+
+void HttpServer::stop() { server_->stop(); }
+
+}  // namespace fsdb

@@ -1,0 +1,93 @@
+#pragma once
+// fsdb's HTTP server: cpp-httplib underneath, JSON in and out, one error format.
+//
+// Contract:
+// - Every response body is JSON (except exports that name another media type). Every failure is
+//   {"error":{"code","message","path"}} with the status of server/http_errors.h, including
+//   unknown routes (404), wrong methods (405), oversized bodies (413) and handler exceptions
+//   (500). A bad request never stops the server.
+// - Routes are registered through addRoute(), which records them; routes() is what
+//   GET /openapi.json must describe (a test holds the two equal).
+// - start() binds before it returns, so the caller can print the real port (`--port 0`).
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace httplib {
+class Server;
+struct Request;
+struct Response;
+}  // namespace httplib
+
+namespace fsdb {
+
+struct ServerLimits {
+  size_t maxBodyBytes = 64u << 20;  // --max-body-bytes: larger bodies get 413
+  int maxJsonDepth = 64;            // --max-json-depth: deeper nesting gets 413
+  size_t maxPoints = 1000000;       // --max-points: POST /operators/evaluate points per request
+};
+
+struct ServerOptions {
+  std::string host = "127.0.0.1";
+  int port = 8080;  // 0: pick a free port
+  int threads = 0;  // 0: hardware concurrency (at least 2)
+  ServerLimits limits;
+};
+
+// What a handler gets: the parsed JSON body (null for GET), the raw request for query strings.
+struct ApiRequest {
+  const httplib::Request& raw;
+  nlohmann::json body;
+  std::vector<std::string> pathParams;  // values of the route's {name} segments, in order
+  std::string queryParam(const std::string& name) const;  // "" when absent
+  bool hasQueryParam(const std::string& name) const;
+};
+
+// What a handler returns: status + JSON, or (for exports) a body with its own media type.
+struct ApiResponse {
+  int status = 200;
+  nlohmann::json json;
+  std::string rawBody;      // used when contentType is not JSON
+  std::string contentType;  // "" = application/json
+};
+
+using ApiHandler = std::function<ApiResponse(const ApiRequest&)>;
+
+struct Route {
+  std::string method;       // "GET", "POST", ...
+  std::string openapiPath;  // "/operators/evaluate", "/parts/{id}"
+};
+
+class HttpServer {
+ public:
+  explicit HttpServer(ServerOptions options);
+  ~HttpServer();
+  HttpServer(const HttpServer&) = delete;
+  HttpServer& operator=(const HttpServer&) = delete;
+
+  // Registers a handler. `openapiPath` uses OpenAPI templating ("/parts/{id}"); each {name}
+  // matches one path segment. Handlers throw fsdb::Error for client errors.
+  void addRoute(const std::string& method, const std::string& openapiPath, ApiHandler handler);
+  const std::vector<Route>& routes() const { return routes_; }
+  const ServerOptions& options() const { return options_; }
+
+  // Binds host:port (port 0 picks one) and returns the bound port; throws std::runtime_error
+  // when the address cannot be bound.
+  int bind();
+  // Serves until stop(); returns after in-flight requests are answered.
+  void listen();
+  // Thread-safe; stops accepting and makes listen() return.
+  void stop();
+
+ private:
+  void installHandlers();
+
+  ServerOptions options_;
+  std::unique_ptr<httplib::Server> server_;
+  std::vector<Route> routes_;
+};
+
+}  // namespace fsdb
