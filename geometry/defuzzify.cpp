@@ -116,6 +116,7 @@ std::vector<RankedValue> localMaxima(const std::vector<Breakpoint>& membership, 
   // The graph as a path of vertices: a jump keeps (left limit, value, right limit), so the
   // path never dips inside a jump and a jump's top is a vertex of its own.
   std::vector<Breakpoint> path;
+  path.reserve(membership.size());
   double scale = 1.0;
   for (size_t i = 0; i < membership.size();) {
     size_t j = i;
@@ -137,6 +138,7 @@ std::vector<RankedValue> localMaxima(const std::vector<Breakpoint>& membership, 
     double xFirst, xLast, top, firstMu, lastMu;
   };
   std::vector<Plateau> plateaus;
+  plateaus.reserve(path.size());
   for (const Breakpoint& v : path) {
     if (!plateaus.empty() && std::abs(v.mu - plateaus.back().lastMu) <= tolerance) {
       Plateau& p = plateaus.back();

@@ -76,18 +76,18 @@ bool operator!=(const Breakpoint& a, const Breakpoint& b) { return !(a == b); }
 
 void checkPiecewiseLinear(const std::vector<Breakpoint>& f) {
   for (size_t i = 0; i < f.size(); ++i) {
-    const std::string at = "[" + std::to_string(i) + "]";
+    auto at = [i] { return "[" + std::to_string(i) + "]"; };
     if (!std::isfinite(f[i].x) || !std::isfinite(f[i].mu)) {
       throw Error(errc::kInvalidParameter,
                   "breakpoint " + std::to_string(i) + " is not finite (x and mu must be numbers)",
-                  at);
+                  at());
     }
     if (i > 0 && f[i].x < f[i - 1].x) {
       throw Error(errc::kInvalidParameter,
                   "breakpoints must have non-decreasing x: breakpoint " + std::to_string(i) +
                       " has x=" + formatNumber(f[i].x) + " < previous x=" +
                       formatNumber(f[i - 1].x),
-                  at);
+                  at());
     }
   }
 }
