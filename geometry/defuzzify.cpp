@@ -150,6 +150,7 @@ std::vector<RankedValue> localMaxima(const std::vector<Breakpoint>& membership, 
     }
   }
 
+  // seed 002 §5: the candidates are the pairs whose grades of membership are local maxima.
   std::vector<RankedValue> maxima;
   for (size_t k = 0; k < plateaus.size(); ++k) {
     const Plateau& p = plateaus[k];

@@ -67,7 +67,9 @@ std::vector<double> levelsFor(const FuzzyNumber& a, const FuzzyNumber& b, Extra 
   return levels;
 }
 
-// The extension principle per level: closed cut, and the strong cut where it differs.
+// seed 004 §3.2 eq. 3-4: (A o B)(alpha) = {a o b | a in A(alpha), b in B(alpha)}, its ends the
+// min / max of a o b over the cut ends. Per level: the closed cut, and the strong cut where
+// it differs.
 template <class IntervalOp>
 FuzzyNumber combine(const FuzzyNumber& a, const FuzzyNumber& b, Extra extra, IntervalOp op) {
   const std::vector<double> levels = levelsFor(a, b, extra);
@@ -92,7 +94,7 @@ FuzzyNumber combine(const FuzzyNumber& a, const FuzzyNumber& b, Extra extra, Int
 
 }  // namespace
 
-// seed 004 §3.2 / extension principle: cut_a(A + B) = [lo_A + lo_B, hi_A + hi_B]
+// cut_a(A + B) = [lo_A + lo_B, hi_A + hi_B]
 FuzzyNumber add(const FuzzyNumber& a, const FuzzyNumber& b) {
   return combine(a, b, Extra::kNone, [](Interval x, Interval y) { return fsdb::add(x, y); });
 }

@@ -1,6 +1,7 @@
 #pragma once
 // Fuzzy arithmetic by Zadeh's extension principle, computed per alpha-cut with interval
-// arithmetic: for convex operands, cut_alpha(A op B) = cut_alpha(A) op cut_alpha(B).
+// arithmetic (seed 004 §3.2, eq. 3-4): for convex operands,
+// cut_alpha(A op B) = cut_alpha(A) op cut_alpha(B).
 //
 // Levels: the result is built from its cuts at a set of alpha levels and is linear in alpha
 // between them (FuzzyNumber::fromAlphaCuts). Every level in the union of both operands'

@@ -15,7 +15,7 @@ Interval add(const Interval& a, const Interval& b) { return {a.lo + b.lo, a.hi +
 Interval sub(const Interval& a, const Interval& b) { return {a.lo - b.hi, a.hi - b.lo}; }
 
 Interval mul(const Interval& a, const Interval& b) {
-  // The extremes of x*y over a box lie at its corners (bilinear function).
+  // seed 004 eq. 4: the ends are the min / max of a o b over the end points (x*y is bilinear).
   const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
   return {std::min({p1, p2, p3, p4}), std::max({p1, p2, p3, p4})};
 }

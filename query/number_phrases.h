@@ -40,7 +40,8 @@ struct NumberPhrase {
 // The table, in the order shown above.
 const std::vector<NumberPhrase>& numberPhrases();
 
-// seed 004 §2.2 ("about 3"): spread of an approximate number, max(0.1 |m|, 0.1).
+// seed 004 §2.2: "about 3 units" is a triangular number centred at 3; the paper leaves the
+// spread open, fsdb uses max(0.1 |m|, 0.1).
 double approximateSpread(double m);
 
 // Parses a phrase of the table. Throws fsdb::Error with code errc::kInvalidDocument and path ""

@@ -42,6 +42,8 @@ TEST(FuzzyNumber, FactoriesGiveCanonicalBreakpoints) {
   EXPECT_EQ(FuzzyNumber::trapezoidal(1, 1, 3, 3).breakpoints(),
             bp({{1, 0}, {1, 1}, {3, 1}, {3, 0}}));
   EXPECT_EQ(FuzzyNumber(), FuzzyNumber::crisp(0));
+  EXPECT_NE(FuzzyNumber::triangular(1, 2, 4), FuzzyNumber::triangular(1, 2, 5));
+  EXPECT_FALSE(FuzzyNumber::crisp(1) != FuzzyNumber::crisp(1));
 }
 
 TEST(FuzzyNumber, FromPointsCanonicalises) {
