@@ -1,0 +1,54 @@
+#include "geometry/interval.h"
+
+#include <algorithm>
+
+#include "geometry/error.h"
+#include "geometry/number_format.h"
+
+namespace fsdb {
+
+bool operator==(const Interval& a, const Interval& b) { return a.lo == b.lo && a.hi == b.hi; }
+bool operator!=(const Interval& a, const Interval& b) { return !(a == b); }
+
+Interval add(const Interval& a, const Interval& b) { return {a.lo + b.lo, a.hi + b.hi}; }
+
+Interval sub(const Interval& a, const Interval& b) { return {a.lo - b.hi, a.hi - b.lo}; }
+
+Interval mul(const Interval& a, const Interval& b) {
+  // seed 004 eq. 4: the ends are the min / max of a o b over the end points (x*y is bilinear).
+  const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
+  return {std::min({p1, p2, p3, p4}), std::max({p1, p2, p3, p4})};
+}
+
+Interval div(const Interval& a, const Interval& b) {
+  if (contains(b, 0.0)) {
+    throw Error(errc::kDomainError,
+                "division by an interval that contains 0: [" + formatNumber(b.lo) + ", " +
+                    formatNumber(b.hi) + "]",
+                "divisor");
+  }
+  // 1/y is monotone decreasing on an interval that does not hold 0.
+  return mul(a, Interval{1.0 / b.hi, 1.0 / b.lo});
+}
+
+Interval min(const Interval& a, const Interval& b) {
+  return {std::min(a.lo, b.lo), std::min(a.hi, b.hi)};
+}
+
+Interval max(const Interval& a, const Interval& b) {
+  return {std::max(a.lo, b.lo), std::max(a.hi, b.hi)};
+}
+
+bool contains(const Interval& a, double x) { return a.lo <= x && x <= a.hi; }
+
+bool contains(const Interval& outer, const Interval& inner) {
+  return outer.lo <= inner.lo && inner.hi <= outer.hi;
+}
+
+double width(const Interval& a) { return a.hi - a.lo; }
+
+Interval hull(const Interval& a, const Interval& b) {
+  return {std::min(a.lo, b.lo), std::max(a.hi, b.hi)};
+}
+
+}  // namespace fsdb

@@ -1,0 +1,33 @@
+#pragma once
+// Interval: a closed real interval [lo, hi] and its arithmetic (Moore's interval arithmetic).
+//
+// Contract: every function takes well-formed intervals (lo <= hi, finite) and returns the
+// tightest interval that holds op(x, y) for all x in a, y in b. Fuzzy arithmetic applies these
+// per alpha-cut (the extension principle for convex fuzzy numbers); the voxel evaluator reuses
+// them to bound an inside-outside function over a box of parameters.
+// Division by an interval that holds 0 has no bounded result: it throws fsdb::Error with code
+// errc::kDomainError and path "divisor".
+
+namespace fsdb {
+
+struct Interval {
+  double lo;
+  double hi;
+};
+
+bool operator==(const Interval& a, const Interval& b);
+bool operator!=(const Interval& a, const Interval& b);
+
+Interval add(const Interval& a, const Interval& b);  // [a.lo + b.lo, a.hi + b.hi]
+Interval sub(const Interval& a, const Interval& b);  // [a.lo - b.hi, a.hi - b.lo]
+Interval mul(const Interval& a, const Interval& b);  // hull of the four endpoint products
+Interval div(const Interval& a, const Interval& b);  // a * [1/b.hi, 1/b.lo]; throws if 0 in b
+Interval min(const Interval& a, const Interval& b);  // {min(x, y)}: [min(lo), min(hi)]
+Interval max(const Interval& a, const Interval& b);  // {max(x, y)}: [max(lo), max(hi)]
+
+bool contains(const Interval& a, double x);             // a.lo <= x <= a.hi
+bool contains(const Interval& outer, const Interval& inner);  // inner ⊆ outer
+double width(const Interval& a);                        // a.hi - a.lo
+Interval hull(const Interval& a, const Interval& b);    // smallest interval holding both
+
+}  // namespace fsdb

@@ -1,0 +1,32 @@
+#include "geometry/number_format.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <random>
+
+namespace fsdb {
+namespace {
+
+TEST(NumberFormat, ShortestText) {
+  EXPECT_EQ(formatNumber(3), "3");
+  EXPECT_EQ(formatNumber(-2.5), "-2.5");
+  EXPECT_EQ(formatNumber(0.1), "0.1");
+  EXPECT_EQ(formatNumber(1e300), "1e+300");
+  EXPECT_EQ(formatNumber(std::numeric_limits<double>::infinity()), "inf");
+  EXPECT_EQ(formatNumber(std::nan("")), "nan");
+}
+
+TEST(NumberFormat, RoundTripsRandomDoubles) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1e6, 1e6);
+  for (int i = 0; i < 1000; ++i) {
+    const double x = u(rng);
+    EXPECT_EQ(std::strtod(formatNumber(x).c_str(), nullptr), x);
+  }
+}
+
+}  // namespace
+}  // namespace fsdb
