@@ -26,14 +26,6 @@ nlohmann::json parseJsonBody(const std::string& body, int maxDepth) {
 
 std::string jsonTypeName(const nlohmann::json& j) { return j.type_name(); }
 
-std::string joinPath(const std::string& parent, const std::string& key) {
-  return parent.empty() ? key : parent + "." + key;
-}
-
-std::string indexPath(const std::string& parent, size_t index) {
-  return parent + "[" + std::to_string(index) + "]";
-}
-
 const nlohmann::json& requireObject(const nlohmann::json& j, const std::string& path) {
   if (!j.is_object())
     throw Error(errc::kInvalidDocument, "expected an object, got " + jsonTypeName(j), path);

@@ -5,6 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "query/json_path.h"
+
 namespace fsdb {
 
 nlohmann::json parseJsonBody(const std::string& body, int maxDepth);
@@ -17,10 +19,6 @@ double requireNumber(const nlohmann::json& j, const std::string& path);
 const std::string& requireString(const nlohmann::json& j, const std::string& path);
 // `j[key]` of an object, or invalid_document "missing required field".
 const nlohmann::json& requireField(const nlohmann::json& obj, const std::string& key, const std::string& path);
-// "a.b" from ("a","b"); "b" from ("","b").
-std::string joinPath(const std::string& parent, const std::string& key);
-// "a[3]" from ("a",3).
-std::string indexPath(const std::string& parent, size_t index);
 // The JSON type name used in messages: "string", "number", "object", ...
 std::string jsonTypeName(const nlohmann::json& j);
 

@@ -27,13 +27,13 @@ void readPoint(const nlohmann::json& p, int arity, bool unitInterval, const std:
     if (static_cast<int>(p.size()) != arity)
       throw Error(errc::kInvalidDocument,
                   "expected " + std::to_string(arity) + " coordinate(s), got " + std::to_string(p.size()), path);
-    for (int k = 0; k < arity; ++k) out[k] = requireNumber(p[k], indexPath(path, k));
+    for (int k = 0; k < arity; ++k) out[k] = requireNumber(p[k], joinPath(path, static_cast<std::size_t>(k)));
   }
   if (unitInterval)
     for (int k = 0; k < arity; ++k)
       if (out[k] < 0.0 || out[k] > 1.0)
         throw Error(errc::kInvalidDocument, "membership grades must lie in [0,1]; got " + std::to_string(out[k]),
-                    arity == 1 && p.is_number() ? path : indexPath(path, k));
+                    arity == 1 && p.is_number() ? path : joinPath(path, static_cast<std::size_t>(k)));
 }
 
 ApiResponse evaluate(const ApiRequest& req, const ServerLimits& limits) {
@@ -56,7 +56,7 @@ ApiResponse evaluate(const ApiRequest& req, const ServerLimits& limits) {
     auto f = makeUnaryFunction(config);
     for (size_t i = 0; i < points.size(); ++i) {
       double x;
-      readPoint(points[i], 1, false, indexPath("points", i), &x);
+      readPoint(points[i], 1, false, joinPath("points", i), &x);
       values[i] = (*f)(x);
     }
   } else {
@@ -68,14 +68,14 @@ ApiResponse evaluate(const ApiRequest& req, const ServerLimits& limits) {
     const bool unit = op->actsOnMemberships();
     for (size_t i = 0; i < points.size(); ++i) {
       double xy[2];
-      readPoint(points[i], 2, unit, indexPath("points", i), xy);
+      readPoint(points[i], 2, unit, joinPath("points", i), xy);
       values[i] = op->apply(combine, xy[0], xy[1]);
     }
     result["op"] = combineName(combine);
   }
   for (size_t i = 0; i < values.size(); ++i)
     if (!std::isfinite(values[i]))
-      throw Error(errc::kDomainError, "the operator is not finite at this point", indexPath("points", i));
+      throw Error(errc::kDomainError, "the operator is not finite at this point", joinPath("points", i));
   result["values"] = std::move(values);
   return ApiResponse{200, std::move(result), {}, {}};
 }
