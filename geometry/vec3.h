@@ -3,6 +3,7 @@
 // geometry layer needs addition, scaling, dot and cross products and a length that neither
 // overflows nor underflows; anything more belongs to a real linear-algebra library.
 #include <cmath>
+#include <limits>
 
 namespace fsdb {
 
@@ -27,8 +28,13 @@ inline Vec3 cross(const Vec3& a, const Vec3& b) {
 }
 
 // Euclidean length. std::hypot scales internally, so |(1e200, 1e200, 0)| and
-// |(1e-200, 0, 0)| come out right where sqrt(dot(a, a)) would give inf or 0.
-inline double norm(const Vec3& a) { return std::hypot(a.x, a.y, a.z); }
+// |(1e-200, 0, 0)| come out right where sqrt(dot(a, a)) would give inf or 0. Infinite
+// components are answered first: libstdc++'s three-argument hypot divides by the largest
+// component and returns NaN for them.
+inline double norm(const Vec3& a) {
+  if (std::isinf(a.x) || std::isinf(a.y) || std::isinf(a.z)) return std::numeric_limits<double>::infinity();
+  return std::hypot(a.x, a.y, a.z);
+}
 
 inline bool isFinite(const Vec3& a) {
   return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
