@@ -88,7 +88,8 @@ Vec3 unbend(const SuperquadricParams& params, const Vec3& p) {
   // (1 + s): 1 − s² = 1 − u² − v² = k·(X(1 + u) − v·Z), so x = (X(1 + u) − v·Z)/(1 + s),
   // which tends to X as k -> 0. Away from s ~ 1 there is no cancellation and the direct
   // form avoids overflow of X(1 + u) for |kX| >> 1.
-  const double x = std::fabs(1.0 - s) < 0.5 ? (p.x * (1.0 + u) - v * p.z) / (1.0 + s) : (1.0 - s) / k;
+  const double x =
+      std::fabs(1.0 - s) < 0.5 ? (p.x * (1.0 + u) - v * p.z) / (1.0 + s) : (1.0 - s) / k;
   // z = atan2(v, u)/k. For u > 0 this is atan(v/u)/k = (Z/u)·atan(w)/w with w = v/u: no
   // division by a tiny k. u <= 0 needs |kX| >= 1, so k is not small there.
   const double z = u > 0.0 ? (p.z / u) * atanc(v / u) : std::atan2(v, u) / k;

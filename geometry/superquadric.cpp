@@ -60,8 +60,9 @@ void SuperquadricParams::validate() const {
   // |kv|·C < π keeps the bending angle kv·z of the part inside (−π, π): the bent part never
   // closes on itself and the bend can be undone (deformation.h).
   if (!(std::fabs(kv) * C() < kPi))
-    fail("kv", "such that |kv|·C < π, i.e. |kv| < " + formatNumber(kPi / C()) +
-                   " for C = a1·a3 = " + formatNumber(C()),
+    fail("kv",
+         "such that |kv|·C < π, i.e. |kv| < " + formatNumber(kPi / C()) +
+             " for C = a1·a3 = " + formatNumber(C()),
          kv);
   if (!std::isfinite(t)) fail("t", "a finite number (radians)", t);
 }

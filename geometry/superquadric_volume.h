@@ -26,8 +26,8 @@ namespace fsdb {
 // tiny arguments (β(0.01, 0.01) ~ 200 while Γ(0.01)² ~ 1e4 and Γ(1e-200) overflows) stay finite.
 double betaFunction(double a, double b);
 
-double canonicalVolume(const SuperquadricParams& params);   // undeformed solid
-double taperVolumeFactor(const SuperquadricParams& params); // volume ratio tapered / undeformed
+double canonicalVolume(const SuperquadricParams& params);     // undeformed solid
+double taperVolumeFactor(const SuperquadricParams& params);   // volume ratio tapered / undeformed
 double superquadricVolume(const SuperquadricParams& params);  // canonical · taper factor
 double placedVolume(const PlacedSuperquadric& part);          // scale³ · superquadricVolume
 

@@ -27,10 +27,22 @@ void sinCosDegrees(double deg, double* s, double* c) {
   const double rest = (r - 90.0 * q) * (kPi / 180.0);
   const double sr = std::sin(rest), cr = std::cos(rest);
   switch (q) {
-    case 0: *s = sr; *c = cr; break;
-    case 1: *s = cr; *c = -sr; break;
-    case -1: *s = -cr; *c = sr; break;
-    default: *s = -sr; *c = -cr; break;  // ±2: half a turn
+    case 0:
+      *s = sr;
+      *c = cr;
+      break;
+    case 1:
+      *s = cr;
+      *c = -sr;
+      break;
+    case -1:
+      *s = -cr;
+      *c = sr;
+      break;
+    default:
+      *s = -sr;
+      *c = -cr;
+      break;  // ±2: half a turn
   }
 }
 

@@ -19,7 +19,9 @@ inline Vec3 operator-(const Vec3& a) { return {-a.x, -a.y, -a.z}; }
 inline Vec3 operator*(double s, const Vec3& a) { return {s * a.x, s * a.y, s * a.z}; }
 inline Vec3 operator*(const Vec3& a, double s) { return s * a; }
 inline Vec3 operator/(const Vec3& a, double s) { return {a.x / s, a.y / s, a.z / s}; }
-inline bool operator==(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+inline bool operator==(const Vec3& a, const Vec3& b) {
+  return a.x == b.x && a.y == b.y && a.z == b.z;
+}
 inline bool operator!=(const Vec3& a, const Vec3& b) { return !(a == b); }
 
 inline double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
@@ -32,7 +34,8 @@ inline Vec3 cross(const Vec3& a, const Vec3& b) {
 // components are answered first: libstdc++'s three-argument hypot divides by the largest
 // component and returns NaN for them.
 inline double norm(const Vec3& a) {
-  if (std::isinf(a.x) || std::isinf(a.y) || std::isinf(a.z)) return std::numeric_limits<double>::infinity();
+  if (std::isinf(a.x) || std::isinf(a.y) || std::isinf(a.z))
+    return std::numeric_limits<double>::infinity();
   return std::hypot(a.x, a.y, a.z);
 }
 

@@ -9,8 +9,8 @@
 #include <limits>
 #include <random>
 
-#include "geometry/vec3.h"
 #include "geometry/random_superquadric.h"
+#include "geometry/vec3.h"
 
 namespace fsdb {
 namespace {

@@ -109,7 +109,8 @@ TEST(PlacedSuperquadric, SurfaceMapsToTheZeroSet) {
     const double la = eta(rng), lo = omega(rng);
     const double ce = signedPow(std::cos(la), q.eps1);
     const Vec3 onSurface{q.A() * ce * signedPow(std::cos(lo), q.eps2),
-                         q.B() * ce * signedPow(std::sin(lo), q.eps2), q.C() * signedPow(std::sin(la), q.eps1)};
+                         q.B() * ce * signedPow(std::sin(lo), q.eps2),
+                         q.C() * signedPow(std::sin(la), q.eps1)};
     ASSERT_NEAR(part.insideOutside(part.toWorld(onSurface)), 1.0, 1e-8);
     ASSERT_NEAR(part.pseudoDistance(part.toWorld(onSurface)), 0.0,
                 1e-9 * part.placement.scale * (1 + norm(onSurface)));

@@ -30,8 +30,9 @@ SuperquadricParams makeParams(double e1, double e2, double a1, double a2, double
 // SPEC §2 verbatim, for moderate exponents where the literal form cannot overflow.
 double literalF(const SuperquadricParams& q, const Vec3& p) {
   const double e1 = q.eps1, e2 = q.eps2;
-  return std::pow(std::pow(std::fabs(p.x) / q.A(), 2 / e2) + std::pow(std::fabs(p.y) / q.B(), 2 / e2),
-                  e2 / e1) +
+  return std::pow(
+             std::pow(std::fabs(p.x) / q.A(), 2 / e2) + std::pow(std::fabs(p.y) / q.B(), 2 / e2),
+             e2 / e1) +
          std::pow(std::fabs(p.z) / q.C(), 2 / e1);
 }
 
@@ -42,7 +43,8 @@ double signedPow(double c, double e) { return std::copysign(std::pow(std::fabs(c
 Vec3 surfacePoint(const SuperquadricParams& q, double eta, double omega) {
   const double ce = signedPow(std::cos(eta), q.eps1);
   return {q.A() * ce * signedPow(std::cos(omega), q.eps2),
-          q.B() * ce * signedPow(std::sin(omega), q.eps2), q.C() * signedPow(std::sin(eta), q.eps1)};
+          q.B() * ce * signedPow(std::sin(omega), q.eps2),
+          q.C() * signedPow(std::sin(eta), q.eps1)};
 }
 
 void expectInvalid(const SuperquadricParams& p, const std::string& path, const std::string& range) {
@@ -199,7 +201,8 @@ TEST(HomogeneousInsideOutside, IsDegreeOneHomogeneousAndZeroAtTheOrigin) {
 TEST(HomogeneousInsideOutside, SmallExponentsDoNotOverflow) {
   // eps = 0.02 gives exponents 2/eps = 100: (3/1)^100 alone is 5e47, and (1e5)^100 overflows.
   const auto box = makeParams(0.02, 0.02, 1, 1, 1);
-  EXPECT_NEAR(homogeneousInsideOutside(box, {1e5, 1e5, 1e5}), 1e5 * std::pow(3.0, 0.01), 1e-9 * 1e5);
+  EXPECT_NEAR(homogeneousInsideOutside(box, {1e5, 1e5, 1e5}), 1e5 * std::pow(3.0, 0.01),
+              1e-9 * 1e5);
   EXPECT_NEAR(homogeneousInsideOutside(box, {3, 0, 0}), 3.0, 1e-15);
   EXPECT_EQ(insideOutside(box, {1e5, 0, 0}), std::numeric_limits<double>::max());  // saturated
   EXPECT_NEAR(insideOutside(box, {0.5, 0.5, 0.5}), std::pow(3.0 * std::pow(0.5, 100), 1.0), 1e-40);

@@ -28,7 +28,8 @@ SuperquadricParams makeParams(double e1, double e2, double a1, double a2, double
 }
 
 // Volume of {p in box : inside(p)} by counting the centres of an n·n·n grid of cells.
-double gridVolume(const Vec3& lo, const Vec3& hi, int n, const std::function<bool(const Vec3&)>& inside) {
+double gridVolume(const Vec3& lo, const Vec3& hi, int n,
+                  const std::function<bool(const Vec3&)>& inside) {
   const Vec3 h = (hi - lo) / n;
   long count = 0;
   for (int i = 0; i < n; ++i) {
@@ -81,7 +82,8 @@ TEST(CanonicalVolume, BoxAndCylinderLimits) {
 }
 
 TEST(CanonicalVolume, MatchesGridIntegrationOfInsideOutside) {
-  const double pairs[][2] = {{0.5, 0.5}, {1, 1}, {1.5, 0.7}, {2, 2}, {0.3, 1}, {3, 0.2}, {0.1, 3.5}};
+  const double pairs[][2] = {{0.5, 0.5}, {1, 1},   {1.5, 0.7}, {2, 2},
+                             {0.3, 1},   {3, 0.2}, {0.1, 3.5}};
   for (const auto& e : pairs) {
     const auto q = makeParams(e[0], e[1], 1.5, 0.8, 1.3);
     const double exact = canonicalVolume(q);
@@ -106,16 +108,22 @@ TEST(TaperVolumeFactor, KnownValues) {
 TEST(TaperVolumeFactor, MatchesGridIntegrationOfTaperedParts) {
   struct Case {
     double e1, e2, kx, ky;
-  } cases[] = {{1, 1, 0.8, 0.6}, {0.5, 0.5, -1, 1}, {1.5, 0.7, 1, 1}, {0.3, 1, -0.7, -0.9}, {2, 2, 0.9, -0.5}};
+  } cases[] = {{1, 1, 0.8, 0.6},
+               {0.5, 0.5, -1, 1},
+               {1.5, 0.7, 1, 1},
+               {0.3, 1, -0.7, -0.9},
+               {2, 2, 0.9, -0.5}};
   for (const auto& c : cases) {
     auto q = makeParams(c.e1, c.e2, 1.2, 1.0, 1.5);
     q.kx = c.kx;
     q.ky = c.ky;
     // The tapered part is symmetric in x and in y: count the quarter x, y >= 0.
     const double counted =
-        4 * gridVolume({0, 0, -q.C()}, {q.A() * (1 + std::fabs(q.kx)), q.B() * (1 + std::fabs(q.ky)), q.C()}, 110,
+        4 * gridVolume({0, 0, -q.C()},
+                       {q.A() * (1 + std::fabs(q.kx)), q.B() * (1 + std::fabs(q.ky)), q.C()}, 110,
                        [&](const Vec3& p) { return insideOutside(q, untaper(q, p)) <= 1.0; });
-    EXPECT_NEAR(counted / superquadricVolume(q), 1.0, 0.01) << c.e1 << " " << c.e2 << " " << c.kx << " " << c.ky;
+    EXPECT_NEAR(counted / superquadricVolume(q), 1.0, 0.01)
+        << c.e1 << " " << c.e2 << " " << c.kx << " " << c.ky;
   }
 }
 
@@ -146,10 +154,10 @@ TEST(SuperquadricVolume, TwistAndBendPreserveVolume) {
   struct Case {
     double e1, e2, kx, ky, t, kv;
   } cases[] = {
-      {1, 1, 0, 0, 2.5, 0.4},        // twisted, bent ellipsoid
+      {1, 1, 0, 0, 2.5, 0.4},           // twisted, bent ellipsoid
       {0.3, 0.3, 0.5, -0.4, 1, -0.35},  // near-box, all deformations
-      {1.5, 0.7, 1, 1, -3, 0.3},     // pinched, strongly tapered
-      {0.5, 2, -0.6, 0, 0, 0.45},    // bend and taper only
+      {1.5, 0.7, 1, 1, -3, 0.3},        // pinched, strongly tapered
+      {0.5, 2, -0.6, 0, 0, 0.45},       // bend and taper only
   };
   for (const auto& c : cases) {
     PlacedSuperquadric part;

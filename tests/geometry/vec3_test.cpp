@@ -38,8 +38,10 @@ TEST(Vec3, NormNeitherOverflowsNorUnderflows) {
   EXPECT_DOUBLE_EQ(norm({3e200, 4e200, 0}), 5e200);
   EXPECT_DOUBLE_EQ(norm({0, 3e-200, 4e-200}), 5e-200);
   EXPECT_EQ(norm({0, 0, 0}), 0.0);
-  EXPECT_EQ(norm({-std::numeric_limits<double>::infinity(), 0, 1}), std::numeric_limits<double>::infinity());
-  EXPECT_EQ(norm({0, std::numeric_limits<double>::infinity(), 0}), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(norm({-std::numeric_limits<double>::infinity(), 0, 1}),
+            std::numeric_limits<double>::infinity());
+  EXPECT_EQ(norm({0, std::numeric_limits<double>::infinity(), 0}),
+            std::numeric_limits<double>::infinity());
 }
 
 TEST(Vec3, IsFinite) {
