@@ -31,12 +31,14 @@ double divideByTaperFactor(double x, double f) {
 }  // namespace
 
 Vec3 taper(const SuperquadricParams& params, const Vec3& p) {
+  if (params.kx == 0.0 && params.ky == 0.0) return p;  // the common untapered part: skip 3 ops
   // SPEC §2: X = x(kx·z/C + 1), Y = y(ky·z/C + 1).
   const double zc = p.z / params.C();
   return {p.x * (params.kx * zc + 1.0), p.y * (params.ky * zc + 1.0), p.z};
 }
 
 Vec3 untaper(const SuperquadricParams& params, const Vec3& p) {
+  if (params.kx == 0.0 && params.ky == 0.0) return p;  // factors are exactly 1
   // Taper leaves z alone, so the deformed z gives the factors directly.
   const double zc = p.z / params.C();
   return {divideByTaperFactor(p.x, params.kx * zc + 1.0),

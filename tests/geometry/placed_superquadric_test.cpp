@@ -145,5 +145,32 @@ TEST(PlacedSuperquadric, StaysFiniteOnTheTaperSingularity) {
   EXPECT_EQ(part.pseudoDistance(beside), std::numeric_limits<double>::max());
 }
 
+TEST(PreparedSuperquadric, AgreesBitForBitWithPlacedSuperquadric) {
+  std::mt19937_64 rng(123);
+  std::uniform_real_distribution<double> u(-8, 8);
+  for (int i = 0; i < 500; ++i) {
+    PlacedSuperquadric part{randomParams(rng, /*injectiveBend=*/false), randomPlacement(rng)};
+    const PreparedSuperquadric prepared(part);
+    EXPECT_EQ(prepared.params().kv, part.params.kv);
+    for (int j = 0; j < 5; ++j) {
+      const Vec3 w{u(rng), u(rng), u(rng)};
+      ASSERT_EQ(prepared.toCanonical(w), part.toCanonical(w));
+      ASSERT_EQ(prepared.insideOutside(w), part.insideOutside(w));
+      ASSERT_EQ(prepared.pseudoDistance(w), part.pseudoDistance(w));
+    }
+  }
+}
+
+TEST(PreparedSuperquadric, ValidatesOnConstruction) {
+  PlacedSuperquadric part;
+  part.params.eps2 = 5;
+  try {
+    PreparedSuperquadric prepared(part);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.path(), "params.eps2");
+  }
+}
+
 }  // namespace
 }  // namespace fsdb
