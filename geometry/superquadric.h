@@ -10,8 +10,10 @@
 //    p is inside iff F(p) <= 1 (F < 1 interior, F = 1 surface).
 //  * The evaluation functions below take canonical (undeformed, unplaced) points and assume
 //    validated parameters; deformation.h and placed_superquadric.h map other points here.
-//  * For finite points none of them returns NaN or infinity: F saturates at the largest
-//    finite double (it only ever answers "how far outside", and F <= 1 is exact either way).
+//  * For finite points none of them returns NaN. F and the pseudo distance never return
+//    infinity: they saturate at the largest finite double (F only ever answers "how far
+//    outside", and F <= 1 is exact either way). G is finite unless its true value is beyond
+//    the doubles (coordinates near 1e308 over half-lengths below 1).
 #include "geometry/vec3.h"
 
 namespace fsdb {

@@ -39,10 +39,10 @@ void sinCosDegrees(double deg, double* s, double* c) {
       *s = -cr;
       *c = sr;
       break;
-    default:
+    default:  // ±2: half a turn
       *s = -sr;
       *c = -cr;
-      break;  // ±2: half a turn
+      break;
   }
 }
 
