@@ -7,6 +7,7 @@
 #include <string>
 
 #include "geometry/error.h"
+#include "geometry/number_format.h"
 
 namespace fsdb {
 
@@ -16,12 +17,6 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kMaxFinite = std::numeric_limits<double>::max();
 
 // Shortest text that reads back as the same double, so a message shows the value the user sent.
-std::string formatNumber(double v) {
-  char buf[32];
-  auto res = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, res.ptr);
-}
-
 [[noreturn]] void fail(const std::string& name, const std::string& range, double got) {
   throw Error(errc::kInvalidParameter, name + " must be " + range + "; got " + formatNumber(got),
               name);

@@ -5,18 +5,13 @@
 #include <string>
 
 #include "geometry/error.h"
+#include "geometry/number_format.h"
 
 namespace fsdb {
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-std::string formatNumber(double v) {
-  char buf[32];
-  auto res = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, res.ptr);
-}
 
 // sin and cos of an angle in degrees, exact at multiples of 90°. The angle is reduced
 // exactly (std::remainder) to r in [−180, 180], split into q quarter turns plus a rest in
