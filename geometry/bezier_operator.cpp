@@ -1,10 +1,20 @@
 #include "geometry/bezier_operator.h"
 
-#include <cmath>
-
 #include "geometry/parameter_check.h"
 
 namespace fsdb {
+
+namespace {
+
+// b^n by repeated squaring (std::pow takes the slow general path for an integer exponent).
+double integerPower(double b, int n) {
+  double result = 1.0;
+  for (; n > 0; n >>= 1, b *= b)
+    if (n & 1) result *= b;
+  return result;
+}
+
+}  // namespace
 
 void bernsteinBasis(int n, double t, double* out) {
   // Walk the ratio b_{k+1}/b_k = (n-k)/(k+1) * t/(1-t) from the end nearer t, so the ratio
@@ -12,7 +22,7 @@ void bernsteinBasis(int n, double t, double* out) {
   bool mirrored = t > 0.5;
   double s = mirrored ? 1.0 - t : t;
   double ratio = s / (1.0 - s);
-  double b = std::pow(1.0 - s, n);
+  double b = integerPower(1.0 - s, n);
   for (int k = 0; k <= n; ++k) {
     out[mirrored ? n - k : k] = b;
     b *= ratio * (n - k) / (k + 1);

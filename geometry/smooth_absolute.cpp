@@ -29,9 +29,10 @@ double upperAbsoluteCore(int n, double x) {
   double a[kMaxSmoothAbsoluteDegree + 1];
   for (int i = 0; i <= n; ++i) a[i] = std::fabs(x + (2 * i - n));
   for (int m = 1; m <= n; ++m) {
+    double scale = 1.0 / (2.0 * (m + 1));  // one division per level, not per entry
     for (int i = 0; i <= n - m; ++i) {
       double y = x + (2 * i - (n - m));  // a[i] holds |y - 1|_{m-1}, a[i+1] holds |y + 1|_{m-1}
-      a[i] = std::fabs(y) >= m ? std::fabs(y) : ((m - y) * a[i] + (m + y) * a[i + 1]) / (2.0 * (m + 1));
+      a[i] = std::fabs(y) >= m ? std::fabs(y) : ((m - y) * a[i] + (m + y) * a[i + 1]) * scale;
     }
   }
   return a[0];

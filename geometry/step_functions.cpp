@@ -32,11 +32,12 @@ double liTianStep(int n, double x) {
   double h[kMaxPolynomialStepDegree + 1];
   for (int i = 0; i <= n; ++i) h[i] = heaviside(x + (2 * i - n));
   for (int m = 1; m <= n; ++m) {
+    double halfInverseM = 0.5 / m;  // one division per level, not per entry
     for (int i = 0; i <= n - m; ++i) {
       double y = x + (2 * i - (n - m));  // h[i] holds H_{m-1}(y - 1), h[i+1] holds H_{m-1}(y + 1)
       if (y <= -m) h[i] = 0.0;
       else if (y >= m) h[i] = 1.0;
-      else h[i] = 0.5 * ((1.0 + y / m) * h[i + 1] + (1.0 - y / m) * h[i]);
+      else h[i] = 0.5 * (h[i + 1] + h[i]) + y * halfInverseM * (h[i + 1] - h[i]);
     }
   }
   return h[0];
@@ -59,11 +60,12 @@ double cardinalStep(int n, double t) {
   double f[kMaxPolynomialStepDegree + 1];
   for (int j = 0; j <= n; ++j) f[j] = heaviside(t - j);
   for (int m = 1; m <= n; ++m) {
+    double inverseM = 1.0 / m;
     for (int j = 0; j <= n - m; ++j) {
       double u = t - j;  // f[j] holds f_{m-1}(u), f[j+1] holds f_{m-1}(u - 1)
       if (u <= 0.0) f[j] = 0.0;
       else if (u >= m) f[j] = 1.0;
-      else f[j] = u / m * f[j] + (1.0 - u / m) * f[j + 1];
+      else f[j] = f[j + 1] + u * inverseM * (f[j] - f[j + 1]);
     }
   }
   return f[0];

@@ -86,7 +86,7 @@ TEST(BezierOperator, IncreasesWithDegreeTowardsMin) {
     for (double x : grid(25)) {
       for (double y : grid(25)) {
         if (n > 1) {
-          EXPECT_LE(bezierOperator(n - 1, x, y), bezierOperator(n, x, y) + 1e-15) << n;
+          EXPECT_LE(bezierOperator(n - 1, x, y), bezierOperator(n, x, y) + 1e-14) << n;
         }
         gap = std::max(gap, std::min(x, y) - bezierOperator(n, x, y));
       }
