@@ -67,8 +67,12 @@ void registerBinary(const OperatorConfig& config, Direct direct) {
   std::shared_ptr<BinaryOperator> op = makeBinaryOperator(config);
   std::string name = label(config);
   benchmark::RegisterBenchmark(("catalog/" + name).c_str(), [op, fields](benchmark::State& s) {
-    if (fields) benchBinary(s, [&](double a, double b) { return op->unionOf(a, b); }, true);
-    else benchBinary(s, [&](double a, double b) { return op->intersection(a, b); }, false);
+    if (fields)
+      benchBinary(
+          s, [&](double a, double b) { return op->unionOf(a, b); }, true);
+    else
+      benchBinary(
+          s, [&](double a, double b) { return op->intersection(a, b); }, false);
   });
   benchmark::RegisterBenchmark(("direct/" + name).c_str(), [direct, fields](benchmark::State& s) {
     benchBinary(s, direct, fields);
@@ -79,8 +83,9 @@ template <class Direct>
 void registerUnary(const OperatorConfig& config, Direct direct) {
   std::shared_ptr<UnaryFunction> f = makeUnaryFunction(config);
   std::string name = label(config);
-  benchmark::RegisterBenchmark(("catalog/" + name).c_str(),
-                               [f](benchmark::State& s) { benchUnary(s, [&](double t) { return (*f)(t); }); });
+  benchmark::RegisterBenchmark(("catalog/" + name).c_str(), [f](benchmark::State& s) {
+    benchUnary(s, [&](double t) { return (*f)(t); });
+  });
   benchmark::RegisterBenchmark(("direct/" + name).c_str(),
                                [direct](benchmark::State& s) { benchUnary(s, direct); });
 }
@@ -90,19 +95,19 @@ int registerAll() {
   registerBinary(OperatorConfig{"algebraic", {}, {}}, algebraicTNorm);
   registerBinary(OperatorConfig{"lukasiewicz", {}, {}}, lukasiewiczTNorm);
   registerBinary(OperatorConfig{"dubois_prade", {}, {}},
-                      [](double x, double y) { return duboisPradeTNorm(x, y, 0.5); });
+                 [](double x, double y) { return duboisPradeTNorm(x, y, 0.5); });
   registerBinary(OperatorConfig{"einstein", {}, {}}, einsteinTNorm);
   registerBinary(OperatorConfig{"dombi", {}, {}},
-                      [](double x, double y) { return dombiTNorm(x, y, 2.0); });
+                 [](double x, double y) { return dombiTNorm(x, y, 2.0); });
   registerBinary(OperatorConfig{"hamacher", {}, {}},
-                      [](double x, double y) { return hamacherTNorm(x, y, 0.5); });
+                 [](double x, double y) { return hamacherTNorm(x, y, 0.5); });
   registerBinary(OperatorConfig{"weber", {}, {}},
-                      [](double x, double y) { return weberTNorm(x, y, 1.0); });
+                 [](double x, double y) { return weberTNorm(x, y, 1.0); });
   registerBinary(OperatorConfig{"yager", {}, {}},
-                      [](double x, double y) { return yagerTNorm(x, y, 2.0); });
+                 [](double x, double y) { return yagerTNorm(x, y, 2.0); });
   for (int n : {3, 16, 64})
     registerBinary(OperatorConfig{"bezier", {{"n", n}}, {}},
-                        [n](double x, double y) { return bezierOperator(n, x, y); });
+                   [n](double x, double y) { return bezierOperator(n, x, y); });
   for (int n : {2, 8, 32}) {
     SmoothAnd op(n, 0.5);
     registerBinary(OperatorConfig{"smooth_and", {{"n", n}}, {}}, op);
@@ -113,18 +118,19 @@ int registerAll() {
   }
   // one-shot form: builds the operator (two corner values) at every call
   benchmark::RegisterBenchmark("direct/smooth_and_oneshot/n=2", [](benchmark::State& s) {
-    benchBinary(s, [](double x, double y) { return smoothAnd(2, 0.5, x, y); }, false);
+    benchBinary(
+        s, [](double x, double y) { return smoothAnd(2, 0.5, x, y); }, false);
   });
   {
     ExteriorBlend ext(0.5, 0.25);
     registerBinary(OperatorConfig{"ext_max", {}, {}},
-                        [ext](double a, double b) { return ext.unionOf(a, b); });
+                   [ext](double a, double b) { return ext.unionOf(a, b); });
     InteriorBlend in(0.25);
     registerBinary(OperatorConfig{"int_max", {}, {}},
-                        [in](double a, double b) { return in.unionOf(a, b); });
+                   [in](double a, double b) { return in.unionOf(a, b); });
     ExteriorBlend extSigmoid(0.5, 0.25, SmoothUnitStep::sigmoid(7.0));
     registerBinary(OperatorConfig{"ext_max", {}, {{"sigmoid", {}, {}}}},
-                        [extSigmoid](double a, double b) { return extSigmoid.unionOf(a, b); });
+                   [extSigmoid](double a, double b) { return extSigmoid.unionOf(a, b); });
   }
   for (int n : {3, 8, 32})
     registerUnary(OperatorConfig{"polynomial", {{"n", n}}, {}},

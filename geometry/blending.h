@@ -24,11 +24,11 @@ class ExteriorBlend {
  public:
   ExteriorBlend(double delta, double epsilon, SmoothUnitStep mu = defaultBlendStep());
 
-  double sAbs(double t) const;                   // eq. 18-19
-  double extMax(double x, double y) const;       // eq. 20
-  double unionOf(double a, double b) const;      // eq. 21
-  double intersection(double a, double b) const; // eq. 22
-  double difference(double a, double b) const;   // eq. 23, a minus b
+  double sAbs(double t) const;                    // eq. 18-19
+  double extMax(double x, double y) const;        // eq. 20
+  double unionOf(double a, double b) const;       // eq. 21
+  double intersection(double a, double b) const;  // eq. 22
+  double difference(double a, double b) const;    // eq. 23, a minus b
 
   double delta() const { return delta_; }
   double epsilon() const { return epsilon_; }
@@ -44,10 +44,10 @@ class InteriorBlend {
  public:
   explicit InteriorBlend(double epsilon, SmoothUnitStep mu = defaultBlendStep());
 
-  double intMax(double x, double y) const;       // eq. 24
-  double unionOf(double a, double b) const;      // eq. 25
-  double intersection(double a, double b) const; // eq. 26
-  double difference(double a, double b) const;   // eq. 27, a minus b
+  double intMax(double x, double y) const;        // eq. 24
+  double unionOf(double a, double b) const;       // eq. 25
+  double intersection(double a, double b) const;  // eq. 26
+  double difference(double a, double b) const;    // eq. 27, a minus b
 
   double epsilon() const { return epsilon_; }
 

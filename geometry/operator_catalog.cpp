@@ -103,20 +103,19 @@ int integer(const OperatorConfig& c, const char* name) {
   return static_cast<int>(c.params.at(name));
 }
 
-ParamSpec realParam(std::string name, double min, bool minInclusive, double max,
-                    bool maxInclusive, double defaultValue, std::string description) {
-  return {std::move(name), min, max, minInclusive, maxInclusive, defaultValue, false,
-          std::move(description)};
+ParamSpec realParam(std::string name, double min, bool minInclusive, double max, bool maxInclusive,
+                    double defaultValue, std::string description) {
+  return {std::move(name), min,          max,   minInclusive,
+          maxInclusive,    defaultValue, false, std::move(description)};
 }
 
 ParamSpec degreeParam(std::string name, int max, int defaultValue, std::string description) {
-  return {std::move(name), 1.0, double(max), true, true, double(defaultValue), true,
-          std::move(description)};
+  return {std::move(name),      1.0,  double(max),           true, true,
+          double(defaultValue), true, std::move(description)};
 }
 
 ParamSpec positiveParam(std::string name, double defaultValue, std::string description) {
-  return realParam(std::move(name), 0.0, false, kInf, false, defaultValue,
-                   std::move(description));
+  return realParam(std::move(name), 0.0, false, kInf, false, defaultValue, std::move(description));
 }
 
 ParamSpec risingRangeParam() {
@@ -131,8 +130,9 @@ const char* const kPolynomialCap =
 Entry fuzzyEntry(std::string name, std::vector<ParamSpec> params, std::string reference,
                  std::string formula, std::string description, BinaryFactory make) {
   Entry e;
-  e.spec = {std::move(name), "fuzzy_operator", 2,       std::move(params), false,
-            std::move(reference), std::move(formula), std::move(description)};
+  e.spec = {
+      std::move(name),    "fuzzy_operator",      2, std::move(params), false, std::move(reference),
+      std::move(formula), std::move(description)};
   e.binary = make;
   return e;
 }
@@ -140,8 +140,14 @@ Entry fuzzyEntry(std::string name, std::vector<ParamSpec> params, std::string re
 Entry blendEntry(std::string name, std::vector<ParamSpec> params, std::string reference,
                  std::string formula, std::string description, BinaryFactory make) {
   Entry e;
-  e.spec = {std::move(name), "blend", 2, std::move(params), true, std::move(reference),
-            std::move(formula), std::move(description)};
+  e.spec = {std::move(name),
+            "blend",
+            2,
+            std::move(params),
+            true,
+            std::move(reference),
+            std::move(formula),
+            std::move(description)};
   e.binary = make;
   return e;
 }
@@ -151,8 +157,14 @@ SmoothUnitStep stepFromConfig(const OperatorConfig& c);
 Entry stepEntry(std::string name, std::vector<ParamSpec> params, std::string reference,
                 std::string formula, std::string description, StepFactory step) {
   Entry e;
-  e.spec = {std::move(name), "step", 1, std::move(params), false, std::move(reference),
-            std::move(formula), std::move(description)};
+  e.spec = {std::move(name),
+            "step",
+            1,
+            std::move(params),
+            false,
+            std::move(reference),
+            std::move(formula),
+            std::move(description)};
   e.step = step;
   e.unary = [](const OperatorConfig& c) { return unary(stepFromConfig(c)); };
   return e;
@@ -161,12 +173,17 @@ Entry stepEntry(std::string name, std::vector<ParamSpec> params, std::string ref
 Entry absoluteEntry(std::string name, std::string reference, std::string formula,
                     std::string description, UnaryFactory make) {
   Entry e;
-  e.spec = {std::move(name), "absolute", 1,
+  e.spec = {std::move(name),
+            "absolute",
+            1,
             {degreeParam("n", kMaxSmoothAbsoluteDegree, 2,
                          std::string("degree; the function is C^n (upper) or C^(n-1) (lower).") +
                              kPolynomialCap),
              positiveParam("delta", 1.0, "span: equals |t| for |t| >= delta")},
-            false, std::move(reference), std::move(formula), std::move(description)};
+            false,
+            std::move(reference),
+            std::move(formula),
+            std::move(description)};
   e.unary = make;
   return e;
 }
@@ -188,8 +205,8 @@ std::vector<Entry> buildTable() {
                          "Lukasiewicz bounded difference.",
                          [](const OperatorConfig&) { return fuzzy(lukasiewiczTNorm); }));
   t.push_back(fuzzyEntry(
-      "dubois_prade", {realParam("k", 0.0, false, 1.0, true, 0.5, "threshold k in (0, 1]")},
-      table1, "T(x,y) = x*y / max(x, y, k)",
+      "dubois_prade", {realParam("k", 0.0, false, 1.0, true, 0.5, "threshold k in (0, 1]")}, table1,
+      "T(x,y) = x*y / max(x, y, k)",
       "Dubois-Prade: min(x,y) wherever max(x,y) >= k, x*y/k below; k = 1 is the algebraic "
       "product, k -> 0 approaches min.",
       [](const OperatorConfig& c) {
@@ -201,15 +218,13 @@ std::vector<Entry> buildTable() {
   t.push_back(fuzzyEntry(
       "dombi", {positiveParam("n", 2.0, "exponent n > 0 (real); larger n is closer to min")},
       table1, "T(x,y) = 1 / (1 + ((1/x - 1)^n + (1/y - 1)^n)^(1/n)), 0 when x or y is 0",
-      "Dombi family.",
-      [](const OperatorConfig& c) {
+      "Dombi family.", [](const OperatorConfig& c) {
         return fuzzy([n = real(c, "n")](double x, double y) { return dombiTNorm(x, y, n); });
       }));
   t.push_back(fuzzyEntry(
       "hamacher", {realParam("a", 0.0, true, 1.0, false, 0.5, "a in [0, 1)")}, table1,
       "T(x,y) = x*y / (a + (1 - a)(x + y - x*y)), 0 at x = y = 0",
-      "Hamacher family; a = 0 is the Hamacher product.",
-      [](const OperatorConfig& c) {
+      "Hamacher family; a = 0 is the Hamacher product.", [](const OperatorConfig& c) {
         return fuzzy([a = real(c, "a")](double x, double y) { return hamacherTNorm(x, y, a); });
       }));
   t.push_back(fuzzyEntry(
@@ -220,10 +235,9 @@ std::vector<Entry> buildTable() {
         return fuzzy([k = real(c, "k")](double x, double y) { return weberTNorm(x, y, k); });
       }));
   t.push_back(fuzzyEntry(
-      "yager", {realParam("k", 1.0, false, kInf, false, 2.0, "k in (1, inf) as printed")},
-      table1, "T(x,y) = 1 - min(1, ((1 - x)^k + (1 - y)^k)^(1/k))",
-      "Yager family; larger k is closer to min.",
-      [](const OperatorConfig& c) {
+      "yager", {realParam("k", 1.0, false, kInf, false, 2.0, "k in (1, inf) as printed")}, table1,
+      "T(x,y) = 1 - min(1, ((1 - x)^k + (1 - y)^k)^(1/k))",
+      "Yager family; larger k is closer to min.", [](const OperatorConfig& c) {
         return fuzzy([k = real(c, "k")](double x, double y) { return yagerTNorm(x, y, k); });
       }));
 
@@ -253,9 +267,7 @@ std::vector<Entry> buildTable() {
       "Smooth piecewise polynomial intersection AND_{n,delta}; union by duality 1 - AND(1-x, "
       "1-y). The Coons corner term interpolates all four corners (the printed alpha = "
       "-|0|_{n,delta} breaks Identity; alpha = -|0|_{n,delta}/2 for delta <= 1).",
-      [](const OperatorConfig& c) {
-        return fuzzy(SmoothAnd(integer(c, "n"), real(c, "delta")));
-      }));
+      [](const OperatorConfig& c) { return fuzzy(SmoothAnd(integer(c, "n"), real(c, "delta"))); }));
   t.push_back(fuzzyEntry(
       "smooth_and_hat",
       {degreeParam("n", kMaxSmoothAbsoluteDegree, 3,
@@ -287,8 +299,8 @@ std::vector<Entry> buildTable() {
       "difference -Ext_max(-a,b)",
       "Exterior blending of implicit fields (inside where F >= 0): can bridge separate shapes.",
       [](const OperatorConfig& c) {
-        return blend(ExteriorBlend(real(c, "delta"), real(c, "epsilon"),
-                                   stepFromConfig(c.step.front())));
+        return blend(
+            ExteriorBlend(real(c, "delta"), real(c, "epsilon"), stepFromConfig(c.step.front())));
       }));
   t.push_back(blendEntry(
       "int_max",
@@ -307,9 +319,9 @@ std::vector<Entry> buildTable() {
   // --- steps: seed 000 §2.1, seed 001 §2 ---
   t.push_back(stepEntry(
       "polynomial",
-      {degreeParam("n", kMaxPolynomialStepDegree, 3,
-                   std::string("degree: C^(n-1); n = 3 (C^2) is the paper's choice.") +
-                       kPolynomialCap),
+      {degreeParam(
+           "n", kMaxPolynomialStepDegree, 3,
+           std::string("degree: C^(n-1); n = 3 (C^2) is the paper's choice.") + kPolynomialCap),
        risingRangeParam()},
       "seed 001 eq. 5-6, Def. 3",
       "H_n(t/epsilon), H_n(t) = f_n(n(t+1)/2), f_n(t) = t/n f_{n-1}(t) + (1 - t/n) f_{n-1}(t-1)",
@@ -334,35 +346,33 @@ std::vector<Entry> buildTable() {
                    "B-spline order: C^(m-1). Capped at 32: the truncated-power closed form "
                    "cancels, with worst errors ~1e-14 at order 20, ~1e-12 at 32, 1e-7 at 64."),
        risingRangeParam()},
-      "seed 001 eq. 7-8, Def. 3",
-      "B_m(t/epsilon), B_m(t) = (1/delta) integral_{-1}^{t} N_m(s) ds",
-      "Integrated uniform B-spline step; equals polynomial{n = m}.",
-      [](const OperatorConfig& c) {
+      "seed 001 eq. 7-8, Def. 3", "B_m(t/epsilon), B_m(t) = (1/delta) integral_{-1}^{t} N_m(s) ds",
+      "Integrated uniform B-spline step; equals polynomial{n = m}.", [](const OperatorConfig& c) {
         return SmoothUnitStep::bspline(integer(c, "m"), real(c, "epsilon"));
       }));
   const std::string cutoffCap =
       " Capped at 16: the slope at 0 grows like (pi/2)^(n-1) (about 480 at 16), beyond which the "
       "step is a jump at any sampling.";
-  t.push_back(stepEntry(
-      "rising_cutoff",
-      {degreeParam("n", kMaxRisingCutoffLevel, 3,
-                   "recursion level: 2^(n-1) - 1 derivatives vanish at +-1." + cutoffCap),
-       risingRangeParam()},
-      "seed 001 eq. 14-16, Def. 3",
-      "R_n(t/epsilon), R_1(t) = sin(pi/4 (1 + t)), R_{n+1}(t) = R_n(sin(pi t/2))",
-      "Rising cutoff step (Wickerhauser): R_n(t)^2 + R_n(-t)^2 = 1, R_n(0) = sqrt(1/2).",
-      [](const OperatorConfig& c) {
-        return SmoothUnitStep::risingCutoff(integer(c, "n"), real(c, "epsilon"));
-      }));
-  t.push_back(stepEntry(
-      "rising_cutoff_squared",
-      {degreeParam("n", kMaxRisingCutoffLevel, 3, "recursion level of R_n." + cutoffCap),
-       risingRangeParam()},
-      "seed 001 §2.1.3, Def. 3", "R_n(t/epsilon)^2",
-      "Squared rising cutoff: antisymmetric about (0, 1/2), a balanced blend.",
-      [](const OperatorConfig& c) {
-        return SmoothUnitStep::risingCutoffSquared(integer(c, "n"), real(c, "epsilon"));
-      }));
+  t.push_back(
+      stepEntry("rising_cutoff",
+                {degreeParam("n", kMaxRisingCutoffLevel, 3,
+                             "recursion level: 2^(n-1) - 1 derivatives vanish at +-1." + cutoffCap),
+                 risingRangeParam()},
+                "seed 001 eq. 14-16, Def. 3",
+                "R_n(t/epsilon), R_1(t) = sin(pi/4 (1 + t)), R_{n+1}(t) = R_n(sin(pi t/2))",
+                "Rising cutoff step (Wickerhauser): R_n(t)^2 + R_n(-t)^2 = 1, R_n(0) = sqrt(1/2).",
+                [](const OperatorConfig& c) {
+                  return SmoothUnitStep::risingCutoff(integer(c, "n"), real(c, "epsilon"));
+                }));
+  t.push_back(
+      stepEntry("rising_cutoff_squared",
+                {degreeParam("n", kMaxRisingCutoffLevel, 3, "recursion level of R_n." + cutoffCap),
+                 risingRangeParam()},
+                "seed 001 §2.1.3, Def. 3", "R_n(t/epsilon)^2",
+                "Squared rising cutoff: antisymmetric about (0, 1/2), a balanced blend.",
+                [](const OperatorConfig& c) {
+                  return SmoothUnitStep::risingCutoffSquared(integer(c, "n"), real(c, "epsilon"));
+                }));
   t.push_back(stepEntry(
       "sigmoid",
       {positiveParam("alpha", 7.0,
@@ -376,20 +386,21 @@ std::vector<Entry> buildTable() {
       }));
 
   // --- absolutes: seed 000 §3.2 ---
-  t.push_back(absoluteEntry(
-      "upper_abs", "seed 000 eq. 8-9", "|t|_{n,delta} = (delta/n) |n t/delta|_n",
-      "Upper smooth absolute: >= |t|, C^n.", [](const OperatorConfig& c) {
-        return unary([n = integer(c, "n"), delta = real(c, "delta")](double x) {
-          return upperAbsoluteSpan(n, delta, x);
-        });
-      }));
-  t.push_back(absoluteEntry(
-      "lower_abs", "seed 000 eq. 10-11", "|t|^_{n,delta} = (delta/n)(2 u H_n(u) - u), u = n t/delta",
-      "Lower smooth absolute: <= |t|, C^(n-1).", [](const OperatorConfig& c) {
-        return unary([n = integer(c, "n"), delta = real(c, "delta")](double x) {
-          return lowerAbsoluteSpan(n, delta, x);
-        });
-      }));
+  t.push_back(
+      absoluteEntry("upper_abs", "seed 000 eq. 8-9", "|t|_{n,delta} = (delta/n) |n t/delta|_n",
+                    "Upper smooth absolute: >= |t|, C^n.", [](const OperatorConfig& c) {
+                      return unary([n = integer(c, "n"), delta = real(c, "delta")](double x) {
+                        return upperAbsoluteSpan(n, delta, x);
+                      });
+                    }));
+  t.push_back(absoluteEntry("lower_abs", "seed 000 eq. 10-11",
+                            "|t|^_{n,delta} = (delta/n)(2 u H_n(u) - u), u = n t/delta",
+                            "Lower smooth absolute: <= |t|, C^(n-1).", [](const OperatorConfig& c) {
+                              return unary(
+                                  [n = integer(c, "n"), delta = real(c, "delta")](double x) {
+                                    return lowerAbsoluteSpan(n, delta, x);
+                                  });
+                            }));
   return t;
 }
 
@@ -471,9 +482,9 @@ OperatorConfig validateNestedStep(const OperatorConfig& blendConfig) {
                 "'" + blendConfig.name + "' takes one step function; got " +
                     std::to_string(blendConfig.step.size()),
                 "step");
-  OperatorConfig step = blendConfig.step.empty()
-                            ? OperatorConfig{"polynomial", {}, {}}  // seed 001 §4: H_3, C^2
-                            : blendConfig.step.front();
+  OperatorConfig step = blendConfig.step.empty() ? OperatorConfig{"polynomial", {}, {}}
+                                                 // seed 001 §4: H_3, C^2
+                                                 : blendConfig.step.front();
   try {
     step = validateOperator(step);
   } catch (const Error& e) {
@@ -489,8 +500,8 @@ OperatorConfig validateNestedStep(const OperatorConfig& blendConfig) {
     auto it = step.params.find(range);
     if (it != step.params.end() && it->second != 1.0)
       throw Error(errc::kInvalidParameter,
-                  std::string("the blend's epsilon sets the rising range, so the step's ") +
-                      range + " must stay 1; got " + formatNumber(it->second),
+                  std::string("the blend's epsilon sets the rising range, so the step's ") + range +
+                      " must stay 1; got " + formatNumber(it->second),
                   std::string("step.") + range);
   }
   return step;

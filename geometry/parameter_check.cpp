@@ -32,8 +32,8 @@ void requireInRange(const std::string& name, double v, double min, bool minInclu
                     bool maxInclusive) {
   if (inRange(v, min, minInclusive, max, maxInclusive)) return;
   throw Error(errc::kInvalidParameter,
-              name + " must be in " + formatRange(min, minInclusive, max, maxInclusive) +
-                  "; got " + formatNumber(v),
+              name + " must be in " + formatRange(min, minInclusive, max, maxInclusive) + "; got " +
+                  formatNumber(v),
               name);
 }
 

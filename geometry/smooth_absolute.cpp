@@ -126,8 +126,8 @@ double SmoothAnd::c1(double x) const {
 
 // seed 000 eq. 20
 double SmoothAnd::operator()(double x, double y) const {
-  double patch = coonsPatch(x, y, c0(x), c1(x), c0(y), c1(y), cornerDiagonal_,
-                            cornerOffDiagonal_, cornerDiagonal_);
+  double patch = coonsPatch(x, y, c0(x), c1(x), c0(y), c1(y), cornerDiagonal_, cornerOffDiagonal_,
+                            cornerDiagonal_);
   return smoothMinCore(n_, delta_, x, y) - patch;
 }
 

@@ -38,8 +38,7 @@ SmoothUnitStep SmoothUnitStep::risingCutoff(int n, double epsilon) {
 
 SmoothUnitStep SmoothUnitStep::risingCutoffSquared(int n, double epsilon) {
   requireDegree("n", n, 1, kMaxRisingCutoffLevel);
-  return SmoothUnitStep(StepFamily::kRisingCutoffSquared, n, 0.0,
-                        checkedRange("epsilon", epsilon));
+  return SmoothUnitStep(StepFamily::kRisingCutoffSquared, n, 0.0, checkedRange("epsilon", epsilon));
 }
 
 SmoothUnitStep SmoothUnitStep::sigmoid(double alpha, double epsilon) {

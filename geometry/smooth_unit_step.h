@@ -30,9 +30,9 @@ class SmoothUnitStep {
   double operator()(double t) const;
 
   StepFamily family() const { return family_; }
-  int degree() const { return degree_; }            // n or m; 0 for the sigmoid
-  double alpha() const { return alpha_; }           // sigmoid only; 0 otherwise
-  double risingRange() const { return epsilon_; }   // epsilon, or R for polynomialRange
+  int degree() const { return degree_; }           // n or m; 0 for the sigmoid
+  double alpha() const { return alpha_; }          // sigmoid only; 0 otherwise
+  double risingRange() const { return epsilon_; }  // epsilon, or R for polynomialRange
 
  private:
   SmoothUnitStep(StepFamily family, int degree, double alpha, double epsilon)

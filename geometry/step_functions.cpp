@@ -13,7 +13,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-void requireRisingRange(const char* name, double r) { requireInRange(name, r, 0.0, false, kInf, false); }
+void requireRisingRange(const char* name, double r) {
+  requireInRange(name, r, 0.0, false, kInf, false);
+}
 
 }  // namespace
 
@@ -35,9 +37,12 @@ double liTianStep(int n, double x) {
     double halfInverseM = 0.5 / m;  // one division per level, not per entry
     for (int i = 0; i <= n - m; ++i) {
       double y = x + (2 * i - (n - m));  // h[i] holds H_{m-1}(y - 1), h[i+1] holds H_{m-1}(y + 1)
-      if (y <= -m) h[i] = 0.0;
-      else if (y >= m) h[i] = 1.0;
-      else h[i] = 0.5 * (h[i + 1] + h[i]) + y * halfInverseM * (h[i + 1] - h[i]);
+      if (y <= -m)
+        h[i] = 0.0;
+      else if (y >= m)
+        h[i] = 1.0;
+      else
+        h[i] = 0.5 * (h[i + 1] + h[i]) + y * halfInverseM * (h[i + 1] - h[i]);
     }
   }
   return h[0];
@@ -63,9 +68,12 @@ double cardinalStep(int n, double t) {
     double inverseM = 1.0 / m;
     for (int j = 0; j <= n - m; ++j) {
       double u = t - j;  // f[j] holds f_{m-1}(u), f[j+1] holds f_{m-1}(u - 1)
-      if (u <= 0.0) f[j] = 0.0;
-      else if (u >= m) f[j] = 1.0;
-      else f[j] = f[j + 1] + u * inverseM * (f[j] - f[j + 1]);
+      if (u <= 0.0)
+        f[j] = 0.0;
+      else if (u >= m)
+        f[j] = 1.0;
+      else
+        f[j] = f[j + 1] + u * inverseM * (f[j] - f[j + 1]);
     }
   }
   return f[0];

@@ -11,15 +11,15 @@
 // duals the paper relies on (seed 000 §3.2: "union by duality F = 1 - ∧(1 - S1, 1 - S2)").
 namespace fsdb {
 
-double algebraicTNorm(double x, double y);                 // xy
-double zadehTNorm(double x, double y);                     // min(x, y)
-double lukasiewiczTNorm(double x, double y);               // max(0, x + y - 1)
-double duboisPradeTNorm(double x, double y, double k);     // xy / max(x, y, k), k in (0, 1]
-double einsteinTNorm(double x, double y);                  // xy / (2 - (x + y - xy))
-double dombiTNorm(double x, double y, double n);           // n > 0; 0 when x or y is 0
-double hamacherTNorm(double x, double y, double a);        // a in [0, 1); 0 at x = y = 0
-double weberTNorm(double x, double y, double k);           // k in (-1, inf)
-double yagerTNorm(double x, double y, double k);           // k in (1, inf), as printed
+double algebraicTNorm(double x, double y);              // xy
+double zadehTNorm(double x, double y);                  // min(x, y)
+double lukasiewiczTNorm(double x, double y);            // max(0, x + y - 1)
+double duboisPradeTNorm(double x, double y, double k);  // xy / max(x, y, k), k in (0, 1]
+double einsteinTNorm(double x, double y);               // xy / (2 - (x + y - xy))
+double dombiTNorm(double x, double y, double n);        // n > 0; 0 when x or y is 0
+double hamacherTNorm(double x, double y, double a);     // a in [0, 1); 0 at x = y = 0
+double weberTNorm(double x, double y, double k);        // k in (-1, inf)
+double yagerTNorm(double x, double y, double k);        // k in (1, inf), as printed
 
 // The fuzzy complement 1 - x.
 inline double fuzzyComplement(double x) { return 1.0 - x; }

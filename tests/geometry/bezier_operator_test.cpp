@@ -46,8 +46,8 @@ TEST(BezierOperator, ClosedFormsEq5To7) {
   for (double x : grid(20)) {
     for (double y : grid(20)) {
       double xb = 1 - x, yb = 1 - y;
-      EXPECT_NEAR(bezierOperator(1, x, y), x * y, 1e-15);                                // eq. 5
-      EXPECT_NEAR(bezierOperator(2, x, y), x * y * (1 + xb * yb), 1e-15);                // eq. 6
+      EXPECT_NEAR(bezierOperator(1, x, y), x * y, 1e-15);                                  // eq. 5
+      EXPECT_NEAR(bezierOperator(2, x, y), x * y * (1 + xb * yb), 1e-15);                  // eq. 6
       EXPECT_NEAR(bezierOperator(3, x, y), x * y * (1 + xb * yb * (1 + x * y + xb * yb)),  // eq. 7
                   1e-15);
     }
@@ -68,12 +68,12 @@ TEST(BezierOperator, PropertiesAfterEq7) {
     for (double x : grid(40)) {
       EXPECT_NEAR(bezierOperator(n, x, 0.0), 0.0, 1e-15);  // property 1
       EXPECT_NEAR(bezierOperator(n, 0.0, x), 0.0, 1e-15);
-      EXPECT_NEAR(bezierOperator(n, x, 1.0), x, 1e-14);    // property 2
+      EXPECT_NEAR(bezierOperator(n, x, 1.0), x, 1e-14);  // property 2
       EXPECT_NEAR(bezierOperator(n, 1.0, x), x, 1e-14);
       for (double y : grid(40)) {
         double v = bezierOperator(n, x, y);
-        EXPECT_LE(v, std::min(x, y) + 1e-14);              // property 3
-        EXPECT_EQ(v, bezierOperator(n, y, x));             // property 4
+        EXPECT_LE(v, std::min(x, y) + 1e-14);   // property 3
+        EXPECT_EQ(v, bezierOperator(n, y, x));  // property 4
       }
     }
   }

@@ -22,9 +22,9 @@ std::vector<double> samples(double lo, double hi, int steps) {
 
 // Steps with compact support [-1, 1] (the statements below need exact 0 and 1 outside).
 std::vector<SmoothUnitStep> compactSteps() {
-  return {SmoothUnitStep::polynomial(3), SmoothUnitStep::polynomial(1),
-          SmoothUnitStep::polynomial(6), SmoothUnitStep::bspline(4),
-          SmoothUnitStep::risingCutoff(2), SmoothUnitStep::risingCutoffSquared(3),
+  return {SmoothUnitStep::polynomial(3),     SmoothUnitStep::polynomial(1),
+          SmoothUnitStep::polynomial(6),     SmoothUnitStep::bspline(4),
+          SmoothUnitStep::risingCutoff(2),   SmoothUnitStep::risingCutoffSquared(3),
           SmoothUnitStep::polynomialRange(2)};
 }
 
@@ -68,8 +68,9 @@ TEST(SAbs, TheParabolaMeetsAbsoluteWithMatchingSlopes) {
 }
 
 TEST(SAbs, IsEvenForAntisymmetricSteps) {
-  for (const SmoothUnitStep& mu : {SmoothUnitStep::polynomial(3), SmoothUnitStep::bspline(5),
-                                   SmoothUnitStep::risingCutoffSquared(2), SmoothUnitStep::sigmoid(4)}) {
+  for (const SmoothUnitStep& mu :
+       {SmoothUnitStep::polynomial(3), SmoothUnitStep::bspline(5),
+        SmoothUnitStep::risingCutoffSquared(2), SmoothUnitStep::sigmoid(4)}) {
     ExteriorBlend blend(0.5, 0.3, mu);
     for (double t : samples(0, 2, 50)) EXPECT_NEAR(blend.sAbs(t), blend.sAbs(-t), 1e-15);
   }
@@ -128,9 +129,9 @@ TEST(ExtMax, UnionIntersectionDifferenceAsPrinted) {
   ExteriorBlend blend(0.5, 0.25);
   for (double a : samples(-2, 2, 30))
     for (double b : samples(-2, 2, 30)) {
-      EXPECT_EQ(blend.unionOf(a, b), blend.extMax(a, b));            // eq. 21
-      EXPECT_EQ(blend.intersection(a, b), -blend.extMax(-a, -b));    // eq. 22
-      EXPECT_EQ(blend.difference(a, b), -blend.extMax(-a, b));       // eq. 23
+      EXPECT_EQ(blend.unionOf(a, b), blend.extMax(a, b));          // eq. 21
+      EXPECT_EQ(blend.intersection(a, b), -blend.extMax(-a, -b));  // eq. 22
+      EXPECT_EQ(blend.difference(a, b), -blend.extMax(-a, b));     // eq. 23
       // Dual containment: the intersection and the difference lie inside their crisp forms.
       EXPECT_LE(blend.intersection(a, b), std::min(a, b) + 1e-15);
       EXPECT_LE(blend.difference(a, b), std::min(a, -b) + 1e-15);
@@ -168,9 +169,9 @@ TEST(IntMax, UnionIntersectionDifferenceAsPrinted) {
   InteriorBlend blend(0.5);
   for (double a : samples(-2, 2, 30))
     for (double b : samples(-2, 2, 30)) {
-      EXPECT_EQ(blend.unionOf(a, b), blend.intMax(a, b));            // eq. 25
-      EXPECT_EQ(blend.intersection(a, b), -blend.intMax(-a, -b));    // eq. 26
-      EXPECT_EQ(blend.difference(a, b), -blend.intMax(-a, b));       // eq. 27
+      EXPECT_EQ(blend.unionOf(a, b), blend.intMax(a, b));          // eq. 25
+      EXPECT_EQ(blend.intersection(a, b), -blend.intMax(-a, -b));  // eq. 26
+      EXPECT_EQ(blend.difference(a, b), -blend.intMax(-a, b));     // eq. 27
       // "the intersection ... always contains the intersection of the solids"
       EXPECT_GE(blend.intersection(a, b), std::min(a, b) - 1e-15);
       EXPECT_LE(blend.intersection(a, b), std::max(a, b) + 1e-15);

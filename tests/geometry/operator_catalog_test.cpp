@@ -44,8 +44,10 @@ TEST(OperatorCatalog, ListsEveryOperatorNamedInSpecSection2) {
     ASSERT_NE(spec, nullptr) << name;
     EXPECT_EQ(spec->arity, 2) << name;
   }
-  const char* specParams[][3] = {{"bezier", "n", ""},        {"smooth_and", "n", "delta"},
-                                 {"smooth_and_hat", "n", "delta"}, {"ext_max", "delta", "epsilon"},
+  const char* specParams[][3] = {{"bezier", "n", ""},
+                                 {"smooth_and", "n", "delta"},
+                                 {"smooth_and_hat", "n", "delta"},
+                                 {"ext_max", "delta", "epsilon"},
                                  {"int_max", "epsilon", ""}};
   for (auto& row : specParams) {
     const OperatorSpec* spec = findOperator(row[0]);
@@ -169,8 +171,10 @@ TEST(OperatorCatalog, WrongArityIsAnInvalidNameParameter) {
 std::vector<double> badValues(const ParamSpec& p) {
   std::vector<double> bad = {std::numeric_limits<double>::quiet_NaN()};
   if (std::isfinite(p.min)) bad.push_back(p.minInclusive ? p.min - 1 : p.min);
-  if (std::isfinite(p.max)) bad.push_back(p.maxInclusive ? p.max + 1 : p.max);
-  else bad.push_back(std::numeric_limits<double>::infinity());
+  if (std::isfinite(p.max))
+    bad.push_back(p.maxInclusive ? p.max + 1 : p.max);
+  else
+    bad.push_back(std::numeric_limits<double>::infinity());
   if (p.integer) bad.push_back(p.defaultValue + 0.5);
   return bad;
 }
@@ -219,8 +223,12 @@ TEST(OperatorCatalog, UnknownNamesSuggestCloseOnes) {
   struct Case {
     const char* typo;
     const char* expected;
-  } cases[] = {{"yagr", "yager"},           {"smooth-and", "smooth_and"}, {"zadeh ", "zadeh"},
-               {"extmax", "ext_max"},       {"Hamacher", "hamacher"},     {"bezeir", "bezier"},
+  } cases[] = {{"yagr", "yager"},
+               {"smooth-and", "smooth_and"},
+               {"zadeh ", "zadeh"},
+               {"extmax", "ext_max"},
+               {"Hamacher", "hamacher"},
+               {"bezeir", "bezier"},
                {"rising_cutof", "rising_cutoff"}};
   for (const Case& c : cases) {
     Error e = errorOf({c.typo, {}, {}});

@@ -47,9 +47,9 @@ TEST(UpperAbsolute, Proposition31) {
       // (1); near |x| = n the true excess (~(n - |x|)^(n+1)) is below one rounding.
       EXPECT_GE(v, std::fabs(x) * (1 - 4e-16));
       if (std::fabs(x) >= n) {
-        EXPECT_EQ(v, std::fabs(x));                            // (1)
+        EXPECT_EQ(v, std::fabs(x));  // (1)
       }
-      EXPECT_NEAR(v, upperAbsolute(n, -x), 1e-13 * (1 + n));   // even
+      EXPECT_NEAR(v, upperAbsolute(n, -x), 1e-13 * (1 + n));  // even
     }
 }
 
@@ -97,7 +97,8 @@ TEST(LowerAbsolute, IsCnMinus1AtItsKnots) {
     for (int j = 0; j <= n; ++j) {
       double knot = -n + 2.0 * j;
       if (knot == 0.0) continue;
-      EXPECT_TRUE(testing::exactlyCkAt([n](double x) { return lowerAbsolute(n, x); }, knot, n - 1, 0.1))
+      EXPECT_TRUE(
+          testing::exactlyCkAt([n](double x) { return lowerAbsolute(n, x); }, knot, n - 1, 0.1))
           << "n=" << n << " knot " << knot;
     }
 }
@@ -200,7 +201,8 @@ template <class And>
 double maxDeviationFromMin(const And& op) {
   double worst = 0.0;
   for (double x : samples(0, 1, 100))
-    for (double y : samples(0, 1, 100)) worst = std::max(worst, std::fabs(op(x, y) - std::min(x, y)));
+    for (double y : samples(0, 1, 100))
+      worst = std::max(worst, std::fabs(op(x, y) - std::min(x, y)));
   return worst;
 }
 
@@ -274,7 +276,8 @@ TEST(SmoothAnd, PrintedAlphaBreaksIdentityAndTheCorrectedCornerTermMatchesHalfOf
           EXPECT_NEAR(printedAnd(n, delta, -abs0 / 2, x, y), op(x, y), 1e-15);
     }
   // For delta > 1 no single alpha works; the general corner term keeps the laws (tested above).
-  EXPECT_GT(std::fabs(printedAnd(2, 1.5, -upperAbsoluteSpan(2, 1.5, 0.0) / 2, 0.5, 1.0) - 0.5), 1e-3);
+  EXPECT_GT(std::fabs(printedAnd(2, 1.5, -upperAbsoluteSpan(2, 1.5, 0.0) / 2, 0.5, 1.0) - 0.5),
+            1e-3);
 }
 
 // Evaluates hatted AND_{n,delta} as printed after eq. 24 (no corner term).
@@ -290,7 +293,8 @@ TEST(SmoothAndHat, EqualsThePrintedFormulaForDeltaUpToOne) {
     for (double delta : {0.1, 0.5, 1.0}) {
       SmoothAndHat op(n, delta);
       for (double x : samples(0, 1, 20))
-        for (double y : samples(0, 1, 20)) EXPECT_NEAR(printedAndHat(n, delta, x, y), op(x, y), 1e-15);
+        for (double y : samples(0, 1, 20))
+          EXPECT_NEAR(printedAndHat(n, delta, x, y), op(x, y), 1e-15);
     }
   // Beyond delta = 1 the printed form loses Identity; the corner term restores it.
   EXPECT_GT(std::fabs(printedAndHat(3, 2.0, 0.5, 1.0) - 0.5), 1e-3);

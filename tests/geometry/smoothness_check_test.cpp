@@ -1,10 +1,10 @@
 // The finite-difference C^k checker of smoothness.h on functions of known smoothness, so that
 // the smoothness tests of the operators are known to be able to fail.
-#include "geometry/smoothness.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "geometry/smoothness.h"
 
 namespace fsdb::testing {
 namespace {
@@ -16,7 +16,7 @@ TEST(SmoothnessCheck, FindsTheExactOrderOfTruncatedPowers) {
   for (int p = 1; p <= 6; ++p) {
     auto f = [p](double x) { return 1.0 + 0.3 * x + truncatedPower(x, p); };
     EXPECT_TRUE(exactlyCkAt(f, 0.0, p - 1, 0.05)) << p;
-    EXPECT_FALSE(exactlyCkAt(f, 0.0, p, 0.05)) << p;      // claims one order too many
+    EXPECT_FALSE(exactlyCkAt(f, 0.0, p, 0.05)) << p;  // claims one order too many
     if (p >= 2) {
       EXPECT_FALSE(exactlyCkAt(f, 0.0, p - 2, 0.05)) << p;  // and one too few
     }

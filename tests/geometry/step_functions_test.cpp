@@ -41,7 +41,8 @@ TEST(LiTianStep, ClosedFormsForLowDegrees) {
     double h1 = x <= -1 ? 0 : (x >= 1 ? 1 : (1 + x) / 2);
     EXPECT_NEAR(liTianStep(1, x), h1, 1e-15);
     // H_2 = (x+2)^2/8 on [-2, 0], 1 - (2-x)^2/8 on [0, 2]
-    double h2 = x <= -2 ? 0 : (x <= 0 ? (x + 2) * (x + 2) / 8 : (x < 2 ? 1 - (2 - x) * (2 - x) / 8 : 1));
+    double h2 =
+        x <= -2 ? 0 : (x <= 0 ? (x + 2) * (x + 2) / 8 : (x < 2 ? 1 - (2 - x) * (2 - x) / 8 : 1));
     EXPECT_NEAR(liTianStep(2, x), h2, 1e-15);
   }
 }
@@ -53,8 +54,8 @@ TEST(LiTianStep, PropertiesAfterEq2) {
     for (double x : samples(-n - 1.0, n + 1.0, 200)) {
       double v = liTianStep(n, x);
       EXPECT_NEAR(v + liTianStep(n, -x), 1.0, 1e-14);  // property (4)
-      EXPECT_GE(v, previous - 1e-15);                   // property (3): nondecreasing
-      if (x <= -n) {                   // property (3): support [-n, n]
+      EXPECT_GE(v, previous - 1e-15);                  // property (3): nondecreasing
+      if (x <= -n) {                                   // property (3): support [-n, n]
         EXPECT_EQ(v, 0.0);
       }
       if (x >= n) {
@@ -71,7 +72,8 @@ TEST(LiTianStep, IsCnMinus1AtItsKnots) {
   for (int n = 2; n <= 6; ++n)
     for (int j = 0; j <= n; ++j) {
       double knot = -n + 2.0 * j;
-      EXPECT_TRUE(testing::exactlyCkAt([n](double x) { return liTianStep(n, x); }, knot, n - 1, 0.1))
+      EXPECT_TRUE(
+          testing::exactlyCkAt([n](double x) { return liTianStep(n, x); }, knot, n - 1, 0.1))
           << "n=" << n << " knot " << knot;
     }
 }
@@ -101,7 +103,7 @@ TEST(PolynomialStep, Eq6EqualsLiteralAndDefinition2) {
       if (t < -1) {  // Def. 2 (1)
         EXPECT_EQ(v, 0.0);
       }
-      if (t > 1) {   // Def. 2 (2)
+      if (t > 1) {  // Def. 2 (2)
         EXPECT_EQ(v, 1.0);
       }
       EXPECT_GE(v, 0.0);
@@ -129,8 +131,8 @@ TEST(PolynomialStep, IsCnMinus1AtItsKnots) {
   for (int n = 2; n <= 6; ++n)
     for (int j = 0; j <= n; ++j) {
       double knot = -1.0 + 2.0 * j / n;
-      EXPECT_TRUE(testing::exactlyCkAt([n](double t) { return polynomialStep(n, t); }, knot,
-                                       n - 1, 0.1 / n))
+      EXPECT_TRUE(testing::exactlyCkAt([n](double t) { return polynomialStep(n, t); }, knot, n - 1,
+                                       0.1 / n))
           << "n=" << n << " knot " << knot;
     }
 }
@@ -149,7 +151,8 @@ TEST(BSplineStep, CubicIsEq8) {
     if (t <= 3) return 1 - (3 - t) * (3 - t) * (3 - t) / 6;
     return 1.0;
   };
-  for (double t : samples(-1.5, 1.5, 301)) EXPECT_NEAR(bsplineStep(3, t), f(3 * (t + 1) / 2), 1e-15);
+  for (double t : samples(-1.5, 1.5, 301))
+    EXPECT_NEAR(bsplineStep(3, t), f(3 * (t + 1) / 2), 1e-15);
 }
 
 TEST(BSplineStep, EqualsPolynomialStepAsTheRecursionImplies) {
@@ -173,7 +176,8 @@ TEST(RisingCutoff, Eq16EqualsThetaRecursionEq14) {
 }
 
 TEST(RisingCutoff, IsARisingCutoffAndAStep) {
-  for (double t : samples(-1, 1, 50)) EXPECT_NEAR(risingCutoff(1, t), std::sin(kPi / 4 * (1 + t)), 1e-15);
+  for (double t : samples(-1, 1, 50))
+    EXPECT_NEAR(risingCutoff(1, t), std::sin(kPi / 4 * (1 + t)), 1e-15);
   for (int n = 1; n <= kMaxRisingCutoffLevel; ++n) {
     EXPECT_NEAR(risingCutoff(n, 0.0), std::sqrt(0.5), 1e-15);
     double previous = 0.0;
@@ -181,7 +185,7 @@ TEST(RisingCutoff, IsARisingCutoffAndAStep) {
       double r = risingCutoff(n, t), rm = risingCutoff(n, -t);
       EXPECT_NEAR(r * r + rm * rm, 1.0, 1e-14);  // eq. 9
       EXPECT_GE(r, previous);                    // nondecreasing
-      if (t <= -1) {            // eq. 10
+      if (t <= -1) {                             // eq. 10
         EXPECT_EQ(r, 0.0);
       }
       if (t >= 1) {

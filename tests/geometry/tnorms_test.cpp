@@ -127,7 +127,7 @@ TEST(TNorms, UnionComplementDifferenceByDuality) {
       }
     }
   }
-  EXPECT_DOUBLE_EQ(dualTConorm(zadehTNorm, 0.2, 0.7), 0.7);                  // max
+  EXPECT_DOUBLE_EQ(dualTConorm(zadehTNorm, 0.2, 0.7), 0.7);                     // max
   EXPECT_NEAR(dualTConorm(algebraicTNorm, 0.2, 0.7), 0.2 + 0.7 - 0.14, 1e-15);  // probabilistic sum
 }
 
