@@ -178,20 +178,31 @@ void expectFuzzyIntersectionLaws(const And& op, const char* name, int n, double 
   EXPECT_NEAR(op(1.0, 1.0), 1.0, 1e-15);
 }
 
-TEST(SmoothAnd, BooleanIdentityDominanceCommutativityRange) {
+TEST(SmoothOperators, BooleanIdentityDominanceCommutativityRange) {
   for (int n : kDegrees)
     for (double delta : kDeltas) expectFuzzyIntersectionLaws(SmoothAnd(n, delta), "AND", n, delta);
-  for (double delta : {10.0, 100.0}) {
-    SmoothAnd op(2, delta);
-    for (double x : samples(0, 1, 20))
-      for (double y : samples(0, 1, 20)) {
-        EXPECT_GE(op(x, y), -5e-15);
-        EXPECT_LE(op(x, y), 1 + 5e-15);
+  // The catalogue promises [0, 1] for delta from 0.01 to 100 (rounding grows with delta).
+  for (int n : {1, 2, 3, 8, 32})
+    for (double delta : {0.01, 10.0, 100.0}) {
+      SmoothAnd op(n, delta);
+      SmoothAndHat hat(n, delta);
+      for (double x : samples(0, 1, 40))
+        for (double y : samples(0, 1, 40)) {
+          EXPECT_GE(op(x, y), -5e-15) << n << " " << delta;
+          EXPECT_LE(op(x, y), 1 + 5e-15) << n << " " << delta;
+          EXPECT_GE(hat(x, y), -5e-15) << n << " " << delta;
+          EXPECT_LE(hat(x, y), 1 + 5e-15) << n << " " << delta;
+        }
+      for (double x : samples(0, 1, 40)) {  // Identity and Dominance hold there too
+        EXPECT_NEAR(op(x, 1.0), x, 5e-15);
+        EXPECT_NEAR(op(0.0, x), 0.0, 5e-15);
+        EXPECT_NEAR(hat(1.0, x), x, 5e-15);
+        EXPECT_NEAR(hat(x, 0.0), 0.0, 5e-15);
       }
-  }
+    }
 }
 
-TEST(SmoothAndHat, BooleanIdentityDominanceCommutativityRange) {
+TEST(SmoothAndHat, BooleanIdentityDominanceCommutativityRangeAtTestDeltas) {
   for (int n : kDegrees)
     for (double delta : kDeltas)
       expectFuzzyIntersectionLaws(SmoothAndHat(n, delta), "AND^", n, delta);
