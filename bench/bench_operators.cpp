@@ -58,6 +58,7 @@ void benchUnary(benchmark::State& state, const F& f) {
 std::string label(const OperatorConfig& c) {
   std::string s = c.name;
   for (const auto& [k, v] : c.params) s += "/" + k + "=" + std::to_string(v).substr(0, 4);
+  for (const OperatorConfig& step : c.step) s += "/step=" + step.name;
   return s;
 }
 
