@@ -1,0 +1,48 @@
+#include "geometry/parameter_check.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "geometry/error.h"
+
+namespace fsdb {
+
+std::string formatNumber(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buf[32];
+  // 15 significant digits: enough to tell values apart in a message, without 0.1 reading
+  // back as 0.10000000000000001.
+  std::snprintf(buf, sizeof buf, "%.15g", v);
+  return buf;
+}
+
+std::string formatRange(double min, bool minInclusive, double max, bool maxInclusive) {
+  return std::string(minInclusive ? "[" : "(") + formatNumber(min) + ", " + formatNumber(max) +
+         (maxInclusive ? "]" : ")");
+}
+
+bool inRange(double v, double min, bool minInclusive, double max, bool maxInclusive) {
+  bool lowOk = minInclusive ? v >= min : v > min;
+  bool highOk = maxInclusive ? v <= max : v < max;
+  return lowOk && highOk;  // both false for NaN
+}
+
+void requireInRange(const std::string& name, double v, double min, bool minInclusive, double max,
+                    bool maxInclusive) {
+  if (inRange(v, min, minInclusive, max, maxInclusive)) return;
+  throw Error(errc::kInvalidParameter,
+              name + " must be in " + formatRange(min, minInclusive, max, maxInclusive) + "; got " +
+                  formatNumber(v),
+              name);
+}
+
+void requireDegree(const std::string& name, int n, int min, int max) {
+  if (n >= min && n <= max) return;
+  throw Error(errc::kInvalidParameter,
+              name + " must be an integer in " + formatRange(min, true, max, true) + "; got " +
+                  std::to_string(n),
+              name);
+}
+
+}  // namespace fsdb

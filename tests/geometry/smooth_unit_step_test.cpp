@@ -1,0 +1,61 @@
+// SmoothUnitStep: each family evaluates its step function with the rising range of seed 001
+// Def. 3 (seed 000 eq. 3 for polynomialRange), and the factories validate.
+#include "geometry/smooth_unit_step.h"
+
+#include <gtest/gtest.h>
+
+#include "geometry/error.h"
+#include "geometry/step_functions.h"
+
+namespace fsdb {
+namespace {
+
+TEST(SmoothUnitStep, EachFamilyIsItsFunctionWithRisingRange) {
+  for (double t = -3.0; t <= 3.0; t += 0.0625) {
+    EXPECT_EQ(SmoothUnitStep::polynomial(4, 2.0)(t), polynomialStep(4, t / 2.0));
+    EXPECT_EQ(SmoothUnitStep::polynomialRange(4, 2.0)(t), liTianStepRange(4, 2.0, t));
+    EXPECT_EQ(SmoothUnitStep::bspline(5, 0.5)(t), bsplineStep(5, t / 0.5));
+    EXPECT_EQ(SmoothUnitStep::risingCutoff(2, 0.5)(t), risingCutoff(2, t / 0.5));
+    EXPECT_EQ(SmoothUnitStep::risingCutoffSquared(2, 0.5)(t), risingCutoffSquared(2, t / 0.5));
+    EXPECT_EQ(SmoothUnitStep::sigmoid(6.0, 0.25)(t), sigmoidStep(6.0, t / 0.25));
+    // seed 000 H_{n,R} and seed 001 H_n with epsilon = R are one function
+    EXPECT_NEAR(SmoothUnitStep::polynomialRange(3, 0.7)(t), SmoothUnitStep::polynomial(3, 0.7)(t),
+                1e-15);
+  }
+}
+
+TEST(SmoothUnitStep, DefaultRangeIsOneAndAccessorsReport) {
+  SmoothUnitStep s = SmoothUnitStep::bspline(3);
+  EXPECT_EQ(s.family(), StepFamily::kBSpline);
+  EXPECT_EQ(s.degree(), 3);
+  EXPECT_EQ(s.risingRange(), 1.0);
+  SmoothUnitStep g = SmoothUnitStep::sigmoid(7.0, 0.5);
+  EXPECT_EQ(g.family(), StepFamily::kSigmoid);
+  EXPECT_EQ(g.alpha(), 7.0);
+  EXPECT_EQ(g.risingRange(), 0.5);
+  EXPECT_EQ(SmoothUnitStep::polynomial(3)(1.0), 1.0);
+  EXPECT_EQ(SmoothUnitStep::polynomial(3)(-1.0), 0.0);
+}
+
+TEST(SmoothUnitStep, FactoriesRejectBadParameters) {
+  auto expectPath = [](auto f, const char* path) {
+    try {
+      f();
+      ADD_FAILURE() << path;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), errc::kInvalidParameter);
+      EXPECT_EQ(e.path(), path);
+    }
+  };
+  expectPath([] { SmoothUnitStep::polynomial(0); }, "n");
+  expectPath([] { SmoothUnitStep::polynomial(3, 0.0); }, "epsilon");
+  expectPath([] { SmoothUnitStep::polynomialRange(3, -1.0); }, "R");
+  expectPath([] { SmoothUnitStep::bspline(kMaxBSplineOrder + 1); }, "m");
+  expectPath([] { SmoothUnitStep::risingCutoff(0); }, "n");
+  expectPath([] { SmoothUnitStep::risingCutoffSquared(3, -2.0); }, "epsilon");
+  expectPath([] { SmoothUnitStep::sigmoid(0.0); }, "alpha");
+  expectPath([] { SmoothUnitStep::sigmoid(1.0, 0.0); }, "epsilon");
+}
+
+}  // namespace
+}  // namespace fsdb
