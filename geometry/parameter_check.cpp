@@ -7,16 +7,6 @@
 
 namespace fsdb {
 
-std::string formatNumber(double v) {
-  if (std::isnan(v)) return "nan";
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  char buf[32];
-  // 15 significant digits: enough to tell values apart in a message, without 0.1 reading
-  // back as 0.10000000000000001.
-  std::snprintf(buf, sizeof buf, "%.15g", v);
-  return buf;
-}
-
 std::string formatRange(double min, bool minInclusive, double max, bool maxInclusive) {
   return std::string(minInclusive ? "[" : "(") + formatNumber(min) + ", " + formatNumber(max) +
          (maxInclusive ? "]" : ")");

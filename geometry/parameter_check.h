@@ -4,10 +4,9 @@
 // message = allowed range and the value given) whichever door it came through.
 #include <string>
 
-namespace fsdb {
+#include "geometry/number_format.h"  // formatNumber, for the messages of every check
 
-// Formats a number for messages: shortest form that reads back ("0.1", "inf", "-1").
-std::string formatNumber(double v);
+namespace fsdb {
 
 // "(0, 1]", "[1, 64]", "(-1, inf)".
 std::string formatRange(double min, bool minInclusive, double max, bool maxInclusive);
