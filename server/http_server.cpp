@@ -82,6 +82,13 @@ void HttpServer::addRoute(const std::string& method, const std::string& openapiP
 void HttpServer::installHandlers() {
   auto& s = *server_;
   s.set_payload_max_length(options_.limits.maxBodyBytes);
+  // httplib's default sets SO_REUSEPORT, which lets a second fsdb bind the same port and
+  // silently share its traffic. SO_REUSEADDR alone allows a quick restart after a stop but
+  // makes a port in use an error (tests/server/service_test: RefusesAPortInUse).
+  s.set_socket_options([](socket_t sock) {
+    int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, reinterpret_cast<const void*>(&yes), sizeof(yes));
+  });
   const int threads = options_.threads > 0 ? options_.threads
                                            : std::max(2u, std::thread::hardware_concurrency());
   s.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<size_t>(threads)); };
