@@ -44,9 +44,11 @@ Interval atancRange(const Interval& w) {
 }
 
 // World -> local: Rᵀ·(w − translate)/scale (transform.h), over the placement box. All
-// rotations share the axis, so R(θ) = R(θm)·R(θ − θm) for the mid angle θm, and
-// |R(φ)ᵀv − v| = 2|sin(φ/2)|·|v⊥| <= 2 sin(δ/2)·|v| for |φ| <= δ <= π (chord of the arc):
-// rotate the box by the crisp mid angle and widen every coordinate by that chord.
+// rotations share the unit axis k, so R(θ)ᵀ = R(α)·R(θm)ᵀ with α = θm − θ for the mid angle
+// θm: rotate the box by the crisp R(θm)ᵀ to w', then bound the turn by α, |α| <= δ (the half
+// width), with Rodrigues' formula R(α)w' − w' = (cos α − 1)·w'⊥ + sin α·(k × w'):
+//   |coordinate i of the change| <= (1 − cos δ)·|w'| + sin δ·|(k × w')_i|   (sin δ -> 1 past π/2).
+// First order in δ, and scaled by the distance from the axis rather than by |w'|.
 IntervalVec3 unplace(const PlacementBox& pl, const IntervalVec3& w) {
   const IntervalVec3 v{sub(w.x, pl.tx), sub(w.y, pl.ty), sub(w.z, pl.tz)};
   const Rotation r = Rotation::fromAxisAngle(pl.axis, mid(pl.deg));
@@ -58,10 +60,19 @@ IntervalVec3 unplace(const PlacementBox& pl, const IntervalVec3& w) {
                  add(add(mul(cx.z, v.x), mul(cy.z, v.y)), mul(cz.z, v.z))};
   const double delta = std::min(0.5 * (pl.deg.hi - pl.deg.lo) * kDegToRad, kPi);
   if (delta > 0.0) {
-    const double chord = 2.0 * std::sin(0.5 * delta) *
-                         std::hypot(magnitude(v.x), magnitude(v.y), magnitude(v.z));
-    const Interval pad{-chord, chord};
-    u = {add(u.x, pad), add(u.y, pad), add(u.z, pad)};
+    const Vec3 k = pl.axis / norm(pl.axis);
+    const double radial = (1.0 - std::cos(delta)) *
+                          std::hypot(magnitude(u.x), magnitude(u.y), magnitude(u.z));
+    const double sinBound = delta >= 0.5 * kPi ? 1.0 : std::sin(delta);
+    // k × w' over the box, coordinate by coordinate.
+    const double kw[3] = {magnitude(sub(mul(k.y, u.z), mul(k.z, u.y))),
+                          magnitude(sub(mul(k.z, u.x), mul(k.x, u.z))),
+                          magnitude(sub(mul(k.x, u.y), mul(k.y, u.x)))};
+    const auto widen = [&](const Interval& a, double kwi) {
+      const double pad = radial + sinBound * kwi;
+      return Interval{a.lo - pad, a.hi + pad};
+    };
+    u = {widen(u.x, kw[0]), widen(u.y, kw[1]), widen(u.z, kw[2])};
   }
   const Interval inverseScale{1.0 / pl.scale.hi, 1.0 / pl.scale.lo};
   return {mul(u.x, inverseScale), mul(u.y, inverseScale), mul(u.z, inverseScale)};

@@ -135,7 +135,9 @@ TEST(IntervalFunctions, RandomInclusionAndTightnessOfTwoArgumentFunctions) {
   std::mt19937_64 rng(11);
   const int n = 30;
   // The i-th of n + 1 grid points of a, the last one exactly a.hi.
-  const auto at = [n](const Interval& a, int i) { return i == n ? a.hi : a.lo + (a.hi - a.lo) * i / n; };
+  const auto at = [n](const Interval& a, int i) {
+    return i == n ? a.hi : a.lo + (a.hi - a.lo) * i / n;
+  };
   for (int trial = 0; trial < 300; ++trial) {
     const Interval b = randomInterval(rng, 0, 3), e = randomInterval(rng, 0.05, 20);
     const Interval x = randomInterval(rng, -4, 4), y = randomInterval(rng, -4, 4);
