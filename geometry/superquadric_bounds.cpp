@@ -101,19 +101,34 @@ IntervalVec3 unbend(const Interval& k, const IntervalVec3& p) {
   return {x, p.y, z};
 }
 
-// Inverse twist (deformation.cpp, untwist): rotate (X, Y) back by θ = t·Z/C. A rotation keeps
-// |(x, y)|, which bounds each coordinate when θ spans much of a turn.
+// Inverse twist (deformation.cpp, untwist): rotate (X, Y) back by θ = t·Z/C. Two sound
+// enclosures, intersected:
+//  * interval cos θ and sin θ in x = cX + sY, y = cY − sX;
+//  * the crisp turn by the mid angle θm, then the change of a turn by α, |α| <= δ, in the
+//    plane: |Δx| <= (1 − cos δ)·r + sin δ·|y'|, |Δy| <= (1 − cos δ)·r + sin δ·|x'| (as in
+//    unplace), tighter where the products of the first form do not cancel.
+// A turn keeps r = |(x, y)|, which bounds each coordinate when θ spans much of a turn.
 IntervalVec3 untwist(const Interval& t, const Interval& c, const IntervalVec3& p) {
   if (isPoint(t, 0.0)) return p;
   const Interval zc = div(p.z, c);
   // An infinite z/C (a tiny C) leaves θ unknown: the full turn.
   const Interval theta =
       std::isfinite(zc.lo) && std::isfinite(zc.hi) ? mul(t, zc) : Interval{-kInf, kInf};
-  const Interval cs = cos(theta), sn = sin(theta);
   const double r = std::hypot(magnitude(p.x), magnitude(p.y));
   const Interval disc{-r, r};
-  return {intersect(add(mul(cs, p.x), mul(sn, p.y)), disc),
-          intersect(sub(mul(cs, p.y), mul(sn, p.x)), disc), p.z};
+  const Interval cs = cos(theta), sn = sin(theta);
+  Interval x = intersect(add(mul(cs, p.x), mul(sn, p.y)), disc);
+  Interval y = intersect(sub(mul(cs, p.y), mul(sn, p.x)), disc);
+  const double delta = 0.5 * (theta.hi - theta.lo);
+  if (delta < 0.5 * kPi) {  // also false for infinite or NaN ends
+    const double m = mid(theta), cm = std::cos(m), sm = std::sin(m);
+    const Interval xm = add(mul(cm, p.x), mul(sm, p.y)), ym = sub(mul(cm, p.y), mul(sm, p.x));
+    const double radial = (1.0 - std::cos(delta)) * r, sd = std::sin(delta);
+    const double px = radial + sd * magnitude(ym), py = radial + sd * magnitude(xm);
+    x = intersect(x, {xm.lo - px, xm.hi + px});
+    y = intersect(y, {ym.lo - py, ym.hi + py});
+  }
+  return {x, y, p.z};
 }
 
 // |x / f| for the taper factor f = k·z/C + 1 (deformation.cpp, untaper). Only |x| matters to
