@@ -32,7 +32,11 @@ Interval periodicRange(const Interval& a, F f, double maxPhase, double minPhase)
   return r;
 }
 
-double saturatedPow(double x, double e) { return std::min(std::pow(x, e), kMaxFinite); }
+// The square, F's exponent for the common eps1 = 1, skips the general pow (as superquadric.cpp
+// does); both round the same exact x² once.
+double saturatedPow(double x, double e) {
+  return std::min(e == 2.0 ? x * x : std::pow(x, e), kMaxFinite);
+}
 
 }  // namespace
 

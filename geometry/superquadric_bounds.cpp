@@ -51,6 +51,9 @@ Interval atancRange(const Interval& w) {
 // First order in δ, and scaled by the distance from the axis rather than by |w'|.
 IntervalVec3 unplace(const PlacementBox& pl, const IntervalVec3& w) {
   const IntervalVec3 v{sub(w.x, pl.tx), sub(w.y, pl.ty), sub(w.z, pl.tz)};
+  const Interval inverseScale{1.0 / pl.scale.hi, 1.0 / pl.scale.lo};
+  if (isPoint(pl.deg, 0.0))  // unrotated parts are common: skip the matrix
+    return {mul(v.x, inverseScale), mul(v.y, inverseScale), mul(v.z, inverseScale)};
   const Rotation r = Rotation::fromAxisAngle(pl.axis, mid(pl.deg));
   // Rᵀv = v.x·Rᵀe_x + v.y·Rᵀe_y + v.z·Rᵀe_z.
   const Vec3 cx = r.applyInverse({1, 0, 0}), cy = r.applyInverse({0, 1, 0}),
@@ -74,7 +77,6 @@ IntervalVec3 unplace(const PlacementBox& pl, const IntervalVec3& w) {
     };
     u = {widen(u.x, kw[0]), widen(u.y, kw[1]), widen(u.z, kw[2])};
   }
-  const Interval inverseScale{1.0 / pl.scale.hi, 1.0 / pl.scale.lo};
   return {mul(u.x, inverseScale), mul(u.y, inverseScale), mul(u.z, inverseScale)};
 }
 
@@ -231,6 +233,7 @@ Interval insideOutsideBounds(const PartBox& part, const Interval& x, const Inter
   //   F = R^(2/eps1) + Z^(2/eps1),  R = ||(X, Y)||_(2/eps2)   (seed 004 eq. 1)
   // R increases in X, Y and eps2, like G (gRange), so its range is two corner values.
   const Interval viaG = pow(gRange(q, r), exponent);
+  if (q.eps1.lo == q.eps1.hi) return viaG;  // one exponent: viaG is already the exact range
   const Interval R{unitG(q.eps1.lo, q.eps2.lo, r.x.lo, r.y.lo, 0.0),
                    unitG(q.eps1.hi, q.eps2.hi, r.x.hi, r.y.hi, 0.0)};
   const Interval viaSum = saturate(add(pow(R, exponent), pow(r.z, exponent)));
