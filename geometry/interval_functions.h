@@ -1,0 +1,50 @@
+#pragma once
+// Elementary functions of intervals: the enclosures the voxel evaluator needs to bound a
+// superquadric's inside-outside function over a box of points and parameters
+// (superquadric_bounds.h). Each returns the range {f(x) : x in a} (or of f(x, y)), computed
+// from monotone pieces and the known extrema of the function, so it is tight up to rounding.
+//
+// Contract:
+//  * Inputs are well-formed (lo <= hi, no NaN). Unless stated, ends may be infinite only where
+//    the function's one-argument double version accepts them.
+//  * No outward rounding: the ends are the double results of the end-point evaluations, so a
+//    true value may lie a few ulps outside. Callers compare with a tolerance (the classifier
+//    decides "inside" against F <= 1 with margins far above an ulp), which is why this is
+//    enough and costs nothing.
+//  * Results that would overflow saturate at the largest finite double where stated, as the
+//    crisp inside-outside function does (superquadric.h).
+#include "geometry/interval.h"
+
+namespace fsdb {
+
+Interval mul(double c, const Interval& a);  // {c·x}
+Interval neg(const Interval& a);            // {−x}
+double mid(const Interval& a);              // (lo + hi)/2
+double magnitude(const Interval& a);        // max |x| over a
+
+// The intersection of two enclosures of the same quantity. Both are sound, so the true value
+// lies in both; if rounding makes them miss each other by an ulp, the gap between them is
+// returned instead of an empty interval.
+Interval intersect(const Interval& a, const Interval& b);
+
+Interval abs(const Interval& a);   // {|x|}: [0, max] when a holds 0
+Interval sqr(const Interval& a);   // {x²}, tight (not a·a, which gives [−1, 1]² = [−1, 1])
+Interval sqrt(const Interval& a);  // precondition a.lo >= 0
+
+// {x^e : x in base, e in exponent} for base.lo >= 0 and exponent.lo > 0. x^e increases in x;
+// in e it increases where x >= 1 and decreases where x <= 1, so each end is one corner.
+// Saturates at the largest finite double; 0^e = 0.
+Interval pow(const Interval& base, const Interval& exponent);
+
+Interval sin(const Interval& a);  // radians; [−1, 1] for width >= 2π or non-finite ends
+Interval cos(const Interval& a);
+
+// {hypot(x, y)}: increasing in |x| and |y|, so the ends are hypot of the |.| ends.
+Interval hypot(const Interval& x, const Interval& y);
+
+// {atan2(y, x)} in [−π, π]. Over a box that holds the origin or meets the branch cut (the
+// half-line x < 0, y = 0, where atan2 jumps from π to −π) the answer is all of [−π, π];
+// otherwise the angles of a box are an interval reached at its corners.
+Interval atan2(const Interval& y, const Interval& x);
+
+}  // namespace fsdb

@@ -1,0 +1,250 @@
+#include "geometry/superquadric_bounds.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "geometry/interval_functions.h"
+#include "geometry/superquadric.h"
+#include "geometry/transform.h"
+
+namespace fsdb {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDegToRad = kPi / 180.0;
+constexpr double kMaxFinite = std::numeric_limits<double>::max();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Magnitude limit for intermediate values: products of two values below it stay finite, so
+// no ∞·0 = NaN can arise inside the interval products (whose min/max would hide it).
+constexpr double kTame = 1e150;
+const Interval kOne{1.0, 1.0};
+
+struct IntervalVec3 {
+  Interval x, y, z;
+};
+
+Interval point(double v) { return {v, v}; }
+
+bool isPoint(const Interval& a, double v) { return a.lo == v && a.hi == v; }
+
+bool isTame(const Interval& a) { return a.lo >= -kTame && a.hi <= kTame; }  // false for NaN
+
+// atan(w)/w, = 1 at w = 0: the same two-branch evaluation as deformation.cpp's atanc.
+double atanc(double w) {
+  if (std::fabs(w) < 1e-4) return 1.0 - w * w / 3.0;
+  return std::atan(w) / w;
+}
+
+// {atan(w)/w}: even and decreasing in |w|.
+Interval atancRange(const Interval& w) {
+  const Interval a = abs(w);
+  return {atanc(a.hi), atanc(a.lo)};
+}
+
+// World -> local: Rᵀ·(w − translate)/scale (transform.h), over the placement box. All
+// rotations share the unit axis k, so R(θ)ᵀ = R(α)·R(θm)ᵀ with α = θm − θ for the mid angle
+// θm: rotate the box by the crisp R(θm)ᵀ to w', then bound the turn by α, |α| <= δ (the half
+// width), with Rodrigues' formula R(α)w' − w' = (cos α − 1)·w'⊥ + sin α·(k × w'):
+//   |coordinate i of the change| <= (1 − cos δ)·|w'| + sin δ·|(k × w')_i|   (sin δ -> 1 past π/2).
+// First order in δ, and scaled by the distance from the axis rather than by |w'|.
+IntervalVec3 unplace(const PlacementBox& pl, const IntervalVec3& w) {
+  const IntervalVec3 v{sub(w.x, pl.tx), sub(w.y, pl.ty), sub(w.z, pl.tz)};
+  const Interval inverseScale{1.0 / pl.scale.hi, 1.0 / pl.scale.lo};
+  if (isPoint(pl.deg, 0.0))  // unrotated parts are common: skip the matrix
+    return {mul(v.x, inverseScale), mul(v.y, inverseScale), mul(v.z, inverseScale)};
+  const Rotation r = Rotation::fromAxisAngle(pl.axis, mid(pl.deg));
+  // Rᵀv = v.x·Rᵀe_x + v.y·Rᵀe_y + v.z·Rᵀe_z.
+  const Vec3 cx = r.applyInverse({1, 0, 0}), cy = r.applyInverse({0, 1, 0}),
+             cz = r.applyInverse({0, 0, 1});
+  IntervalVec3 u{add(add(mul(cx.x, v.x), mul(cy.x, v.y)), mul(cz.x, v.z)),
+                 add(add(mul(cx.y, v.x), mul(cy.y, v.y)), mul(cz.y, v.z)),
+                 add(add(mul(cx.z, v.x), mul(cy.z, v.y)), mul(cz.z, v.z))};
+  const double delta = std::min(0.5 * (pl.deg.hi - pl.deg.lo) * kDegToRad, kPi);
+  if (delta > 0.0) {
+    const Vec3 k = pl.axis / norm(pl.axis);
+    const double radial = (1.0 - std::cos(delta)) *
+                          std::hypot(magnitude(u.x), magnitude(u.y), magnitude(u.z));
+    const double sinBound = delta >= 0.5 * kPi ? 1.0 : std::sin(delta);
+    // k × w' over the box, coordinate by coordinate.
+    const double kw[3] = {magnitude(sub(mul(k.y, u.z), mul(k.z, u.y))),
+                          magnitude(sub(mul(k.z, u.x), mul(k.x, u.z))),
+                          magnitude(sub(mul(k.x, u.y), mul(k.y, u.x)))};
+    const auto widen = [&](const Interval& a, double kwi) {
+      const double pad = radial + sinBound * kwi;
+      return Interval{a.lo - pad, a.hi + pad};
+    };
+    u = {widen(u.x, kw[0]), widen(u.y, kw[1]), widen(u.z, kw[2])};
+  }
+  return {mul(u.x, inverseScale), mul(u.y, inverseScale), mul(u.z, inverseScale)};
+}
+
+// Inverse bend (deformation.cpp, unbend) over intervals. With u = 1 − kX, v = kZ, s = |(u, v)|:
+//   x = (X(1 + u) − vZ)/(1 + s)   (the cancellation-free form of (1 − s)/k, valid for all k),
+//   z = (Z/u)·atanc(v/u) for u > 0,  z = atan2(v, u)/k otherwise.
+// Neither divides by an interval k that may hold 0. Every point also obeys
+//   |z| <= max(π|X|, 2|Z|):
+// for u <= 0, |γ| <= π and |kX| >= 1; for 0 < u <= 1/2, |γ| < π/2 and |kX| >= 1/2; for
+// u > 1/2, |z| = |atan(v/u)/k| <= |Z|/u < 2|Z|. That bound holds even where the box
+// straddles the bending axis (u and v both hold 0), where the formulas above give nothing.
+IntervalVec3 unbend(const Interval& k, const IntervalVec3& p) {
+  if (isPoint(k, 0.0)) return p;
+  const Interval u = sub(kOne, mul(k, p.x));
+  const Interval v = mul(k, p.z);
+  const Interval s = hypot(u, v);
+  const Interval x = div(sub(mul(p.x, add(kOne, u)), mul(v, p.z)), add(kOne, s));
+  const double m = std::max(kPi * magnitude(p.x), 2.0 * magnitude(p.z));
+  Interval z{-m, m};
+  // Reciprocals of values above 1/kTame stay tame, so the products below stay finite.
+  if (u.lo >= 1.0 / kTame) z = intersect(z, mul(div(p.z, u), atancRange(div(v, u))));
+  const Interval ak = abs(k);
+  if (u.lo < 1.0 / kTame && ak.lo >= 1.0 / kTame) z = intersect(z, div(atan2(v, u), k));
+  return {x, p.y, z};
+}
+
+// Inverse twist (deformation.cpp, untwist): rotate (X, Y) back by θ = t·Z/C. Two sound
+// enclosures, intersected:
+//  * interval cos θ and sin θ in x = cX + sY, y = cY − sX;
+//  * the crisp turn by the mid angle θm, then the change of a turn by α, |α| <= δ, in the
+//    plane: |Δx| <= (1 − cos δ)·r + sin δ·|y'|, |Δy| <= (1 − cos δ)·r + sin δ·|x'| (as in
+//    unplace), tighter where the products of the first form do not cancel.
+// A turn keeps r = |(x, y)|, which bounds each coordinate when θ spans much of a turn.
+IntervalVec3 untwist(const Interval& t, const Interval& c, const IntervalVec3& p) {
+  if (isPoint(t, 0.0)) return p;
+  const Interval zc = div(p.z, c);
+  // An infinite z/C (a tiny C) leaves θ unknown: the full turn.
+  const Interval theta =
+      std::isfinite(zc.lo) && std::isfinite(zc.hi) ? mul(t, zc) : Interval{-kInf, kInf};
+  const double r = std::hypot(magnitude(p.x), magnitude(p.y));
+  const Interval disc{-r, r};
+  const Interval cs = cos(theta), sn = sin(theta);
+  Interval x = intersect(add(mul(cs, p.x), mul(sn, p.y)), disc);
+  Interval y = intersect(sub(mul(cs, p.y), mul(sn, p.x)), disc);
+  const double delta = 0.5 * (theta.hi - theta.lo);
+  if (delta < 0.5 * kPi) {  // also false for infinite or NaN ends
+    const double m = mid(theta), cm = std::cos(m), sm = std::sin(m);
+    const Interval xm = add(mul(cm, p.x), mul(sm, p.y)), ym = sub(mul(cm, p.y), mul(sm, p.x));
+    const double radial = (1.0 - std::cos(delta)) * r, sd = std::sin(delta);
+    const double px = radial + sd * magnitude(ym), py = radial + sd * magnitude(xm);
+    x = intersect(x, {xm.lo - px, xm.hi + px});
+    y = intersect(y, {ym.lo - py, ym.hi + py});
+  }
+  return {x, y, p.z};
+}
+
+// |x / f| for the taper factor f = k·z/C + 1 (deformation.cpp, untaper). Only |x| matters to
+// F, so the sign of f (negative only outside the part, |z| > C) drops out. Where f may
+// vanish the crisp quotient is ±∞ (0 for x = 0): the upper end is then ∞.
+Interval absUntaper(const Interval& x, const Interval& k, const Interval& zc) {
+  const Interval ax = abs(x);
+  if (isPoint(k, 0.0)) return ax;
+  if (ax.hi == 0.0) return ax;
+  const Interval af = std::isfinite(zc.lo) && std::isfinite(zc.hi) ? abs(add(mul(k, zc), kOne))
+                                                                   : Interval{0.0, kInf};
+  const double lo = af.hi == 0.0 ? (ax.lo > 0.0 ? kInf : 0.0) : ax.lo / af.hi;
+  const double hi = af.lo == 0.0 ? kInf : ax.hi / af.lo;
+  return {lo, hi};
+}
+
+// The box of canonical |x|/A, |y|/B, |z|/C over the point and parameter boxes: the inputs of
+// the canonical F, which increases in each. Returns false when intermediate values leave
+// the tame range (absurd coordinates or sizes); the caller then answers the trivial bound.
+bool canonicalRatios(const PartBox& part, const IntervalVec3& world, IntervalVec3* ratios) {
+  const SuperquadricBox& q = part.params;
+  const PlacementBox& pl = part.placement;
+  // Half-lengths (superquadric.h): A = a1, B = a1·a2, C = a1·a3, all positive.
+  const Interval a = q.a1, b = mul(q.a1, q.a2), c = mul(q.a1, q.a3);
+  constexpr double kSmall = 1.0 / kTame;  // reciprocals of larger values stay tame
+  if (!(isTame(world.x) && isTame(world.y) && isTame(world.z) && isTame(pl.tx) &&
+        isTame(pl.ty) && isTame(pl.tz) && pl.scale.lo >= kSmall && a.lo >= kSmall &&
+        b.lo >= kSmall && c.lo >= kSmall))
+    return false;
+  const IntervalVec3 local = unplace(pl, world);
+  if (!isTame(local.x) || !isTame(local.y) || !isTame(local.z)) return false;
+  const double reach = std::max({magnitude(local.x), magnitude(local.y), magnitude(local.z)});
+  if (!(magnitude(q.kv) * reach <= kTame)) return false;
+  const IntervalVec3 p = untwist(q.t, c, unbend(q.kv, local));
+  const Interval zc = div(p.z, c);
+  *ratios = {div(absUntaper(p.x, q.kx, zc), a), div(absUntaper(p.y, q.ky, zc), b),
+             div(abs(p.z), c)};
+  return true;
+}
+
+// G at one corner of the ratio box with the given exponents: the crisp homogeneous
+// function with unit half-lengths (the ratios are already divided by them).
+double unitG(double eps1, double eps2, double x, double y, double z) {
+  SuperquadricParams unit;
+  unit.eps1 = eps1;
+  unit.eps2 = eps2;
+  return homogeneousInsideOutside(unit, {x, y, z});
+}
+
+// G = ||(R, Z)||_(2/eps1) with R = ||(X, Y)||_(2/eps2) (superquadric.cpp). A p-norm of
+// nonnegative values increases with them and decreases with p, so G increases in X, Y, Z,
+// eps1 and eps2: its range over the box is the value at the low corner with the low eps and
+// at the high corner with the high eps, exactly.
+Interval gRange(const SuperquadricBox& q, const IntervalVec3& r) {
+  return {unitG(q.eps1.lo, q.eps2.lo, r.x.lo, r.y.lo, r.z.lo),
+          unitG(q.eps1.hi, q.eps2.hi, r.x.hi, r.y.hi, r.z.hi)};
+}
+
+Interval saturate(const Interval& a) {
+  return {std::min(a.lo, kMaxFinite), std::min(a.hi, kMaxFinite)};
+}
+
+}  // namespace
+
+PartBox crispPartBox(const PlacedSuperquadric& part) {
+  const SuperquadricParams& p = part.params;
+  const Placement& pl = part.placement;
+  PartBox box;
+  box.params = {point(p.eps1), point(p.eps2), point(p.a1), point(p.a2), point(p.a3),
+                point(p.kx),   point(p.ky),   point(p.kv), point(p.t)};
+  box.placement = {point(pl.translate.x), point(pl.translate.y), point(pl.translate.z),
+                   pl.axis,               point(pl.deg),         point(pl.scale)};
+  return box;
+}
+
+bool contains(const PartBox& box, const PlacedSuperquadric& part) {
+  const SuperquadricBox& q = box.params;
+  const SuperquadricParams& p = part.params;
+  const PlacementBox& b = box.placement;
+  const Placement& pl = part.placement;
+  // Same axis direction: parallel (zero cross product) and pointing the same way.
+  const bool sameAxis = norm(cross(b.axis, pl.axis)) <= 1e-15 * norm(b.axis) * norm(pl.axis) &&
+                        dot(b.axis, pl.axis) > 0.0;
+  return contains(q.eps1, p.eps1) && contains(q.eps2, p.eps2) && contains(q.a1, p.a1) &&
+         contains(q.a2, p.a2) && contains(q.a3, p.a3) && contains(q.kx, p.kx) &&
+         contains(q.ky, p.ky) && contains(q.kv, p.kv) && contains(q.t, p.t) &&
+         contains(b.tx, pl.translate.x) && contains(b.ty, pl.translate.y) &&
+         contains(b.tz, pl.translate.z) && sameAxis && contains(b.deg, pl.deg) &&
+         contains(b.scale, pl.scale);
+}
+
+Interval insideOutsideBounds(const PartBox& part, const Interval& x, const Interval& y,
+                             const Interval& z) {
+  IntervalVec3 r;
+  if (!canonicalRatios(part, {x, y, z}, &r)) return {0.0, kMaxFinite};
+  const SuperquadricBox& q = part.params;
+  const Interval exponent{2.0 / q.eps1.hi, 2.0 / q.eps1.lo};  // 2/eps1
+  // Two sound forms of F; they differ only where eps1 is an interval (both use it twice).
+  //   F = G^(2/eps1)                                         (superquadric.cpp)
+  //   F = R^(2/eps1) + Z^(2/eps1),  R = ||(X, Y)||_(2/eps2)   (seed 004 eq. 1)
+  // R increases in X, Y and eps2, like G (gRange), so its range is two corner values.
+  const Interval viaG = pow(gRange(q, r), exponent);
+  if (q.eps1.lo == q.eps1.hi) return viaG;  // one exponent: viaG is already the exact range
+  const Interval R{unitG(q.eps1.lo, q.eps2.lo, r.x.lo, r.y.lo, 0.0),
+                   unitG(q.eps1.hi, q.eps2.hi, r.x.hi, r.y.hi, 0.0)};
+  const Interval viaSum = saturate(add(pow(R, exponent), pow(r.z, exponent)));
+  return intersect(viaG, viaSum);
+}
+
+Interval homogeneousInsideOutsideBounds(const PartBox& part, const Interval& x,
+                                        const Interval& y, const Interval& z) {
+  IntervalVec3 r;
+  if (!canonicalRatios(part, {x, y, z}, &r)) return {0.0, kInf};
+  return gRange(part.params, r);
+}
+
+}  // namespace fsdb
