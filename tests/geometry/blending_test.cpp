@@ -1,5 +1,6 @@
 // seed 001 eq. 18-27: S_abs, Ext_max and Int_max with their unions, intersections and
 // differences; the properties stated after eq. 19 and 23 and in §3.2, and smoothness.
+#include "tests/geometry/expect_error.h"
 #include "geometry/blending.h"
 
 #include <gtest/gtest.h>
@@ -198,21 +199,12 @@ TEST(Blending, OneShotFormsAndAccessors) {
 }
 
 TEST(Blending, ParametersOutsideRangeThrow) {
-  auto expectPath = [](auto f, const char* path) {
-    try {
-      f();
-      ADD_FAILURE() << path;
-    } catch (const Error& e) {
-      EXPECT_EQ(e.code(), errc::kInvalidParameter);
-      EXPECT_EQ(e.path(), path);
-    }
-  };
-  expectPath([] { ExteriorBlend(0.0, 0.1); }, "delta");
-  expectPath([] { ExteriorBlend(0.5, -0.1); }, "epsilon");
-  expectPath([] { InteriorBlend(0.0); }, "epsilon");
-  expectPath([] { sAbs(0.0, -1.0, 0.1); }, "delta");
-  expectPath([] { extMax(0.0, 0.0, 1.0, 0.0); }, "epsilon");
-  expectPath([] { intMax(0.0, 0.0, std::nan("")); }, "epsilon");
+  expectInvalidParameter([] { ExteriorBlend(0.0, 0.1); }, "delta");
+  expectInvalidParameter([] { ExteriorBlend(0.5, -0.1); }, "epsilon");
+  expectInvalidParameter([] { InteriorBlend(0.0); }, "epsilon");
+  expectInvalidParameter([] { sAbs(0.0, -1.0, 0.1); }, "delta");
+  expectInvalidParameter([] { extMax(0.0, 0.0, 1.0, 0.0); }, "epsilon");
+  expectInvalidParameter([] { intMax(0.0, 0.0, std::nan("")); }, "epsilon");
 }
 
 }  // namespace

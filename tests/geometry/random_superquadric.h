@@ -11,6 +11,17 @@ namespace testing {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// Undeformed parameters with the given shape exponents and sizes.
+inline SuperquadricParams makeParams(double e1, double e2, double a1, double a2, double a3) {
+  SuperquadricParams p;
+  p.eps1 = e1;
+  p.eps2 = e2;
+  p.a1 = a1;
+  p.a2 = a2;
+  p.a3 = a3;
+  return p;
+}
+
 // Valid parameters with every deformation active. When `injectiveBend` is set, kv is small
 // enough for bendIsInjectiveOnPart; otherwise it may reach 0.95·π/C, the edge of the SPEC range.
 inline SuperquadricParams randomParams(std::mt19937_64& rng, bool injectiveBend) {

@@ -2,6 +2,7 @@
 // hatted AND_{n,delta}: the fast forms against the literal recursion, Proposition 3.1, the
 // properties listed before Definition 1 (Boolean, Identity, Dominance, C^k, approximation),
 // the exact-min region of the hatted operator, and the corrected Coons corner term.
+#include "tests/geometry/expect_error.h"
 #include "geometry/smooth_absolute.h"
 
 #include <gtest/gtest.h>
@@ -351,29 +352,20 @@ TEST(SmoothOperators, OneShotFormsMatchTheObjects) {
 }
 
 TEST(SmoothAbsolute, ParametersOutsideRangeThrowWithTheirPath) {
-  auto expectPath = [](auto f, const char* path) {
-    try {
-      f();
-      ADD_FAILURE() << path;
-    } catch (const Error& e) {
-      EXPECT_EQ(e.code(), errc::kInvalidParameter);
-      EXPECT_EQ(e.path(), path);
-    }
-  };
-  expectPath([] { upperAbsolute(-1, 0.0); }, "n");
-  expectPath([] { upperAbsolute(kMaxSmoothAbsoluteDegree + 1, 0.0); }, "n");
-  expectPath([] { reference::upperAbsolute(-1, 0.0); }, "n");
-  expectPath([] { lowerAbsolute(-1, 0.0); }, "n");
-  expectPath([] { upperAbsoluteSpan(0, 1.0, 0.0); }, "n");
-  expectPath([] { upperAbsoluteSpan(2, 0.0, 0.0); }, "delta");
-  expectPath([] { lowerAbsoluteSpan(2, -1.0, 0.0); }, "delta");
-  expectPath([] { smoothMin(2, 0.0, 0.0, 0.0); }, "delta");
-  expectPath([] { smoothMinHat(33, 1.0, 0.0, 0.0); }, "n");
-  expectPath([] { SmoothAnd(0, 0.5); }, "n");
-  expectPath([] { SmoothAnd(2, 0.0); }, "delta");
-  expectPath([] { SmoothAndHat(2, -0.5); }, "delta");
-  expectPath([] { smoothAnd(2, 0.0, 0.5, 0.5); }, "delta");
-  expectPath([] { smoothAndHat(0, 0.5, 0.5, 0.5); }, "n");
+  expectInvalidParameter([] { upperAbsolute(-1, 0.0); }, "n");
+  expectInvalidParameter([] { upperAbsolute(kMaxSmoothAbsoluteDegree + 1, 0.0); }, "n");
+  expectInvalidParameter([] { reference::upperAbsolute(-1, 0.0); }, "n");
+  expectInvalidParameter([] { lowerAbsolute(-1, 0.0); }, "n");
+  expectInvalidParameter([] { upperAbsoluteSpan(0, 1.0, 0.0); }, "n");
+  expectInvalidParameter([] { upperAbsoluteSpan(2, 0.0, 0.0); }, "delta");
+  expectInvalidParameter([] { lowerAbsoluteSpan(2, -1.0, 0.0); }, "delta");
+  expectInvalidParameter([] { smoothMin(2, 0.0, 0.0, 0.0); }, "delta");
+  expectInvalidParameter([] { smoothMinHat(33, 1.0, 0.0, 0.0); }, "n");
+  expectInvalidParameter([] { SmoothAnd(0, 0.5); }, "n");
+  expectInvalidParameter([] { SmoothAnd(2, 0.0); }, "delta");
+  expectInvalidParameter([] { SmoothAndHat(2, -0.5); }, "delta");
+  expectInvalidParameter([] { smoothAnd(2, 0.0, 0.5, 0.5); }, "delta");
+  expectInvalidParameter([] { smoothAndHat(0, 0.5, 0.5, 0.5); }, "n");
 }
 
 }  // namespace

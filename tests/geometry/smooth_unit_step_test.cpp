@@ -1,5 +1,6 @@
 // SmoothUnitStep: each family evaluates its step function with the rising range of seed 001
 // Def. 3 (seed 000 eq. 3 for polynomialRange), and the factories validate.
+#include "tests/geometry/expect_error.h"
 #include "geometry/smooth_unit_step.h"
 
 #include <gtest/gtest.h>
@@ -38,23 +39,14 @@ TEST(SmoothUnitStep, DefaultRangeIsOneAndAccessorsReport) {
 }
 
 TEST(SmoothUnitStep, FactoriesRejectBadParameters) {
-  auto expectPath = [](auto f, const char* path) {
-    try {
-      f();
-      ADD_FAILURE() << path;
-    } catch (const Error& e) {
-      EXPECT_EQ(e.code(), errc::kInvalidParameter);
-      EXPECT_EQ(e.path(), path);
-    }
-  };
-  expectPath([] { SmoothUnitStep::polynomial(0); }, "n");
-  expectPath([] { SmoothUnitStep::polynomial(3, 0.0); }, "epsilon");
-  expectPath([] { SmoothUnitStep::polynomialRange(3, -1.0); }, "R");
-  expectPath([] { SmoothUnitStep::bspline(kMaxBSplineOrder + 1); }, "m");
-  expectPath([] { SmoothUnitStep::risingCutoff(0); }, "n");
-  expectPath([] { SmoothUnitStep::risingCutoffSquared(3, -2.0); }, "epsilon");
-  expectPath([] { SmoothUnitStep::sigmoid(0.0); }, "alpha");
-  expectPath([] { SmoothUnitStep::sigmoid(1.0, 0.0); }, "epsilon");
+  expectInvalidParameter([] { SmoothUnitStep::polynomial(0); }, "n");
+  expectInvalidParameter([] { SmoothUnitStep::polynomial(3, 0.0); }, "epsilon");
+  expectInvalidParameter([] { SmoothUnitStep::polynomialRange(3, -1.0); }, "R");
+  expectInvalidParameter([] { SmoothUnitStep::bspline(kMaxBSplineOrder + 1); }, "m");
+  expectInvalidParameter([] { SmoothUnitStep::risingCutoff(0); }, "n");
+  expectInvalidParameter([] { SmoothUnitStep::risingCutoffSquared(3, -2.0); }, "epsilon");
+  expectInvalidParameter([] { SmoothUnitStep::sigmoid(0.0); }, "alpha");
+  expectInvalidParameter([] { SmoothUnitStep::sigmoid(1.0, 0.0); }, "epsilon");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Smooth unit step functions: seed 000 eq. 2-3, seed 001 eq. 4-8, 14-17 and Def. 3. Fast forms
 // against the literal recursive definitions, closed forms, the stated properties, smoothness
 // at the breakpoints, and parameter ranges.
+#include "tests/geometry/expect_error.h"
 #include "geometry/step_functions.h"
 
 #include <gtest/gtest.h>
@@ -247,34 +248,25 @@ TEST(RisingRange, Def3ScalesTheRisingRange) {
 }
 
 TEST(StepFunctions, ParametersOutsideRangeThrowWithTheirPath) {
-  auto expectPath = [](auto f, const char* path) {
-    try {
-      f();
-      ADD_FAILURE() << path;
-    } catch (const Error& e) {
-      EXPECT_EQ(e.code(), errc::kInvalidParameter);
-      EXPECT_EQ(e.path(), path);
-    }
-  };
-  expectPath([] { liTianStep(-1, 0.0); }, "n");
-  expectPath([] { liTianStep(kMaxPolynomialStepDegree + 1, 0.0); }, "n");
-  expectPath([] { liTianStepRange(0, 1.0, 0.0); }, "n");
-  expectPath([] { liTianStepRange(2, 0.0, 0.0); }, "R");
-  expectPath([] { cardinalStep(33, 0.0); }, "n");
-  expectPath([] { polynomialStep(0, 0.0); }, "n");
-  expectPath([] { bsplineStep(0, 0.0); }, "m");
-  expectPath([] { bsplineStep(kMaxBSplineOrder + 1, 0.0); }, "m");
-  expectPath([] { risingCutoff(0, 0.0); }, "n");
-  expectPath([] { risingCutoff(kMaxRisingCutoffLevel + 1, 0.0); }, "n");
-  expectPath([] { risingCutoffSquared(0, 0.0); }, "n");
-  expectPath([] { sigmoidStep(0.0, 0.0); }, "alpha");
-  expectPath([] { sigmoidAlphaBound(1.0); }, "epsilon");
-  expectPath([] { reference::liTianStep(-1, 0.0); }, "n");
-  expectPath([] { reference::cardinalStep(-1, 0.0); }, "n");
-  expectPath([] { reference::polynomialStep(0, 0.0); }, "n");
-  expectPath([] { reference::cardinalBSpline(0, 0.0); }, "m");
-  expectPath([] { reference::bsplineStep(0, 0.0); }, "m");
-  expectPath([] { reference::risingCutoff(0, 0.0); }, "n");
+  expectInvalidParameter([] { liTianStep(-1, 0.0); }, "n");
+  expectInvalidParameter([] { liTianStep(kMaxPolynomialStepDegree + 1, 0.0); }, "n");
+  expectInvalidParameter([] { liTianStepRange(0, 1.0, 0.0); }, "n");
+  expectInvalidParameter([] { liTianStepRange(2, 0.0, 0.0); }, "R");
+  expectInvalidParameter([] { cardinalStep(33, 0.0); }, "n");
+  expectInvalidParameter([] { polynomialStep(0, 0.0); }, "n");
+  expectInvalidParameter([] { bsplineStep(0, 0.0); }, "m");
+  expectInvalidParameter([] { bsplineStep(kMaxBSplineOrder + 1, 0.0); }, "m");
+  expectInvalidParameter([] { risingCutoff(0, 0.0); }, "n");
+  expectInvalidParameter([] { risingCutoff(kMaxRisingCutoffLevel + 1, 0.0); }, "n");
+  expectInvalidParameter([] { risingCutoffSquared(0, 0.0); }, "n");
+  expectInvalidParameter([] { sigmoidStep(0.0, 0.0); }, "alpha");
+  expectInvalidParameter([] { sigmoidAlphaBound(1.0); }, "epsilon");
+  expectInvalidParameter([] { reference::liTianStep(-1, 0.0); }, "n");
+  expectInvalidParameter([] { reference::cardinalStep(-1, 0.0); }, "n");
+  expectInvalidParameter([] { reference::polynomialStep(0, 0.0); }, "n");
+  expectInvalidParameter([] { reference::cardinalBSpline(0, 0.0); }, "m");
+  expectInvalidParameter([] { reference::bsplineStep(0, 0.0); }, "m");
+  expectInvalidParameter([] { reference::risingCutoff(0, 0.0); }, "n");
 }
 
 }  // namespace

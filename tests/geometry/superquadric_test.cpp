@@ -10,22 +10,15 @@
 #include <random>
 #include <string>
 
+#include "geometry/random_superquadric.h"
 #include "geometry/error.h"
 
 namespace fsdb {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using testing::makeParams;
 
-SuperquadricParams makeParams(double e1, double e2, double a1, double a2, double a3) {
-  SuperquadricParams p;
-  p.eps1 = e1;
-  p.eps2 = e2;
-  p.a1 = a1;
-  p.a2 = a2;
-  p.a3 = a3;
-  return p;
-}
+constexpr double kPi = 3.14159265358979323846;
 
 // SPEC §2 verbatim, for moderate exponents where the literal form cannot overflow.
 double literalF(const SuperquadricParams& q, const Vec3& p) {

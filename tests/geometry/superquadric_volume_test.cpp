@@ -11,21 +11,14 @@
 
 #include "geometry/deformation.h"
 #include "geometry/placed_superquadric.h"
+#include "geometry/random_superquadric.h"
 
 namespace fsdb {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using testing::makeParams;
 
-SuperquadricParams makeParams(double e1, double e2, double a1, double a2, double a3) {
-  SuperquadricParams p;
-  p.eps1 = e1;
-  p.eps2 = e2;
-  p.a1 = a1;
-  p.a2 = a2;
-  p.a3 = a3;
-  return p;
-}
+constexpr double kPi = 3.14159265358979323846;
 
 // Volume of {p in box : inside(p)} by counting the centres of an n·n·n grid of cells.
 double gridVolume(const Vec3& lo, const Vec3& hi, int n,
@@ -198,3 +191,4 @@ TEST(SuperquadricVolume, IsCanonicalTimesTaperAndPlacedScalesCubically) {
 
 }  // namespace
 }  // namespace fsdb
+
