@@ -34,7 +34,16 @@ OperatorConfig parseOperatorConfig(const nlohmann::json& j, const std::string& p
 
 nlohmann::json operatorConfigToJson(const OperatorConfig& config) {
   nlohmann::json j = {{"name", config.name}};
-  for (const auto& [name, value] : config.params) j[name] = value;
+  const OperatorSpec* spec = findOperator(config.name);
+  for (const auto& [name, value] : config.params) {
+    // Integer parameters (degrees n, m) go out as JSON integers: clients compare them with the
+    // integers they sent, and "n": 3.0 would read as a different type in typed languages.
+    bool integer = false;
+    if (spec)
+      for (const ParamSpec& p : spec->params) integer = integer || (p.name == name && p.integer);
+    if (integer) j[name] = static_cast<long long>(value);
+    else j[name] = value;
+  }
   if (!config.step.empty()) j["step"] = operatorConfigToJson(config.step.front());
   return j;
 }

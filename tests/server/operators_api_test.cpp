@@ -64,6 +64,7 @@ TEST_F(OperatorsApi, BezierOperatorMatchesSeed000Equation6) {
     double x = points[i][0], y = points[i][1];
     EXPECT_NEAR(r["values"][i].get<double>(), x * y * (1 + (1 - x) * (1 - y)), 1e-12);  // seed 000 eq. 6
   }
+  EXPECT_TRUE(r["operator"]["n"].is_number_integer()) << r.dump();
   EXPECT_EQ(r["operator"]["n"], 2);
 }
 

@@ -1,0 +1,61 @@
+// query/json_body: request-body parsing and typed access with JSON paths.
+#include "query/json_body.h"
+
+#include <gtest/gtest.h>
+
+#include "geometry/error.h"
+
+namespace fsdb {
+namespace {
+
+using nlohmann::json;
+
+template <class F>
+Error errorOf(F f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no error";
+  return Error("", "");
+}
+
+TEST(JsonBody, ParsesDocumentsWithinTheDepthLimit) {
+  EXPECT_EQ(parseJsonBody("{\"a\":[1,2]}", 4)["a"][1], 2);
+  EXPECT_EQ(parseJsonBody("[[[1]]]", 3)[0][0][0], 1);
+}
+
+TEST(JsonBody, MalformedAndEmptyBodiesAreMalformedJson) {
+  Error e = errorOf([] { parseJsonBody("{\"a\":", 8); });
+  EXPECT_EQ(e.code(), errc::kMalformedJson);
+  EXPECT_EQ(e.path(), "body");
+  EXPECT_NE(std::string(e.what()).find("byte"), std::string::npos);
+  EXPECT_EQ(errorOf([] { parseJsonBody("", 8); }).code(), errc::kMalformedJson);
+}
+
+TEST(JsonBody, NestingBeyondTheLimitIsLimitExceeded) {
+  Error e = errorOf([] { parseJsonBody("[[[[1]]]]", 3); });
+  EXPECT_EQ(e.code(), errc::kLimitExceeded);
+  EXPECT_NE(std::string(e.what()).find("max_json_depth=3"), std::string::npos);
+  // A hostile depth far beyond the stack's reach is refused, not a crash.
+  std::string deep(200000, '[');
+  EXPECT_EQ(errorOf([&] { parseJsonBody(deep, 64); }).code(), errc::kLimitExceeded);
+}
+
+TEST(JsonBody, TypedAccessNamesThePath) {
+  json doc = json::parse(R"({"a":{"b":"x"},"n":1.5,"arr":[1]})");
+  EXPECT_EQ(requireNumber(doc["n"], "n"), 1.5);
+  EXPECT_EQ(requireString(doc["a"]["b"], "a.b"), "x");
+  EXPECT_EQ(requireArray(doc["arr"], "arr").size(), 1u);
+  EXPECT_EQ(requireObject(doc["a"], "a").size(), 1u);
+  EXPECT_EQ(errorOf([&] { requireNumber(doc["a"], "a"); }).path(), "a");
+  EXPECT_EQ(errorOf([&] { requireString(doc["n"], "n"); }).path(), "n");
+  EXPECT_EQ(errorOf([&] { requireArray(doc["n"], "n"); }).path(), "n");
+  EXPECT_EQ(errorOf([&] { requireObject(doc["arr"], "arr"); }).path(), "arr");
+  EXPECT_EQ(errorOf([&] { requireField(doc["a"], "c", "a"); }).path(), "a.c");
+  EXPECT_EQ(jsonTypeName(doc["arr"]), "array");
+}
+
+}  // namespace
+}  // namespace fsdb
