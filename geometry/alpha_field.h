@@ -1,0 +1,73 @@
+#pragma once
+// AlphaField: the exact alpha-cut description of a fuzzy solid, point by point (SPEC §3).
+//
+// A fuzzy solid has, at every level α in [0,1], an upper shape upper(α) (points possibly
+// inside) and a lower shape lower(α) (points necessarily inside), with
+//   lower(α) ⊆ S(core) ⊆ upper(α),  upper(α) shrinking and lower(α) growing as α rises
+// (the parameter box P(α) shrinks with α; seed 004 §3.2). So each point p is described for
+// every α at once by two numbers:
+//   upper level u(p) = sup{α : p ∈ upper(α)}   in [0,1]; 0 when p is in upper(0) at most
+//                      (p ∈ upper(α) ⇔ α ≤ u(p), up to the boundary of a level set)
+//   lower level l(p) = inf{α : p ∈ lower(α)}   in [0,1], or kNeverInside when p ∉ lower(1)
+//                      (p ∈ lower(α) ⇔ l(p) ≤ α)
+// Points outside upper(0) have u = 0 and l = kNeverInside: the background of sparse grids.
+//
+// Booleans act on (u, l) exactly, for every α at once (SPEC §3: union (lower_A ∪ lower_B,
+// upper_A ∪ upper_B), intersection likewise with ∩, difference A − B = (lower_A − upper_B,
+// upper_A − lower_B)):
+//   union:        u = max(uA, uB),  l = min(lA, lB)
+//   intersection: u = min(uA, uB),  l = max(lA, lB)
+//   difference:   u = min(uA, lB),  l = max(lA, uB)   (p ∉ lower_B(α) ⇔ α < lB; p ∉ upper_B(α) ⇔ α > uB)
+// The difference is exact except on the single level α = lB (or uB) itself, a set of measure
+// zero in α; volumes are unaffected.
+#include "geometry/vec3.h"
+
+namespace fsdb {
+
+// l(p) of a point that is not even in lower(1).
+inline constexpr float kNeverInside = 2.0f;
+
+struct AlphaLevels {
+  float upper = 0.0f;          // u(p)
+  float lower = kNeverInside;  // l(p)
+};
+
+inline AlphaLevels alphaUnion(AlphaLevels a, AlphaLevels b) {
+  return {a.upper > b.upper ? a.upper : b.upper, a.lower < b.lower ? a.lower : b.lower};
+}
+inline AlphaLevels alphaIntersection(AlphaLevels a, AlphaLevels b) {
+  return {a.upper < b.upper ? a.upper : b.upper, a.lower > b.lower ? a.lower : b.lower};
+}
+inline AlphaLevels alphaDifference(AlphaLevels a, AlphaLevels b) {
+  const float u = a.upper < b.lower ? a.upper : b.lower;
+  const float l = a.lower > b.upper ? a.lower : b.upper;
+  // When u = 0 the point is outside upper(α) for every α > 0; at most lower(α) empties too.
+  return {u < 0.0f ? 0.0f : (u > 1.0f ? 1.0f : u), l};
+}
+
+// Membership at one level.
+inline bool inUpper(AlphaLevels v, double alpha) { return v.upper > 0.0f && alpha <= v.upper; }
+inline bool inLower(AlphaLevels v, double alpha) { return v.lower <= alpha; }
+
+// Bounds of (u, l) over a box of points, for block pruning: a source proves a whole block
+// uniform when upperMin == upperMax and lowerMin == lowerMax.
+struct AlphaLevelBounds {
+  float upperMin = 0.0f, upperMax = 1.0f;
+  float lowerMin = 0.0f, lowerMax = kNeverInside;
+  bool uniform() const { return upperMin == upperMax && lowerMin == lowerMax; }
+};
+
+// A fuzzy solid as the voxel evaluator sees it. Implementations: fuzzy superquadric parts
+// (geometry/fuzzy_part_field.h) and analytic test solids. Both calls are thread-safe.
+class AlphaFieldSource {
+ public:
+  virtual ~AlphaFieldSource() = default;
+  // Exact levels at a point (to the documented tolerance of the implementation).
+  virtual AlphaLevels levelsAt(const Vec3& p) const = 0;
+  // Guaranteed bounds of the levels over the axis-aligned box [lo, hi].
+  virtual AlphaLevelBounds boundsOver(const Vec3& lo, const Vec3& hi) const = 0;
+  // An axis-aligned box that holds upper(0) (everything outside has u = 0, l = never).
+  virtual void boundingBox(Vec3* lo, Vec3* hi) const = 0;
+};
+
+}  // namespace fsdb
