@@ -18,8 +18,9 @@
 //   union:        u = max(uA, uB),  l = min(lA, lB)
 //   intersection: u = min(uA, uB),  l = max(lA, lB)
 //   difference:   u = min(uA, lB),  l = max(lA, uB)   (p ∉ lower_B(α) ⇔ α < lB; p ∉ upper_B(α) ⇔ α > uB)
-// The difference is exact except on the single level α = lB (or uB) itself, a set of measure
-// zero in α; volumes are unaffected.
+// The difference is exact except on the single level α = uB itself when 0 < uB < 1 (a point
+// counts as necessarily inside from α = uB on, instead of just above it): a set of measure zero
+// in α, and for one requested α a set of measure zero in space; volumes are unaffected.
 #include "geometry/vec3.h"
 
 namespace fsdb {
@@ -40,7 +41,9 @@ inline AlphaLevels alphaIntersection(AlphaLevels a, AlphaLevels b) {
 }
 inline AlphaLevels alphaDifference(AlphaLevels a, AlphaLevels b) {
   const float u = a.upper < b.lower ? a.upper : b.lower;
-  const float l = a.lower > b.upper ? a.lower : b.upper;
+  // p ∉ upper_B(α) ⇔ α > uB, strictly: when uB = 1 (p in B's core shape) no level is left, so
+  // p is never necessarily inside A − B. Without this, crisp A − B would keep A ∩ B at α = 1.
+  const float l = b.upper >= 1.0f ? kNeverInside : (a.lower > b.upper ? a.lower : b.upper);
   // When u = 0 the point is outside upper(α) for every α > 0; at most lower(α) empties too.
   return {u < 0.0f ? 0.0f : (u > 1.0f ? 1.0f : u), l};
 }

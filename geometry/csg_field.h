@@ -1,0 +1,49 @@
+#pragma once
+// CsgField: the alpha field of a CSG tree of fuzzy solids (seed 004 §2.3, §3.2; SPEC §3).
+//
+// A node is a leaf (any AlphaFieldSource, e.g. a fuzzy superquadric part) or a Boolean of
+// child nodes. Children are shared pointers, so a subtree referenced by several trees (or twice
+// in one, a DAG) is built once. With the default (Zadeh) semantics the Booleans of alpha_field.h
+// are exact for every α at once, so the whole tree is one AlphaFieldSource: the voxel layer
+// evaluates and prunes it in a single pass, never materialising a grid per node.
+//
+// Contract:
+// - union and intersection take two or more children (n-ary, order irrelevant); difference
+//   takes two or more and means ((c0 − c1) − c2) − …
+// - boundsOver combines the children's bounds with the same monotone formulas, so it stays
+//   sound when theirs are.
+// - boundingBox: union → hull of the children's; intersection → their overlap (an empty
+//   overlap collapses to a point: nothing is inside); difference → the first child's.
+#include <memory>
+#include <vector>
+
+#include "geometry/alpha_field.h"
+
+namespace fsdb {
+
+enum class CsgOp { kUnion, kIntersection, kDifference };
+
+class CsgField : public AlphaFieldSource {
+ public:
+  // Throws fsdb::Error(errc::kInvalidDocument, ..., "children") with fewer than two children.
+  CsgField(CsgOp op, std::vector<std::shared_ptr<const AlphaFieldSource>> children);
+
+  AlphaLevels levelsAt(const Vec3& p) const override;
+  AlphaLevelBounds boundsOver(const Vec3& lo, const Vec3& hi) const override;
+  void boundingBox(Vec3* lo, Vec3* hi) const override;
+
+  CsgOp op() const { return op_; }
+  const std::vector<std::shared_ptr<const AlphaFieldSource>>& children() const { return children_; }
+
+ private:
+  CsgOp op_;
+  std::vector<std::shared_ptr<const AlphaFieldSource>> children_;
+};
+
+// Exact combination of bounds for each operation (interval extension of alpha_field.h's
+// formulas, which are monotone in every argument).
+AlphaLevelBounds boundsUnion(const AlphaLevelBounds& a, const AlphaLevelBounds& b);
+AlphaLevelBounds boundsIntersection(const AlphaLevelBounds& a, const AlphaLevelBounds& b);
+AlphaLevelBounds boundsDifference(const AlphaLevelBounds& a, const AlphaLevelBounds& b);
+
+}  // namespace fsdb
