@@ -18,8 +18,12 @@
 //   union:        u = max(uA, uB),  l = min(lA, lB)
 //   intersection: u = min(uA, uB),  l = max(lA, lB)
 //   difference:   u = min(uA, lB),  l = max(lA, uB)   (p ∉ lower_B(α) ⇔ α < lB; p ∉ upper_B(α) ⇔ α > uB)
+//                 except l = kNeverInside where uB = 1: p ∈ upper_B(α) for every α, so p is in
+//                 no lower_A(α) − upper_B(α), not even at α = 1 (max(lA, 1) = 1 would claim it)
 // The difference is exact except on the single level α = lB (or uB) itself, a set of measure
-// zero in α; volumes are unaffected.
+// zero in α; volumes are unaffected. At the end levels α = 0 and α = 1, where whole regions
+// share one level (u = 0 outside, u = 1 and l = 0 in cores), it is exact but for the
+// measure-zero set of points with lB = 1 exactly (upper(1) keeps them out).
 #include "geometry/vec3.h"
 
 namespace fsdb {
@@ -40,7 +44,7 @@ inline AlphaLevels alphaIntersection(AlphaLevels a, AlphaLevels b) {
 }
 inline AlphaLevels alphaDifference(AlphaLevels a, AlphaLevels b) {
   const float u = a.upper < b.lower ? a.upper : b.lower;
-  const float l = a.lower > b.upper ? a.lower : b.upper;
+  const float l = b.upper >= 1.0f ? kNeverInside : (a.lower > b.upper ? a.lower : b.upper);
   // When u = 0 the point is outside upper(α) for every α > 0; at most lower(α) empties too.
   return {u < 0.0f ? 0.0f : (u > 1.0f ? 1.0f : u), l};
 }
