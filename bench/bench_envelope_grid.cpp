@@ -1,8 +1,9 @@
 // Speed of the voxel envelopes (geometry/envelope_grid.h, issue 3): building the upper/lower
 // grids of a ball whose support r3 = 1 spans a grid of N = 64, 128, 256 voxels (h = 2/N),
 // fuzzy (tri(0.6, 0.8, 1.0): the shell 0.6..1 is a volume of voxels) and crisp (radius 1: only
-// the surface blocks hold voxels); the volumes at 11 levels; and, for scale, OpenVDB's own
-// tools::createLevelSetSphere (narrow band of half-width 3) at the same voxel size.
+// the surface blocks hold voxels); the volumes at 11 levels; the union of two such balls; and,
+// for scale, OpenVDB's own tools::createLevelSetSphere (narrow band of half-width 3) at the
+// same voxel size.
 // Counters: active voxels (one by one, tiles apart), tiles, memory of both grids, and the time
 // per active voxel (compare the last with createLevelSetSphere's).
 #include <benchmark/benchmark.h>
@@ -53,6 +54,20 @@ void BM_FuzzyBallVolumes(benchmark::State& state) {
   setCounters(state, g.stats());
 }
 
+// The Boolean of two overlapping fuzzy balls of radius up to 1 (support 2 = N voxels across).
+void BM_FuzzyBallUnion(benchmark::State& state) {
+  const double h = 2.0 / static_cast<double>(state.range(0));
+  const EnvelopeGrid a = EnvelopeGrid::build(FuzzyBall(kCentre, 0.6, 0.8, 1.0), h);
+  const EnvelopeGrid b = EnvelopeGrid::build(FuzzyBall(kCentre + Vec3{0.9, 0, 0}, 0.5, 0.7, 0.9), h);
+  EnvelopeGridStats stats;
+  for (auto _ : state) {
+    const EnvelopeGrid u = combine(a, b, BooleanOp::kUnion);
+    stats = u.stats();
+    benchmark::DoNotOptimize(stats);
+  }
+  setCounters(state, stats);
+}
+
 void BM_OpenVdbLevelSetSphere(benchmark::State& state) {
   initializeOpenVdb();
   const float h = 2.0f / static_cast<float>(state.range(0));
@@ -75,6 +90,7 @@ void BM_OpenVdbLevelSetSphere(benchmark::State& state) {
 BENCHMARK(BM_FuzzyBallBuild)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_CrispBallBuild)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_FuzzyBallVolumes)->Arg(256)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_FuzzyBallUnion)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_OpenVdbLevelSetSphere)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
