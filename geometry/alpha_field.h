@@ -18,6 +18,8 @@
 //   union:        u = max(uA, uB),  l = min(lA, lB)
 //   intersection: u = min(uA, uB),  l = max(lA, lB)
 //   difference:   u = min(uA, lB),  l = max(lA, uB)   (p ∉ lower_B(α) ⇔ α < lB; p ∉ upper_B(α) ⇔ α > uB)
+//                 except l = kNeverInside where uB = 1: p ∈ upper_B(α) for every α, so p is in
+//                 no lower_A(α) − upper_B(α), not even at α = 1 (max(lA, 1) = 1 would claim it)
 // The difference is exact except on the single level α = uB itself when 0 < uB < 1 (a point
 // counts as necessarily inside from α = uB on, instead of just above it): a set of measure zero
 // in α, and for one requested α a set of measure zero in space; volumes are unaffected.

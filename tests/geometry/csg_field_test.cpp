@@ -11,8 +11,6 @@
 namespace fsdb {
 namespace {
 
-using testing::FuzzyBall;
-
 std::shared_ptr<const AlphaFieldSource> ball(Vec3 c, double r1, double r2, double r3) {
   return std::make_shared<FuzzyBall>(c, r1, r2, r3);
 }
@@ -112,27 +110,6 @@ TEST(CsgField, NeedsTwoChildren) {
     ADD_FAILURE();
   } catch (const Error& e) {
     EXPECT_EQ(e.path(), "children");
-  }
-}
-
-TEST(AlphaField, BooleansOnLevelsObeyTheirLaws) {
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<float> unit(0, 1);
-  const AlphaLevels background{};
-  for (int i = 0; i < 1000; ++i) {
-    AlphaLevels a{unit(rng), unit(rng) < 0.3f ? kNeverInside : unit(rng)};
-    AlphaLevels b{unit(rng), unit(rng) < 0.3f ? kNeverInside : unit(rng)};
-    EXPECT_EQ(alphaUnion(a, b).upper, alphaUnion(b, a).upper);
-    EXPECT_EQ(alphaUnion(a, b).lower, alphaUnion(b, a).lower);
-    EXPECT_EQ(alphaIntersection(a, b).upper, alphaIntersection(b, a).upper);
-    EXPECT_EQ(alphaIntersection(a, b).lower, alphaIntersection(b, a).lower);
-    // Background is the identity of union and of the subtrahend of difference.
-    EXPECT_EQ(alphaUnion(a, background).upper, a.upper);
-    EXPECT_EQ(alphaUnion(a, background).lower, a.lower);
-    EXPECT_EQ(alphaDifference(a, background).upper, a.upper);
-    EXPECT_EQ(alphaDifference(a, background).lower, a.lower);
-    EXPECT_EQ(alphaIntersection(a, background).upper, 0.0f);
-    EXPECT_EQ(alphaIntersection(a, background).lower, kNeverInside);
   }
 }
 
