@@ -1,0 +1,402 @@
+#include "geometry/fuzzy_part_field.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "expect_error.h"
+#include "geometry/interval_functions.h"
+#include "random_superquadric.h"
+
+namespace fsdb {
+namespace {
+
+constexpr double kTau = 1.0 / 1024.0;
+constexpr double kSlack = 1e-6;  // float storage and closed-form rounding
+
+FuzzyNumber tri(double l, double m, double r) { return FuzzyNumber::triangular(l, m, r); }
+
+double uniform(std::mt19937_64& rng, double lo, double hi) {
+  return std::uniform_real_distribution<double>(lo, hi)(rng);
+}
+
+Vec3 randomPoint(std::mt19937_64& rng, const Vec3& lo, const Vec3& hi) {
+  return {uniform(rng, lo.x, hi.x), uniform(rng, lo.y, hi.y), uniform(rng, lo.z, hi.z)};
+}
+
+// A crisp parameter vector of the box: corner bits pick ends, the rest uniform.
+PlacedSuperquadric sampleTheta(std::mt19937_64& rng, const PartBox& b, bool corner) {
+  const auto pick = [&](const Interval& v) {
+    if (corner) return (rng() & 1) ? v.hi : v.lo;
+    return uniform(rng, v.lo, std::nextafter(v.hi, INFINITY));
+  };
+  PlacedSuperquadric part;
+  const SuperquadricBox& q = b.params;
+  part.params = {pick(q.eps1), pick(q.eps2), pick(q.a1), pick(q.a2), pick(q.a3),
+                 pick(q.kx),   pick(q.ky),   pick(q.kv), pick(q.t)};
+  const PlacementBox& pl = b.placement;
+  part.placement.translate = {pick(pl.tx), pick(pl.ty), pick(pl.tz)};
+  part.placement.axis = pl.axis;
+  part.placement.deg = pick(pl.deg);
+  part.placement.scale = pick(pl.scale);
+  return part;
+}
+
+TEST(FuzzyPartFieldTest, CrispPartIsInsideOrOutsideAtEveryLevel) {
+  std::mt19937_64 rng(4);
+  for (int k = 0; k < 20; ++k) {
+    PlacedSuperquadric crisp;
+    crisp.params = testing::randomParams(rng, k % 2 == 0);
+    crisp.placement = {{uniform(rng, -2, 2), uniform(rng, -2, 2), uniform(rng, -2, 2)},
+                       {uniform(rng, -1, 1), uniform(rng, -1, 1), 1.0},
+                       uniform(rng, -180, 180),
+                       uniform(rng, 0.5, 2)};
+    const FuzzyPartField field(FuzzyPart::fromCrisp(crisp));
+    Vec3 lo, hi;
+    field.boundingBox(&lo, &hi);
+    int inside = 0;
+    for (int i = 0; i < 200; ++i) {
+      // Half in the bounding box, half the images of the canonical box (many
+      // inside).
+      const Vec3 p = i % 2 ? randomPoint(rng, lo, hi)
+                           : crisp.toWorld(testing::randomPointInBox(rng, crisp.params));
+      const double f = crisp.insideOutside(p);
+      if (std::fabs(f - 1.0) < 0.05) continue;  // away from the surface
+      const AlphaLevels v = field.levelsAt(p);
+      if (f < 1.0) {
+        ++inside;
+        EXPECT_EQ(v.upper, 1.0f);
+        EXPECT_EQ(v.lower, 0.0f);
+      } else {
+        EXPECT_EQ(v.upper, 0.0f);
+        EXPECT_EQ(v.lower, kNeverInside);
+      }
+    }
+    EXPECT_GT(inside, 0) << "part " << k;
+  }
+  EXPECT_EQ(FuzzyPartField(FuzzyPart{}).budgetExhaustions(), 0u);
+}
+
+TEST(FuzzyPartFieldTest, FuzzySphereRadiusMatchesTheClosedForm) {
+  const double r1 = 0.6, r2 = 1.0, r3 = 1.5;
+  FuzzyPart part;
+  part.a1 = tri(r1, r2, r3);
+  const FuzzyPartField field(part);
+  std::mt19937_64 rng(5);
+  for (int i = 0; i < 400; ++i) {
+    const Vec3 p = randomPoint(rng, {-1.7, -1.7, -1.7}, {1.7, 1.7, 1.7});
+    const double r = norm(p);
+    const double u = r <= r2 ? 1.0 : r < r3 ? (r3 - r) / (r3 - r2) : 0.0;
+    const AlphaLevels v = field.levelsAt(p);
+    // u is rounded down to the bracket, l up.
+    EXPECT_LE(v.upper, u + kSlack) << r;
+    EXPECT_GE(v.upper, u - kTau - kSlack) << r;
+    if (r <= r2) {
+      const double l = r <= r1 ? 0.0 : (r - r1) / (r2 - r1);
+      EXPECT_GE(v.lower, l - kSlack) << r;
+      EXPECT_LE(v.lower, l + kTau + kSlack) << r;
+    } else {
+      EXPECT_EQ(v.lower, kNeverInside) << r;
+    }
+  }
+  EXPECT_EQ(field.budgetExhaustions(), 0u);
+}
+
+TEST(FuzzyPartFieldTest, FuzzyTranslationSweepsACapsuleAndKeepsALens) {
+  FuzzyPart part;
+  part.tx = tri(-1, 0, 1);
+  const FuzzyPartField field(part);
+  std::mt19937_64 rng(6);
+  int checked = 0;
+  for (int i = 0; i < 400; ++i) {
+    const Vec3 p = randomPoint(rng, {-2.2, -1.1, -1.1}, {2.2, 1.1, 1.1});
+    const double rho2 = p.y * p.y + p.z * p.z;
+    if (std::fabs(rho2 - 1.0) < 1e-3) continue;  // u and l are steep in p there
+    const AlphaLevels v = field.levelsAt(p);
+    if (rho2 > 1.0) {
+      EXPECT_EQ(v.upper, 0.0f);
+      EXPECT_EQ(v.lower, kNeverInside);
+      continue;
+    }
+    ++checked;
+    // P(α): tx in [−(1 − α), 1 − α]. upper(α): distance to the segment <= 1,
+    // i.e. |x| <= (1 − α) + h with h = √(1 − ρ²). lower(α) = the two end
+    // spheres' lens: |x| + (1 − α) <= h.
+    const double h = std::sqrt(1.0 - rho2), ax = std::fabs(p.x);
+    const double excess = ax - h;
+    const double u = excess <= 0.0 ? 1.0 : excess >= 1.0 ? 0.0 : 1.0 - excess;
+    EXPECT_LE(v.upper, u + kSlack) << p.x << " " << p.y << " " << p.z;
+    EXPECT_GE(v.upper, u - kTau - kSlack) << p.x << " " << p.y << " " << p.z;
+    const double l = std::max(0.0, 1.0 - h + ax);
+    if (l <= 1.0) {
+      EXPECT_GE(v.lower, l - kSlack) << p.x << " " << p.y << " " << p.z;
+      EXPECT_LE(v.lower, l + kTau + kSlack) << p.x << " " << p.y << " " << p.z;
+    } else {
+      EXPECT_EQ(v.lower, kNeverInside);
+    }
+  }
+  EXPECT_GT(checked, 100);
+  EXPECT_EQ(field.budgetExhaustions(), 0u);
+}
+
+// A random valid fuzzy part: every value of a random crisp part spread by a
+// modest triangle.
+FuzzyPart randomFuzzyPart(std::mt19937_64& rng) {
+  for (;;) {
+    const SuperquadricParams q = testing::randomParams(rng, true);
+    const auto around = [&](double v, double spread, double lo, double hi) {
+      const double l = std::max(lo, v - spread * uniform(rng, 0.2, 1.0));
+      const double r = std::min(hi, v + spread * uniform(rng, 0.2, 1.0));
+      return tri(l, v, r);
+    };
+    FuzzyPart f;
+    f.eps1 = around(std::min(q.eps1, 3.8), 0.15, 0.05, 4.0);
+    f.eps2 = around(std::min(q.eps2, 3.8), 0.15, 0.05, 4.0);
+    f.a1 = around(q.a1, 0.1 * q.a1, 1e-3, 1e9);
+    f.a2 = around(q.a2, 0.1 * q.a2, 1e-3, 1e9);
+    f.a3 = around(q.a3, 0.1 * q.a3, 1e-3, 1e9);
+    f.kx = around(q.kx, 0.1, -1, 1);
+    f.ky = around(q.ky, 0.1, -1, 1);
+    f.kv = around(q.kv, 0.1 * std::fabs(q.kv) + 0.01, -1e9, 1e9);
+    f.t = around(q.t, 0.2, -1e9, 1e9);
+    f.tx = around(uniform(rng, -1, 1), 0.2, -1e9, 1e9);
+    f.ty = around(uniform(rng, -1, 1), 0.2, -1e9, 1e9);
+    f.tz = around(uniform(rng, -1, 1), 0.2, -1e9, 1e9);
+    f.axis = {uniform(rng, -1, 1), uniform(rng, -1, 1), 1.0};
+    f.deg = around(uniform(rng, -90, 90), 5, -1e9, 1e9);
+    f.scale = around(uniform(rng, 0.5, 1.5), 0.1, 0.1, 1e9);
+    try {
+      f.validate();
+      return f;
+    } catch (const Error&) {
+      // a spread pushed |kv|·C past π: draw again
+    }
+  }
+}
+
+TEST(FuzzyPartFieldTest, RandomFuzzyPartsRespectTheDefinitionsOnSampledParameters) {
+  std::mt19937_64 rng(7);
+  const double margin = 1e-6;
+  const double levels[] = {0.0, 0.3, 0.7, 1.0};
+  for (int k = 0; k < 4; ++k) {
+    const FuzzyPart part = randomFuzzyPart(rng);
+    const FuzzyPartField field(part);
+    const PlacedSuperquadric core = part.coreRepresentative();
+    Vec3 lo, hi;
+    field.boundingBox(&lo, &hi);
+    std::vector<PartBox> boxes;
+    for (double a : levels) boxes.push_back(part.boxAt(a));
+    for (int i = 0; i < 60; ++i) {
+      const Vec3 p = randomPoint(rng, lo, hi);
+      const AlphaLevels v = field.levelsAt(p);
+      ASSERT_GE(v.upper, 0.0f);
+      ASSERT_LE(v.upper, 1.0f);
+      ASSERT_TRUE((v.lower >= 0.0f && v.lower <= 1.0f) || v.lower == kNeverInside);
+      for (size_t j = 0; j < boxes.size(); ++j) {
+        const double alpha = levels[j];
+        for (int s = 0; s < 24; ++s) {
+          const double f = sampleTheta(rng, boxes[j], s < 12).insideOutside(p);
+          // A sampled θ inside proves p ∈ upper(α): u >= α (rounded down by at
+          // most τ).
+          if (f <= 1.0 - margin) {
+            EXPECT_GE(v.upper, alpha - kTau - kSlack) << k << " " << i;
+          }
+          // A sampled θ outside proves p ∉ lower(α): l >= α.
+          if (f > 1.0 + margin) {
+            EXPECT_GE(v.lower, alpha - kSlack) << k << " " << i;
+          }
+        }
+      }
+      // Nesting lower ⊆ core ⊆ upper.
+      const double fc = core.insideOutside(p);
+      if (v.lower <= 1.0f) {
+        EXPECT_LE(fc, 1.0 + margin);
+        EXPECT_EQ(v.upper, 1.0f);
+      }
+      if (fc <= 1.0 - margin) {
+        EXPECT_EQ(v.upper, 1.0f);
+      }
+      if (v.upper < 1.0f) {
+        EXPECT_GT(fc, 1.0 - margin);
+      }
+    }
+  }
+}
+
+// boundsOver bounds the true levels. levelsAt gives them (to τ) unless a query
+// ran out of budget; its conservative answer may then leave the bounds (the
+// enclosure is not monotone under inclusion, so a block can be excluded where
+// its points are not), so those points are skipped and counted.
+TEST(FuzzyPartFieldTest, BoundsOverHoldEveryPointOfTheBox) {
+  std::mt19937_64 rng(8);
+  int uniformBlocks = 0, checked = 0, skipped = 0;
+  for (int k = 0; k < 4; ++k) {
+    FuzzyPart part;
+    if (k == 0) part.a1 = tri(0.6, 1, 1.5);
+    if (k == 1) {
+      part.tx = tri(-1, 0, 1);
+      part.a3 = tri(1.5, 2, 2.2);
+      part.deg = tri(10, 30, 40);
+      part.axis = {1, 1, 0};
+    }
+    if (k >= 2) part = randomFuzzyPart(rng);
+    const FuzzyPartField field(part);
+    Vec3 lo, hi;
+    field.boundingBox(&lo, &hi);
+    const Vec3 size = hi - lo;
+    for (int b = 0; b < (k < 2 ? 40 : 12); ++b) {
+      const double edge = uniform(rng, 0.02, 0.3) * std::max({size.x, size.y, size.z});
+      const Vec3 c = randomPoint(rng, lo, hi);
+      const Vec3 blo = c, bhi = c + Vec3{edge, edge, edge};
+      const AlphaLevelBounds bounds = field.boundsOver(blo, bhi);
+      uniformBlocks += bounds.uniform();
+      for (int i = 0; i < 6; ++i) {
+        const Vec3 p = i < 2 ? (i == 0 ? blo : bhi) : randomPoint(rng, blo, bhi);
+        const std::uint64_t before = field.budgetExhaustions();
+        const AlphaLevels v = field.levelsAt(p);
+        if (field.budgetExhaustions() != before) {
+          ++skipped;
+          continue;
+        }
+        ++checked;
+        EXPECT_GE(v.upper, bounds.upperMin) << k;
+        EXPECT_LE(v.upper, bounds.upperMax) << k;
+        EXPECT_GE(v.lower, bounds.lowerMin) << k;
+        EXPECT_LE(v.lower, bounds.lowerMax) << k;
+      }
+    }
+    if (k == 0) {
+      EXPECT_EQ(field.budgetExhaustions(), 0u);
+    }
+  }
+  EXPECT_GT(uniformBlocks, 20);
+  EXPECT_GT(checked, skipped);
+}
+
+TEST(FuzzyPartFieldTest, BoundingBoxHoldsEveryPossiblyInsidePoint) {
+  std::mt19937_64 rng(9);
+  for (int k = 0; k < 6; ++k) {
+    const FuzzyPart part = randomFuzzyPart(rng);
+    const FuzzyPartField field(part);
+    Vec3 lo, hi;
+    field.boundingBox(&lo, &hi);
+    const PartBox support = part.boxAt(0.0);
+    // Surface points of sampled parts (the canonical surface mapped to the
+    // world).
+    for (int s = 0; s < 200; ++s) {
+      const PlacedSuperquadric theta = sampleTheta(rng, support, s % 2 == 0);
+      const SuperquadricParams& q = theta.params;
+      const Vec3 dir{uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)};
+      // Scale dir onto the canonical surface: G is homogeneous of degree one.
+      const Vec3 c = dir / homogeneousInsideOutside(q, dir);
+      const Vec3 w = theta.toWorld(c);
+      EXPECT_TRUE(w.x >= lo.x && w.x <= hi.x && w.y >= lo.y && w.y <= hi.y && w.z >= lo.z &&
+                  w.z <= hi.z)
+          << k << " " << s;
+    }
+    // Outside the box: u = 0 and l = never (unless the budget ran out: then u
+    // is conservative).
+    const Vec3 out = hi + Vec3{0.1, 0.1, 0.1};
+    const std::uint64_t before = field.budgetExhaustions();
+    const AlphaLevels v = field.levelsAt(out);
+    if (field.budgetExhaustions() == before) {
+      EXPECT_EQ(v.upper, 0.0f);
+    }
+    EXPECT_EQ(v.lower, kNeverInside);
+  }
+}
+
+TEST(FuzzyPartFieldTest, UniformBlocksOfAFuzzySphere) {
+  FuzzyPart part;
+  part.a1 = tri(0.6, 1, 1.5);
+  const FuzzyPartField field(part);
+  const AlphaLevelBounds in = field.boundsOver({-0.1, -0.1, -0.1}, {0.1, 0.1, 0.1});
+  EXPECT_TRUE(in.uniform());
+  EXPECT_EQ(in.upperMin, 1.0f);
+  EXPECT_EQ(in.lowerMax, 0.0f);
+  const AlphaLevelBounds out = field.boundsOver({2, 2, 2}, {2.1, 2.1, 2.1});
+  EXPECT_TRUE(out.uniform());
+  EXPECT_EQ(out.upperMax, 0.0f);
+  EXPECT_EQ(out.lowerMin, kNeverInside);
+  // Between the core sphere and the support sphere: never in lower(1), not
+  // uniform.
+  const AlphaLevelBounds ring = field.boundsOver({1.1, 0, 0}, {1.2, 0.05, 0.05});
+  EXPECT_FALSE(ring.uniform());
+  EXPECT_EQ(ring.lowerMin, kNeverInside);
+  // Inside the core sphere but outside the support's smallest sphere: u = 1, l
+  // <= 1.
+  const AlphaLevelBounds shell = field.boundsOver({0.7, 0, 0}, {0.8, 0.05, 0.05});
+  EXPECT_EQ(shell.upperMin, 1.0f);
+  EXPECT_EQ(shell.lowerMax, 1.0f);
+}
+
+TEST(FuzzyPartFieldTest, PredicatesAreMonotoneInAlpha) {
+  FuzzyPart part;
+  part.a1 = tri(0.6, 1, 1.5);
+  part.kx = tri(-0.3, 0, 0.3);
+  part.deg = tri(-20, 0, 20);
+  part.axis = {1, 0, 0};
+  const FuzzyPartField field(part);
+  std::mt19937_64 rng(10);
+  for (int i = 0; i < 50; ++i) {
+    const Vec3 p = randomPoint(rng, {-1.6, -1.6, -1.6}, {1.6, 1.6, 1.6});
+    bool possiblyBefore = true, necessarilyBefore = false;
+    for (int j = 0; j <= 8; ++j) {
+      const double a = j / 8.0;
+      const bool possibly = field.possiblyInside(p, a), necessarily = field.necessarilyInside(p, a);
+      EXPECT_TRUE(possiblyBefore || !possibly);
+      EXPECT_TRUE(!necessarilyBefore || necessarily);
+      EXPECT_TRUE(!necessarily || possibly);
+      possiblyBefore = possibly;
+      necessarilyBefore = necessarily;
+    }
+  }
+}
+
+TEST(FuzzyPartFieldTest, ValidationPaths) {
+  FuzzyPart bad;
+  bad.eps1 = tri(0, 1, 2);
+  expectInvalidParameter([&] { FuzzyPartField f(bad); }, "params.eps1");
+  FuzzyPartFieldOptions o;
+  o.tolerance = 0;
+  expectInvalidParameter([&] { FuzzyPartField f(FuzzyPart{}, o); }, "tolerance");
+  o.tolerance = 0.75;
+  expectInvalidParameter([&] { FuzzyPartField f(FuzzyPart{}, o); }, "tolerance");
+  o = {};
+  o.evaluationBudget = 0;
+  expectInvalidParameter([&] { FuzzyPartField f(FuzzyPart{}, o); }, "evaluationBudget");
+}
+
+TEST(FuzzyPartFieldTest, ExhaustedBudgetAnswersConservatively) {
+  // With one evaluation per query, boxes that need splitting run out of budget:
+  // then possiblyInside says true (upper is an outer bound) and
+  // necessarilyInside false (lower is an inner bound), so upper only grows and
+  // lower only shrinks.
+  FuzzyPart part;
+  part.a1 = tri(0.6, 1, 1.5);
+  part.a2 = tri(0.5, 0.7, 1.2);
+  part.deg = tri(-40, 0, 40);
+  part.kx = tri(-0.4, 0, 0.4);
+  FuzzyPartFieldOptions o;
+  o.evaluationBudget = 1;
+  const FuzzyPartField starved(part, o), exact(part);
+  std::mt19937_64 rng(11);
+  for (int i = 0; i < 300; ++i) {
+    const Vec3 p = randomPoint(rng, {-1.6, -1.6, -1.6}, {1.6, 1.6, 1.6});
+    const double a = uniform(rng, 0, 1);
+    if (exact.possiblyInside(p, a)) {
+      EXPECT_TRUE(starved.possiblyInside(p, a));
+    }
+    if (!exact.necessarilyInside(p, a)) {
+      EXPECT_FALSE(starved.necessarilyInside(p, a));
+    }
+  }
+  EXPECT_GT(starved.budgetExhaustions(), 0u);
+  EXPECT_EQ(exact.budgetExhaustions(), 0u);
+}
+
+}  // namespace
+}  // namespace fsdb
