@@ -9,6 +9,9 @@ void registerServiceRoutes(HttpServer& server);
 // GET /operators, POST /operators/evaluate
 void registerOperatorRoutes(HttpServer& server);
 
+// POST /evaluate
+void registerEvaluationRoutes(HttpServer& server);
+
 // Every route family above, in order.
 void registerAllRoutes(HttpServer& server);
 }  // namespace fsdb

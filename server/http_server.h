@@ -28,6 +28,8 @@ struct ServerLimits {
   size_t maxBodyBytes = 64u << 20;  // --max-body-bytes: larger bodies get 413
   int maxJsonDepth = 64;            // --max-json-depth: deeper nesting gets 413
   size_t maxPoints = 1000000;       // --max-points: POST /operators/evaluate points per request
+  int maxResolution = 512;          // --max-resolution: voxels along a shape's longest side
+  size_t maxNodes = 10000;          // --max-nodes: CSG nodes per shape
 };
 
 struct ServerOptions {

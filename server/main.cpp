@@ -10,6 +10,7 @@
 
 #include "fsdb_version.h"
 #include "server/api.h"
+#include "server/eval_command.h"
 #include "server/http_server.h"
 
 namespace {
@@ -81,9 +82,23 @@ int main(int argc, char** argv) {
   serveCmd->add_option("--max-points", serve.limits.maxPoints, "points per POST /operators/evaluate")
       ->check(CLI::PositiveNumber)->capture_default_str();
 
+  serveCmd->add_option("--max-resolution", serve.limits.maxResolution, "largest grid resolution of POST /evaluate")
+      ->check(CLI::Range(2, 4096))->capture_default_str();
+  serveCmd->add_option("--max-nodes", serve.limits.maxNodes, "most CSG nodes in one shape")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+
+  std::string evalFile;
+  fsdb::EvalOptions eval;
+  auto* evalCmd = app.add_subcommand("eval", "evaluate a shape or part document (JSON file, - for stdin) on a voxel grid");
+  evalCmd->add_option("FILE", evalFile, "the document: {\"kind\":\"part\"|\"shape\",...} or a POST /evaluate request")
+      ->required();
+  evalCmd->add_option("--resolution", eval.resolution, "voxels along the longest side")->check(CLI::Range(2, 4096));
+  evalCmd->add_option("--alphas", eval.alphas, "levels, comma separated")->delimiter(',');
+
   CLI11_PARSE(app, argc, argv);
   spdlog::set_level(spdlog::level::from_str(logLevel));
 
   if (serveCmd->parsed()) return runServe(serve);
+  if (evalCmd->parsed()) return fsdb::runEval(evalFile, eval);
   return 2;
 }

@@ -22,6 +22,7 @@ void registerServiceRoutes(HttpServer& server) {
 void registerAllRoutes(HttpServer& server) {
   registerServiceRoutes(server);
   registerOperatorRoutes(server);
+  registerEvaluationRoutes(server);
 }
 
 }  // namespace fsdb

@@ -1,0 +1,34 @@
+#pragma once
+// CSG shape documents (SPEC §2, seed 004 §2.3) parsed into the alpha field of the whole tree:
+//   {"kind":"shape","name":"lamp",
+//    "tree":{"op":"union","operator":{"name":"zadeh"},
+//            "children":[{"part":{inline part},"transform":{...}},
+//                        {"op":"difference","children":[{"part":{...}},{"part":{...}}]}]}}
+// A part document ({"kind":"part",...}) is accepted too, as a one-leaf tree.
+//
+// Semantics: each leaf is a fuzzy superquadric part (geometry/fuzzy_part_field.h); each inner
+// node a Boolean with the exact alpha-cut semantics of SPEC §3 (geometry/csg_field.h). A leaf's
+// "transform" places the inline part; a part that has its own transform cannot take a second
+// one (fuzzy placements do not compose into one placement in general), which is an error.
+//
+// Not yet evaluated, and refused with a message naming the path: references to stored parts
+// and shapes ("part":"<name>", "ref"), the text form "csg" (both need the store), and node
+// operators other than zadeh (smooth operators change the semantics from alpha-cut Booleans to
+// fuzzy-set blends of membership fields). Limits: more than maxNodes nodes is limit_exceeded.
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "geometry/alpha_field.h"
+
+namespace fsdb {
+
+struct ParsedShape {
+  std::shared_ptr<const AlphaFieldSource> field;
+  size_t nodeCount = 0;  // leaves and Boolean nodes
+  size_t partCount = 0;  // leaves
+};
+
+ParsedShape parseShapeField(const nlohmann::json& doc, const std::string& path, size_t maxNodes);
+
+}  // namespace fsdb

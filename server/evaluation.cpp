@@ -1,0 +1,99 @@
+#include "server/evaluation.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "geometry/envelope_grid.h"
+#include "geometry/error.h"
+#include "query/json_body.h"
+#include "query/shape_json.h"
+
+namespace fsdb {
+namespace {
+
+constexpr int kDefaultResolution = 64;
+constexpr size_t kMaxAlphas = 101;
+
+std::vector<double> parseAlphas(const nlohmann::json& request) {
+  if (!request.contains("alphas")) return {0.0, 0.25, 0.5, 0.75, 1.0};
+  const auto& list = requireArray(request["alphas"], "alphas");
+  if (list.empty()) throw Error(errc::kInvalidDocument, "alphas must name at least one level", "alphas");
+  if (list.size() > kMaxAlphas)
+    throw Error(errc::kLimitExceeded, "at most " + std::to_string(kMaxAlphas) + " alphas per request", "alphas");
+  std::vector<double> alphas;
+  for (size_t i = 0; i < list.size(); ++i) {
+    const double a = requireNumber(list[i], joinPath("alphas", i));
+    if (a < 0.0 || a > 1.0) throw Error(errc::kInvalidDocument, "alpha levels lie in [0, 1]", joinPath("alphas", i));
+    alphas.push_back(a);
+  }
+  return alphas;
+}
+
+int parseResolution(const nlohmann::json& request, const EvaluationLimits& limits) {
+  if (!request.contains("resolution")) return std::min(kDefaultResolution, limits.maxResolution);
+  const auto& r = request["resolution"];
+  if (!r.is_number_integer())
+    throw Error(errc::kInvalidDocument, "resolution must be an integer (voxels along the longest side)", "resolution");
+  const long long n = r.get<long long>();
+  if (n < 2) throw Error(errc::kInvalidDocument, "resolution must be at least 2", "resolution");
+  if (n > limits.maxResolution)
+    throw Error(errc::kLimitExceeded,
+                "resolution " + std::to_string(n) + " exceeds max_resolution=" + std::to_string(limits.maxResolution),
+                "resolution");
+  return static_cast<int>(n);
+}
+
+}  // namespace
+
+nlohmann::json evaluateRequest(const nlohmann::json& request, const EvaluationLimits& limits) {
+  requireObject(request, "");
+  for (auto it = request.begin(); it != request.end(); ++it)
+    if (it.key() != "shape" && it.key() != "resolution" && it.key() != "alphas" && it.key() != "method")
+      throw Error(errc::kInvalidDocument, "unknown field '" + it.key() + "'; expected shape, resolution, alphas, method",
+                  it.key());
+  if (request.contains("method")) {
+    const std::string& method = requireString(request["method"], "method");
+    if (method == "boundary")
+      throw Error(errc::kInvalidParameter,
+                  "method \"boundary\" (the paper's corner shapes, seed 004 eq. 4) is not built yet; use \"envelope\"",
+                  "method");
+    if (method != "envelope")
+      throw Error(errc::kInvalidParameter, "unknown method '" + method + "'; expected envelope", "method");
+  }
+  const int resolution = parseResolution(request, limits);
+  const std::vector<double> alphas = parseAlphas(request);
+  const auto started = std::chrono::steady_clock::now();
+  const ParsedShape shape = parseShapeField(requireField(request, "shape", ""), "shape", limits.maxNodes);
+
+  Vec3 lo, hi;
+  shape.field->boundingBox(&lo, &hi);
+  const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  if (!(extent > 0.0) || !std::isfinite(extent))
+    throw Error(errc::kDomainError, "the shape has an empty or unbounded bounding box", "shape");
+  const double voxelSize = extent / resolution;
+  const EnvelopeGrid grid = EnvelopeGrid::build(*shape.field, voxelSize);
+  const std::vector<LevelVolume> volumes = grid.volumes(alphas);
+  const double millis =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+
+  nlohmann::json levels = nlohmann::json::array();
+  for (const LevelVolume& v : volumes)
+    levels.push_back({{"alpha", v.alpha}, {"lower_volume", v.lower_volume}, {"upper_volume", v.upper_volume}});
+  const EnvelopeGridStats& stats = grid.stats();
+  return {{"alphas", levels},
+          {"voxel_size", voxelSize},
+          {"resolution", resolution},
+          {"active_voxels", grid.activeVoxelCount()},
+          {"millis", millis},
+          {"parts", shape.partCount},
+          {"nodes", shape.nodeCount},
+          {"bounding_box", {{"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}}},
+          {"grid",
+           {{"leaf_nodes", stats.leafCount},
+            {"tiles", stats.activeTiles},
+            {"tile_voxels", stats.tileVoxels},
+            {"memory_bytes", stats.memoryBytes}}}};
+}
+
+}  // namespace fsdb

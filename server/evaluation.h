@@ -1,0 +1,24 @@
+#pragma once
+// Evaluation of a shape or part document on a voxel grid (SPEC §3, §4 POST /evaluate), shared by
+// the HTTP endpoint and `fsdb eval FILE`.
+//
+// Request: {"shape":{shape or part document}, "resolution":N, "alphas":[...], "method":"envelope"}
+//   resolution: voxels along the longest side of the shape's bounding box (default 64, at most
+//               limits.maxResolution, else limit_exceeded naming max_resolution)
+//   alphas:     levels in [0,1] (default [0, 0.25, 0.5, 0.75, 1]), at most 101 of them
+//   method:     "envelope" (exact per-voxel levels, the default). "boundary" (the paper's
+//               corner shapes, seed 004 eq. 4) is not built yet and is refused by name.
+// Response: {"alphas":[{"alpha","lower_volume","upper_volume"}], "voxel_size", "active_voxels",
+//            "millis", "parts", "nodes", "grid":{"leaf_nodes","tiles","memory_bytes"}}
+#include <nlohmann/json.hpp>
+
+namespace fsdb {
+
+struct EvaluationLimits {
+  int maxResolution = 512;  // --max-resolution
+  size_t maxNodes = 10000;  // --max-nodes: CSG nodes per shape
+};
+
+nlohmann::json evaluateRequest(const nlohmann::json& request, const EvaluationLimits& limits);
+
+}  // namespace fsdb
