@@ -269,6 +269,8 @@ TEST(FuzzyPartFieldTest, BoundsOverHoldEveryPointOfTheBox) {
   }
   EXPECT_GT(uniformBlocks, 20);
   EXPECT_GT(checked, skipped);
+  RecordProperty("checked", checked);
+  RecordProperty("skipped", skipped);
 }
 
 TEST(FuzzyPartFieldTest, BoundingBoxHoldsEveryPossiblyInsidePoint) {
