@@ -18,9 +18,8 @@ std::string formatSupport(const Interval& s) {
   return "[" + formatNumber(s.lo) + ", " + formatNumber(s.hi) + "]";
 }
 
-// The support must lie in the range. Both ends are checked, so NaN and
-// infinities fail too (the ranges are intervals, so the ends decide for the
-// whole support).
+// The support must lie in the range. Both ends are checked, so NaN and infinities fail too (the
+// ranges are intervals, so the ends decide for the whole support).
 void requireSupport(const std::string& path, const FuzzyNumber& v, double min, bool minInclusive,
                     double max, bool maxInclusive, const std::string& range) {
   const Interval s = v.support();
@@ -58,8 +57,7 @@ FuzzyPart FuzzyPart::fromCrisp(const PlacedSuperquadric& part) {
 }
 
 void FuzzyPart::validate() const {
-  // SPEC §2 ranges, required of the whole support so that every θ in every P(α)
-  // is valid.
+  // SPEC §2 ranges, required of the whole support so that every θ in every P(α) is valid.
   requireSupport("params.eps1", eps1, 0.0, false, 4.0, true, "(0, 4]");
   requireSupport("params.eps2", eps2, 0.0, false, 4.0, true, "(0, 4]");
   requireSupport("params.a1", a1, 0.0, false, kHuge, true, "(0, inf)");
@@ -74,8 +72,7 @@ void FuzzyPart::validate() const {
   requireSupport("params.kx", kx, -1.0, true, 1.0, true, "[-1, 1]");
   requireSupport("params.ky", ky, -1.0, true, 1.0, true, "[-1, 1]");
   requireSupport("params.kv", kv, -kHuge, true, kHuge, true, "the finite numbers");
-  // |kv|·C < π over the whole box: the worst case is the largest |kv| with the
-  // largest C.
+  // |kv|·C < π over the whole box: the worst case is the largest |kv| with the largest C.
   const double maxKv = magnitude(kv.support());
   if (!(maxKv * maxC < kPi))
     throw Error(errc::kInvalidParameter,

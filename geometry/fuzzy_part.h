@@ -1,31 +1,22 @@
 #pragma once
-// FuzzyPart: a fuzzy superquadric part (SPEC §2 "Part"; seed 004 §2.1): every
-// shape parameter and every placement value is a fuzzy number; the rotation
-// axis is crisp.
+// FuzzyPart: a fuzzy superquadric part (SPEC §2 "Part"; seed 004 §2.1): every shape parameter and
+// every placement value is a fuzzy number; the rotation axis is crisp.
 //
 // Contract:
-//  * Defaults are crisp and give the unit sphere at the origin with the
-//  identity placement.
-//  * validate() checks that the whole support box is valid, so every parameter
-//  vector the
-//    alpha-cuts can produce is a valid crisp part (superquadric.h,
-//    transform.h): each support lies in its SPEC range (eps in (0, 4], a1, a2,
-//    a3 > 0, |kx|, |ky| <= 1, scale > 0, all finite) and |kv|·C < π for the
-//    largest |kv| and C = a1·a3 of the box. Errors:
-//    fsdb::Error(errc::kInvalidParameter) with the document path of the bad
-//    value
-//    ("params.eps1", "params.kv", "transform.translate[0]",
-//    "transform.rotate.axis", "transform.rotate.deg", "transform.scale").
-//  * boxAt(alpha) is the parameter box P(α) of SPEC §3: each value's alpha-cut
-//  (its hull for
-//    non-convex memberships), alpha = 0 giving the support's closure. alpha
-//    outside [0, 1] throws errc::kInvalidParameter with path "alpha".
-//  * coreRepresentative() is the crisp part at the midpoints of the cores (a
-//  member of P(1)).
-//  * breakpointLevels() is the sorted union of every membership breakpoint
-//  height, with 0 and
-//    1: between two consecutive levels every alpha-cut end of every value is
-//    linear in α.
+//  * Defaults are crisp and give the unit sphere at the origin with the identity placement.
+//  * validate() checks that the whole support box is valid, so every parameter vector the
+//    alpha-cuts can produce is a valid crisp part (superquadric.h, transform.h): each support lies
+//    in its SPEC range (eps in (0, 4], a1, a2, a3 > 0, |kx|, |ky| <= 1, scale > 0, all finite) and
+//    |kv|·C < π for the largest |kv| and C = a1·a3 of the box. Errors:
+//    fsdb::Error(errc::kInvalidParameter) with the document path of the bad value ("params.eps1",
+//    "params.kv", "transform.translate[0]", "transform.rotate.axis", "transform.rotate.deg",
+//    "transform.scale").
+//  * boxAt(alpha) is the parameter box P(α) of SPEC §3: each value's alpha-cut (its hull for
+//    non-convex memberships), alpha = 0 giving the support's closure. alpha outside [0, 1] throws
+//    errc::kInvalidParameter with path "alpha".
+//  * coreRepresentative() is the crisp part at the midpoints of the cores (a member of P(1)).
+//  * breakpointLevels() is the sorted union of every membership breakpoint height, with 0 and 1:
+//    between two consecutive levels every alpha-cut end of every value is linear in α.
 #include <vector>
 
 #include "geometry/fuzzy_number.h"

@@ -15,12 +15,10 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kSlots = 14;
-// The enclosure is not rounded outwards (superquadric_bounds.h: a few ulps);
-// block decisions that levelsAt must reproduce keep this relative distance from
-// the threshold 1.
+// The enclosure is not rounded outwards (superquadric_bounds.h: a few ulps); block decisions that
+// levelsAt must reproduce keep this relative distance from the threshold 1.
 constexpr double kMargin = 1e-12;
-// A box narrower than this, relative to the support, in every value is treated
-// as one θ.
+// A box narrower than this, relative to the support, in every value is treated as one θ.
 constexpr double kDegenerate = 1e-12;
 
 // The fourteen fuzzy values of a part box, addressed by index for splitting.
@@ -33,8 +31,7 @@ Interval& slot(PartBox& b, int i) {
 }
 const Interval& slot(const PartBox& b, int i) { return slot(const_cast<PartBox&>(b), i); }
 
-// F at the centre of the box: a crisp witness (every θ of a validated part's
-// box is valid).
+// F at the centre of the box: a crisp witness (every θ of a validated part's box is valid).
 double centreValue(const PartBox& b, const Vec3& p) {
   PlacedSuperquadric part;
   const SuperquadricBox& q = b.params;
@@ -48,8 +45,7 @@ double centreValue(const PartBox& b, const Vec3& p) {
   return part.insideOutside(p);
 }
 
-// Directed conversions, so that float storage keeps the rounding directions of
-// levelsAt.
+// Directed conversions, so that float storage keeps the rounding directions of levelsAt.
 float floatDown(double v) {
   float f = static_cast<float>(v);
   return static_cast<double>(f) > v ? std::nextafter(f, -1.0f) : f;
@@ -96,14 +92,12 @@ bool FuzzyPartField::decide(const Vec3& p, const PartBox& box, Question q) const
     stack.pop_back();
     ++evaluations;
     const Interval f = insideOutsideBounds(item.box, px, py, pz);
-    // The enclosure excludes the box from the question (no witness can lie in
-    // it).
+    // The enclosure excludes the box from the question (no witness can lie in it).
     if (possibly ? f.lo > 1.0 : f.hi <= 1.0) continue;
-    if (settles(item.centre))
-      return possibly;  // a witness: inside (possibly), outside (not
-                        // necessarily)
-    // Split the value that is widest relative to its support: a common
-    // yardstick for sizes, angles and exponents.
+    // A crisp witness: inside (possibly) or outside (not necessarily).
+    if (settles(item.centre)) return possibly;
+    // Split the value that is widest relative to its support: a common yardstick for sizes, angles
+    // and exponents.
     int widest = -1;
     double widestRelative = kDegenerate;
     for (int i = 0; i < kSlots; ++i) {
@@ -114,8 +108,7 @@ bool FuzzyPartField::decide(const Vec3& p, const PartBox& box, Question q) const
         widestRelative = r;
       }
     }
-    // One θ (up to kDegenerate): its crisp value, which did not settle, is the
-    // answer for it.
+    // One θ (up to kDegenerate): its crisp value, which did not settle, is the answer for it.
     if (widest < 0) continue;
     Item a = item, b = item;
     const Interval v = slot(item.box, widest);
@@ -125,8 +118,8 @@ bool FuzzyPartField::decide(const Vec3& p, const PartBox& box, Question q) const
     a.centre = centreValue(a.box, p);
     b.centre = centreValue(b.box, p);
     if (settles(a.centre) || settles(b.centre)) return possibly;
-    // Depth first, most promising half on top: the smaller F for a witness
-    // inside, the larger for a witness outside.
+    // Depth first, most promising half on top: the smaller F for a witness inside, the larger for a
+    // witness outside.
     const bool aFirst = possibly ? a.centre <= b.centre : a.centre >= b.centre;
     stack.push_back(aFirst ? std::move(b) : std::move(a));
     stack.push_back(aFirst ? std::move(a) : std::move(b));
@@ -153,15 +146,13 @@ bool FuzzyPartField::necessarilyInside(const Vec3& p, double alpha) const {
 
 AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
   const double tau = options_.tolerance;
-  // Fast exits (SPEC §3: P(α) shrinks as α grows, so both predicates are
-  // monotone in α).
+  // Fast exits (SPEC §3: P(α) shrinks as α grows, so both predicates are monotone in α).
   if (necessarilyInside(p, 0.0)) return {1.0f, 0.0f};  // in lower(0) ⊆ lower(α) ⊆ upper(α)
   if (!possiblyInside(p, 0.0)) return {0.0f, kNeverInside};
   AlphaLevels out;
   double u = 1.0;
   if (!possiblyInside(p, 1.0)) {
-    // Invariant: possibly at lo, not at hi. Report lo: every reported
-    // membership has a witness.
+    // Invariant: possibly at lo, not at hi. Report lo: every reported membership has a witness.
     double lo = 0.0, hi = 1.0;
     while (hi - lo > tau) {
       const double m = 0.5 * (lo + hi);
@@ -170,12 +161,10 @@ AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
     u = lo;
   }
   out.upper = floatDown(u);
-  // l <= 1 needs p ∈ lower(1) ⊆ upper(1), so it is only sought where u = 1:
-  // this keeps lower ⊆ upper in the output even where rounding could make the
-  // predicates disagree.
+  // l <= 1 needs p ∈ lower(1) ⊆ upper(1), so it is only sought where u = 1: this keeps lower ⊆
+  // upper in the output even where rounding could make the predicates disagree.
   if (u == 1.0 && necessarilyInside(p, 1.0)) {
-    // Invariant: not necessarily at lo (lo = 0 was the fast exit), necessarily
-    // at hi. Report hi.
+    // Invariant: not necessarily at lo (lo = 0 was the fast exit), necessarily at hi. Report hi.
     double lo = 0.0, hi = 1.0;
     while (hi - lo > tau) {
       const double m = 0.5 * (lo + hi);
@@ -197,8 +186,7 @@ AlphaLevelBounds FuzzyPartField::boundsOver(const Vec3& lo, const Vec3& hi) cons
     // Outside S(θ) for every θ in P(1): never in lower(1), and u < 1.
     b.lowerMin = b.lowerMax = kNeverInside;
   } else if (f1.hi <= 1.0 - kMargin) {
-    // Inside S(θ) for every θ in P(1): in lower(1) (l <= 1) and in upper(1) (u
-    // = 1).
+    // Inside S(θ) for every θ in P(1): in lower(1) (l <= 1) and in upper(1) (u = 1).
     b.upperMin = 1.0f;
     b.lowerMax = 1.0f;
   }
@@ -208,19 +196,16 @@ AlphaLevelBounds FuzzyPartField::boundsOver(const Vec3& lo, const Vec3& hi) cons
 void FuzzyPartField::boundingBox(Vec3* lo, Vec3* hi) const {
   const SuperquadricBox& q = support_.params;
   const PlacementBox& pl = support_.placement;
-  // Canonical half-lengths, widened by the taper factor (SPEC §2: X = x(kx·z/C
-  // + 1), |z| <= C).
+  // Canonical half-lengths, widened by the taper factor (SPEC §2: X = x(kx·z/C + 1), |z| <= C).
   double X = q.a1.hi * (1.0 + magnitude(q.kx));
   double Y = q.a1.hi * q.a2.hi * (1.0 + magnitude(q.ky));
   double Z = q.a1.hi * q.a3.hi;
-  // Twist turns the cross-section about z: it stays within the circle of the
-  // corner radius.
+  // Twist turns the cross-section about z: it stays within the circle of the corner radius.
   if (magnitude(q.t) > 0.0) X = Y = std::hypot(X, Y);
-  // Bend with curvature k, γ = k·z: X' − x = (1/k − x)(1 − cos γ) and Z' = sin
-  // γ·(1/k − x). With 1 − cos γ <= min(2, γ²/2) and |sin γ| <= min(1, |γ|):
+  // Bend with curvature k, γ = k·z: X' − x = (1/k − x)(1 − cos γ) and Z' = sin γ·(1/k − x).
+  // With 1 − cos γ <= min(2, γ²/2) and |sin γ| <= min(1, |γ|):
   //   |X' − x| <= (1 + K·X)·min(2/|k|, |k|·Z²/2) <= (1 + K·X)·min(Z, K·Z²/2),
-  //   |Z'| <= min(1/|k|, Z) + X·min(1, |k|·Z) <= Z + X·min(1, K·Z),  K = max
-  //   |kv|.
+  //   |Z'| <= min(1/|k|, Z) + X·min(1, |k|·Z) <= Z + X·min(1, K·Z),   K = max |kv|.
   const double K = magnitude(q.kv);
   if (K > 0.0) {
     const double bentX = X + (1.0 + K * X) * std::min(Z, 0.5 * K * Z * Z);
@@ -228,8 +213,8 @@ void FuzzyPartField::boundingBox(Vec3* lo, Vec3* hi) const {
     X = bentX;
     Z = bentZ;
   }
-  // Placement: scale, rotate, translate. The local box is symmetric, so every
-  // scale up to the largest maps it into the largest scaled box.
+  // Placement: scale, rotate, translate. The local box is symmetric, so every scale up to the
+  // largest maps it into the largest scaled box.
   const double s = pl.scale.hi;
   const Vec3 half{s * X, s * Y, s * Z};
   const Rotation r = Rotation::fromAxisAngle(pl.axis, mid(pl.deg));
@@ -241,8 +226,7 @@ void FuzzyPartField::boundingBox(Vec3* lo, Vec3* hi) const {
     extent = {std::max(extent.x, std::fabs(w.x)), std::max(extent.y, std::fabs(w.y)),
               std::max(extent.z, std::fabs(w.z))};
   }
-  // Angles within δ of the mid angle move a point v by at most the chord
-  // 2·sin(δ/2)·|v|.
+  // Angles within δ of the mid angle move a point v by at most the chord 2·sin(δ/2)·|v|.
   const double delta = std::min(0.5 * width(pl.deg) * kPi / 180.0, kPi);
   const double pad = 2.0 * std::sin(0.5 * delta) * norm(half);
   *lo = {pl.tx.lo - extent.x - pad, pl.ty.lo - extent.y - pad, pl.tz.lo - extent.z - pad};

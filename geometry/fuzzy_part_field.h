@@ -1,44 +1,36 @@
 #pragma once
-// FuzzyPartField: the alpha field (alpha_field.h) of one fuzzy superquadric
-// part (fsdb issue 3; SPEC §3, seed 004 §3.2): upper(α) = ∪ S(θ) and lower(α) =
-// ∩ S(θ) over θ in P(α).
+// FuzzyPartField: the alpha field (alpha_field.h) of one fuzzy superquadric part (fsdb issue 3;
+// SPEC §3, seed 004 §3.2): upper(α) = ∪ S(θ) and lower(α) = ∩ S(θ) over θ in P(α).
 //
-// Point queries are certified branch and bound over the parameter box at the
-// point:
-//  * possiblyInside(p, α)  ⇔ ∃θ ∈ P(α): F(p; θ) <= 1. "false" needs the
-//  interval enclosure
-//    (superquadric_bounds.h) of every sub-box to exceed 1; "true" needs a crisp
-//    witness θ.
-//  * necessarilyInside(p, α) ⇔ ∀θ ∈ P(α): F(p; θ) <= 1. "true" needs every
-//  sub-box's
-//    enclosure <= 1; "false" needs a crisp witness with F > 1.
-//  Undecided boxes are split across their widest value, measured relative to
-//  that value's support width. A query has a budget of enclosure evaluations;
-//  when it runs out the answer is the conservative one for the set it serves
-//  and budgetExhaustions() counts it: possiblyInside answers true (upper is an
-//  outer bound), necessarilyInside false (lower is an inner bound). So the
-//  computed upper(α) only grows and lower(α) only shrinks.
+// Point queries are certified branch and bound over the parameter box at the point:
+//  * possiblyInside(p, α)  ⇔ ∃θ ∈ P(α): F(p; θ) <= 1. "false" needs the interval enclosure
+//    (superquadric_bounds.h) of every sub-box to exceed 1; "true" needs a crisp witness θ.
+//  * necessarilyInside(p, α) ⇔ ∀θ ∈ P(α): F(p; θ) <= 1. "true" needs every sub-box's enclosure <=
+//    1; "false" needs a crisp witness θ with F > 1. Undecided boxes are split across their widest
+//    value, measured relative to that value's support width. A query has a budget of enclosure
+//    evaluations; when it runs out the answer is the conservative one for the set it serves and
+//    budgetExhaustions() counts it: possiblyInside answers true (upper is an outer bound),
+//    necessarilyInside false (lower is an inner bound). So the computed upper(α) can only grow and
+//    lower(α) only shrink. Exhaustion happens near the level where p crosses a boundary (the
+//    cluster effect of first-order enclosures: the margin to 1 vanishes there) and where the
+//    enclosure is loose (many fuzzy values, taper factors near 0).
 //
-// levelsAt(p) bisects α on dyadic brackets down to the tolerance τ (default
-// 1/1024):
-//  * u: the bracket end where p was shown possibly inside (rounded down, so u =
-//  1 only when
-//    p ∈ upper(1) was shown); u lies in [u_true − τ, u_true] unless the budget
-//    ran out.
-//  * l: the bracket end where p was shown necessarily inside (rounded up, so l
-//  = 0 only when
-//    p ∈ lower(0) was shown); l lies in [l_true, l_true + τ], or kNeverInside.
-//  Both reported memberships are certified, so lower ⊆ core ⊆ upper holds in
-//  the output: l <= 1 implies u = 1 (enforced, because a θ-box proven inside
-//  also holds the witness). Floats are rounded in the same directions (u down,
-//  l up).
+// levelsAt(p) bisects α on dyadic brackets down to the tolerance τ (default 1/1024):
+//  * u: the bracket end where p was shown possibly inside (rounded down, so u = 1 only when p ∈
+//    upper(1) was shown); u lies in [u_true − τ, u_true] unless the budget ran out (then it may be
+//    higher).
+//  * l: the bracket end where p was shown necessarily inside (rounded up, so l = 0 only when p ∈
+//    lower(0) was proven); l lies in [l_true, l_true + τ], or is kNeverInside; a budget exhaustion
+//    can only raise it. l is sought only where u = 1 (p ∈ lower(1) ⊆ upper(1)), so l <= 1 implies u
+//    = 1 in the output: lower ⊆ core ⊆ upper holds even where rounding could make the predicates
+//    disagree. Floats keep the rounding directions (u down, l up).
 //
-// boundsOver(lo, hi) uses the enclosure over the point box with P(0) and P(1),
-// with a relative margin of 1e-12 for the unrounded enclosure; the levelsAt
-// answers of every point of the box lie within the bounds (the point queries
-// start from the same, inclusion-monotone enclosure). boundingBox() is a simple
-// sound box around upper(0) (deformation and placement bounds over the support
-// box).
+// boundsOver(lo, hi) bounds the true levels of every point of the box, from the enclosure over the
+// point box with P(0) and P(1) (decisions keep a relative margin of 1e-12 from 1, for the unrounded
+// enclosure). levelsAt answers lie within them unless a point query ran out of budget: the
+// enclosure is not monotone under inclusion, so a block may be excluded whole while one of its
+// points needs splitting. boundingBox() is a simple sound box around upper(0) (deformation and
+// placement bounds over the support box).
 //
 // Thread-safe: queries only read the part; the exhaustion counter is atomic.
 #include <atomic>
@@ -51,9 +43,8 @@
 namespace fsdb {
 
 struct FuzzyPartFieldOptions {
-  // Bisection tolerance in α: (0, 0.5]. 1/1024 is below the resolution anyone
-  // reads from a level set (ten bisection steps) and makes every bracket end a
-  // dyadic float.
+  // Bisection tolerance in α: (0, 0.5]. 1/1024 is below the resolution anyone reads from a level
+  // set (ten bisection steps) and makes every bracket end a dyadic float.
   double tolerance = 1.0 / 1024.0;
   // Enclosure evaluations per branch-and-bound query, >= 1.
   int evaluationBudget = 4096;
@@ -61,9 +52,8 @@ struct FuzzyPartFieldOptions {
 
 class FuzzyPartField : public AlphaFieldSource {
  public:
-  // Validates the part (FuzzyPart::validate) and the options (paths
-  // "tolerance", "evaluationBudget"); throws
-  // fsdb::Error(errc::kInvalidParameter).
+  // Validates the part (FuzzyPart::validate) and the options (paths "tolerance",
+  // "evaluationBudget"); throws fsdb::Error(errc::kInvalidParameter).
   explicit FuzzyPartField(const FuzzyPart& part, FuzzyPartFieldOptions options = {});
 
   AlphaLevels levelsAt(const Vec3& p) const override;
@@ -76,8 +66,7 @@ class FuzzyPartField : public AlphaFieldSource {
 
   const FuzzyPart& part() const { return part_; }
   double tolerance() const { return options_.tolerance; }
-  // How many queries ran out of budget and answered conservatively, since
-  // construction.
+  // How many queries ran out of budget and answered conservatively, since construction.
   std::uint64_t budgetExhaustions() const { return exhaustions_.load(); }
 
  private:

@@ -59,8 +59,7 @@ TEST(FuzzyPartFieldTest, CrispPartIsInsideOrOutsideAtEveryLevel) {
     field.boundingBox(&lo, &hi);
     int inside = 0;
     for (int i = 0; i < 200; ++i) {
-      // Half in the bounding box, half the images of the canonical box (many
-      // inside).
+      // Half in the bounding box, half the images of the canonical box (many inside).
       const Vec3 p = i % 2 ? randomPoint(rng, lo, hi)
                            : crisp.toWorld(testing::randomPointInBox(rng, crisp.params));
       const double f = crisp.insideOutside(p);
@@ -122,9 +121,8 @@ TEST(FuzzyPartFieldTest, FuzzyTranslationSweepsACapsuleAndKeepsALens) {
       continue;
     }
     ++checked;
-    // P(α): tx in [−(1 − α), 1 − α]. upper(α): distance to the segment <= 1,
-    // i.e. |x| <= (1 − α) + h with h = √(1 − ρ²). lower(α) = the two end
-    // spheres' lens: |x| + (1 − α) <= h.
+    // P(α): tx in [−(1 − α), 1 − α]. upper(α): distance to the segment <= 1, i.e. |x| <= (1 − α) +
+    // h with h = √(1 − ρ²). lower(α) = the two end spheres' lens: |x| + (1 − α) <= h.
     const double h = std::sqrt(1.0 - rho2), ax = std::fabs(p.x);
     const double excess = ax - h;
     const double u = excess <= 0.0 ? 1.0 : excess >= 1.0 ? 0.0 : 1.0 - excess;
@@ -142,8 +140,7 @@ TEST(FuzzyPartFieldTest, FuzzyTranslationSweepsACapsuleAndKeepsALens) {
   EXPECT_EQ(field.budgetExhaustions(), 0u);
 }
 
-// A random valid fuzzy part: every value of a random crisp part spread by a
-// modest triangle.
+// A random valid fuzzy part: every value of a random crisp part spread by a modest triangle.
 FuzzyPart randomFuzzyPart(std::mt19937_64& rng) {
   for (;;) {
     const SuperquadricParams q = testing::randomParams(rng, true);
@@ -199,8 +196,7 @@ TEST(FuzzyPartFieldTest, RandomFuzzyPartsRespectTheDefinitionsOnSampledParameter
         const double alpha = levels[j];
         for (int s = 0; s < 24; ++s) {
           const double f = sampleTheta(rng, boxes[j], s < 12).insideOutside(p);
-          // A sampled θ inside proves p ∈ upper(α): u >= α (rounded down by at
-          // most τ).
+          // A sampled θ inside proves p ∈ upper(α): u >= α (rounded down by at most τ).
           if (f <= 1.0 - margin) {
             EXPECT_GE(v.upper, alpha - kTau - kSlack) << k << " " << i;
           }
@@ -226,10 +222,9 @@ TEST(FuzzyPartFieldTest, RandomFuzzyPartsRespectTheDefinitionsOnSampledParameter
   }
 }
 
-// boundsOver bounds the true levels. levelsAt gives them (to τ) unless a query
-// ran out of budget; its conservative answer may then leave the bounds (the
-// enclosure is not monotone under inclusion, so a block can be excluded where
-// its points are not), so those points are skipped and counted.
+// boundsOver bounds the true levels. levelsAt gives them (to τ) unless a query ran out of budget;
+// its conservative answer may then leave the bounds (the enclosure is not monotone under inclusion,
+// so a block can be excluded where its points are not), so those points are skipped and counted.
 TEST(FuzzyPartFieldTest, BoundsOverHoldEveryPointOfTheBox) {
   std::mt19937_64 rng(8);
   int uniformBlocks = 0, checked = 0, skipped = 0;
@@ -274,6 +269,8 @@ TEST(FuzzyPartFieldTest, BoundsOverHoldEveryPointOfTheBox) {
   }
   EXPECT_GT(uniformBlocks, 20);
   EXPECT_GT(checked, skipped);
+  RecordProperty("checked", checked);
+  RecordProperty("skipped", skipped);
 }
 
 TEST(FuzzyPartFieldTest, BoundingBoxHoldsEveryPossiblyInsidePoint) {
@@ -284,8 +281,7 @@ TEST(FuzzyPartFieldTest, BoundingBoxHoldsEveryPossiblyInsidePoint) {
     Vec3 lo, hi;
     field.boundingBox(&lo, &hi);
     const PartBox support = part.boxAt(0.0);
-    // Surface points of sampled parts (the canonical surface mapped to the
-    // world).
+    // Surface points of sampled parts (the canonical surface mapped to the world).
     for (int s = 0; s < 200; ++s) {
       const PlacedSuperquadric theta = sampleTheta(rng, support, s % 2 == 0);
       const SuperquadricParams& q = theta.params;
@@ -297,8 +293,7 @@ TEST(FuzzyPartFieldTest, BoundingBoxHoldsEveryPossiblyInsidePoint) {
                   w.z <= hi.z)
           << k << " " << s;
     }
-    // Outside the box: u = 0 and l = never (unless the budget ran out: then u
-    // is conservative).
+    // Outside the box: u = 0 and l = never (unless the budget ran out: then u is conservative).
     const Vec3 out = hi + Vec3{0.1, 0.1, 0.1};
     const std::uint64_t before = field.budgetExhaustions();
     const AlphaLevels v = field.levelsAt(out);
@@ -321,13 +316,11 @@ TEST(FuzzyPartFieldTest, UniformBlocksOfAFuzzySphere) {
   EXPECT_TRUE(out.uniform());
   EXPECT_EQ(out.upperMax, 0.0f);
   EXPECT_EQ(out.lowerMin, kNeverInside);
-  // Between the core sphere and the support sphere: never in lower(1), not
-  // uniform.
+  // Between the core sphere and the support sphere: never in lower(1), not uniform.
   const AlphaLevelBounds ring = field.boundsOver({1.1, 0, 0}, {1.2, 0.05, 0.05});
   EXPECT_FALSE(ring.uniform());
   EXPECT_EQ(ring.lowerMin, kNeverInside);
-  // Inside the core sphere but outside the support's smallest sphere: u = 1, l
-  // <= 1.
+  // Inside the core sphere but outside the support's smallest sphere: u = 1, l <= 1.
   const AlphaLevelBounds shell = field.boundsOver({0.7, 0, 0}, {0.8, 0.05, 0.05});
   EXPECT_EQ(shell.upperMin, 1.0f);
   EXPECT_EQ(shell.lowerMax, 1.0f);
@@ -371,10 +364,9 @@ TEST(FuzzyPartFieldTest, ValidationPaths) {
 }
 
 TEST(FuzzyPartFieldTest, ExhaustedBudgetAnswersConservatively) {
-  // With one evaluation per query, boxes that need splitting run out of budget:
-  // then possiblyInside says true (upper is an outer bound) and
-  // necessarilyInside false (lower is an inner bound), so upper only grows and
-  // lower only shrinks.
+  // With one evaluation per query, boxes that need splitting run out of budget: then possiblyInside
+  // says true (upper is an outer bound) and necessarilyInside false (lower is an inner bound), so
+  // upper only grows and lower only shrinks.
   FuzzyPart part;
   part.a1 = tri(0.6, 1, 1.5);
   part.a2 = tri(0.5, 0.7, 1.2);

@@ -78,8 +78,7 @@ TEST(FuzzyPartTest, BreakpointLevelsAreTheSortedUnionOfHeights) {
   part.eps1 = FuzzyNumber::fromPoints({{0.5, 0}, {0.8, 0.5}, {1, 1}, {1.2, 0.25}, {1.5, 0}});
   const std::vector<double> levels = part.breakpointLevels();
   EXPECT_EQ(levels, (std::vector<double>{0.0, 0.25, 0.5, 1.0}));
-  // Between consecutive levels the cut ends are linear in α: check a midpoint
-  // of each piece.
+  // Between consecutive levels the cut ends are linear in α: check a midpoint of each piece.
   for (size_t i = 0; i + 1 < levels.size(); ++i) {
     const double a = levels[i], b = levels[i + 1], m = 0.5 * (a + b);
     const Interval ca = part.a1.alphaCut(a == 0 ? 1e-300 : a), cb = part.a1.alphaCut(b),
@@ -102,8 +101,7 @@ TEST(FuzzyPartTest, ValidationNamesTheBadValue) {
   expectInvalidParameter(with([](FuzzyPart& p) { p.a3 = tri(0, 0.5, 1); }), "params.a3");
   expectInvalidParameter(with([](FuzzyPart& p) { p.kx = tri(0.5, 1, 1.1); }), "params.kx");
   expectInvalidParameter(with([](FuzzyPart& p) { p.ky = tri(-1.5, 0, 0); }), "params.ky");
-  // |kv|·C < π over the whole box: the core alone (kv = 1, C = 2) is valid, the
-  // support is not.
+  // |kv|·C < π over the whole box: the core alone (kv = 1, C = 2) is valid, the support is not.
   expectInvalidParameter(with([](FuzzyPart& p) {
                            p.a3 = tri(1, 2, 3.5);
                            p.kv = tri(0.5, 1, 1.2);
@@ -114,8 +112,8 @@ TEST(FuzzyPartTest, ValidationNamesTheBadValue) {
                            p.a1 = FuzzyNumber::crisp(1e10);
                          }),
                          "params.a2");
-  // Fuzzy numbers are finite by construction, so of the placement only the axis
-  // and the scale can be out of range.
+  // Fuzzy numbers are finite by construction, so of the placement only the axis and the scale can
+  // be out of range.
   expectInvalidParameter(with([](FuzzyPart& p) { p.axis = {NAN, 0, 1}; }), "transform.rotate.axis");
   expectInvalidParameter(with([](FuzzyPart& p) { p.axis = {0, 0, 0}; }), "transform.rotate.axis");
   expectInvalidParameter(with([](FuzzyPart& p) { p.scale = tri(0, 1, 2); }), "transform.scale");

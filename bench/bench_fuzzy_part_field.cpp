@@ -1,0 +1,110 @@
+// Speed of the alpha field of one fuzzy superquadric part (geometry/fuzzy_part_field.h; fsdb issue
+// 3): ns per levelsAt at points inside, outside and on the boundary band, for a crisp unit sphere,
+// a fuzzy sphere (a1 = tri(0.8, 1, 1.2)) and a fuzzy bent, tapered, twisted, placed part (every
+// value spread by a few percent); and ns per boundsOver on blocks of edge 0.1 around the part.
+// Points and blocks are fixed (seed 1).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "geometry/fuzzy_part_field.h"
+
+namespace fsdb {
+namespace {
+
+FuzzyNumber spread(double m, double s) { return FuzzyNumber::triangular(m - s, m, m + s); }
+
+FuzzyPart crispSphere() { return FuzzyPart{}; }
+
+FuzzyPart fuzzySphere() {
+  FuzzyPart part;
+  part.a1 = FuzzyNumber::triangular(0.8, 1.0, 1.2);
+  return part;
+}
+
+FuzzyPart fuzzyDeformed() {
+  FuzzyPart part;
+  part.eps1 = spread(0.7, 0.035);
+  part.eps2 = spread(1.3, 0.065);
+  part.a1 = spread(1.0, 0.05);
+  part.a2 = spread(0.8, 0.04);
+  part.a3 = spread(2.0, 0.1);
+  part.kx = spread(0.4, 0.05);
+  part.ky = spread(-0.3, 0.05);
+  part.kv = spread(0.3, 0.015);
+  part.t = spread(1.2, 0.05);
+  part.tx = spread(0.5, 0.025);
+  part.ty = spread(-0.25, 0.0125);
+  part.tz = spread(0.1, 0.005);
+  part.axis = {1, 1, 0};
+  part.deg = spread(30, 3);
+  part.scale = spread(1.5, 0.075);
+  return part;
+}
+
+FuzzyPart makePart(int which) {
+  return which == 0 ? crispSphere() : which == 1 ? fuzzySphere() : fuzzyDeformed();
+}
+
+// Points of one class: inside S(θ) for every θ in P(0) (l = 0), outside for every θ (u = 0), or the
+// band in between (where the bisections run).
+std::vector<Vec3> samplePoints(const FuzzyPartField& field, int cls) {
+  Vec3 lo, hi;
+  field.boundingBox(&lo, &hi);
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Vec3> points;
+  for (int tries = 0; tries < 20000 && points.size() < 64; ++tries) {
+    const Vec3 p{lo.x + (hi.x - lo.x) * u(rng), lo.y + (hi.y - lo.y) * u(rng),
+                 lo.z + (hi.z - lo.z) * u(rng)};
+    const int c = field.necessarilyInside(p, 0.0) ? 0 : !field.possiblyInside(p, 0.0) ? 1 : 2;
+    if (c == cls) points.push_back(p);
+  }
+  return points;
+}
+
+// state.range(0): part (0 crisp sphere, 1 fuzzy sphere, 2 fuzzy deformed); state.range(1): point
+// class (0 inside, 1 outside, 2 boundary band).
+void BM_LevelsAt(benchmark::State& state) {
+  const FuzzyPartField field(makePart(static_cast<int>(state.range(0))));
+  const std::vector<Vec3> points = samplePoints(field, static_cast<int>(state.range(1)));
+  if (points.empty()) {
+    state.SkipWithError("no points of this class");
+    return;
+  }
+  const std::uint64_t before = field.budgetExhaustions();
+  size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(field.levelsAt(points[i]));
+    if (++i == points.size()) i = 0;
+  }
+  state.counters["exhausted"] = static_cast<double>(field.budgetExhaustions() - before);
+}
+BENCHMARK(BM_LevelsAt)
+    ->ArgNames({"part", "class"})
+    ->ArgsProduct({{0, 1, 2}, {0, 1, 2}})
+    ->Unit(benchmark::kNanosecond);
+
+void BM_BoundsOver(benchmark::State& state) {
+  const FuzzyPartField field(makePart(static_cast<int>(state.range(0))));
+  Vec3 lo, hi;
+  field.boundingBox(&lo, &hi);
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Vec3> corners(1024);
+  for (auto& c : corners)
+    c = {lo.x + (hi.x - lo.x) * u(rng), lo.y + (hi.y - lo.y) * u(rng),
+         lo.z + (hi.z - lo.z) * u(rng)};
+  const Vec3 edge{0.1, 0.1, 0.1};
+  size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(field.boundsOver(corners[i], corners[i] + edge));
+    if (++i == corners.size()) i = 0;
+  }
+}
+BENCHMARK(BM_BoundsOver)->ArgName("part")->DenseRange(0, 2)->Unit(benchmark::kNanosecond);
+
+}  // namespace
+}  // namespace fsdb
