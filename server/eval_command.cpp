@@ -6,13 +6,33 @@
 
 #include "geometry/error.h"
 #include "query/json_body.h"
+#include "geometry/envelope_mesh.h"
 #include "server/evaluation.h"
+#include "server/mesh_format.h"
 #include "server/http_errors.h"
 
 namespace fsdb {
 
+namespace {
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+void writeFile(const std::string& path, const std::string& bytes, const std::string& option) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  if (!out) throw Error(errc::kInvalidParameter, "cannot write " + path, option);
+}
+
+}  // namespace
+
 int runEval(const std::string& file, const EvalOptions& options) {
   try {
+    if (!options.meshPath.empty() && !endsWith(options.meshPath, ".obj") && !endsWith(options.meshPath, ".stl"))
+      throw Error(errc::kInvalidParameter, "--mesh takes a file ending in .obj or .stl", "--mesh");
+    if (options.meshBound != "lower" && options.meshBound != "upper")
+      throw Error(errc::kInvalidParameter, "--mesh-bound is lower or upper", "--mesh-bound");
     std::stringstream text;
     if (file == "-") {
       text << std::cin.rdbuf();
@@ -27,7 +47,20 @@ int runEval(const std::string& file, const EvalOptions& options) {
     if (!options.alphas.empty()) request["alphas"] = options.alphas;
     EvaluationLimits limits;
     limits.maxResolution = 4096;  // the command line is the user's own machine: no server limit
-    std::cout << evaluateRequest(request, limits).dump(2) << std::endl;
+    const Evaluation evaluation = evaluateShape(request, limits);
+    nlohmann::json result = evaluation.result;
+    if (!options.meshPath.empty()) {
+      const EnvelopeBound bound = options.meshBound == "lower" ? EnvelopeBound::kLower : EnvelopeBound::kUpper;
+      const TriangleMesh mesh = extractMesh(*evaluation.grid, options.meshAlpha, bound);
+      writeFile(options.meshPath, endsWith(options.meshPath, ".stl") ? toBinaryStl(mesh) : toObj(mesh), "--mesh");
+      result["mesh"] = {{"path", options.meshPath}, {"alpha", options.meshAlpha}, {"bound", options.meshBound},
+                        {"vertices", mesh.vertices.size()}, {"triangles", mesh.triangles.size()}};
+    }
+    if (!options.vdbPath.empty()) {
+      writeFile(options.vdbPath, vdbBytes(*evaluation.grid), "--vdb");
+      result["vdb"] = options.vdbPath;
+    }
+    std::cout << result.dump(2) << std::endl;
     return 0;
   } catch (const Error& e) {
     std::cerr << errorBody(e.code(), e.what(), e.path()).dump() << std::endl;

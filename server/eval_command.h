@@ -1,8 +1,9 @@
 #pragma once
 // `fsdb eval FILE`: evaluates a document without a server and prints the POST /evaluate answer.
 // FILE holds a part or shape document, or a whole POST /evaluate request ({"shape":...}); "-"
-// reads stdin. --resolution and --alphas override the request's. Exit 0 on success, 1 with the
-// error body on stderr otherwise.
+// reads stdin. --resolution and --alphas override the request's. --mesh OUT.obj|OUT.stl writes
+// the boundary of lower(α) or upper(α) (--mesh-alpha, --mesh-bound) and --vdb OUT.vdb both
+// grids. Exit 0 on success, 1 with the error body on stderr otherwise.
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +13,10 @@ namespace fsdb {
 struct EvalOptions {
   std::optional<int> resolution;
   std::vector<double> alphas;
+  std::string meshPath;  // .obj or .stl
+  double meshAlpha = 0.5;
+  std::string meshBound = "upper";  // lower | upper
+  std::string vdbPath;
 };
 
 int runEval(const std::string& file, const EvalOptions& options);

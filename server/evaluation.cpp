@@ -47,6 +47,10 @@ int parseResolution(const nlohmann::json& request, const EvaluationLimits& limit
 }  // namespace
 
 nlohmann::json evaluateRequest(const nlohmann::json& request, const EvaluationLimits& limits) {
+  return evaluateShape(request, limits).result;
+}
+
+Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& limits) {
   requireObject(request, "");
   for (auto it = request.begin(); it != request.end(); ++it)
     if (it.key() != "shape" && it.key() != "resolution" && it.key() != "alphas" && it.key() != "method")
@@ -72,19 +76,19 @@ nlohmann::json evaluateRequest(const nlohmann::json& request, const EvaluationLi
   if (!(extent > 0.0) || !std::isfinite(extent))
     throw Error(errc::kDomainError, "the shape has an empty or unbounded bounding box", "shape");
   const double voxelSize = extent / resolution;
-  const EnvelopeGrid grid = EnvelopeGrid::build(*shape.field, voxelSize);
-  const std::vector<LevelVolume> volumes = grid.volumes(alphas);
+  auto grid = std::make_shared<const EnvelopeGrid>(EnvelopeGrid::build(*shape.field, voxelSize));
+  const std::vector<LevelVolume> volumes = grid->volumes(alphas);
   const double millis =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
 
   nlohmann::json levels = nlohmann::json::array();
   for (const LevelVolume& v : volumes)
     levels.push_back({{"alpha", v.alpha}, {"lower_volume", v.lower_volume}, {"upper_volume", v.upper_volume}});
-  const EnvelopeGridStats& stats = grid.stats();
-  return {{"alphas", levels},
+  const EnvelopeGridStats& stats = grid->stats();
+  nlohmann::json result = {{"alphas", levels},
           {"voxel_size", voxelSize},
           {"resolution", resolution},
-          {"active_voxels", grid.activeVoxelCount()},
+          {"active_voxels", grid->activeVoxelCount()},
           {"millis", millis},
           {"parts", shape.partCount},
           {"nodes", shape.nodeCount},
@@ -94,6 +98,7 @@ nlohmann::json evaluateRequest(const nlohmann::json& request, const EvaluationLi
             {"tiles", stats.activeTiles},
             {"tile_voxels", stats.tileVoxels},
             {"memory_bytes", stats.memoryBytes}}}};
+  return {std::move(result), std::move(grid)};
 }
 
 }  // namespace fsdb

@@ -10,15 +10,26 @@
 //               corner shapes, seed 004 eq. 4) is not built yet and is refused by name.
 // Response: {"alphas":[{"alpha","lower_volume","upper_volume"}], "voxel_size", "active_voxels",
 //            "millis", "parts", "nodes", "grid":{"leaf_nodes","tiles","memory_bytes"}}
+#include <memory>
 #include <nlohmann/json.hpp>
 
 namespace fsdb {
+
+class EnvelopeGrid;
 
 struct EvaluationLimits {
   int maxResolution = 512;  // --max-resolution
   size_t maxNodes = 10000;  // --max-nodes: CSG nodes per shape
 };
 
+// The answer and the grid it was computed on (for mesh and .vdb exports).
+struct Evaluation {
+  nlohmann::json result;
+  std::shared_ptr<const EnvelopeGrid> grid;
+};
+Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& limits);
+
+// evaluateShape(...).result
 nlohmann::json evaluateRequest(const nlohmann::json& request, const EvaluationLimits& limits);
 
 }  // namespace fsdb

@@ -94,6 +94,12 @@ int main(int argc, char** argv) {
       ->required();
   evalCmd->add_option("--resolution", eval.resolution, "voxels along the longest side")->check(CLI::Range(2, 4096));
   evalCmd->add_option("--alphas", eval.alphas, "levels, comma separated")->delimiter(',');
+  evalCmd->add_option("--mesh", eval.meshPath, "write the surface of lower/upper(alpha) to OUT.obj or OUT.stl");
+  evalCmd->add_option("--mesh-alpha", eval.meshAlpha, "the level of --mesh")->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  evalCmd->add_option("--mesh-bound", eval.meshBound, "lower or upper")
+      ->check(CLI::IsMember({"lower", "upper"}))->capture_default_str();
+  evalCmd->add_option("--vdb", eval.vdbPath, "write both grids (upper, lower) to OUT.vdb");
 
   CLI11_PARSE(app, argc, argv);
   spdlog::set_level(spdlog::level::from_str(logLevel));

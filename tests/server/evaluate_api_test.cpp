@@ -128,3 +128,56 @@ TEST(EvalCommand, PrintsTheFuzzyVolumeOfAFile) {
 }
 
 }  // namespace
+
+namespace {
+
+std::string run(const std::string& cmd, int* status) {
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::string out;
+  char buf[4096];
+  while (size_t n = fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
+  *status = pclose(pipe);
+  return out;
+}
+
+TEST(EvalCommand, ExportsAWatertightStlAnObjAndAVdbFileThatVdbPrintReads) {
+  const std::string dir = ::testing::TempDir();
+  const std::string doc = dir + "fsdb_eval_export.json", stl = dir + "fsdb_export.stl", obj = dir + "fsdb_export.obj",
+                    vdb = dir + "fsdb_export.vdb";
+  json shape = {{"kind", "shape"},
+                {"tree", {{"op", "difference"},
+                          {"children", {{{"part", fuzzyBall(0.8, 1.0, 1.2)}}, {{"part", fuzzyBall(0.4, 0.5, 0.6, 0.9)}}}}}}};
+  std::ofstream(doc) << shape.dump();
+  int status = 0;
+  std::string out = run(std::string(FSDB_BINARY) + " eval " + doc + " --resolution 40 --mesh " + stl +
+                            " --mesh-alpha 0.5 --mesh-bound lower --vdb " + vdb,
+                        &status);
+  ASSERT_EQ(status, 0) << out;
+  EXPECT_GT(json::parse(out)["mesh"]["triangles"].get<int>(), 100);
+
+  // admesh (Debian package) checks the STL: one part, no open edges, nothing to repair.
+  std::string report = run("admesh " + stl + " 2>&1", &status);
+  ASSERT_EQ(status, 0) << report;
+  for (const char* line : {"Number of parts       :     1", "Degenerate facets     :     0", "Edges fixed           :     0",
+                           "Facets removed        :     0", "Facets added          :     0", "Facets reversed       :     0",
+                           "Backwards edges       :     0", "Total disconnected facets        :     0                   0"})
+    EXPECT_NE(report.find(line), std::string::npos) << line << "\n" << report;
+
+  std::string grids = run("vdb_print " + vdb + " 2>&1", &status);
+  ASSERT_EQ(status, 0) << grids;
+  EXPECT_NE(grids.find("upper"), std::string::npos) << grids;
+  EXPECT_NE(grids.find("lower"), std::string::npos) << grids;
+
+  out = run(std::string(FSDB_BINARY) + " eval " + doc + " --resolution 24 --mesh " + obj + " 2>&1", &status);
+  ASSERT_EQ(status, 0) << out;
+  std::ifstream objFile(obj);
+  std::string first;
+  std::getline(objFile, first);
+  EXPECT_EQ(first.rfind("# fsdb mesh:", 0), 0u) << first;
+
+  out = run(std::string(FSDB_BINARY) + " eval " + doc + " --mesh " + dir + "x.ply 2>&1", &status);
+  EXPECT_NE(status, 0);
+  EXPECT_NE(out.find("\"path\":\"--mesh\""), std::string::npos) << out;
+}
+
+}  // namespace
