@@ -2,13 +2,17 @@
 // 3): ns per levelsAt at points inside, outside and on the boundary band, for a crisp unit sphere,
 // a fuzzy sphere (a1 = tri(0.8, 1, 1.2)) and a fuzzy bent, tapered, twisted, placed part (every
 // value spread by a few percent); and ns per boundsOver on blocks of edge 0.1 around the part.
-// Points and blocks are fixed (seed 1).
+// Points and blocks are fixed (seed 1). BM_DeformedPartGrid: EnvelopeGrid::build of the fuzzy
+// deformed part with N = 32 or 64 voxels across its bounding box, through levelsAt (impl 1) or the
+// previous bisection reference::bisectionLevelsAt (impl 0), one iteration each.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
 
+#include "geometry/envelope_grid.h"
 #include "geometry/fuzzy_part_field.h"
 
 namespace fsdb {
@@ -87,6 +91,28 @@ BENCHMARK(BM_LevelsAt)
     ->ArgsProduct({{0, 1, 2}, {0, 1, 2}})
     ->Unit(benchmark::kNanosecond);
 
+// The same through the previous bisection (reference::bisectionLevelsAt), for before/after in one
+// run; its exhaustion counter counts bisection decisions, levelsAt's counts searches (two at most).
+void BM_LevelsAtBisection(benchmark::State& state) {
+  const FuzzyPartField field(makePart(static_cast<int>(state.range(0))));
+  const std::vector<Vec3> points = samplePoints(field, static_cast<int>(state.range(1)));
+  if (points.empty()) {
+    state.SkipWithError("no points of this class");
+    return;
+  }
+  const std::uint64_t before = field.budgetExhaustions();
+  size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(reference::bisectionLevelsAt(field, points[i]));
+    if (++i == points.size()) i = 0;
+  }
+  state.counters["exhausted"] = static_cast<double>(field.budgetExhaustions() - before);
+}
+BENCHMARK(BM_LevelsAtBisection)
+    ->ArgNames({"part", "class"})
+    ->ArgsProduct({{1, 2}, {0, 1, 2}})
+    ->Unit(benchmark::kNanosecond);
+
 void BM_BoundsOver(benchmark::State& state) {
   const FuzzyPartField field(makePart(static_cast<int>(state.range(0))));
   Vec3 lo, hi;
@@ -105,6 +131,50 @@ void BM_BoundsOver(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_BoundsOver)->ArgName("part")->DenseRange(0, 2)->Unit(benchmark::kNanosecond);
+
+// The part's field with levelsAt replaced by the previous bisection, for before/after timings.
+class BisectionField : public AlphaFieldSource {
+ public:
+  explicit BisectionField(const FuzzyPartField& field) : field_(field) {}
+  AlphaLevels levelsAt(const Vec3& p) const override {
+    return reference::bisectionLevelsAt(field_, p);
+  }
+  AlphaLevelBounds boundsOver(const Vec3& lo, const Vec3& hi) const override {
+    return field_.boundsOver(lo, hi);
+  }
+  void boundingBox(Vec3* lo, Vec3* hi) const override { field_.boundingBox(lo, hi); }
+
+ private:
+  const FuzzyPartField& field_;
+};
+
+// state.range(0): voxels across the largest side of the bounding box; state.range(1): 0 the
+// bisection reference, 1 levelsAt.
+void BM_DeformedPartGrid(benchmark::State& state) {
+  const FuzzyPartField field(fuzzyDeformed());
+  const BisectionField bisection(field);
+  Vec3 lo, hi;
+  field.boundingBox(&lo, &hi);
+  const double h =
+      std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) / static_cast<double>(state.range(0));
+  const AlphaFieldSource& source =
+      state.range(1) == 0 ? static_cast<const AlphaFieldSource&>(bisection) : field;
+  const std::uint64_t before = field.budgetExhaustions();
+  EnvelopeGridStats stats;
+  for (auto _ : state) {
+    const EnvelopeGrid g = EnvelopeGrid::build(source, h);
+    stats = g.stats();
+    benchmark::DoNotOptimize(stats);
+  }
+  state.counters["active_voxels"] = static_cast<double>(stats.activeVoxels);
+  state.counters["exhausted"] = static_cast<double>(field.budgetExhaustions() - before);
+}
+BENCHMARK(BM_DeformedPartGrid)
+    ->ArgNames({"across", "impl"})
+    ->ArgsProduct({{32, 64}, {0, 1}})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace fsdb

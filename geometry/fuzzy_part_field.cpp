@@ -7,6 +7,8 @@
 #include "geometry/error.h"
 #include "geometry/interval_functions.h"
 #include "geometry/number_format.h"
+#include "geometry/deformation.h"
+#include "geometry/superquadric.h"
 #include "geometry/transform.h"
 
 namespace fsdb {
@@ -69,6 +71,27 @@ FuzzyPartField::FuzzyPartField(const FuzzyPart& part, FuzzyPartFieldOptions opti
   support_ = part_.boxAt(0.0);
   core_ = part_.boxAt(1.0);
   for (int i = 0; i < kSlots; ++i) supportWidth_[i] = width(slot(support_, i));
+  const FuzzyNumber* const values[kSlots] = {
+      &part_.eps1, &part_.eps2, &part_.a1, &part_.a2, &part_.a3, &part_.kx,  &part_.ky,
+      &part_.kv,   &part_.t,    &part_.tx, &part_.ty, &part_.tz, &part_.deg, &part_.scale};
+  for (int i = 0; i < kSlots; ++i) values_[i] = values[i];
+  crispAngle_ = supportWidth_[12] <= 0.0;
+  if (crispAngle_) rotation_ = Rotation::fromAxisAngle(part_.axis, support_.placement.deg.lo);
+}
+
+PartBox FuzzyPartField::cutAt(double alpha) const {
+  PartBox box = support_;  // crisp values as they are
+  for (int i = 0; i < kSlots; ++i)
+    if (supportWidth_[i] > 0.0) slot(box, i) = values_[i]->alphaCut(alpha);
+  return box;
+}
+
+double FuzzyPartField::valueAt(const PlacedSuperquadric& theta, const Vec3& p) const {
+  if (!crispAngle_) return theta.insideOutside(p);
+  // PlacementFrame::toLocal with the rotation built once.
+  const Placement& pl = theta.placement;
+  const Vec3 local = rotation_.applyInverse(p - pl.translate) / pl.scale;
+  return insideOutside(theta.params, undeformPoint(theta.params, local));
 }
 
 bool FuzzyPartField::decide(const Vec3& p, const PartBox& box, Question q) const {
@@ -144,8 +167,373 @@ bool FuzzyPartField::necessarilyInside(const Vec3& p, double alpha) const {
                 Question::kNecessarily);
 }
 
+namespace {
+
+// Quasi-concave envelope of a membership (the membership whose cuts are the hulls boxAt uses):
+// μ̂(x) = min(max_{y <= x} μ(y), max_{y >= x} μ(y)), so θ_i ∈ cut_i(α) ⇔ μ̂_i(θ_i) >= α (α > 0).
+double hullMembership(const FuzzyNumber& v, double x) {
+  const double mu = v.membership(x);
+  double left = mu, right = mu;
+  for (const Breakpoint& b : v.breakpoints()) {
+    if (b.x <= x) left = std::max(left, b.mu);
+    if (b.x >= x) right = std::max(right, b.mu);
+  }
+  return std::min(left, right);
+}
+
+// sup of μ̂ over [a, b]: 1 where the interval meets the core, else the end nearer to the core
+// (μ̂ rises up to the core and falls after it).
+double supHullMembership(const FuzzyNumber& v, const Interval& core, const Interval& x) {
+  if (x.hi >= core.lo && x.lo <= core.hi) return 1.0;
+  return hullMembership(v, x.hi < core.lo ? x.hi : x.lo);
+}
+
+// Slack added to membership bounds: the interpolation in membership() rounds (a few ulps).
+constexpr double kMembershipSlack = 1e-12;
+
+PlacedSuperquadric thetaAt(const PartBox& b, const double (&v)[kSlots]) {
+  PlacedSuperquadric part;
+  part.params = {v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]};
+  part.placement.translate = {v[9], v[10], v[11]};
+  part.placement.axis = b.placement.axis;
+  part.placement.deg = v[12];
+  part.placement.scale = v[13];
+  return part;
+}
+
+}  // namespace
+
+// Max-min branch and bound (see the header): maximise m(θ) = min_i μ̂_i(θ_i) over the θ of P(0)
+// with F(p; θ) <= 1 (inside) or F(p; θ) > 1 (!inside).
+FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const {
+  const double tau = options_.tolerance;
+  const Interval px{p.x, p.x}, py{p.y, p.y}, pz{p.z, p.z};
+  const auto witness = [&](double f) { return inside ? f <= 1.0 : f > 1.0; };
+  const auto upperBound = [&](const PartBox& b) {
+    double ub = 1.0;
+    for (int i = 0; i < kSlots; ++i)
+      if (supportWidth_[i] > 0.0)
+        ub = std::min(ub, supHullMembership(*values_[i], slot(core_, i), slot(b, i)));
+    return std::min(1.0, ub + kMembershipSlack);
+  };
+  struct Node {
+    PartBox box;
+    double ub;
+    double promise;  // −F (inside) or F (outside) at the box centre: larger is nearer a witness
+  };
+  // Until a witness is known, dive towards one (the box whose centre comes closest, as the
+  // depth-first decide does); then best first by the bound.
+  bool diving = true;
+  const auto lessPromising = [&diving](const Node& a, const Node& b) {
+    return diving ? a.promise < b.promise : a.ub < b.ub;
+  };
+  std::vector<Node> heap;
+  heap.reserve(16);
+  Search s;
+  // The level that only a gain of more than τ beats: the incumbent, and for u at least 0 (u = 0 is
+  // a correct answer for every u_true <= τ, witness or not; l = 0 instead claims p ∈ lower(0) and
+  // needs the proof over all of P(0)). -1: none yet.
+  double base = inside ? 0.0 : -1.0;
+  PartBox cut;  // P(base + τ) once there is a base
+  if (base >= 0.0) cut = cutAt(tau);
+  const auto improve = [&](double m, const PlacedSuperquadric& theta) {
+    if (m <= s.incumbent) return;
+    if (diving) {
+      diving = false;
+      std::make_heap(heap.begin(), heap.end(), lessPromising);
+    }
+    s.incumbent = m;
+    s.witness = theta;
+    if (m <= base) return;
+    base = m;
+    if (m + tau <= 1.0) cut = cutAt(m + tau);
+  };
+  // Split weights: how much F at p moves when a value runs across its support, from central
+  // differences at the core midpoint (once per search, only when a box needs splitting), floored
+  // so that no value is starved. Splitting where F is sensitive shrinks the enclosure fastest.
+  double weight[kSlots], slope[kSlots];
+  bool haveWeights = false, haveSlopes = false;
+  int evaluations = 0;
+  const auto computeSlopes = [&] {
+    haveSlopes = true;
+    double theta[kSlots];
+    for (int i = 0; i < kSlots; ++i) theta[i] = mid(slot(core_, i));
+    for (int i = 0; i < kSlots; ++i) {
+      slope[i] = 0.0;
+      if (supportWidth_[i] <= 0.0) continue;
+      const Interval& sup = slot(support_, i);
+      const double h = 1e-3 * supportWidth_[i], t0 = theta[i];
+      const double a = std::max(sup.lo, t0 - h), b = std::min(sup.hi, t0 + h);
+      theta[i] = a;
+      const double fa = valueAt(thetaAt(support_, theta), p);
+      theta[i] = b;
+      const double fb = valueAt(thetaAt(support_, theta), p);
+      theta[i] = t0;
+      const double g = b > a ? (fb - fa) / (b - a) : 0.0;
+      slope[i] = std::isfinite(g) ? g : 0.0;
+    }
+  };
+  // Split weights, from the first box that needs splitting: how far the enclosure's deciding end
+  // (lo for a witness inside, hi outside) moves when one value is fixed at its midpoint, per unit
+  // of relative width. The value whose width costs the enclosure most is split first; a floor
+  // keeps every value in turn.
+  const auto computeWeights = [&](const PartBox& box, const Interval& f) {
+    haveWeights = true;
+    constexpr double kCap = 1e300;  // the enclosure saturates at the largest double
+    const auto end = [&](const Interval& g) { return inside ? g.lo : std::min(g.hi, kCap); };
+    double largest = 0.0;
+    for (int i = 0; i < kSlots; ++i) {
+      weight[i] = 0.0;
+      const Interval v = slot(box, i);
+      if (supportWidth_[i] <= 0.0 || !(width(v) > 0.0)) continue;
+      PartBox c = box;
+      slot(c, i) = {mid(v), mid(v)};
+      ++evaluations;
+      const Interval g = insideOutsideBounds(c, px, py, pz);
+      const double gain = inside ? end(g) - end(f) : end(f) - end(g);
+      weight[i] = std::max(gain, 0.0) / (width(v) / supportWidth_[i]);
+      largest = std::max(largest, weight[i]);
+    }
+    for (int i = 0; i < kSlots; ++i)
+      weight[i] = largest > 0.0 && std::isfinite(largest) ? std::max(weight[i], 0.02 * largest)
+                                                          : 1.0;
+  };
+
+  heap.push_back({support_, 1.0, 0.0});
+  while (!heap.empty()) {
+    std::pop_heap(heap.begin(), heap.end(), lessPromising);
+    Node node = std::move(heap.back());
+    heap.pop_back();
+    // Best first: nothing left can beat the incumbent by more than τ (while diving, the heap is
+    // ordered by promise: drop just this box).
+    if (base >= 0.0 && node.ub <= base + tau) {
+      s.pruned = std::max(s.pruned, node.ub);
+      if (diving) continue;
+      break;
+    }
+    if (evaluations >= options_.evaluationBudget) {
+      s.exhausted = true;
+      s.pruned = std::max(s.pruned, node.ub);  // the largest bound still open
+      for (const Node& open : heap) s.pruned = std::max(s.pruned, open.ub);
+      ++exhaustions_;
+      return s;
+    }
+    if (base >= 0.0) {
+      // Only θ with m(θ) > incumbent + τ can still matter, and they lie in P(incumbent + τ).
+      const double target = base + tau;
+      if (target > 1.0) {
+        s.pruned = std::max(s.pruned, node.ub);
+        break;
+      }
+      bool empty = false, shrunk = false;
+      for (int i = 0; i < kSlots && !empty; ++i) {
+        Interval& v = slot(node.box, i);
+        const Interval& c = slot(cut, i);
+        const Interval w{std::max(v.lo, c.lo), std::min(v.hi, c.hi)};
+        shrunk = shrunk || w.lo != v.lo || w.hi != v.hi;
+        v = w;
+        empty = v.lo > v.hi;
+      }
+      // The θ cut away have m(θ) < target: they bound what was dropped.
+      if (shrunk) s.pruned = std::max(s.pruned, std::min(node.ub, target));
+      if (empty) continue;
+      node.ub = std::min(node.ub, upperBound(node.box));
+      if (node.ub <= base + tau) {
+        s.pruned = std::max(s.pruned, node.ub);
+        continue;
+      }
+    }
+    ++evaluations;
+    const Interval f = insideOutsideBounds(node.box, px, py, pz);
+    if (inside ? f.lo > 1.0 : f.hi <= 1.0) continue;  // no θ of the box qualifies
+    // The peak of the box: each value clamped towards its core maximises μ̂_i over the box, so a
+    // witness there settles the box (m = its bound).
+    double peak[kSlots], centre[kSlots];
+    for (int i = 0; i < kSlots; ++i) {
+      const Interval& v = slot(node.box, i);
+      const double c = mid(slot(core_, i));
+      peak[i] = std::min(std::max(c, v.lo), v.hi);
+      centre[i] = mid(v);
+    }
+    const PlacedSuperquadric peakTheta = thetaAt(node.box, peak);
+    const double fPeak = valueAt(peakTheta, p);
+    if (witness(fPeak)) {
+      double m = 1.0;
+      for (int i = 0; i < kSlots; ++i)
+        if (supportWidth_[i] > 0.0) m = std::min(m, hullMembership(*values_[i], peak[i]));
+      improve(m, peakTheta);
+      if (s.incumbent >= 1.0) break;
+      continue;
+    }
+    // A second guess: the corner that F's slopes at the core say is most favourable (least F for
+    // a witness inside, largest outside). From a witness, walk towards the peak (m grows along
+    // the segment, each value nearing its core) and keep the last witness: bisection on the
+    // segment until m is resolved well below τ.
+    if (!haveSlopes) computeSlopes();
+    double guess[kSlots];
+    for (int i = 0; i < kSlots; ++i) {
+      const Interval& v = slot(node.box, i);
+      const bool low = (slope[i] > 0.0) == inside;
+      guess[i] = slope[i] == 0.0 ? centre[i] : low ? v.lo : v.hi;
+    }
+    PlacedSuperquadric guessTheta = thetaAt(node.box, guess);
+    double fGuess = valueAt(guessTheta, p);
+    if (!witness(fGuess)) {
+      std::copy(centre, centre + kSlots, guess);
+      guessTheta = thetaAt(node.box, guess);
+      fGuess = valueAt(guessTheta, p);
+    }
+    if (witness(fGuess)) {
+      const auto mAt = [&](const double (&v)[kSlots]) {
+        double m = 1.0;
+        for (int i = 0; i < kSlots; ++i)
+          if (supportWidth_[i] > 0.0) m = std::min(m, hullMembership(*values_[i], v[i]));
+        return m;
+      };
+      // Regula falsi (Illinois) on g(t) = F(θ(t)) − 1, kept inside the shrinking bracket.
+      double lo = 0.0, hi = 1.0, at[kSlots];
+      double gLo = fGuess - 1.0, gHi = fPeak - 1.0, gHiTrue = gHi;
+      double mLo = mAt(guess), mHi = mAt(peak);
+      int side = 0;
+      for (int k = 0; k < 40 && mHi - mLo > 0.125 * tau; ++k) {
+        const double span = hi - lo;
+        double t = std::isfinite(gLo) && std::isfinite(gHi) && gLo != gHi
+                       ? lo - gLo * span / (gHi - gLo)
+                       : lo + 0.5 * span;
+        if (!(t >= lo + 0.02 * span && t <= hi - 0.02 * span)) t = lo + 0.5 * span;
+        for (int i = 0; i < kSlots; ++i) at[i] = guess[i] + t * (peak[i] - guess[i]);
+        const PlacedSuperquadric theta = thetaAt(node.box, at);
+        const double f = valueAt(theta, p);
+        if (witness(f)) {
+          lo = t;
+          gLo = f - 1.0;
+          mLo = mAt(at);
+          guessTheta = theta;
+          if (side == -1) gHi *= 0.5;
+          side = -1;
+        } else {
+          hi = t;
+          gHi = gHiTrue = f - 1.0;
+          mHi = mAt(at);
+          if (side == 1) gLo *= 0.5;
+          side = 1;
+        }
+        // Close enough: the secant's crossing is within τ/4 of the witness in m. (Only speed
+        // rests on this: the next pop cuts the box to P(incumbent + τ) and searches on.)
+        if (side == -1 && std::isfinite(gHiTrue) && gHiTrue != gLo) {
+          const double tEst = std::min(hi, lo - gLo * (hi - lo) / (gHiTrue - gLo));
+          for (int i = 0; i < kSlots; ++i) at[i] = guess[i] + tEst * (peak[i] - guess[i]);
+          if (mAt(at) - mLo <= 0.25 * tau) break;
+        }
+      }
+      improve(mLo, guessTheta);
+      if (s.incumbent >= 1.0) break;
+      // Requeue the box: its next pop cuts it to P(incumbent + τ), which drops the part just
+      // searched (every later witness in it gains at least τ).
+      if (node.ub <= base + tau) {
+        s.pruned = std::max(s.pruned, node.ub);
+      } else {
+        heap.push_back(std::move(node));
+        std::push_heap(heap.begin(), heap.end(), lessPromising);
+      }
+      continue;
+    }
+    if (!haveWeights) computeWeights(node.box, f);
+    int widest = -1;
+    double widestScore = 0.0;
+    for (int i = 0; i < kSlots; ++i) {
+      if (supportWidth_[i] <= 0.0) continue;
+      const double r = width(slot(node.box, i)) / supportWidth_[i];
+      if (r <= kDegenerate) continue;
+      if (r * weight[i] > widestScore) {
+        widest = i;
+        widestScore = r * weight[i];
+      }
+    }
+    if (widest < 0) continue;  // one θ: its crisp values did not qualify
+    const Interval v = slot(node.box, widest);
+    const double m = mid(v);
+    Node a = node, b = std::move(node);
+    slot(a.box, widest) = {v.lo, m};
+    slot(b.box, widest) = {m, v.hi};
+    for (Node* child : {&a, &b}) {
+      child->ub = std::min(child->ub, upperBound(child->box));
+      if (diving) {
+        double c[kSlots];
+        for (int i = 0; i < kSlots; ++i) c[i] = mid(slot(child->box, i));
+        const PlacedSuperquadric theta = thetaAt(child->box, c);
+        const double fc = valueAt(theta, p);
+        child->promise = inside ? -fc : fc;
+        if (witness(fc)) {
+          double m = 1.0;
+          for (int i = 0; i < kSlots; ++i)
+            if (supportWidth_[i] > 0.0) m = std::min(m, hullMembership(*values_[i], c[i]));
+          improve(m, theta);
+        }
+      }
+      if (base >= 0.0 && child->ub <= base + tau) {
+        s.pruned = std::max(s.pruned, child->ub);
+        continue;
+      }
+      heap.push_back(std::move(*child));
+      std::push_heap(heap.begin(), heap.end(), lessPromising);
+    }
+    if (s.incumbent >= 1.0) break;
+  }
+  return s;
+}
+
 AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
   const double tau = options_.tolerance;
+  // u(p) = sup{m(θ) : F(p; θ) <= 1}: the incumbent, whose witness is in P(incumbent).
+  {
+    // Fast exits: the enclosure over all of P(0) decides most points away from the band.
+    const Interval f = insideOutsideBounds(support_, {p.x, p.x}, {p.y, p.y}, {p.z, p.z});
+    if (f.hi <= 1.0) return {1.0f, 0.0f};  // in lower(0) ⊆ lower(α) ⊆ upper(α)
+    if (f.lo > 1.0) return {0.0f, kNeverInside};
+  }
+  const Search up = maxMin(p, true);
+  AlphaLevels out;
+  if (up.exhausted) {
+    // Conservative: an upper bound of u (upper grows); l is not sought below u = 1.
+    out.upper = floatUp(std::min(1.0, std::max(up.incumbent, up.pruned)));
+    if (out.upper < 1.0f) return out;
+  } else {
+    if (up.incumbent < 0.0) return out;  // no θ of P(0) puts p inside: u = 0, l = never
+    // Round down, keeping the witness: p ∈ upper(u) is shown by θ ∈ P(u).
+    float u = floatDown(up.incumbent);
+    while (u > 0.0f && !contains(u == 1.0f ? core_ : cutAt(u), up.witness))
+      u = std::nextafter(u, -1.0f);
+    out.upper = u;
+    if (u < 1.0f) return out;  // l <= 1 needs p ∈ lower(1) ⊆ upper(1)
+  }
+  // l(p) = sup{m(θ) : F(p; θ) > 1} (0 when no θ of P(0) puts p outside, proven).
+  const Search down = maxMin(p, false);
+  if (!down.exhausted && down.incumbent < 0.0 && down.pruned < 0.0) {
+    out.lower = 0.0f;  // every box excluded: p ∈ lower(0)
+    return out;
+  }
+  if (down.incumbent >= 1.0) return out;  // a θ of P(1) puts p outside: never in lower(1)
+  const double l = std::max(down.incumbent, down.pruned);
+  if (l >= 1.0) {
+    // Within τ of 1: p ∈ lower(1) only if every θ of the core puts it inside.
+    if (decide(p, core_, Question::kNecessarily)) out.lower = 1.0f;
+    return out;
+  }
+  // Not proven in lower(0): l > 0 (τ is within the tolerance of any l_true in [0, τ]).
+  out.lower = floatUp(std::max(l, tau));
+  return out;
+}
+
+namespace reference {
+
+// The previous levelsAt: bisection in α with one branch-and-bound decision per bracket.
+AlphaLevels bisectionLevelsAt(const FuzzyPartField& field, const Vec3& p) {
+  const double tau = field.tolerance();
+  const auto possiblyInside = [&](const Vec3& q, double a) { return field.possiblyInside(q, a); };
+  const auto necessarilyInside = [&](const Vec3& q, double a) {
+    return field.necessarilyInside(q, a);
+  };
   // Fast exits (SPEC §3: P(α) shrinks as α grows, so both predicates are monotone in α).
   if (necessarilyInside(p, 0.0)) return {1.0f, 0.0f};  // in lower(0) ⊆ lower(α) ⊆ upper(α)
   if (!possiblyInside(p, 0.0)) return {0.0f, kNeverInside};
@@ -174,6 +562,8 @@ AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
   }
   return out;
 }
+
+}  // namespace reference
 
 AlphaLevelBounds FuzzyPartField::boundsOver(const Vec3& lo, const Vec3& hi) const {
   const Interval x{lo.x, hi.x}, y{lo.y, hi.y}, z{lo.z, hi.z};

@@ -15,15 +15,34 @@
 //    cluster effect of first-order enclosures: the margin to 1 vanishes there) and where the
 //    enclosure is loose (many fuzzy values, taper factors near 0).
 //
-// levelsAt(p) bisects α on dyadic brackets down to the tolerance τ (default 1/1024):
-//  * u: the bracket end where p was shown possibly inside (rounded down, so u = 1 only when p ∈
-//    upper(1) was shown); u lies in [u_true − τ, u_true] unless the budget ran out (then it may be
-//    higher).
-//  * l: the bracket end where p was shown necessarily inside (rounded up, so l = 0 only when p ∈
-//    lower(0) was proven); l lies in [l_true, l_true + τ], or is kNeverInside; a budget exhaustion
-//    can only raise it. l is sought only where u = 1 (p ∈ lower(1) ⊆ upper(1)), so l <= 1 implies u
-//    = 1 in the output: lower ⊆ core ⊆ upper holds even where rounding could make the predicates
-//    disagree. Floats keep the rounding directions (u down, l up).
+// levelsAt(p) solves two max-min problems over the parameters instead of bisecting α. With
+// m(θ) = min_i μ̂_i(θ_i) over the fourteen values (μ̂: the quasi-concave envelope of a membership,
+// whose cuts are the hulls boxAt uses, so θ ∈ P(α) ⇔ m(θ) >= α for α > 0):
+//   u(p) = sup{m(θ) : θ ∈ P(0), F(p; θ) <= 1}   (p ∈ upper(α) ⇔ some θ with m(θ) >= α has F <= 1)
+//   l(p) = sup{m(θ) : θ ∈ P(0), F(p; θ) > 1}    (p ∉ lower(α) ⇔ some θ with m(θ) >= α has F > 1;
+//          l = 0 when no θ of P(0) has F > 1, kNeverInside when one of P(1) has)
+// Each is a best-first branch and bound over sub-boxes of P(0): a box's bound is min_i of the
+// largest μ̂_i over its interval (exact for piecewise-linear memberships, plus 1e-12); it is
+// dropped when the enclosure excludes it (lo > 1 for u, hi <= 1 for l) or when its bound does not
+// beat the incumbent (the best crisp witness) by more than τ; once there is an incumbent every
+// box is cut to P(incumbent + τ) before its enclosure is taken (the levels reuse one another's
+// work). Witnesses come from the box's peak (each value clamped to its core: a witness there
+// settles the box), the corner that F's slopes at the core favour, or the centre, then a regula
+// falsi walk towards the peak; boxes are split where fixing a value to its midpoint moved the
+// enclosure most (measured once per search). Until the first witness the search dives (the box
+// whose centre is nearest a witness first). For u the search starts cut to P(τ): u = 0 is a correct
+// answer for any u_true <= τ. A fast exit first tries the enclosure over P(0) at p.
+//  * u: the incumbent, rounded down and checked: its witness lies in P(u) (so u = 1 only when p ∈
+//    upper(1) was shown). u lies in [u_true − τ, u_true] unless the budget ran out; then u is the
+//    largest bound still open (an upper bound of u_true: upper grows).
+//  * l: the largest bound of what was dropped without a witness, or the incumbent, rounded up: l
+//    lies in [l_true, l_true + τ]; l = 0 only where every box was excluded (p ∈ lower(0) proven),
+//    otherwise l >= τ. When that bound reaches 1, l = 1 if necessarilyInside(p, 1) else
+//    kNeverInside. A budget exhaustion gives the largest bound still open (l can only rise). l is
+//    sought only where u = 1, so l <= 1 implies u = 1 in the output. Floats keep the rounding
+//    directions (u down, l up).
+// Each of the two searches is one query with the evaluation budget (the split weights' enclosures
+// count). reference::bisectionLevelsAt keeps the previous bisection (tests compare the two).
 //
 // boundsOver(lo, hi) bounds the true levels of every point of the box, from the enclosure over the
 // point box with P(0) and P(1) (decisions keep a relative margin of 1e-12 from 1, for the unrounded
@@ -39,6 +58,7 @@
 #include "geometry/alpha_field.h"
 #include "geometry/fuzzy_part.h"
 #include "geometry/superquadric_bounds.h"
+#include "geometry/transform.h"
 
 namespace fsdb {
 
@@ -72,13 +92,34 @@ class FuzzyPartField : public AlphaFieldSource {
  private:
   enum class Question { kPossibly, kNecessarily };
   bool decide(const Vec3& p, const PartBox& box, Question q) const;
+  // One max-min search (see levelsAt): incumbent = the best m(θ) of a witness (-1: none), witness
+  // its θ; pruned = the largest bound of a box dropped without a witness (-1: none) or, when
+  // exhausted, of the boxes still open.
+  struct Search {
+    double incumbent = -1.0;
+    double pruned = -1.0;
+    bool exhausted = false;
+    PlacedSuperquadric witness;
+  };
+  Search maxMin(const Vec3& p, bool inside) const;
+  PartBox cutAt(double alpha) const;  // boxAt(alpha), cutting only the fuzzy values
+  double valueAt(const PlacedSuperquadric& theta, const Vec3& p) const;  // F(p; θ)
 
   FuzzyPart part_;
   FuzzyPartFieldOptions options_;
   PartBox support_;          // P(0)
   PartBox core_;             // P(1)
   double supportWidth_[14];  // widths of P(0), the yardstick for choosing a split
+  const FuzzyNumber* values_[14];  // the part's values, in slot order
+  bool crispAngle_ = false;        // deg crisp: one rotation for every θ
+  Rotation rotation_;
   mutable std::atomic<std::uint64_t> exhaustions_{0};
 };
+
+namespace reference {
+// The previous levelsAt, kept as the reference for tests: bisection in α on dyadic brackets, one
+// possiblyInside / necessarilyInside decision per bracket (same guarantees, much slower).
+AlphaLevels bisectionLevelsAt(const FuzzyPartField& field, const Vec3& p);
+}  // namespace reference
 
 }  // namespace fsdb

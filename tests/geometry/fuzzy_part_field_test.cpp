@@ -222,6 +222,68 @@ TEST(FuzzyPartFieldTest, RandomFuzzyPartsRespectTheDefinitionsOnSampledParameter
   }
 }
 
+// The max-min levelsAt against the previous bisection (reference::bisectionLevelsAt): both are
+// within τ of the true levels (u in [u_true − τ, u_true], l in [l_true, l_true + τ]) where neither
+// ran out of budget, so they differ by at most τ; and the new one runs out of budget no more often.
+void compareWithBisection(const FuzzyPart& part, std::mt19937_64& rng, int points, int* compared,
+                          std::uint64_t* newExhaustions, std::uint64_t* oldExhaustions) {
+  const FuzzyPartField field(part), reference(part);
+  Vec3 lo, hi;
+  field.boundingBox(&lo, &hi);
+  int found = 0;
+  for (int tries = 0; tries < 40 * points && found < points; ++tries) {
+    const Vec3 p = randomPoint(rng, lo, hi);
+    // Mostly the boundary band, where the searches run; a few points anywhere.
+    const bool band = reference.possiblyInside(p, 0.0) && !reference.necessarilyInside(p, 0.0);
+    if (!band && tries % 8 != 0) continue;
+    ++found;
+    const std::uint64_t n0 = field.budgetExhaustions(), r0 = reference.budgetExhaustions();
+    const AlphaLevels v = field.levelsAt(p);
+    const AlphaLevels r = reference::bisectionLevelsAt(reference, p);
+    const bool newExhausted = field.budgetExhaustions() != n0;
+    const bool oldExhausted = reference.budgetExhaustions() != r0;
+    *newExhaustions += newExhausted;
+    *oldExhaustions += oldExhausted;
+    ASSERT_GE(v.upper, 0.0f);
+    ASSERT_LE(v.upper, 1.0f);
+    ASSERT_TRUE((v.lower >= 0.0f && v.lower <= 1.0f) || v.lower == kNeverInside);
+    if (v.lower <= 1.0f) {
+      EXPECT_EQ(v.upper, 1.0f);
+    }
+    if (newExhausted || oldExhausted) continue;
+    ++*compared;
+    EXPECT_NEAR(v.upper, r.upper, kTau + kSlack) << p.x << " " << p.y << " " << p.z;
+    const bool newFinite = v.lower <= 1.0f, oldFinite = r.lower <= 1.0f;
+    if (newFinite && oldFinite) {
+      EXPECT_NEAR(v.lower, r.lower, kTau + kSlack) << p.x << " " << p.y << " " << p.z;
+    } else if (newFinite != oldFinite) {
+      // Only where l_true is within τ of 1 may one prove p ∈ lower(1) and the other not.
+      EXPECT_GE(newFinite ? v.lower : r.lower, 1.0 - kTau - kSlack) << p.x << " " << p.y;
+    }
+  }
+}
+
+TEST(FuzzyPartFieldTest, MaxMinSearchMatchesTheBisectionReference) {
+  std::mt19937_64 rng(21);
+  int compared = 0;
+  std::uint64_t newExhaustions = 0, oldExhaustions = 0;
+  FuzzyPart sphere;
+  sphere.a1 = tri(0.8, 1.0, 1.2);
+  compareWithBisection(sphere, rng, 60, &compared, &newExhaustions, &oldExhaustions);
+  FuzzyPart capsule;
+  capsule.a1 = tri(0.7, 0.8, 1.0);
+  capsule.tx = tri(-0.5, 0.0, 0.5);
+  capsule.deg = tri(-20, 0, 30);
+  capsule.a2 = tri(0.6, 1.0, 1.1);
+  compareWithBisection(capsule, rng, 60, &compared, &newExhaustions, &oldExhaustions);
+  for (int k = 0; k < 6; ++k)
+    compareWithBisection(randomFuzzyPart(rng), rng, 20, &compared, &newExhaustions,
+                         &oldExhaustions);
+  // Random parts (large kv, t and deg spreads) exhaust some budgets in both; most points compare.
+  EXPECT_GT(compared, 120);
+  EXPECT_LE(newExhaustions, oldExhaustions);
+}
+
 // boundsOver bounds the true levels. levelsAt gives them (to τ) unless a query ran out of budget;
 // its conservative answer may then leave the bounds (the enclosure is not monotone under inclusion,
 // so a block can be excluded where its points are not), so those points are skipped and counted.
