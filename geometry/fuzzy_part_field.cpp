@@ -77,6 +77,9 @@ FuzzyPartField::FuzzyPartField(const FuzzyPart& part, FuzzyPartFieldOptions opti
   for (int i = 0; i < kSlots; ++i) values_[i] = values[i];
   crispAngle_ = supportWidth_[12] <= 0.0;
   if (crispAngle_) rotation_ = Rotation::fromAxisAngle(part_.axis, support_.placement.deg.lo);
+  bool allCrisp = true;
+  for (int i = 0; i < kSlots; ++i) allCrisp = allCrisp && supportWidth_[i] <= 0.0;
+  if (allCrisp) crisp_.emplace(part_.coreRepresentative());
 }
 
 PartBox FuzzyPartField::cutAt(double alpha) const {
@@ -484,6 +487,10 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
 }
 
 AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
+  if (crisp_) {
+    if (crisp_->insideOutside(p) <= 1.0) return {1.0f, 0.0f};
+    return {0.0f, kNeverInside};
+  }
   const double tau = options_.tolerance;
   // u(p) = sup{m(θ) : F(p; θ) <= 1}: the incumbent, whose witness is in P(incumbent).
   {

@@ -54,9 +54,11 @@
 // Thread-safe: queries only read the part; the exhaustion counter is atomic.
 #include <atomic>
 #include <cstdint>
+#include <optional>
 
 #include "geometry/alpha_field.h"
 #include "geometry/fuzzy_part.h"
+#include "geometry/placed_superquadric.h"
 #include "geometry/superquadric_bounds.h"
 #include "geometry/transform.h"
 
@@ -113,6 +115,9 @@ class FuzzyPartField : public AlphaFieldSource {
   const FuzzyNumber* values_[14];  // the part's values, in slot order
   bool crispAngle_ = false;        // deg crisp: one rotation for every θ
   Rotation rotation_;
+  // Set when every value is crisp: then P(α) is one θ for every α, upper(α) = lower(α) = S(θ),
+  // and levelsAt is one crisp evaluation (u, l) = (1, 0) inside, (0, never) outside.
+  std::optional<PreparedSuperquadric> crisp_;
   mutable std::atomic<std::uint64_t> exhaustions_{0};
 };
 

@@ -63,8 +63,14 @@ TEST(FuzzyPartFieldTest, CrispPartIsInsideOrOutsideAtEveryLevel) {
       const Vec3 p = i % 2 ? randomPoint(rng, lo, hi)
                            : crisp.toWorld(testing::randomPointInBox(rng, crisp.params));
       const double f = crisp.insideOutside(p);
-      if (std::fabs(f - 1.0) < 0.05) continue;  // away from the surface
       const AlphaLevels v = field.levelsAt(p);
+      // The crisp fast path answers as the general search does, at the surface too.
+      const AlphaLevels ref = reference::bisectionLevelsAt(field, p);
+      if (std::fabs(f - 1.0) > 1e-9) {
+        EXPECT_EQ(v.upper, ref.upper) << "F = " << f;
+        EXPECT_EQ(v.lower, ref.lower) << "F = " << f;
+      }
+      if (std::fabs(f - 1.0) < 0.05) continue;  // away from the surface
       if (f < 1.0) {
         ++inside;
         EXPECT_EQ(v.upper, 1.0f);
