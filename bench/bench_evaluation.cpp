@@ -3,9 +3,10 @@
 // EnvelopeGrid::build (block pruning with interval bounds, TBB), at N voxels along the longest
 // side of the bounding box, for
 //   - a crisp sphere part (radius 1),
-//   - a fuzzy bent, tapered, twisted part (every shape value fuzzy by a few percent),
 //   - a 10-part fuzzy CSG assembly (union of 8 fuzzy balls and rods minus 2 holes),
-// and, for scale, OpenVDB's createLevelSetSphere at the sphere's voxel size.
+// and, for scale, OpenVDB's createLevelSetSphere at the sphere's voxel size. The fuzzy bent,
+// tapered, twisted part (every value fuzzy) is timed on grids by bench_fuzzy_part_field
+// (BM_DeformedPartGrid).
 // Counters: active voxels, tiles, memory of both grids, time per active voxel.
 // The goals of issue 3: 256/128 time ratio <= 4.5, per-active-voxel cost <= 3x
 // createLevelSetSphere, the 10-part assembly at 256 in under 1 s.
@@ -31,20 +32,6 @@ FuzzyNumber fuzzy(double m, double relSpread) {
 
 std::shared_ptr<const AlphaFieldSource> crispSphere() {
   FuzzyPart p;  // unit sphere
-  return std::make_shared<FuzzyPartField>(p);
-}
-
-std::shared_ptr<const AlphaFieldSource> fuzzyDeformedPart() {
-  FuzzyPart p;
-  p.eps1 = fuzzy(0.8, 0.05);
-  p.eps2 = fuzzy(1.2, 0.05);
-  p.a1 = fuzzy(0.5, 0.05);
-  p.a2 = fuzzy(1.0, 0.05);
-  p.a3 = fuzzy(3.0, 0.05);
-  p.kx = fuzzy(0.3, 0.1);
-  p.ky = fuzzy(0.2, 0.1);
-  p.kv = fuzzy(0.3, 0.1);
-  p.t = fuzzy(0.8, 0.1);
   return std::make_shared<FuzzyPartField>(p);
 }
 
@@ -97,7 +84,6 @@ void buildSource(benchmark::State& state, const AlphaFieldSource& source) {
 }
 
 void BM_CrispSpherePart(benchmark::State& state) { buildSource(state, *crispSphere()); }
-void BM_FuzzyDeformedPart(benchmark::State& state) { buildSource(state, *fuzzyDeformedPart()); }
 void BM_TenPartAssembly(benchmark::State& state) { buildSource(state, *tenPartAssembly()); }
 
 // The crisp sphere's bounding box is padded by the field; use the same voxel size.
@@ -117,11 +103,10 @@ void BM_OpenVdbLevelSetSphere(benchmark::State& state) {
       static_cast<double>(active), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
-// Resolutions: the issue's 64..512 for the sphere; the fuzzy sources are far slower per voxel
-// (certified branch and bound per boundary voxel), so they stop where a run stays in minutes.
+// Resolutions: the issue's 64..512 for the sphere; the fuzzy assembly is slower per voxel
+// (certified branch and bound per boundary voxel) and stops at 256, the issue's goal.
 BENCHMARK(BM_CrispSpherePart)->Arg(64)->Arg(128)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_OpenVdbLevelSetSphere)->Arg(64)->Arg(128)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_FuzzyDeformedPart)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 BENCHMARK(BM_TenPartAssembly)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 }  // namespace
