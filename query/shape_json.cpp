@@ -19,7 +19,8 @@ struct Walker {
       throw Error(errc::kLimitExceeded, "the tree has more than max_nodes=" + std::to_string(maxNodes) + " nodes", path);
   }
 
-  std::shared_ptr<const AlphaFieldSource> leaf(const nlohmann::json& node, const std::string& path) {
+  std::shared_ptr<const AlphaFieldSource> leaf(const nlohmann::json& node, const std::string& path,
+                                               std::shared_ptr<const CsgTree>* tree) {
     const std::string pp = joinPath(path, "part");
     const nlohmann::json& partDoc = node["part"];
     if (partDoc.is_string())
@@ -50,13 +51,17 @@ struct Walker {
       throw;
     }
     ++out.partCount;
+    auto t = std::make_shared<CsgTree>();
+    t->part = part;
+    *tree = t;
     return std::make_shared<FuzzyPartField>(part);
   }
 
-  std::shared_ptr<const AlphaFieldSource> node(const nlohmann::json& node, const std::string& path) {
+  std::shared_ptr<const AlphaFieldSource> node(const nlohmann::json& node, const std::string& path,
+                                               std::shared_ptr<const CsgTree>* tree) {
     requireObject(node, path);
     count(path);
-    if (node.contains("part")) return leaf(node, path);
+    if (node.contains("part")) return leaf(node, path, tree);
     if (node.contains("ref"))
       throw Error(errc::kInvalidDocument,
                   "references to stored shapes need the store, which this server does not have yet",
@@ -85,7 +90,15 @@ struct Walker {
     const auto& children = requireArray(requireField(node, "children", path), cp);
     if (children.size() < 2) throw Error(errc::kInvalidDocument, "a Boolean node needs at least two children", cp);
     std::vector<std::shared_ptr<const AlphaFieldSource>> fields;
-    for (size_t i = 0; i < children.size(); ++i) fields.push_back(this->node(children[i], joinPath(cp, i)));
+    auto t = std::make_shared<CsgTree>();
+    t->leaf = false;
+    t->op = csg;
+    for (size_t i = 0; i < children.size(); ++i) {
+      std::shared_ptr<const CsgTree> child;
+      fields.push_back(this->node(children[i], joinPath(cp, i), &child));
+      t->children.push_back(std::move(child));
+    }
+    *tree = t;
     return std::make_shared<CsgField>(csg, std::move(fields));
   }
 };
@@ -98,7 +111,10 @@ ParsedShape parseShapeField(const nlohmann::json& doc, const std::string& path, 
   const std::string kind = doc.contains("kind") ? requireString(doc["kind"], joinPath(path, "kind")) : "shape";
   if (kind == "part") {
     w.count(path);
-    w.out.field = std::make_shared<FuzzyPartField>(parsePart(doc, path));
+    auto t = std::make_shared<CsgTree>();
+    t->part = parsePart(doc, path);
+    w.out.field = std::make_shared<FuzzyPartField>(t->part);
+    w.out.tree = t;
     w.out.partCount = 1;
     return w.out;
   }
@@ -114,7 +130,7 @@ ParsedShape parseShapeField(const nlohmann::json& doc, const std::string& path, 
         it.key() != "descriptors")
       throw Error(errc::kInvalidDocument, "unknown field '" + it.key() + "'; expected kind, name, tree, meta",
                   joinPath(path, it.key()));
-  w.out.field = w.node(requireField(doc, "tree", path), joinPath(path, "tree"));
+  w.out.field = w.node(requireField(doc, "tree", path), joinPath(path, "tree"), &w.out.tree);
   return w.out;
 }
 

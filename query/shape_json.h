@@ -20,11 +20,13 @@
 #include <string>
 
 #include "geometry/alpha_field.h"
+#include "geometry/boundary_method.h"
 
 namespace fsdb {
 
 struct ParsedShape {
-  std::shared_ptr<const AlphaFieldSource> field;
+  std::shared_ptr<const AlphaFieldSource> field;  // the envelope (exact alpha-cut semantics)
+  std::shared_ptr<const CsgTree> tree;            // the same tree of fuzzy parts (method boundary)
   size_t nodeCount = 0;  // leaves and Boolean nodes
   size_t partCount = 0;  // leaves
 };

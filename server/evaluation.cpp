@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "geometry/boundary_method.h"
 #include "geometry/envelope_grid.h"
 #include "geometry/error.h"
 #include "query/json_body.h"
@@ -56,14 +57,12 @@ Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& 
     if (it.key() != "shape" && it.key() != "resolution" && it.key() != "alphas" && it.key() != "method")
       throw Error(errc::kInvalidDocument, "unknown field '" + it.key() + "'; expected shape, resolution, alphas, method",
                   it.key());
+  bool boundary = false;
   if (request.contains("method")) {
     const std::string& method = requireString(request["method"], "method");
-    if (method == "boundary")
-      throw Error(errc::kInvalidParameter,
-                  "method \"boundary\" (the paper's corner shapes, seed 004 eq. 4) is not built yet; use \"envelope\"",
-                  "method");
-    if (method != "envelope")
-      throw Error(errc::kInvalidParameter, "unknown method '" + method + "'; expected envelope", "method");
+    if (method != "envelope" && method != "boundary")
+      throw Error(errc::kInvalidParameter, "unknown method '" + method + "'; expected envelope or boundary", "method");
+    boundary = method == "boundary";
   }
   const int resolution = parseResolution(request, limits);
   const std::vector<double> alphas = parseAlphas(request);
@@ -77,7 +76,17 @@ Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& 
     throw Error(errc::kDomainError, "the shape has an empty or unbounded bounding box", "shape");
   const double voxelSize = extent / resolution;
   auto grid = std::make_shared<const EnvelopeGrid>(EnvelopeGrid::build(*shape.field, voxelSize));
-  const std::vector<LevelVolume> volumes = grid->volumes(alphas);
+  std::vector<LevelVolume> volumes = grid->volumes(alphas);
+  if (boundary) {
+    // seed 004 eq. 4: per level, the crisp lower and upper boundary solids, on the same lattice.
+    for (LevelVolume& v : volumes) {
+      for (bool upper : {false, true}) {
+        const EnvelopeGrid crisp = EnvelopeGrid::build(*boundarySolid(*shape.tree, v.alpha, upper), voxelSize);
+        const double volume = crisp.volumes({1.0})[0].lower_volume;
+        (upper ? v.upper_volume : v.lower_volume) = volume;
+      }
+    }
+  }
   const double millis =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
 
@@ -88,6 +97,7 @@ Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& 
   nlohmann::json result = {{"alphas", levels},
           {"voxel_size", voxelSize},
           {"resolution", resolution},
+          {"method", boundary ? "boundary" : "envelope"},
           {"active_voxels", grid->activeVoxelCount()},
           {"millis", millis},
           {"parts", shape.partCount},

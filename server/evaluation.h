@@ -6,8 +6,9 @@
 //   resolution: voxels along the longest side of the shape's bounding box (default 64, at most
 //               limits.maxResolution, else limit_exceeded naming max_resolution)
 //   alphas:     levels in [0,1] (default [0, 0.25, 0.5, 0.75, 1]), at most 101 of them
-//   method:     "envelope" (exact per-voxel levels, the default). "boundary" (the paper's
-//               corner shapes, seed 004 eq. 4) is not built yet and is refused by name.
+//   method:     "envelope" (exact per-voxel levels, the default) or "boundary" (the paper's
+//               corner shapes of smallest/largest volume per level, seed 004 eq. 4,
+//               geometry/boundary_method.h: one crisp grid per level and bound).
 // Response: {"alphas":[{"alpha","lower_volume","upper_volume"}], "voxel_size", "active_voxels",
 //            "millis", "parts", "nodes", "grid":{"leaf_nodes","tiles","memory_bytes"}}
 #include <memory>

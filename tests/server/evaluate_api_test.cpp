@@ -60,6 +60,31 @@ TEST_F(EvaluateApi, CrispDifferenceOfBallsMatchesTheLensFormula) {
   EXPECT_EQ(r.json["nodes"], 3);
 }
 
+TEST_F(EvaluateApi, BoundaryMethodAgreesWithTheEnvelopeWhereVolumeIsMonotone) {
+  // A fuzzy size: the corner shapes of extreme volume are the envelope's bounds (seed 004 eq. 4).
+  json request = {{"shape", fuzzyBall(0.8, 1.0, 1.2)}, {"resolution", 64}, {"alphas", {0, 0.5, 1}}};
+  auto envelope = server->post("/evaluate", request);
+  request["method"] = "boundary";
+  auto boundary = server->post("/evaluate", request);
+  ASSERT_EQ(boundary.status, 200) << boundary.body;
+  EXPECT_EQ(boundary.json["method"], "boundary");
+  for (size_t i = 0; i < 3; ++i)
+    for (const char* key : {"lower_volume", "upper_volume"}) {
+      const double e = envelope.json["alphas"][i][key], b = boundary.json["alphas"][i][key];
+      EXPECT_NEAR(b, e, 0.01 * e) << key << " at " << i;
+    }
+  // A fuzzy translation does not change the volume: the boundary method keeps one ball per
+  // level, while the envelope's upper shape is the swept capsule (larger).
+  json moving = fuzzyBall(1, 1, 1);
+  moving["transform"]["translate"][0] = {{"tri", {-0.5, 0, 0.5}}};
+  json req2 = {{"shape", moving}, {"resolution", 64}, {"alphas", {0}}};
+  const double envUpper = server->post("/evaluate", req2).json["alphas"][0]["upper_volume"];
+  req2["method"] = "boundary";
+  const double bndUpper = server->post("/evaluate", req2).json["alphas"][0]["upper_volume"];
+  EXPECT_NEAR(bndUpper, ballVolume(1), 0.03 * ballVolume(1));
+  EXPECT_NEAR(envUpper, ballVolume(1) + kPi * 1.0, 0.03 * (ballVolume(1) + kPi));  // capsule of length 1
+}
+
 TEST_F(EvaluateApi, BadRequestsNameTheirPathAndLimit) {
   auto r = server->post("/evaluate", json{{"shape", fuzzyBall(1, 1, 1)}, {"resolution", 1000}});
   EXPECT_EQ(r.status, 413);
@@ -82,7 +107,7 @@ TEST_F(EvaluateApi, BadRequestsNameTheirPathAndLimit) {
   EXPECT_EQ(r.status, 422);
   EXPECT_EQ(r.json["error"]["path"], "alphas[1]");
 
-  r = server->post("/evaluate", json{{"shape", fuzzyBall(1, 1, 1)}, {"method", "boundary"}});
+  r = server->post("/evaluate", json{{"shape", fuzzyBall(1, 1, 1)}, {"method", "corners"}});
   EXPECT_EQ(r.status, 422);
   EXPECT_EQ(r.json["error"]["path"], "method");
 
