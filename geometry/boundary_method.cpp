@@ -2,23 +2,14 @@
 
 #include "geometry/error.h"
 #include "geometry/fuzzy_part_field.h"
+#include "geometry/superquadric_bounds.h"
 #include "geometry/superquadric_volume.h"
 
 namespace fsdb {
-namespace {
-
-double mid(const Interval& i) { return 0.5 * (i.lo + i.hi); }
-
-}  // namespace
-
 PlacedSuperquadric boundaryShape(const FuzzyPart& part, double alpha, bool largest) {
   const PartBox box = part.boxAt(alpha);
-  PlacedSuperquadric shape;
-  shape.params.kv = mid(box.params.kv);
-  shape.params.t = mid(box.params.t);
-  shape.placement.translate = {mid(box.placement.tx), mid(box.placement.ty), mid(box.placement.tz)};
-  shape.placement.axis = box.placement.axis;
-  shape.placement.deg = mid(box.placement.deg);
+  // Volume-neutral values (bend, twist, translation, angle) stay at the middle of their cut.
+  PlacedSuperquadric shape = midpointPart(box);
   // The volume-changing values, corner by corner (seed 004 eq. 4: the boundary shapes of a level
   // are the crisp shapes of smallest and largest volume).
   const Interval ranges[8] = {box.params.eps1, box.params.eps2, box.params.a1, box.params.a2,

@@ -118,22 +118,7 @@ PartBox FuzzyPart::boxAt(double alpha) const {
 }
 
 PlacedSuperquadric FuzzyPart::coreRepresentative() const {
-  PlacedSuperquadric part;
-  SuperquadricParams& q = part.params;
-  q.eps1 = mid(eps1.core());
-  q.eps2 = mid(eps2.core());
-  q.a1 = mid(a1.core());
-  q.a2 = mid(a2.core());
-  q.a3 = mid(a3.core());
-  q.kx = mid(kx.core());
-  q.ky = mid(ky.core());
-  q.kv = mid(kv.core());
-  q.t = mid(t.core());
-  part.placement.translate = {mid(tx.core()), mid(ty.core()), mid(tz.core())};
-  part.placement.axis = axis;
-  part.placement.deg = mid(deg.core());
-  part.placement.scale = mid(scale.core());
-  return part;
+  return midpointPart(boxAt(1.0));  // the 1-cut is the core (hull)
 }
 
 std::vector<double> FuzzyPart::breakpointLevels() const {

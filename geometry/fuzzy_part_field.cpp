@@ -34,18 +34,7 @@ Interval& slot(PartBox& b, int i) {
 const Interval& slot(const PartBox& b, int i) { return slot(const_cast<PartBox&>(b), i); }
 
 // F at the centre of the box: a crisp witness (every θ of a validated part's box is valid).
-double centreValue(const PartBox& b, const Vec3& p) {
-  PlacedSuperquadric part;
-  const SuperquadricBox& q = b.params;
-  part.params = {mid(q.eps1), mid(q.eps2), mid(q.a1), mid(q.a2), mid(q.a3),
-                 mid(q.kx),   mid(q.ky),   mid(q.kv), mid(q.t)};
-  const PlacementBox& pl = b.placement;
-  part.placement.translate = {mid(pl.tx), mid(pl.ty), mid(pl.tz)};
-  part.placement.axis = pl.axis;
-  part.placement.deg = mid(pl.deg);
-  part.placement.scale = mid(pl.scale);
-  return part.insideOutside(p);
-}
+double centreValue(const PartBox& b, const Vec3& p) { return midpointPart(b).insideOutside(p); }
 
 // Directed conversions, so that float storage keeps the rounding directions of levelsAt.
 float floatDown(double v) {

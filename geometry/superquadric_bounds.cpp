@@ -195,6 +195,19 @@ Interval saturate(const Interval& a) {
 
 }  // namespace
 
+PlacedSuperquadric midpointPart(const PartBox& box) {
+  PlacedSuperquadric part;
+  const SuperquadricBox& q = box.params;
+  part.params = {mid(q.eps1), mid(q.eps2), mid(q.a1), mid(q.a2), mid(q.a3),
+                 mid(q.kx),   mid(q.ky),   mid(q.kv), mid(q.t)};
+  const PlacementBox& pl = box.placement;
+  part.placement.translate = {mid(pl.tx), mid(pl.ty), mid(pl.tz)};
+  part.placement.axis = pl.axis;
+  part.placement.deg = mid(pl.deg);
+  part.placement.scale = mid(pl.scale);
+  return part;
+}
+
 PartBox crispPartBox(const PlacedSuperquadric& part) {
   const SuperquadricParams& p = part.params;
   const Placement& pl = part.placement;

@@ -51,6 +51,10 @@ struct PartBox {
 // The degenerate box of a crisp part: every interval a single value.
 PartBox crispPartBox(const PlacedSuperquadric& part);
 
+// The crisp part at the midpoint of every interval of the box (the inverse of crispPartBox on
+// degenerate boxes).
+PlacedSuperquadric midpointPart(const PartBox& box);
+
 // Does the box hold this crisp part (same axis direction, every value within its interval)?
 bool contains(const PartBox& box, const PlacedSuperquadric& part);
 

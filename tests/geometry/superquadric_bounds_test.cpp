@@ -349,3 +349,27 @@ TEST(SuperquadricBounds, ExtremeBoxesSaturateWithoutNaN) {
 
 }  // namespace
 }  // namespace fsdb
+
+namespace fsdb {
+namespace {
+
+TEST(MidpointPart, InvertsCrispPartBoxAndTakesIntervalMidpoints) {
+  PlacedSuperquadric crisp;
+  crisp.params = {0.7, 1.3, 2.0, 0.8, 1.5, 0.2, -0.1, 0.05, 0.4};
+  crisp.placement = {{1, -2, 3}, {0, 1, 0}, 30, 1.5};
+  const PlacedSuperquadric back = midpointPart(crispPartBox(crisp));
+  EXPECT_EQ(back.params.eps1, 0.7);
+  EXPECT_EQ(back.params.t, 0.4);
+  EXPECT_EQ(back.placement.translate.z, 3.0);
+  EXPECT_EQ(back.placement.axis.y, 1.0);
+  EXPECT_EQ(back.placement.deg, 30.0);
+  PartBox box = crispPartBox(crisp);
+  box.params.a1 = {1.0, 3.0};
+  box.placement.scale = {1.0, 1.2};
+  const PlacedSuperquadric m = midpointPart(box);
+  EXPECT_EQ(m.params.a1, 2.0);
+  EXPECT_DOUBLE_EQ(m.placement.scale, 1.1);
+}
+
+}  // namespace
+}  // namespace fsdb
