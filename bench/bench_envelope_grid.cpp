@@ -8,12 +8,9 @@
 // per active voxel (compare the last with createLevelSetSphere's).
 #include <benchmark/benchmark.h>
 
-#include <openvdb/tools/LevelSetSphere.h>
-
 #include <vector>
 
-#include "geometry/envelope_grid.h"
-#include "geometry/envelope_grid_vdb.h"
+#include "bench/grid_bench.h"
 #include "tests/geometry/fuzzy_ball.h"
 
 namespace fsdb {
@@ -21,25 +18,9 @@ namespace {
 
 const Vec3 kCentre{0.013, -0.021, 0.007};  // off the lattice
 
-void setCounters(benchmark::State& state, const EnvelopeGridStats& s) {
-  state.counters["active_voxels"] = static_cast<double>(s.activeVoxels);
-  state.counters["tiles"] = static_cast<double>(s.activeTiles);
-  state.counters["memory_MiB"] = static_cast<double>(s.memoryBytes) / (1 << 20);
-  state.counters["time_per_active_voxel"] = benchmark::Counter(
-      static_cast<double>(s.activeVoxels),
-      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
-}
-
 void buildBall(benchmark::State& state, double r1, double r2) {
   const double h = 2.0 / static_cast<double>(state.range(0));
-  const FuzzyBall ball(kCentre, r1, r2, 1.0);
-  EnvelopeGridStats stats;
-  for (auto _ : state) {
-    const EnvelopeGrid g = EnvelopeGrid::build(ball, h);
-    stats = g.stats();
-    benchmark::DoNotOptimize(stats);
-  }
-  setCounters(state, stats);
+  bench::timeGridBuild(state, FuzzyBall(kCentre, r1, r2, 1.0), h);
 }
 
 void BM_FuzzyBallBuild(benchmark::State& state) { buildBall(state, 0.6, 0.8); }
@@ -51,7 +32,7 @@ void BM_FuzzyBallVolumes(benchmark::State& state) {
   std::vector<double> alphas;
   for (int i = 0; i <= 10; ++i) alphas.push_back(i / 10.0);
   for (auto _ : state) benchmark::DoNotOptimize(g.volumes(alphas));
-  setCounters(state, g.stats());
+  bench::setGridCounters(state, g.stats());
 }
 
 // The Boolean of two overlapping fuzzy balls of radius up to 1 (support 2 = N voxels across).
@@ -65,26 +46,11 @@ void BM_FuzzyBallUnion(benchmark::State& state) {
     stats = u.stats();
     benchmark::DoNotOptimize(stats);
   }
-  setCounters(state, stats);
+  bench::setGridCounters(state, stats);
 }
 
 void BM_OpenVdbLevelSetSphere(benchmark::State& state) {
-  initializeOpenVdb();
-  const float h = 2.0f / static_cast<float>(state.range(0));
-  openvdb::Index64 active = 0;
-  std::size_t memory = 0;
-  for (auto _ : state) {
-    auto grid = openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(
-        1.0f, openvdb::Vec3f(kCentre.x, kCentre.y, kCentre.z), h);
-    active = grid->activeVoxelCount();
-    memory = static_cast<std::size_t>(grid->memUsage());
-    benchmark::DoNotOptimize(active);
-  }
-  state.counters["active_voxels"] = static_cast<double>(active);
-  state.counters["memory_MiB"] = static_cast<double>(memory) / (1 << 20);
-  state.counters["time_per_active_voxel"] =
-      benchmark::Counter(static_cast<double>(active),
-                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  bench::timeLevelSetSphere(state, 1.0f, kCentre, 2.0f / static_cast<float>(state.range(0)));
 }
 
 BENCHMARK(BM_FuzzyBallBuild)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond)->UseRealTime();

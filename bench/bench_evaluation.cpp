@@ -12,14 +12,11 @@
 // createLevelSetSphere, the 10-part assembly at 256 in under 1 s.
 #include <benchmark/benchmark.h>
 
-#include <openvdb/tools/LevelSetSphere.h>
-
 #include <algorithm>
 #include <memory>
 
+#include "bench/grid_bench.h"
 #include "geometry/csg_field.h"
-#include "geometry/envelope_grid.h"
-#include "geometry/envelope_grid_vdb.h"
 #include "geometry/fuzzy_part_field.h"
 
 namespace fsdb {
@@ -66,21 +63,7 @@ std::shared_ptr<const AlphaFieldSource> tenPartAssembly() {
 }
 
 void buildSource(benchmark::State& state, const AlphaFieldSource& source) {
-  Vec3 lo, hi;
-  source.boundingBox(&lo, &hi);
-  const double h = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) / static_cast<double>(state.range(0));
-  EnvelopeGridStats stats;
-  for (auto _ : state) {
-    const EnvelopeGrid g = EnvelopeGrid::build(source, h);
-    stats = g.stats();
-    benchmark::DoNotOptimize(stats);
-  }
-  state.counters["active_voxels"] = static_cast<double>(stats.activeVoxels);
-  state.counters["tiles"] = static_cast<double>(stats.activeTiles);
-  state.counters["memory_MiB"] = static_cast<double>(stats.memoryBytes) / (1 << 20);
-  state.counters["time_per_active_voxel"] =
-      benchmark::Counter(static_cast<double>(stats.activeVoxels),
-                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  bench::timeGridBuild(state, source, bench::voxelSizeAcross(source, static_cast<double>(state.range(0))));
 }
 
 void BM_CrispSpherePart(benchmark::State& state) { buildSource(state, *crispSphere()); }
@@ -88,19 +71,8 @@ void BM_TenPartAssembly(benchmark::State& state) { buildSource(state, *tenPartAs
 
 // The crisp sphere's bounding box is padded by the field; use the same voxel size.
 void BM_OpenVdbLevelSetSphere(benchmark::State& state) {
-  initializeOpenVdb();
-  Vec3 lo, hi;
-  crispSphere()->boundingBox(&lo, &hi);
-  const float h = static_cast<float>((hi.x - lo.x) / static_cast<double>(state.range(0)));
-  openvdb::Index64 active = 0;
-  for (auto _ : state) {
-    auto grid = openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(1.0f, openvdb::Vec3f(0, 0, 0), h);
-    active = grid->activeVoxelCount();
-    benchmark::DoNotOptimize(active);
-  }
-  state.counters["active_voxels"] = static_cast<double>(active);
-  state.counters["time_per_active_voxel"] = benchmark::Counter(
-      static_cast<double>(active), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  const double h = bench::voxelSizeAcross(*crispSphere(), static_cast<double>(state.range(0)));
+  bench::timeLevelSetSphere(state, 1.0f, Vec3{0, 0, 0}, static_cast<float>(h));
 }
 
 // Resolutions: the 64..512 for the sphere; the fuzzy assembly is slower per voxel

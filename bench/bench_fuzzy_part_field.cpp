@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "bench/grid_bench.h"
 #include "geometry/envelope_grid.h"
 #include "geometry/fuzzy_part_field.h"
 
@@ -153,20 +154,11 @@ class BisectionField : public AlphaFieldSource {
 void BM_DeformedPartGrid(benchmark::State& state) {
   const FuzzyPartField field(fuzzyDeformed());
   const BisectionField bisection(field);
-  Vec3 lo, hi;
-  field.boundingBox(&lo, &hi);
-  const double h =
-      std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) / static_cast<double>(state.range(0));
+  const double h = bench::voxelSizeAcross(field, static_cast<double>(state.range(0)));
   const AlphaFieldSource& source =
       state.range(1) == 0 ? static_cast<const AlphaFieldSource&>(bisection) : field;
   const std::uint64_t before = field.budgetExhaustions();
-  EnvelopeGridStats stats;
-  for (auto _ : state) {
-    const EnvelopeGrid g = EnvelopeGrid::build(source, h);
-    stats = g.stats();
-    benchmark::DoNotOptimize(stats);
-  }
-  state.counters["active_voxels"] = static_cast<double>(stats.activeVoxels);
+  bench::timeGridBuild(state, source, h);
   state.counters["exhausted"] = static_cast<double>(field.budgetExhaustions() - before);
 }
 BENCHMARK(BM_DeformedPartGrid)
