@@ -53,6 +53,7 @@ HttpServer::~HttpServer() = default;
 
 void HttpServer::addRoute(const std::string& method, const std::string& openapiPath, ApiHandler handler) {
   routes_.push_back({method, openapiPath});
+  routePatterns_.emplace_back(routeRegex(openapiPath));
   const int maxDepth = options_.limits.maxJsonDepth;
   auto wrapped = [handler = std::move(handler), maxDepth](const httplib::Request& req, httplib::Response& res) {
     try {
@@ -111,8 +112,8 @@ void HttpServer::installHandlers() {
     }
     if (res.status == 404) {
       std::vector<std::string> allowed;
-      for (const Route& r : routes_)
-        if (std::regex_match(req.path, std::regex(routeRegex(r.openapiPath)))) allowed.push_back(r.method);
+      for (size_t i = 0; i < routes_.size(); ++i)
+        if (std::regex_match(req.path, routePatterns_[i])) allowed.push_back(routes_[i].method);
       if (!allowed.empty()) {
         std::string allow;
         for (const auto& m : allowed) allow += (allow.empty() ? "" : ", ") + m;

@@ -13,6 +13,7 @@
 
 #include <functional>
 #include <memory>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,7 @@ class HttpServer {
   ServerOptions options_;
   std::unique_ptr<httplib::Server> server_;
   std::vector<Route> routes_;
+  std::vector<std::regex> routePatterns_;  // routes_[i]'s path pattern, compiled once (405 lookup)
 };
 
 }  // namespace fsdb
