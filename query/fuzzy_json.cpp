@@ -6,6 +6,7 @@
 
 #include "geometry/error.h"
 #include "geometry/number_format.h"
+#include "query/json_body.h"
 #include "query/json_path.h"
 #include "query/number_phrases.h"
 
@@ -23,18 +24,6 @@ Error invalid(const std::string& message, const std::string& path) {
   return Error(errc::kInvalidDocument, message, path);
 }
 
-// A finite JSON number. `what` names it in the message ("tri[1]", "spread").
-double finiteNumber(const json& j, const std::string& path, const std::string& what) {
-  if (!j.is_number()) {
-    throw invalid(what + " must be a number, got " + std::string(j.type_name()), path);
-  }
-  const double v = j.get<double>();
-  if (!std::isfinite(v)) {
-    throw invalid(what + " must be a finite number, got " + formatNumber(v), path);
-  }
-  return v;
-}
-
 // An array of exactly n finite numbers; `shape` describes it for messages ("[l, m, r]").
 std::vector<double> numberArray(const json& j, const std::string& path, const std::string& key,
                                 size_t n, const std::string& shape) {
@@ -50,7 +39,7 @@ std::vector<double> numberArray(const json& j, const std::string& path, const st
   }
   std::vector<double> v;
   for (size_t i = 0; i < n; ++i) {
-    v.push_back(finiteNumber(j[i], joinPath(path, i), key + "[" + std::to_string(i) + "]"));
+    v.push_back(requireNumber(j[i], joinPath(path, i)));
   }
   return v;
 }
@@ -123,11 +112,11 @@ FuzzyNumber parseObject(const json& j, const std::string& path) {
   }
   if (form == "points") return parsePoints(value, formPath);
   // {"about":m,"spread":s} = tri(m - s, m, m + s)
-  const double m = finiteNumber(value, formPath, "about");
+  const double m = requireNumber(value, formPath);
   double s = approximateSpread(m);
   if (j.contains("spread")) {
     const std::string spreadPath = joinPath(path, "spread");
-    s = finiteNumber(j.at("spread"), spreadPath, "spread");
+    s = requireNumber(j.at("spread"), spreadPath);
     if (s < 0) throw invalid("spread must be >= 0, got " + formatNumber(s), spreadPath);
     if (!std::isfinite(m - s) || !std::isfinite(m + s)) {
       throw invalid("about +- spread overflows: about=" + formatNumber(m) +
@@ -143,7 +132,7 @@ FuzzyNumber parseObject(const json& j, const std::string& path) {
 }  // namespace
 
 FuzzyNumber parseFuzzyNumber(const json& j, const std::string& path) {
-  if (j.is_number()) return FuzzyNumber::crisp(finiteNumber(j, path, "a crisp number"));
+  if (j.is_number()) return FuzzyNumber::crisp(requireNumber(j, path));
   if (j.is_object()) return parseObject(j, path);
   if (j.is_string()) {
     return within(path, [&] { return parseNumberPhrase(j.get<std::string>()); });

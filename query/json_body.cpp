@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "geometry/error.h"
+#include "geometry/number_format.h"
 
 namespace fsdb {
 
@@ -38,9 +39,11 @@ const nlohmann::json& requireArray(const nlohmann::json& j, const std::string& p
 }
 
 double requireNumber(const nlohmann::json& j, const std::string& path) {
-  if (!j.is_number()) throw Error(errc::kInvalidDocument, "expected a number, got " + jsonTypeName(j), path);
-  double v = j.get<double>();
-  if (!std::isfinite(v)) throw Error(errc::kInvalidDocument, "expected a finite number", path);
+  const std::string what = path.empty() ? "the value" : path;
+  if (!j.is_number()) throw Error(errc::kInvalidDocument, what + " must be a number, got " + jsonTypeName(j), path);
+  const double v = j.get<double>();
+  if (!std::isfinite(v))
+    throw Error(errc::kInvalidDocument, what + " must be a finite number, got " + formatNumber(v), path);
   return v;
 }
 
