@@ -17,6 +17,13 @@ inline constexpr const char* kMalformedJson = "malformed_json";        // 400
 inline constexpr const char* kLimitExceeded = "limit_exceeded";        // 413
 inline constexpr const char* kNotFound = "not_found";                  // 404
 inline constexpr const char* kDomainError = "domain_error";            // 422 (e.g. division by a number whose support holds 0)
+// The store (db/) and the service (server/):
+inline constexpr const char* kConflict = "conflict";                    // 409 (name taken, version mismatch)
+inline constexpr const char* kInUse = "in_use";                         // 409 (delete of something still referenced)
+inline constexpr const char* kUnknownReference = "unknown_reference";  // 422 (a reference to no stored part/shape)
+inline constexpr const char* kReferenceCycle = "reference_cycle";      // 422 (a shape that would contain itself)
+inline constexpr const char* kUnauthorized = "unauthorized";            // 401 (write without the bearer token)
+inline constexpr const char* kStorage = "storage_error";                // 503 (database busy, disk full, I/O error)
 }  // namespace errc
 
 class Error : public std::runtime_error {

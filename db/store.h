@@ -1,0 +1,176 @@
+#pragma once
+// Store: fsdb's database of parts and shapes (seed 004 §4; SPEC §2, §4) on one SQLite file.
+//
+// Model
+// - Every stored thing is an *object*: a system id (INTEGER, AUTOINCREMENT: never reused, not
+//   even after a delete), a kind ("part", "shape"; "curve" and "surface" reserved), a name unique
+//   among the live objects of its kind, and versions 1, 2, ... Each version keeps the document as
+//   given (canonical JSON text) and its content hash. PUT adds a version; old versions stay
+//   readable. Ids are shared by all kinds (an id names one object of one kind).
+// - References: a shape's tree names parts and shapes ("part":"bolt", "ref":"wheel", or an id).
+//   The store resolves each to an object id inside the write transaction and records the edge
+//   (parent -> child) for the parent's latest version, so a part used by a thousand trees is
+//   stored once (shared subtrees, seed 004 §4). A reference always means the child's latest
+//   version. Unknown references are 422 unknown_reference (path = the reference's JSON path);
+//   an edge that would close a cycle is 422 reference_cycle.
+// - Normalised columns beside the document: per version, the fuzzy parameters of a part
+//   (support and core of each, for SQL prefilters) and the CSG nodes of a shape (for structural
+//   search). The caller (server/, which owns the parsers) computes them; the store only keeps them.
+// - Evaluation cache: results of evaluating a shape keyed by a caller-made key (content hash of
+//   the resolved document + resolution + alphas + method). Any write to an object drops the cache
+//   rows of that object and of every object that reaches it through references.
+//
+// Guarantees
+// - Every write is one transaction (BEGIN IMMEDIATE): it completes or leaves nothing.
+// - WAL journal, foreign keys on, busy timeout (Options::busyTimeoutMs); a write that still cannot
+//   get the lock fails with 503 storage_error, never a partial write.
+// - Thread-safe: any number of threads may call any method; each call takes a connection from a
+//   pool (WAL lets readers run beside the one writer).
+// - Migrations (schema/migrations/NNN_*.sql, compiled into the binary) are applied in order at
+//   open(), each in its own transaction; the applied version is PRAGMA user_version.
+// Errors are fsdb::Error with the codes of geometry/error.h: not_found (404), conflict (409: name
+// taken on create, name change on put), in_use (409: delete of a referenced object without
+// cascade), unknown_reference / reference_cycle (422), storage_error (503: SQLite failures).
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fsdb {
+
+// A reference from a document to another stored object, as written in the document.
+struct ObjectReference {
+  std::string kind;              // "part" or "shape"
+  std::optional<int64_t> id;     // when the document gives an id
+  std::string name;              // when it gives a name
+  std::string path;              // JSON path of the reference, for errors ("tree.children[1].part")
+};
+
+// One fuzzy parameter of a part in normalised form (alpha-cuts at 0 and 1).
+struct ParameterSpan {
+  std::string name;  // "eps1", ..., "t", "translate.x", "rotate.deg", "scale"
+  double supportLo = 0, coreLo = 0, coreHi = 0, supportHi = 0;
+};
+
+// One node of a shape's CSG tree in pre-order; the root has parent -1.
+struct CsgNodeRow {
+  int index = 0;
+  int parent = -1;
+  int position = 0;            // child position under the parent (difference is ordered)
+  std::string kind;            // "union", "intersection", "difference", "part" (inline), "ref"
+  std::string operatorJson;    // node operator document, "" for zadeh / leaves
+  std::optional<int64_t> refId;  // "ref" leaves: the referenced object (resolved by the store)
+  int refIndex = -1;           // "ref" leaves: index into NewObject::references
+  std::string transformJson;   // the leaf's transform document, "" when none
+};
+
+// What a create or put writes.
+struct NewObject {
+  std::string kind;
+  std::string name;
+  std::string documentJson;    // canonical JSON text of the document as given
+  std::string contentHash;     // of documentJson (db/content_hash.h)
+  std::vector<ObjectReference> references;
+  std::vector<ParameterSpan> parameters;
+  std::vector<CsgNodeRow> nodes;
+};
+
+struct StoredObject {
+  int64_t id = 0;
+  std::string kind;
+  std::string name;
+  int version = 0;         // the version this record holds
+  int latestVersion = 0;   // the object's newest version
+  std::string documentJson;
+  std::string contentHash;
+  std::string createdAt;   // of this version, ISO 8601 UTC
+  std::vector<int64_t> references;  // resolved ids this version refers to (latest version only)
+};
+
+struct ListQuery {
+  std::string kind;
+  std::optional<std::string> name;   // exact name
+  std::optional<int> version;        // with name: that version (else the latest)
+  int64_t afterId = 0;               // keyset paging: ids greater than this
+  int limit = 100;
+};
+
+// Outcome of one bulk batch: per item either an id or an error.
+struct BulkItemResult {
+  std::optional<int64_t> id;
+  int version = 0;
+  std::string errorCode, errorMessage, errorPath;  // set when the item failed
+};
+
+enum class BulkMode {
+  kCreate,  // an existing name is a per-item conflict
+  kUpsert,  // an existing name gets a new version, unless the content hash equals its latest
+};
+
+struct StoreOptions {
+  int busyTimeoutMs = 5000;
+  bool synchronousFull = false;  // NORMAL (default) survives process crashes; FULL survives power loss
+  int poolSize = 8;
+};
+
+struct CachedEvaluation {
+  std::string resultJson;
+  std::string vdb;  // may be empty
+};
+
+class Store {
+ public:
+  // Opens (creating if missing, with parent directories) and migrates. ":memory:" is not
+  // supported (each pooled connection would get its own database); use a temporary file.
+  static std::unique_ptr<Store> open(const std::string& path, const StoreOptions& options = {});
+  ~Store();
+  Store(const Store&) = delete;
+  Store& operator=(const Store&) = delete;
+
+  const std::string& path() const;
+  int schemaVersion() const;  // highest applied migration
+
+  // Creates an object at version 1. conflict when the kind already has a live object of that name.
+  StoredObject create(const NewObject& object);
+  // Adds a version to object `id` (which must be of object.kind, else not_found). The name must
+  // stay the same (conflict otherwise). References are re-resolved; the edges become the new
+  // version's; cycles are refused.
+  StoredObject put(int64_t id, const NewObject& object);
+  // The latest version, or the given one. not_found when the object or version does not exist.
+  StoredObject get(const std::string& kind, int64_t id, std::optional<int> version = std::nullopt) const;
+  // Resolves a reference to the latest version of the object it names; not_found-free: nullopt.
+  std::optional<StoredObject> find(const ObjectReference& reference) const;
+  std::vector<StoredObject> list(const ListQuery& query) const;
+  // Deletes the object and all its versions. in_use (409) when a live object's latest version
+  // refers to it, unless cascade: then every object that reaches it is deleted too. Returns the
+  // ids deleted (the object first).
+  std::vector<int64_t> remove(const std::string& kind, int64_t id, bool cascade);
+
+  // One transaction for the whole batch; each item in its own savepoint, so a failing item
+  // (conflict, unknown reference, ...) is reported and the others of the batch still commit.
+  // Items may refer to objects created earlier in the same batch.
+  std::vector<BulkItemResult> createBatch(const std::vector<NewObject>& items, BulkMode mode);
+
+  // Live objects per kind ({"part": 31, "shape": 12}).
+  std::map<std::string, int64_t> counts() const;
+  // Ids of the objects whose latest version reaches `id` through references (not `id` itself).
+  std::vector<int64_t> dependents(int64_t id) const;
+
+  std::optional<CachedEvaluation> cachedEvaluation(const std::string& key) const;
+  void storeEvaluation(int64_t objectId, const std::string& key, const CachedEvaluation& value);
+
+  // PRAGMA wal_checkpoint(TRUNCATE): called at shutdown so the file is whole on its own.
+  void checkpoint();
+  // PRAGMA integrity_check: "ok" or the first problem.
+  std::string integrityCheck() const;
+
+  class Impl;
+
+ private:
+  explicit Store(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace fsdb
