@@ -1,8 +1,11 @@
 #include "query/shape_json.h"
 
+#include <map>
+
 #include "geometry/csg_field.h"
 #include "geometry/error.h"
 #include "geometry/fuzzy_part_field.h"
+#include "query/csg_text.h"
 #include "query/json_body.h"
 #include "query/operator_json.h"
 #include "query/part_json.h"
@@ -10,9 +13,40 @@
 namespace fsdb {
 namespace {
 
+std::string describeKey(const std::string& kind, const nlohmann::json& key) {
+  return kind + " " + (key.is_string() ? "'" + key.get<std::string>() + "'" : key.dump());
+}
+
+// A reference must be a non-empty name or a positive integer id.
+void checkReferenceKey(const nlohmann::json& key, const std::string& path) {
+  if (key.is_string() && !key.get<std::string>().empty()) return;
+  if (key.is_number_integer() && key.get<int64_t>() > 0) return;
+  throw Error(errc::kInvalidDocument,
+              "a reference is a stored object's name (non-empty string) or id (positive integer), got " +
+                  key.dump(),
+              path);
+}
+
 struct Walker {
   size_t maxNodes;
+  const ReferenceResolver& resolver;
   ParsedShape out;
+  // Stored shapes already built (shared subtrees are built once) and the chain of stored
+  // shapes being expanded (a repeat is a cycle).
+  std::map<int64_t, std::pair<std::shared_ptr<const AlphaFieldSource>, std::shared_ptr<const CsgTree>>> built;
+  std::vector<int64_t> expanding;
+
+  ResolvedReference resolve(const std::string& kind, const nlohmann::json& key, const std::string& path) {
+    checkReferenceKey(key, path);
+    if (!resolver)
+      throw Error(errc::kInvalidDocument,
+                  "references to stored " + kind + "s are resolved only against a database; give the " + kind +
+                      " inline as an object",
+                  path);
+    std::optional<ResolvedReference> r = resolver(kind, key);
+    if (!r) throw Error(errc::kUnknownReference, "unknown " + describeKey(kind, key), path);
+    return *r;
+  }
 
   void count(const std::string& path) {
     if (++out.nodeCount > maxNodes)
@@ -23,12 +57,7 @@ struct Walker {
                                                std::shared_ptr<const CsgTree>* tree) {
     const std::string pp = joinPath(path, "part");
     const nlohmann::json& partDoc = node["part"];
-    if (partDoc.is_string())
-      throw Error(errc::kInvalidDocument,
-                  "references to stored parts need the store, which this server does not have yet; "
-                  "give the part inline as an object",
-                  pp);
-    nlohmann::json doc = requireObject(partDoc, pp);
+    nlohmann::json doc = partDoc.is_object() ? partDoc : resolve("part", partDoc, pp).document;
     if (node.contains("transform")) {
       if (doc.contains("transform"))
         throw Error(errc::kInvalidDocument,
@@ -57,15 +86,45 @@ struct Walker {
     return std::make_shared<FuzzyPartField>(part);
   }
 
+  // {"ref": name or id}: a stored shape evaluated in place, built once however often it is named.
+  std::shared_ptr<const AlphaFieldSource> reference(const nlohmann::json& node, const std::string& path,
+                                                    std::shared_ptr<const CsgTree>* tree) {
+    const std::string rp = joinPath(path, "ref");
+    for (auto it = node.begin(); it != node.end(); ++it)
+      if (it.key() != "ref")
+        throw Error(errc::kInvalidDocument,
+                    it.key() == "transform"
+                        ? "a transform on a stored shape is not supported yet: a fuzzy placement of a whole "
+                          "subtree does not reduce to placements of its parts; place the parts instead"
+                        : "unknown field '" + it.key() + "' in a reference; expected ref",
+                    joinPath(path, it.key()));
+    const ResolvedReference r = resolve("shape", node["ref"], rp);
+    if (auto it = built.find(r.id); it != built.end()) {
+      *tree = it->second.second;
+      return it->second.first;
+    }
+    for (int64_t e : expanding)
+      if (e == r.id)
+        throw Error(errc::kReferenceCycle, describeKey("shape", node["ref"]) + " contains itself", rp);
+    const nlohmann::json& doc = r.document;
+    if (!doc.is_object() || (doc.contains("kind") && doc["kind"] != "shape"))
+      throw Error(errc::kInvalidDocument, describeKey("shape", node["ref"]) + " is not a shape document", rp);
+    expanding.push_back(r.id);
+    std::shared_ptr<const CsgTree> t;
+    // Errors inside the stored shape name the reference, then the path inside that shape.
+    auto field = this->node(shapeTree(doc, rp, resolver), joinPath(rp, doc.contains("tree") ? "tree" : "csg"), &t);
+    expanding.pop_back();
+    built[r.id] = {field, t};
+    *tree = t;
+    return field;
+  }
+
   std::shared_ptr<const AlphaFieldSource> node(const nlohmann::json& node, const std::string& path,
                                                std::shared_ptr<const CsgTree>* tree) {
     requireObject(node, path);
     count(path);
     if (node.contains("part")) return leaf(node, path, tree);
-    if (node.contains("ref"))
-      throw Error(errc::kInvalidDocument,
-                  "references to stored shapes need the store, which this server does not have yet",
-                  joinPath(path, "ref"));
+    if (node.contains("ref")) return reference(node, path, tree);
     const std::string opPath = joinPath(path, "op");
     const std::string& op = requireString(requireField(node, "op", path), opPath);
     CsgOp csg;
@@ -105,9 +164,78 @@ struct Walker {
 
 }  // namespace
 
-ParsedShape parseShapeField(const nlohmann::json& doc, const std::string& path, size_t maxNodes) {
+nlohmann::json shapeTree(const nlohmann::json& doc, const std::string& path, const ReferenceResolver& resolver) {
+  const bool hasTree = doc.contains("tree"), hasCsg = doc.contains("csg");
+  if (hasTree && hasCsg)
+    throw Error(errc::kInvalidDocument, "give either \"tree\" or \"csg\", not both", joinPath(path, "csg"));
+  if (hasTree) return doc["tree"];
+  if (!hasCsg) throw Error(errc::kInvalidDocument, "missing required field \"tree\" (or \"csg\")", path);
+  const std::string cp = joinPath(path, "csg");
+  const std::string& text = requireString(doc["csg"], cp);
+  auto kindOf = [&](const std::string& name, size_t column) -> std::string {
+    if (!resolver)
+      throw Error(errc::kInvalidDocument, "the csg text form names stored parts and shapes; it needs a database",
+                  cp);
+    if (resolver("part", name)) return "part";
+    if (resolver("shape", name)) return "shape";
+    throw Error(errc::kUnknownReference,
+                "csg: '" + name + "' at column " + std::to_string(column) + " is no stored part or shape", cp);
+  };
+  CsgText parsed = parseCsgText(text, kindOf, cp);
+  if (!parsed.name.empty() && doc.contains("name") && doc["name"].is_string() && doc["name"] != parsed.name)
+    throw Error(errc::kInvalidDocument,
+                "csg names the shape '" + parsed.name + "' but \"name\" is '" + doc["name"].get<std::string>() + "'",
+                cp);
+  return parsed.tree;
+}
+
+TreeOutline outlineTree(const nlohmann::json& tree, const std::string& path) {
+  TreeOutline out;
+  // Pre-order walk with an explicit stack of (node, parent, position, path).
+  struct Item {
+    const nlohmann::json* node;
+    int parent, position;
+    std::string path;
+  };
+  std::vector<Item> stack{{&tree, -1, 0, path}};
+  while (!stack.empty()) {
+    Item it = std::move(stack.back());
+    stack.pop_back();
+    const nlohmann::json& n = *it.node;
+    TreeNodeOutline o;
+    o.parent = it.parent;
+    o.position = it.position;
+    if (n.contains("transform")) o.transform = n["transform"];
+    if (n.contains("part")) {
+      o.kind = "part";
+      if (!n["part"].is_object()) {
+        o.kind = "ref";
+        o.reference = static_cast<int>(out.references.size());
+        out.references.push_back({"part", n["part"], joinPath(it.path, "part")});
+      }
+    } else if (n.contains("ref")) {
+      o.kind = "ref";
+      o.reference = static_cast<int>(out.references.size());
+      out.references.push_back({"shape", n["ref"], joinPath(it.path, "ref")});
+    } else {
+      o.kind = n.value("op", "");
+      if (n.contains("operator")) o.operatorDoc = n["operator"];
+    }
+    const int index = static_cast<int>(out.nodes.size());
+    out.nodes.push_back(std::move(o));
+    if (n.contains("children") && n["children"].is_array()) {
+      const auto& c = n["children"];
+      const std::string cp = joinPath(it.path, "children");
+      for (size_t i = c.size(); i-- > 0;) stack.push_back({&c[i], index, static_cast<int>(i), joinPath(cp, i)});
+    }
+  }
+  return out;
+}
+
+ParsedShape parseShapeField(const nlohmann::json& doc, const std::string& path, size_t maxNodes,
+                            const ReferenceResolver& resolver) {
   requireObject(doc, path);
-  Walker w{maxNodes, {}};
+  Walker w{maxNodes, resolver, {}, {}, {}};
   const std::string kind = doc.contains("kind") ? requireString(doc["kind"], joinPath(path, "kind")) : "shape";
   if (kind == "part") {
     w.count(path);
@@ -120,17 +248,13 @@ ParsedShape parseShapeField(const nlohmann::json& doc, const std::string& path, 
   }
   if (kind != "shape")
     throw Error(errc::kInvalidDocument, "expected kind \"shape\" or \"part\", got \"" + kind + "\"", joinPath(path, "kind"));
-  if (doc.contains("csg"))
-    throw Error(errc::kInvalidDocument,
-                "the csg text form names stored parts and needs the store, which this server does not have yet; "
-                "give \"tree\"",
-                joinPath(path, "csg"));
   for (auto it = doc.begin(); it != doc.end(); ++it)
-    if (it.key() != "kind" && it.key() != "name" && it.key() != "tree" && it.key() != "meta" &&
-        it.key() != "descriptors")
-      throw Error(errc::kInvalidDocument, "unknown field '" + it.key() + "'; expected kind, name, tree, meta",
+    if (it.key() != "kind" && it.key() != "name" && it.key() != "tree" && it.key() != "csg" &&
+        it.key() != "meta" && it.key() != "descriptors")
+      throw Error(errc::kInvalidDocument, "unknown field '" + it.key() + "'; expected kind, name, tree, csg, meta",
                   joinPath(path, it.key()));
-  w.out.field = w.node(requireField(doc, "tree", path), joinPath(path, "tree"), &w.out.tree);
+  const nlohmann::json tree = shapeTree(doc, path, resolver);
+  w.out.field = w.node(tree, joinPath(path, doc.contains("tree") ? "tree" : "csg"), &w.out.tree);
   return w.out;
 }
 

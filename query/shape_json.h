@@ -11,13 +11,26 @@
 // "transform" places the inline part; a part that has its own transform cannot take a second
 // one (fuzzy placements do not compose into one placement in general), which is an error.
 //
-// Not yet evaluated, and refused with a message naming the path: references to stored parts
-// and shapes ("part":"<name>", "ref"), the text form "csg" (both need the store), and node
-// operators other than zadeh (smooth operators change the semantics from alpha-cut Booleans to
-// fuzzy-set blends of membership fields). Limits: more than maxNodes nodes is limit_exceeded.
+// References to stored objects (SPEC §2) go through a ReferenceResolver (the server backs it
+// with the store; query/ knows no database):
+//   {"part":"bolt"} or {"part":7}   a stored part by name or id (with an optional leaf transform)
+//   {"ref":"wheel"} or {"ref":12}   a stored shape by name or id: its tree is evaluated in place
+//   {"kind":"shape","csg":"C = A + (B - D) * E"}   the text form (query/csg_text.h); each name is
+//                                   a stored part, else a stored shape
+// A stored object referenced several times (shared subtrees, a DAG) is parsed and built once
+// and counts once against maxNodes. Unknown references are unknown_reference (422) with the
+// path of the reference; a shape that reaches itself is reference_cycle (422). Without a
+// resolver, references are invalid_document naming the path.
+// Not yet evaluated: node operators other than zadeh, and a transform on a "ref" leaf (a fuzzy
+// placement of a whole subtree does not reduce to the placements of its parts).
+// Limits: more than maxNodes nodes is limit_exceeded.
+#include <cstdint>
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "geometry/alpha_field.h"
 #include "geometry/boundary_method.h"
@@ -31,6 +44,47 @@ struct ParsedShape {
   size_t partCount = 0;  // leaves
 };
 
-ParsedShape parseShapeField(const nlohmann::json& doc, const std::string& path, size_t maxNodes);
+// A stored document that a reference names.
+struct ResolvedReference {
+  int64_t id = 0;           // the stored object's id: identity for sharing and cycle checks
+  nlohmann::json document;  // its latest version
+};
+// kind: "part" or "shape"; key: the reference as written (a name string or an integer id).
+// Returns nullopt for an unknown reference.
+using ReferenceResolver =
+    std::function<std::optional<ResolvedReference>(const std::string& kind, const nlohmann::json& key)>;
+
+ParsedShape parseShapeField(const nlohmann::json& doc, const std::string& path, size_t maxNodes,
+                            const ReferenceResolver& resolver = {});
+
+// The tree of a shape document: its "tree", or its "csg" text parsed (names resolved to "part"
+// or "ref" leaves with `resolver`). invalid_document when it has neither or both.
+nlohmann::json shapeTree(const nlohmann::json& doc, const std::string& path, const ReferenceResolver& resolver);
+
+// A reference as written in a document, found without resolving anything.
+struct DocumentReference {
+  std::string kind;      // "part" or "shape"
+  nlohmann::json key;    // name string or integer id
+  std::string path;      // "tree.children[1].part"
+};
+
+// One node of a tree in pre-order (root first, parent -1), for storage and structural search.
+struct TreeNodeOutline {
+  int parent = -1;
+  int position = 0;
+  std::string kind;              // "union", "intersection", "difference", "part", "ref"
+  nlohmann::json operatorDoc;    // the node's "operator" (null when absent)
+  nlohmann::json transform;      // the leaf's "transform" (null when absent)
+  int reference = -1;            // index into the references, for leaves naming a stored object
+};
+
+struct TreeOutline {
+  std::vector<TreeNodeOutline> nodes;
+  std::vector<DocumentReference> references;
+};
+
+// Walks a tree (as shapeTree returns it) without parsing parts or resolving references.
+// The tree must have passed parseShapeField (malformed trees are not diagnosed here).
+TreeOutline outlineTree(const nlohmann::json& tree, const std::string& path);
 
 }  // namespace fsdb
