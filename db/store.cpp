@@ -241,8 +241,8 @@ StoredObject putIn(Connection& connection, int64_t id, const NewObject& object) 
                 "name");
   auto children = resolveAll(connection, object.references);
   checkCycles(connection, *row, object.references, children);
-  // Before the edges change, so everything that reached the object through its old edges... and
-  // its new ones (the same parents: parents are unchanged by the object's own write).
+  // The objects that reach this one are its ancestors in refs, which this write does not change
+  // (it replaces only the object's own outgoing edges), so the order against writeVersion is free.
   invalidateCache(connection, id);
   std::string now = isoNow();
   int version = row->latestVersion + 1;
@@ -284,7 +284,7 @@ std::vector<int64_t> referencesOf(Connection& connection, int64_t id) {
 
 // Columns: o.id, o.kind, o.name, o.latest_version, v.version, v.document, v.content_hash,
 // v.created_at. References are filled for the latest version (refs holds only its edges).
-StoredObject readObject(Connection& connection, sqlite::Statement& row) {
+StoredObject readObject(sqlite::Statement& row) {
   StoredObject object;
   object.id = row.columnInt(0);
   object.kind = row.columnText(1);
@@ -310,7 +310,7 @@ std::optional<StoredObject> loadObject(Connection& connection, const std::string
                                         " WHERE o.id = ?1 AND o.kind = ?2");
     statement->bind(1, id).bind(2, kind);
     statement->bind(3, version ? std::optional<int64_t>(*version) : std::nullopt);
-    if (statement->step()) object = readObject(connection, *statement);
+    if (statement->step()) object = readObject(*statement);
   }
   if (object && object->version == object->latestVersion)
     object->references = referencesOf(connection, object->id);
@@ -525,7 +525,7 @@ std::vector<StoredObject> Store::list(const ListQuery& query) const {
     // A version only selects with a name (one object); otherwise every object's latest.
     if (query.name && query.version) statement->bind(3, *query.version); else statement->bindNull(3);
     statement->bind(4, query.afterId).bind(5, std::max(0, query.limit));
-    while (statement->step()) objects.push_back(readObject(*connection, *statement));
+    while (statement->step()) objects.push_back(readObject(*statement));
   }
   for (auto& object : objects)
     if (object.version == object.latestVersion) object.references = referencesOf(*connection, object.id);
