@@ -5,20 +5,16 @@
 #include <gtest/gtest.h>
 
 #include "geometry/error.h"
+#include "tests/db/expect_error.h"
 #include "tests/db/temp_dir.h"
 
 namespace fsdb::sqlite {
 namespace {
 
+// f() fails with storage_error and a message containing `fragment`.
 template <class F>
 void expectStorageError(F f, const std::string& fragment) {
-  try {
-    f();
-    ADD_FAILURE() << "no error; expected storage_error containing " << fragment;
-  } catch (const Error& e) {
-    EXPECT_EQ(e.code(), errc::kStorage);
-    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
-  }
+  FSDB_EXPECT_CONTAINS(expectError(f, errc::kStorage), fragment);
 }
 
 class SqliteTest : public testing::Test {
@@ -53,13 +49,7 @@ TEST_F(SqliteTest, SynchronousFullOption) {
 
 TEST_F(SqliteTest, OpenFailureNamesThePath) {
   std::string bad = dir.file("missing_dir/x.db");
-  try {
-    Connection c(bad);
-    ADD_FAILURE() << "opened " << bad;
-  } catch (const Error& e) {
-    EXPECT_EQ(e.code(), errc::kStorage);
-    EXPECT_NE(std::string(e.what()).find(bad), std::string::npos) << e.what();
-  }
+  expectStorageError([&] { Connection c(bad); }, bad);
 }
 
 TEST_F(SqliteTest, BindsAndReadsEveryType) {

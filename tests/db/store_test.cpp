@@ -10,6 +10,7 @@
 #include "db/content_hash.h"
 #include "db/sqlite.h"
 #include "geometry/error.h"
+#include "tests/db/expect_error.h"
 #include "tests/db/temp_dir.h"
 
 namespace fsdb {
@@ -42,22 +43,6 @@ ObjectReference byId(const std::string& kind, int64_t id, int index = 0) {
   return {kind, id, "", "tree.children[" + std::to_string(index) + "].ref"};
 }
 
-// f() must throw fsdb::Error with this code (and path, when given); returns the message.
-template <class F>
-std::string expectError(F f, const std::string& code, const std::string& path = "") {
-  try {
-    f();
-    ADD_FAILURE() << "no error; expected " << code;
-  } catch (const Error& e) {
-    EXPECT_EQ(e.code(), code) << e.what();
-    if (!path.empty()) {
-      EXPECT_EQ(e.path(), path) << e.what();
-    }
-    return e.what();
-  }
-  return "";
-}
-
 class StoreTest : public testing::Test {
  protected:
   TempDir dir;
@@ -86,7 +71,7 @@ TEST_F(StoreTest, OpenFailsWithPathWhenItCannot) {
   { sqlite::Connection make(blocker); }  // a regular file where a directory is needed
   std::string bad = blocker + "/sub/x.db";
   auto message = expectError([&] { Store::open(bad); }, errc::kStorage);
-  EXPECT_NE(message.find(bad), std::string::npos) << message;
+  FSDB_EXPECT_CONTAINS(message, bad);
   expectError([&] { Store::open(":memory:"); }, errc::kStorage);
 }
 
@@ -112,8 +97,8 @@ TEST_F(StoreTest, GetOfWrongKindOrMissingIsNotFound) {
   expectError([&] { store->get("shape", bolt.id); }, errc::kNotFound);
   expectError([&] { store->get("part", bolt.id + 100); }, errc::kNotFound);
   auto message = expectError([&] { store->get("part", bolt.id, 7); }, errc::kNotFound);
-  EXPECT_NE(message.find(std::to_string(bolt.id)), std::string::npos) << message;
-  EXPECT_NE(message.find("version 7"), std::string::npos) << message;
+  FSDB_EXPECT_CONTAINS(message, std::to_string(bolt.id));
+  FSDB_EXPECT_CONTAINS(message, "version 7");
 }
 
 TEST_F(StoreTest, PutAddsVersionsAndOldOnesStayReadable) {
@@ -192,7 +177,7 @@ TEST_F(StoreTest, CycleOnPutIsRefused) {
   auto a = store->create(shape("A", {byName("shape", "B")}));
   auto message = expectError([&] { store->put(b.id, shape("B", {byName("shape", "A", 0)})); },
                              errc::kReferenceCycle, "tree.children[0].shape");
-  EXPECT_NE(message.find("'A'"), std::string::npos) << message;
+  FSDB_EXPECT_CONTAINS(message, "'A'");
   // Self-reference by id is a cycle too.
   expectError([&] { store->put(a.id, shape("A", {byId("shape", a.id)})); }, errc::kReferenceCycle,
               "tree.children[0].ref");
@@ -247,8 +232,7 @@ TEST_F(StoreTest, RemoveInUseUnlessCascade) {
   auto outer = store->create(shape("outer", {byName("shape", "inner")}));
   auto other = store->create(part("other"));
   auto message = expectError([&] { store->remove("part", bolt.id, false); }, errc::kInUse);
-  EXPECT_NE(message.find("shape 'inner' (id " + std::to_string(inner.id) + ")"), std::string::npos)
-      << message;
+  FSDB_EXPECT_CONTAINS(message, "shape 'inner' (id " + std::to_string(inner.id) + ")");
   EXPECT_EQ(store->dependents(bolt.id), (std::vector<int64_t>{inner.id, outer.id}));
   auto removed = store->remove("part", bolt.id, true);
   EXPECT_EQ(removed, (std::vector<int64_t>{bolt.id, inner.id, outer.id}));
@@ -266,9 +250,9 @@ TEST_F(StoreTest, InUseMessageNamesAtMostFive) {
   auto bolt = store->create(part("bolt"));
   for (int i = 0; i < 7; ++i) store->create(shape("s" + std::to_string(i), {byName("part", "bolt")}));
   auto message = expectError([&] { store->remove("part", bolt.id, false); }, errc::kInUse);
-  EXPECT_NE(message.find("'s4'"), std::string::npos) << message;
+  FSDB_EXPECT_CONTAINS(message, "'s4'");
   EXPECT_EQ(message.find("'s5'"), std::string::npos) << message;
-  EXPECT_NE(message.find("and 2 more"), std::string::npos) << message;
+  FSDB_EXPECT_CONTAINS(message, "and 2 more");
 }
 
 TEST_F(StoreTest, ReferenceDroppedByPutNoLongerBlocksRemove) {
@@ -386,7 +370,7 @@ TEST(StoreReopen, RefusesNewerSchema) {
     db.exec("PRAGMA user_version = 2000");
   }
   auto message = expectError([&] { Store::open(path); }, errc::kStorage);
-  EXPECT_NE(message.find("2000"), std::string::npos) << message;
+  FSDB_EXPECT_CONTAINS(message, "2000");
 }
 
 TEST_F(StoreTest, ConcurrentCreatesAndGets) {
