@@ -153,7 +153,7 @@ class Store {
   // Items may refer to objects created earlier in the same batch.
   std::vector<BulkItemResult> createBatch(const std::vector<NewObject>& items, BulkMode mode);
 
-  // Live objects per kind ({"part": 31, "shape": 12}).
+  // Live objects per kind ({"part": 31, "shape": 12}); kinds with no live object are absent.
   std::map<std::string, int64_t> counts() const;
   // Ids of the objects whose latest version reaches `id` through references (not `id` itself).
   std::vector<int64_t> dependents(int64_t id) const;

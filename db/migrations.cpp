@@ -1,0 +1,44 @@
+// See db/migrations.h.
+#include "db/migrations.h"
+
+#include <algorithm>
+
+#include "db/sqlite.h"
+#include "geometry/error.h"
+
+namespace fsdb {
+
+int schemaVersionOf(sqlite::Connection& connection) {
+  auto statement = connection.prepare("PRAGMA user_version");
+  return statement->step() ? static_cast<int>(statement->columnInt(0)) : 0;
+}
+
+int applyMigrations(sqlite::Connection& connection,
+                    const std::vector<std::pair<int, std::string>>& migrations) {
+  auto sorted = migrations;
+  std::sort(sorted.begin(), sorted.end());
+  int known = sorted.empty() ? 0 : sorted.back().first;
+  int current = schemaVersionOf(connection);
+  if (current > known)
+    throw Error(errc::kStorage, "database schema version " + std::to_string(current) +
+                                    " is newer than this fsdb knows (" + std::to_string(known) +
+                                    "); upgrade fsdb to open it");
+  for (const auto& [version, sql] : sorted) {
+    if (version <= current) continue;
+    sqlite::Transaction transaction(connection);
+    // Re-read under the write lock: another process may have migrated since we looked.
+    if (schemaVersionOf(connection) >= version) continue;
+    try {
+      connection.exec(sql);
+    } catch (const Error& e) {
+      throw Error(errc::kStorage, "migration " + std::to_string(version) + ": " + e.what());
+    }
+    // PRAGMA takes no bound parameters; the value is our own integer, not input.
+    connection.exec("PRAGMA user_version = " + std::to_string(version));
+    transaction.commit();
+    current = version;
+  }
+  return schemaVersionOf(connection);
+}
+
+}  // namespace fsdb

@@ -1,0 +1,195 @@
+// See db/sqlite.h.
+#include "db/sqlite.h"
+
+#include <sqlite3.h>
+
+#include "geometry/error.h"
+
+namespace fsdb::sqlite {
+
+void fail(sqlite3* db, const std::string& what) {
+  std::string message = db ? sqlite3_errmsg(db) : "out of memory";
+  throw Error(errc::kStorage, what + " failed: " + message);
+}
+
+// --- Statement ---------------------------------------------------------------------------------
+
+Statement::Statement(sqlite3* db, const std::string& sql) : db_(db), sql_(sql) {
+  if (sqlite3_prepare_v2(db_, sql.c_str(), static_cast<int>(sql.size() + 1), &stmt_, nullptr) !=
+      SQLITE_OK) {
+    sqlite3_finalize(stmt_);
+    fail(db_, "prepare of '" + sql + "'");
+  }
+}
+
+Statement::~Statement() { sqlite3_finalize(stmt_); }
+
+namespace {
+void checkBind(sqlite3* db, int rc, int index) {
+  if (rc != SQLITE_OK) fail(db, "bind of parameter " + std::to_string(index));
+}
+}  // namespace
+
+Statement& Statement::bind(int index, int64_t value) {
+  checkBind(db_, sqlite3_bind_int64(stmt_, index, value), index);
+  return *this;
+}
+
+Statement& Statement::bind(int index, double value) {
+  checkBind(db_, sqlite3_bind_double(stmt_, index, value), index);
+  return *this;
+}
+
+Statement& Statement::bind(int index, const std::string& text) {
+  checkBind(db_, sqlite3_bind_text64(stmt_, index, text.data(), text.size(), SQLITE_TRANSIENT,
+                                     SQLITE_UTF8),
+            index);
+  return *this;
+}
+
+Statement& Statement::bind(int index, const std::optional<int64_t>& value) {
+  return value ? bind(index, *value) : bindNull(index);
+}
+
+Statement& Statement::bindBlob(int index, const std::string& bytes) {
+  checkBind(db_, sqlite3_bind_blob64(stmt_, index, bytes.data(), bytes.size(), SQLITE_TRANSIENT),
+            index);
+  return *this;
+}
+
+Statement& Statement::bindNull(int index) {
+  checkBind(db_, sqlite3_bind_null(stmt_, index), index);
+  return *this;
+}
+
+bool Statement::step() {
+  int rc = sqlite3_step(stmt_);
+  if (rc == SQLITE_ROW) return true;
+  if (rc == SQLITE_DONE) return false;
+  // sqlite3_errmsg still holds the step's message until the next call on this connection.
+  std::string what = "'" + sql_ + "'";
+  fail(db_, what);
+}
+
+void Statement::run() {
+  while (step()) {
+  }
+}
+
+void Statement::reset() {
+  // The return code of reset repeats the last step's error, already reported by step().
+  sqlite3_reset(stmt_);
+  sqlite3_clear_bindings(stmt_);
+}
+
+bool Statement::isNull(int column) const { return sqlite3_column_type(stmt_, column) == SQLITE_NULL; }
+
+int64_t Statement::columnInt(int column) const { return sqlite3_column_int64(stmt_, column); }
+
+double Statement::columnDouble(int column) const { return sqlite3_column_double(stmt_, column); }
+
+std::string Statement::columnText(int column) const {
+  const unsigned char* text = sqlite3_column_text(stmt_, column);
+  int size = sqlite3_column_bytes(stmt_, column);
+  return text ? std::string(reinterpret_cast<const char*>(text), static_cast<size_t>(size)) : "";
+}
+
+std::string Statement::columnBlob(int column) const {
+  const void* bytes = sqlite3_column_blob(stmt_, column);
+  int size = sqlite3_column_bytes(stmt_, column);
+  return bytes ? std::string(static_cast<const char*>(bytes), static_cast<size_t>(size)) : "";
+}
+
+std::optional<int64_t> Statement::columnOptionalInt(int column) const {
+  if (isNull(column)) return std::nullopt;
+  return columnInt(column);
+}
+
+// --- Connection --------------------------------------------------------------------------------
+
+Connection::Connection(const std::string& path, const ConnectionOptions& options) {
+  // NOMUTEX: the pool gives a connection to one thread at a time, so SQLite's own per-connection
+  // mutex would only cost time.
+  int flags = SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX;
+  if (sqlite3_open_v2(path.c_str(), &db_, flags, nullptr) != SQLITE_OK) {
+    std::string message = db_ ? sqlite3_errmsg(db_) : "out of memory";
+    sqlite3_close(db_);
+    throw Error(errc::kStorage, "open of '" + path + "' failed: " + message);
+  }
+  try {
+    sqlite3_extended_result_codes(db_, 1);
+    sqlite3_busy_timeout(db_, options.busyTimeoutMs);
+    exec("PRAGMA journal_mode = WAL");
+    exec("PRAGMA foreign_keys = ON");
+    exec(options.synchronousFull ? "PRAGMA synchronous = FULL" : "PRAGMA synchronous = NORMAL");
+  } catch (...) {
+    sqlite3_close(db_);
+    throw;
+  }
+}
+
+Connection::~Connection() {
+  statements_.clear();  // finalize before close, else sqlite3_close refuses
+  sqlite3_close(db_);
+}
+
+void Connection::exec(const std::string& sql) {
+  char* message = nullptr;
+  if (sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, &message) != SQLITE_OK) {
+    std::string text = message ? message : sqlite3_errmsg(db_);
+    sqlite3_free(message);
+    throw Error(errc::kStorage, "'" + sql.substr(0, 80) + "' failed: " + text);
+  }
+}
+
+StatementRef Connection::prepare(const std::string& sql) {
+  auto found = statements_.find(sql);
+  if (found == statements_.end())
+    found = statements_.emplace(sql, std::make_unique<Statement>(db_, sql)).first;
+  return StatementRef(*found->second);
+}
+
+int64_t Connection::lastInsertId() const { return sqlite3_last_insert_rowid(db_); }
+
+int Connection::changes() const { return sqlite3_changes(db_); }
+
+bool Connection::inTransaction() const { return sqlite3_get_autocommit(db_) == 0; }
+
+// --- Transaction, Savepoint --------------------------------------------------------------------
+
+Transaction::Transaction(Connection& connection, Mode mode) : connection_(connection) {
+  connection_.exec(mode == Mode::kImmediate ? "BEGIN IMMEDIATE" : "BEGIN DEFERRED");
+}
+
+Transaction::~Transaction() {
+  // Some errors (disk full, I/O) end the transaction themselves; ROLLBACK would then fail.
+  if (!done_ && connection_.inTransaction()) sqlite3_exec(connection_.handle(), "ROLLBACK", nullptr, nullptr, nullptr);
+}
+
+void Transaction::commit() {
+  connection_.exec("COMMIT");
+  done_ = true;
+}
+
+Savepoint::Savepoint(Connection& connection, std::string name)
+    : connection_(connection), name_(std::move(name)) {
+  connection_.exec("SAVEPOINT " + name_);
+}
+
+Savepoint::~Savepoint() {
+  if (done_ || !connection_.inTransaction()) return;
+  std::string sql = "ROLLBACK TO " + name_ + "; RELEASE " + name_;
+  sqlite3_exec(connection_.handle(), sql.c_str(), nullptr, nullptr, nullptr);
+}
+
+void Savepoint::release() {
+  connection_.exec("RELEASE " + name_);
+  done_ = true;
+}
+
+void Savepoint::rollback() {
+  connection_.exec("ROLLBACK TO " + name_ + "; RELEASE " + name_);
+  done_ = true;
+}
+
+}  // namespace fsdb::sqlite

@@ -1,0 +1,413 @@
+// db/store.h: the Store contract, method by method, on a real file in a temporary directory.
+#include "db/store.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <regex>
+#include <thread>
+
+#include "db/content_hash.h"
+#include "db/sqlite.h"
+#include "geometry/error.h"
+#include "tests/db/expect_error.h"
+#include "tests/db/temp_dir.h"
+
+namespace fsdb {
+namespace {
+
+NewObject part(const std::string& name, const std::string& document = "{\"eps1\":1}") {
+  NewObject object{"part", name, document, contentHash(document), {}, {}, {}};
+  object.parameters.push_back({"eps1", 0.5, 0.9, 1.1, 1.5});
+  object.parameters.push_back({"t", 0, 0, 0, 0});
+  return object;
+}
+
+// A shape whose tree is a union of "ref" leaves naming `children` (parts by default).
+NewObject shape(const std::string& name, const std::vector<ObjectReference>& children,
+                const std::string& salt = "") {
+  std::string document = "{\"union\":" + std::to_string(children.size()) + salt + "}";
+  NewObject object{"shape", name, document, contentHash(document), children, {}, {}};
+  object.nodes.push_back({0, -1, 0, "union", "", std::nullopt, -1, ""});
+  for (size_t i = 0; i < children.size(); ++i)
+    object.nodes.push_back({static_cast<int>(i + 1), 0, static_cast<int>(i), "ref", "", std::nullopt,
+                            static_cast<int>(i), "{\"translate\":[1,0,0]}"});
+  return object;
+}
+
+ObjectReference byName(const std::string& kind, const std::string& name, int index = 0) {
+  return {kind, std::nullopt, name, "tree.children[" + std::to_string(index) + "]." + kind};
+}
+
+ObjectReference byId(const std::string& kind, int64_t id, int index = 0) {
+  return {kind, id, "", "tree.children[" + std::to_string(index) + "].ref"};
+}
+
+class StoreTest : public testing::Test {
+ protected:
+  TempDir dir;
+  std::string path = dir.file("nested/dir/fsdb.db");
+  std::unique_ptr<Store> store = Store::open(path);
+
+  // Rows of `table` with object_id = id, read through a separate connection.
+  int64_t rows(const std::string& table, const std::string& column, int64_t id) {
+    sqlite::Connection db(path);
+    auto statement = db.prepare("SELECT COUNT(*) FROM " + table + " WHERE " + column + " = ?1");
+    statement->bind(1, id);
+    EXPECT_TRUE(statement->step());
+    return statement->columnInt(0);
+  }
+};
+
+TEST_F(StoreTest, OpenCreatesParentDirectoriesAndMigrates) {
+  EXPECT_TRUE(std::filesystem::exists(path));
+  EXPECT_EQ(store->path(), path);
+  EXPECT_EQ(store->schemaVersion(), 1);
+  EXPECT_EQ(store->integrityCheck(), "ok");
+}
+
+TEST_F(StoreTest, OpenFailsWithPathWhenItCannot) {
+  std::string blocker = dir.file("a_file");
+  { sqlite::Connection make(blocker); }  // a regular file where a directory is needed
+  std::string bad = blocker + "/sub/x.db";
+  auto message = expectError([&] { Store::open(bad); }, errc::kStorage);
+  FSDB_EXPECT_CONTAINS(message, bad);
+  expectError([&] { Store::open(":memory:"); }, errc::kStorage);
+}
+
+TEST_F(StoreTest, CreateAndGet) {
+  auto created = store->create(part("bolt"));
+  EXPECT_GT(created.id, 0);
+  EXPECT_EQ(created.version, 1);
+  EXPECT_EQ(created.latestVersion, 1);
+  EXPECT_TRUE(std::regex_match(created.createdAt,
+                               std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d\.\d{3}Z)")))
+      << created.createdAt;
+  auto got = store->get("part", created.id);
+  EXPECT_EQ(got.name, "bolt");
+  EXPECT_EQ(got.kind, "part");
+  EXPECT_EQ(got.documentJson, "{\"eps1\":1}");
+  EXPECT_EQ(got.contentHash, contentHash("{\"eps1\":1}"));
+  EXPECT_EQ(got.createdAt, created.createdAt);
+  EXPECT_EQ(rows("part_parameters", "object_id", created.id), 2);
+}
+
+TEST_F(StoreTest, GetOfWrongKindOrMissingIsNotFound) {
+  auto bolt = store->create(part("bolt"));
+  expectError([&] { store->get("shape", bolt.id); }, errc::kNotFound);
+  expectError([&] { store->get("part", bolt.id + 100); }, errc::kNotFound);
+  auto message = expectError([&] { store->get("part", bolt.id, 7); }, errc::kNotFound);
+  FSDB_EXPECT_CONTAINS(message, std::to_string(bolt.id));
+  FSDB_EXPECT_CONTAINS(message, "version 7");
+}
+
+TEST_F(StoreTest, PutAddsVersionsAndOldOnesStayReadable) {
+  auto bolt = store->create(part("bolt", "{\"v\":1}"));
+  auto second = store->put(bolt.id, part("bolt", "{\"v\":2}"));
+  EXPECT_EQ(second.id, bolt.id);
+  EXPECT_EQ(second.version, 2);
+  EXPECT_EQ(store->get("part", bolt.id).documentJson, "{\"v\":2}");
+  auto first = store->get("part", bolt.id, 1);
+  EXPECT_EQ(first.documentJson, "{\"v\":1}");
+  EXPECT_EQ(first.version, 1);
+  EXPECT_EQ(first.latestVersion, 2);
+  EXPECT_EQ(rows("versions", "object_id", bolt.id), 2);
+  EXPECT_EQ(rows("part_parameters", "object_id", bolt.id), 4);  // per version
+}
+
+TEST_F(StoreTest, PutRefusesRenameAndOtherKinds) {
+  auto bolt = store->create(part("bolt"));
+  expectError([&] { store->put(bolt.id, part("nut")); }, errc::kConflict, "name");
+  auto asShape = shape("bolt", {});
+  expectError([&] { store->put(bolt.id, asShape); }, errc::kNotFound);
+  expectError([&] { store->put(bolt.id + 50, part("bolt")); }, errc::kNotFound);
+  EXPECT_EQ(store->get("part", bolt.id).latestVersion, 1);
+}
+
+TEST_F(StoreTest, NameConflictWithinKindOnly) {
+  store->create(part("bolt"));
+  expectError([&] { store->create(part("bolt")); }, errc::kConflict, "name");
+  EXPECT_NO_THROW(store->create(shape("bolt", {})));  // names are per kind
+  auto unknownKind = part("x");
+  unknownKind.kind = "widget";
+  expectError([&] { store->create(unknownKind); }, errc::kInvalidDocument, "kind");
+}
+
+TEST_F(StoreTest, IdsAreNeverReused) {
+  auto first = store->create(part("bolt"));
+  store->remove("part", first.id, false);
+  auto again = store->create(part("bolt"));  // the name is free again, the id is not
+  EXPECT_GT(again.id, first.id);
+}
+
+TEST_F(StoreTest, ReferencesResolveByNameAndId) {
+  auto bolt = store->create(part("bolt"));
+  auto nut = store->create(part("nut"));
+  auto s = store->create(shape("pair", {byName("part", "bolt", 0), byId("part", nut.id, 1)}));
+  EXPECT_EQ(s.references, (std::vector<int64_t>{bolt.id, nut.id}));
+  EXPECT_EQ(store->get("shape", s.id).references, (std::vector<int64_t>{bolt.id, nut.id}));
+  // csg_nodes got the resolved ids of the ref leaves.
+  sqlite::Connection db(path);
+  auto nodes = db.prepare("SELECT ref_id FROM csg_nodes WHERE object_id = ?1 ORDER BY node");
+  nodes->bind(1, s.id);
+  std::vector<std::optional<int64_t>> refs;
+  while (nodes->step()) refs.push_back(nodes->columnOptionalInt(0));
+  EXPECT_EQ(refs, (std::vector<std::optional<int64_t>>{std::nullopt, bolt.id, nut.id}));
+}
+
+TEST_F(StoreTest, UnknownReferenceNamesPathAndLeavesNothing) {
+  auto bolt = store->create(part("bolt"));
+  auto message = expectError(
+      [&] { store->create(shape("s", {byName("part", "bolt", 0), byName("part", "washer", 1)})); },
+      errc::kUnknownReference, "tree.children[1].part");
+  EXPECT_EQ(message, "unknown part 'washer'");
+  // An id of the wrong kind is unknown too.
+  expectError([&] { store->create(shape("s", {byId("shape", bolt.id)})); }, errc::kUnknownReference,
+              "tree.children[0].ref");
+  EXPECT_FALSE(store->find(byName("shape", "s")));
+  EXPECT_EQ(store->counts(), (std::map<std::string, int64_t>{{"part", 1}}));
+  sqlite::Connection db(path);
+  auto versions = db.prepare("SELECT COUNT(*) FROM versions");
+  ASSERT_TRUE(versions->step());
+  EXPECT_EQ(versions->columnInt(0), 1);  // bolt's only
+}
+
+TEST_F(StoreTest, CycleOnPutIsRefused) {
+  auto b = store->create(shape("B", {}));
+  auto a = store->create(shape("A", {byName("shape", "B")}));
+  auto message = expectError([&] { store->put(b.id, shape("B", {byName("shape", "A", 0)})); },
+                             errc::kReferenceCycle, "tree.children[0].shape");
+  FSDB_EXPECT_CONTAINS(message, "'A'");
+  // Self-reference by id is a cycle too.
+  expectError([&] { store->put(a.id, shape("A", {byId("shape", a.id)})); }, errc::kReferenceCycle,
+              "tree.children[0].ref");
+  EXPECT_EQ(store->get("shape", b.id).latestVersion, 1);
+  EXPECT_TRUE(store->get("shape", b.id).references.empty());
+}
+
+TEST_F(StoreTest, FindByNameAndId) {
+  auto bolt = store->create(part("bolt"));
+  store->put(bolt.id, part("bolt", "{\"v\":2}"));
+  auto found = store->find(byName("part", "bolt"));
+  ASSERT_TRUE(found);
+  EXPECT_EQ(found->id, bolt.id);
+  EXPECT_EQ(found->version, 2);
+  EXPECT_TRUE(store->find(byId("part", bolt.id)));
+  EXPECT_FALSE(store->find(byId("shape", bolt.id)));
+  EXPECT_FALSE(store->find(byName("part", "nut")));
+}
+
+TEST_F(StoreTest, ListPagesByIdAndFilters) {
+  std::vector<int64_t> ids;
+  for (int i = 0; i < 5; ++i) ids.push_back(store->create(part("p" + std::to_string(i))).id);
+  store->create(shape("s", {}));
+  ListQuery query;
+  query.kind = "part";
+  query.limit = 2;
+  auto page1 = store->list(query);
+  ASSERT_EQ(page1.size(), 2u);
+  EXPECT_EQ(page1[0].id, ids[0]);
+  query.afterId = page1.back().id;
+  auto page2 = store->list(query);
+  ASSERT_EQ(page2.size(), 2u);
+  EXPECT_EQ(page2[0].id, ids[2]);
+  query.afterId = 0;
+  query.limit = 100;
+  EXPECT_EQ(store->list(query).size(), 5u);
+  store->put(ids[3], part("p3", "{\"v\":2}"));
+  query.name = "p3";
+  auto latest = store->list(query);
+  ASSERT_EQ(latest.size(), 1u);
+  EXPECT_EQ(latest[0].version, 2);
+  query.version = 1;
+  auto old = store->list(query);
+  ASSERT_EQ(old.size(), 1u);
+  EXPECT_EQ(old[0].version, 1);
+  EXPECT_EQ(old[0].documentJson, "{\"eps1\":1}");
+}
+
+TEST_F(StoreTest, RemoveInUseUnlessCascade) {
+  auto bolt = store->create(part("bolt"));
+  auto inner = store->create(shape("inner", {byName("part", "bolt")}));
+  auto outer = store->create(shape("outer", {byName("shape", "inner")}));
+  auto other = store->create(part("other"));
+  auto message = expectError([&] { store->remove("part", bolt.id, false); }, errc::kInUse);
+  FSDB_EXPECT_CONTAINS(message, "shape 'inner' (id " + std::to_string(inner.id) + ")");
+  EXPECT_EQ(store->dependents(bolt.id), (std::vector<int64_t>{inner.id, outer.id}));
+  auto removed = store->remove("part", bolt.id, true);
+  EXPECT_EQ(removed, (std::vector<int64_t>{bolt.id, inner.id, outer.id}));
+  expectError([&] { store->get("shape", outer.id); }, errc::kNotFound);
+  EXPECT_EQ(store->counts(), (std::map<std::string, int64_t>{{"part", 1}}));
+  EXPECT_EQ(store->get("part", other.id).name, "other");
+  EXPECT_EQ(rows("versions", "object_id", inner.id), 0);
+  EXPECT_EQ(rows("csg_nodes", "object_id", inner.id), 0);
+  EXPECT_EQ(rows("refs", "child_id", bolt.id), 0);
+  expectError([&] { store->remove("part", bolt.id, true); }, errc::kNotFound);
+  EXPECT_EQ(store->integrityCheck(), "ok");
+}
+
+TEST_F(StoreTest, InUseMessageNamesAtMostFive) {
+  auto bolt = store->create(part("bolt"));
+  for (int i = 0; i < 7; ++i) store->create(shape("s" + std::to_string(i), {byName("part", "bolt")}));
+  auto message = expectError([&] { store->remove("part", bolt.id, false); }, errc::kInUse);
+  FSDB_EXPECT_CONTAINS(message, "'s4'");
+  EXPECT_EQ(message.find("'s5'"), std::string::npos) << message;
+  FSDB_EXPECT_CONTAINS(message, "and 2 more");
+}
+
+TEST_F(StoreTest, ReferenceDroppedByPutNoLongerBlocksRemove) {
+  auto bolt = store->create(part("bolt"));
+  auto s = store->create(shape("s", {byName("part", "bolt")}));
+  store->put(s.id, shape("s", {}, "v2"));
+  EXPECT_TRUE(store->dependents(bolt.id).empty());
+  EXPECT_EQ(store->remove("part", bolt.id, false), (std::vector<int64_t>{bolt.id}));
+  // The old version still reads, with its recorded (now dangling) ref id in csg_nodes.
+  EXPECT_EQ(store->get("shape", s.id, 1).version, 1);
+}
+
+TEST_F(StoreTest, EvaluationCacheRoundTripAndInvalidationThroughChain) {
+  auto p = store->create(part("P"));
+  auto s = store->create(shape("S", {byName("part", "P")}));
+  auto t = store->create(shape("T", {byName("shape", "S")}));
+  auto unrelated = store->create(part("Q"));
+  std::string vdb("\0grid\xff", 6);
+  store->storeEvaluation(s.id, "key-s", {"{\"volume\":1}", vdb});
+  store->storeEvaluation(t.id, "key-t", {"{\"volume\":2}", ""});
+  store->storeEvaluation(unrelated.id, "key-q", {"{}", ""});
+  auto hit = store->cachedEvaluation("key-s");
+  ASSERT_TRUE(hit);
+  EXPECT_EQ(hit->resultJson, "{\"volume\":1}");
+  EXPECT_EQ(hit->vdb, vdb);
+  EXPECT_EQ(store->cachedEvaluation("key-t")->vdb, "");
+  EXPECT_FALSE(store->cachedEvaluation("missing"));
+  expectError([&] { store->storeEvaluation(9999, "k", {"{}", ""}); }, errc::kNotFound);
+
+  store->put(p.id, part("P", "{\"eps1\":2}"));
+  EXPECT_FALSE(store->cachedEvaluation("key-s"));  // S uses P
+  EXPECT_FALSE(store->cachedEvaluation("key-t"));  // T uses S uses P
+  EXPECT_TRUE(store->cachedEvaluation("key-q"));   // untouched
+}
+
+TEST_F(StoreTest, CreateBatchReportsBadItemAndCommitsOthers) {
+  std::vector<NewObject> items = {part("a"), shape("s", {byName("part", "missing")}), part("b"),
+                                  part("a")};
+  auto results = store->createBatch(items, BulkMode::kCreate);
+  ASSERT_EQ(results.size(), 4u);
+  ASSERT_TRUE(results[0].id);
+  EXPECT_EQ(results[0].version, 1);
+  EXPECT_FALSE(results[1].id);
+  EXPECT_EQ(results[1].errorCode, errc::kUnknownReference);
+  EXPECT_EQ(results[1].errorPath, "tree.children[0].part");
+  EXPECT_EQ(results[1].errorMessage, "unknown part 'missing'");
+  ASSERT_TRUE(results[2].id);
+  EXPECT_EQ(results[3].errorCode, errc::kConflict);
+  EXPECT_TRUE(results[0].errorCode.empty());
+  EXPECT_EQ(store->counts(), (std::map<std::string, int64_t>{{"part", 2}}));
+  EXPECT_EQ(store->get("part", *results[2].id).name, "b");
+}
+
+TEST_F(StoreTest, BatchItemsMayReferToEarlierItems) {
+  auto results = store->createBatch(
+      {part("wheel"), shape("axle", {byName("part", "wheel")}), shape("car", {byName("shape", "axle")})},
+      BulkMode::kCreate);
+  ASSERT_EQ(results.size(), 3u);
+  for (const auto& r : results) ASSERT_TRUE(r.id) << r.errorMessage;
+  EXPECT_EQ(store->get("shape", *results[2].id).references, (std::vector<int64_t>{*results[1].id}));
+  EXPECT_EQ(store->dependents(*results[0].id), (std::vector<int64_t>{*results[1].id, *results[2].id}));
+}
+
+TEST_F(StoreTest, UpsertIsIdempotentOnSameHash) {
+  auto first = store->createBatch({part("bolt")}, BulkMode::kUpsert);
+  ASSERT_TRUE(first[0].id);
+  EXPECT_EQ(first[0].version, 1);
+  auto same = store->createBatch({part("bolt")}, BulkMode::kUpsert);
+  EXPECT_EQ(same[0].id, first[0].id);
+  EXPECT_EQ(same[0].version, 1);
+  EXPECT_EQ(rows("versions", "object_id", *first[0].id), 1);
+  auto changed = store->createBatch({part("bolt", "{\"eps1\":3}")}, BulkMode::kUpsert);
+  EXPECT_EQ(changed[0].id, first[0].id);
+  EXPECT_EQ(changed[0].version, 2);
+  // kCreate of the same name is a per-item conflict instead.
+  auto conflict = store->createBatch({part("bolt")}, BulkMode::kCreate);
+  EXPECT_EQ(conflict[0].errorCode, errc::kConflict);
+}
+
+TEST_F(StoreTest, UpsertInvalidatesDependentsCache) {
+  store->create(part("P"));
+  auto s = store->create(shape("S", {byName("part", "P")}));
+  store->storeEvaluation(s.id, "key-s", {"{}", ""});
+  store->createBatch({part("P")}, BulkMode::kUpsert);  // same hash: no write
+  EXPECT_TRUE(store->cachedEvaluation("key-s"));
+  store->createBatch({part("P", "{\"eps1\":9}")}, BulkMode::kUpsert);
+  EXPECT_FALSE(store->cachedEvaluation("key-s"));
+}
+
+TEST(StoreReopen, DataPersists) {
+  TempDir dir;
+  std::string path = dir.file("fsdb.db");
+  int64_t id = 0;
+  {
+    auto store = Store::open(path);
+    id = store->create(part("bolt")).id;
+    store->put(id, part("bolt", "{\"v\":2}"));
+    store->checkpoint();
+    // TRUNCATE leaves an empty WAL: the main file is whole on its own.
+    EXPECT_EQ(std::filesystem::file_size(path + "-wal"), 0u);
+  }
+  auto store = Store::open(path, StoreOptions{1000, true, 2});
+  EXPECT_EQ(store->schemaVersion(), 1);
+  EXPECT_EQ(store->get("part", id).version, 2);
+  EXPECT_EQ(store->get("part", id, 1).documentJson, "{\"eps1\":1}");
+  EXPECT_EQ(store->create(part("nut")).id, id + 1);
+}
+
+TEST(StoreReopen, RefusesNewerSchema) {
+  TempDir dir;
+  std::string path = dir.file("fsdb.db");
+  { Store::open(path); }
+  {
+    sqlite::Connection db(path);
+    db.exec("PRAGMA user_version = 2000");
+  }
+  auto message = expectError([&] { Store::open(path); }, errc::kStorage);
+  FSDB_EXPECT_CONTAINS(message, "2000");
+}
+
+TEST_F(StoreTest, ConcurrentCreatesAndGets) {
+  constexpr int kThreads = 4, kOps = 200;
+  std::atomic<int> errors{0}, created{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t) {
+    threads.emplace_back([&, t] {
+      std::vector<int64_t> mine;
+      for (int i = 0; i < kOps; ++i) {
+        try {
+          if (i % 2 == 0 || mine.empty()) {
+            auto name = "t" + std::to_string(t) + "_" + std::to_string(i);
+            auto object = i % 4 == 0 ? part(name) : shape(name, {byName("part", "t" + std::to_string(t) + "_0")});
+            mine.push_back(store->create(object).id);
+            ++created;
+          } else {
+            auto id = mine[static_cast<size_t>(i) % mine.size()];
+            auto got = store->find(byId("part", id));
+            if (!got) got = store->get("shape", id);
+            if (got->id != id) ++errors;
+          }
+        } catch (const std::exception& e) {
+          ++errors;
+          ADD_FAILURE() << e.what();
+        }
+      }
+    });
+  }
+  for (auto& thread : threads) thread.join();
+  EXPECT_EQ(errors.load(), 0);
+  EXPECT_EQ(created.load(), kThreads * kOps / 2);
+  auto counts = store->counts();
+  EXPECT_EQ(counts["part"] + counts["shape"], created.load());
+  EXPECT_EQ(counts["part"], kThreads * kOps / 4);
+  EXPECT_EQ(store->integrityCheck(), "ok");
+}
+
+}  // namespace
+}  // namespace fsdb
