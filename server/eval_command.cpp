@@ -4,8 +4,10 @@
 #include <iostream>
 #include <sstream>
 
+#include "db/store.h"
 #include "geometry/error.h"
 #include "query/json_body.h"
+#include "server/documents.h"
 #include "geometry/envelope_mesh.h"
 #include "server/evaluation.h"
 #include "server/mesh_format.h"
@@ -33,8 +35,22 @@ int runEval(const std::string& file, const EvalOptions& options) {
       throw Error(errc::kInvalidParameter, "--mesh takes a file ending in .obj or .stl", "--mesh");
     if (options.meshBound != "lower" && options.meshBound != "upper")
       throw Error(errc::kInvalidParameter, "--mesh-bound is lower or upper", "--mesh-bound");
+    std::unique_ptr<Store> store;
+    if (!options.dbPath.empty()) store = Store::open(options.dbPath);
+    const bool isId = store && !file.empty() && file.find_first_not_of("0123456789") == std::string::npos;
     std::stringstream text;
-    if (file == "-") {
+    if (isId) {
+      // A stored shape, else a stored part, by id.
+      const int64_t id = std::stoll(file);
+      ObjectReference ref{"shape", id, "", "SHAPE-ID"};
+      std::optional<StoredObject> found = store->find(ref);
+      if (!found) {
+        ref.kind = "part";
+        found = store->find(ref);
+      }
+      if (!found) throw Error(errc::kNotFound, "no shape or part with id " + file + " in " + options.dbPath, "SHAPE-ID");
+      text << found->documentJson;
+    } else if (file == "-") {
       text << std::cin.rdbuf();
     } else {
       std::ifstream in(file);
@@ -47,7 +63,8 @@ int runEval(const std::string& file, const EvalOptions& options) {
     if (!options.alphas.empty()) request["alphas"] = options.alphas;
     EvaluationLimits limits;
     limits.maxResolution = 4096;  // the command line is the user's own machine: no server limit
-    const Evaluation evaluation = evaluateShape(request, limits);
+    const Evaluation evaluation =
+        evaluateShape(request, limits, store ? storeResolver(*store) : ReferenceResolver{});
     nlohmann::json result = evaluation.result;
     if (!options.meshPath.empty()) {
       const EnvelopeBound bound = options.meshBound == "lower" ? EnvelopeBound::kLower : EnvelopeBound::kUpper;

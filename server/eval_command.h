@@ -1,5 +1,7 @@
 #pragma once
-// `fsdb eval FILE`: evaluates a document without a server and prints the POST /evaluate answer.
+// `fsdb eval SHAPE-ID|FILE [--db PATH]`: evaluates a document without a server and prints the
+// POST /evaluate answer. With --db, a positive integer names a stored shape (or part), and
+// references in FILE resolve against that database.
 // FILE holds a part or shape document, or a whole POST /evaluate request ({"shape":...}); "-"
 // reads stdin. --resolution and --alphas override the request's. --mesh OUT.obj|OUT.stl writes
 // the boundary of lower(α) or upper(α) (--mesh-alpha, --mesh-bound) and --vdb OUT.vdb both
@@ -17,6 +19,7 @@ struct EvalOptions {
   double meshAlpha = 0.5;
   std::string meshBound = "upper";  // lower | upper
   std::string vdbPath;
+  std::string dbPath;  // "" = no database
 };
 
 int runEval(const std::string& file, const EvalOptions& options);

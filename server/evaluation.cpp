@@ -47,11 +47,13 @@ int parseResolution(const nlohmann::json& request, const EvaluationLimits& limit
 
 }  // namespace
 
-nlohmann::json evaluateRequest(const nlohmann::json& request, const EvaluationLimits& limits) {
-  return evaluateShape(request, limits).result;
+nlohmann::json evaluateRequest(const nlohmann::json& request, const EvaluationLimits& limits,
+                               const ReferenceResolver& resolver) {
+  return evaluateShape(request, limits, resolver).result;
 }
 
-Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& limits) {
+Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& limits,
+                         const ReferenceResolver& resolver) {
   requireObject(request, "");
   for (auto it = request.begin(); it != request.end(); ++it)
     if (it.key() != "shape" && it.key() != "resolution" && it.key() != "alphas" && it.key() != "method")
@@ -67,7 +69,7 @@ Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& 
   const int resolution = parseResolution(request, limits);
   const std::vector<double> alphas = parseAlphas(request);
   const auto started = std::chrono::steady_clock::now();
-  const ParsedShape shape = parseShapeField(requireField(request, "shape", ""), "shape", limits.maxNodes);
+  const ParsedShape shape = parseShapeField(requireField(request, "shape", ""), "shape", limits.maxNodes, resolver);
 
   Vec3 lo, hi;
   shape.field->boundingBox(&lo, &hi);

@@ -14,6 +14,8 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "query/shape_json.h"
+
 namespace fsdb {
 
 class EnvelopeGrid;
@@ -28,9 +30,12 @@ struct Evaluation {
   nlohmann::json result;
   std::shared_ptr<const EnvelopeGrid> grid;
 };
-Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& limits);
+// `resolver` resolves references to stored parts and shapes (none: references are refused).
+Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& limits,
+                         const ReferenceResolver& resolver = {});
 
 // evaluateShape(...).result
-nlohmann::json evaluateRequest(const nlohmann::json& request, const EvaluationLimits& limits);
+nlohmann::json evaluateRequest(const nlohmann::json& request, const EvaluationLimits& limits,
+                               const ReferenceResolver& resolver = {});
 
 }  // namespace fsdb

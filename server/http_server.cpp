@@ -32,6 +32,16 @@ void sendJson(httplib::Response& res, int status, const nlohmann::json& body) {
   res.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), "application/json");
 }
 
+// Compares in time independent of where the strings differ, so the token cannot be guessed
+// byte by byte from response times.
+bool bearerMatches(const std::string& header, const std::string& token) {
+  const std::string prefix = "Bearer ";
+  if (header.size() != prefix.size() + token.size() || header.compare(0, prefix.size(), prefix) != 0) return false;
+  unsigned char diff = 0;
+  for (size_t i = 0; i < token.size(); ++i) diff |= static_cast<unsigned char>(header[prefix.size() + i] ^ token[i]);
+  return diff == 0;
+}
+
 void sendError(httplib::Response& res, const Error& e) {
   sendJson(res, httpStatusFor(e.code()), errorBody(e.code(), e.what(), e.path()));
 }
@@ -43,6 +53,7 @@ std::string ApiRequest::queryParam(const std::string& name) const {
 }
 
 bool ApiRequest::hasQueryParam(const std::string& name) const { return raw.has_param(name.c_str()); }
+const std::string& ApiRequest::rawBody() const { return raw.body; }
 
 HttpServer::HttpServer(ServerOptions options)
     : options_(std::move(options)), server_(std::make_unique<httplib::Server>()) {
@@ -51,16 +62,27 @@ HttpServer::HttpServer(ServerOptions options)
 
 HttpServer::~HttpServer() = default;
 
-void HttpServer::addRoute(const std::string& method, const std::string& openapiPath, ApiHandler handler) {
+void HttpServer::addRoute(const std::string& method, const std::string& openapiPath, ApiHandler handler,
+                          RouteOptions routeOptions) {
   routes_.push_back({method, openapiPath});
   routePatterns_.emplace_back(routeRegex(openapiPath));
   const int maxDepth = options_.limits.maxJsonDepth;
-  auto wrapped = [handler = std::move(handler), maxDepth](const httplib::Request& req, httplib::Response& res) {
+  const std::string token = routeOptions.write ? options_.token : std::string();
+  auto wrapped = [handler = std::move(handler), maxDepth, token, routeOptions](const httplib::Request& req,
+                                                                              httplib::Response& res) {
     try {
+      if (!token.empty() && !bearerMatches(req.get_header_value("Authorization"), token)) {
+        res.set_header("WWW-Authenticate", "Bearer");
+        throw Error(errc::kUnauthorized,
+                    "this server requires \"Authorization: Bearer <token>\" for writes (fsdb serve --token)",
+                    "");
+      }
       ApiRequest api{req, nullptr, {}};
       for (size_t i = 1; i < req.matches.size(); ++i) api.pathParams.push_back(req.matches[i].str());
-      if (req.method == "POST" || req.method == "PUT") api.body = parseJsonBody(req.body, maxDepth);
+      if ((req.method == "POST" || req.method == "PUT") && !routeOptions.rawBody)
+        api.body = parseJsonBody(req.body, maxDepth);
       ApiResponse out = handler(api);
+      for (const auto& [name, value] : out.headers) res.set_header(name, value);
       if (out.contentType.empty()) {
         sendJson(res, out.status, out.json);
       } else {

@@ -35,26 +35,40 @@ struct ServerLimits {
 
 struct ServerOptions {
   std::string host = "127.0.0.1";
+  // --token / FSDB_TOKEN: when set, write routes need "Authorization: Bearer <token>" (401
+  // unauthorized otherwise). Reads never need it.
+  std::string token;
   int port = 8080;  // 0: pick a free port
   int threads = 0;  // 0: hardware concurrency (at least 2)
   ServerLimits limits;
 };
 
-// What a handler gets: the parsed JSON body (null for GET), the raw request for query strings.
+// What a handler gets: the parsed JSON body (null for GET and raw-body routes), the raw request
+// for query strings and raw bodies.
 struct ApiRequest {
   const httplib::Request& raw;
   nlohmann::json body;
   std::vector<std::string> pathParams;  // values of the route's {name} segments, in order
   std::string queryParam(const std::string& name) const;  // "" when absent
   bool hasQueryParam(const std::string& name) const;
+  const std::string& rawBody() const;  // the body as received (raw-body routes read it)
 };
 
 // What a handler returns: status + JSON, or (for exports) a body with its own media type.
 struct ApiResponse {
+  ApiResponse() = default;
+  ApiResponse(int s, nlohmann::json j, std::string raw = {}, std::string type = {})
+      : status(s), json(std::move(j)), rawBody(std::move(raw)), contentType(std::move(type)) {}
   int status = 200;
   nlohmann::json json;
   std::string rawBody;      // used when contentType is not JSON
   std::string contentType;  // "" = application/json
+  std::vector<std::pair<std::string, std::string>> headers;  // extra headers (Location, ...)
+};
+
+struct RouteOptions {
+  bool write = false;    // changes the database: needs the bearer token when one is set
+  bool rawBody = false;  // the handler reads raw.body itself (JSON Lines); body stays null
 };
 
 using ApiHandler = std::function<ApiResponse(const ApiRequest&)>;
@@ -73,7 +87,8 @@ class HttpServer {
 
   // Registers a handler. `openapiPath` uses OpenAPI templating ("/parts/{id}"); each {name}
   // matches one path segment. Handlers throw fsdb::Error for client errors.
-  void addRoute(const std::string& method, const std::string& openapiPath, ApiHandler handler);
+  void addRoute(const std::string& method, const std::string& openapiPath, ApiHandler handler,
+                RouteOptions routeOptions = {});
   const std::vector<Route>& routes() const { return routes_; }
   const ServerOptions& options() const { return options_; }
 

@@ -1,17 +1,26 @@
-// The fsdb executable: `fsdb serve` (and, as their issues land, import / query / eval).
+// The fsdb executable: `fsdb serve`, `fsdb import`, `fsdb eval` (SPEC §1).
 #include <CLI/CLI.hpp>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include <csignal>
+#include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <pthread.h>
+#include <algorithm>
+#include <fstream>
+#include <sstream>
 #include <thread>
 
 #include "fsdb_version.h"
+#include "db/store.h"
+#include "geometry/error.h"
 #include "server/api.h"
+#include "server/bulk_import.h"
 #include "server/eval_command.h"
 #include "server/http_server.h"
+#include "server/import_command.h"
 
 namespace {
 
@@ -24,12 +33,47 @@ void blockShutdownSignals(sigset_t* set) {
   pthread_sigmask(SIG_BLOCK, set, nullptr);
 }
 
-int runServe(const fsdb::ServerOptions& options) {
+// The demo catalogue (SPEC §1): every *.jsonl of `dir` in name order, upserted, into a database
+// that was just created. Failures are logged, never fatal: the server still starts.
+void loadDemo(fsdb::Store& store, const std::string& dir, size_t maxNodes) {
+  std::vector<std::filesystem::path> files;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+    if (entry.path().extension() == ".jsonl") files.push_back(entry.path());
+  if (ec) {
+    spdlog::warn("demo catalogue {}: {}", dir, ec.message());
+    return;
+  }
+  std::sort(files.begin(), files.end());
+  for (const auto& f : files) {
+    std::ifstream in(f);
+    std::stringstream text;
+    text << in.rdbuf();
+    fsdb::BulkOptions bulk;
+    bulk.mode = fsdb::BulkMode::kUpsert;
+    bulk.maxNodes = maxNodes;
+    const fsdb::BulkReport r = fsdb::importDocuments(store, fsdb::splitBulkBody(text.str(), 256), bulk);
+    spdlog::info("demo catalogue {}: imported {}, failed {}", f.string(), r.imported, r.failed);
+    for (const auto& e : r.errors) spdlog::warn("demo {}:{}: {}", f.string(), e["line"].dump(), e["error"].dump());
+  }
+}
+
+int runServe(const fsdb::ServerOptions& options, const std::string& dbPath, const std::string& demoDir) {
   sigset_t signals;
   blockShutdownSignals(&signals);  // before any thread exists, so all inherit the mask
 
+  std::unique_ptr<fsdb::Store> store;
+  try {
+    const bool fresh = !std::filesystem::exists(dbPath);
+    store = fsdb::Store::open(dbPath);
+    spdlog::info("database {} (schema version {})", dbPath, store->schemaVersion());
+    if (fresh && !demoDir.empty()) loadDemo(*store, demoDir, options.limits.maxNodes);
+  } catch (const fsdb::Error& e) {
+    spdlog::error("cannot open the database: {}", e.what());
+    return 1;
+  }
   fsdb::HttpServer server(options);
-  fsdb::registerAllRoutes(server);
+  fsdb::registerAllRoutes(server, *store);
   int port = 0;
   try {
     port = server.bind();
@@ -51,6 +95,11 @@ int runServe(const fsdb::ServerOptions& options) {
   server.listen();
   // listen() can only return after stop(), which only the waiter calls.
   waiter.join();
+  try {
+    store->checkpoint();  // the WAL folded into the main file: the .sqlite is whole on its own
+  } catch (const fsdb::Error& e) {
+    spdlog::warn("checkpoint at shutdown: {}", e.what());
+  }
   spdlog::info("stopped");
   return 0;
 }
@@ -69,7 +118,13 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
 
   fsdb::ServerOptions serve;
+  std::string dbPath = "data/fsdb.sqlite", demoDir;
+  if (const char* t = std::getenv("FSDB_TOKEN")) serve.token = t;
   auto* serveCmd = app.add_subcommand("serve", "serve the HTTP API");
+  serveCmd->add_option("--db", dbPath, "SQLite database file (created with its directory if missing)")
+      ->capture_default_str();
+  serveCmd->add_option("--demo", demoDir, "load DIR/*.jsonl when the database file is created by this start");
+  serveCmd->add_option("--token", serve.token, "require 'Authorization: Bearer TOKEN' for writes (or FSDB_TOKEN)");
   serveCmd->add_option("--host", serve.host, "address to bind")->capture_default_str();
   serveCmd->add_option("--port", serve.port, "port; 0 picks a free one")
       ->check(CLI::Range(0, 65535))->capture_default_str();
@@ -90,7 +145,8 @@ int main(int argc, char** argv) {
   std::string evalFile;
   fsdb::EvalOptions eval;
   auto* evalCmd = app.add_subcommand("eval", "evaluate a shape or part document (JSON file, - for stdin) on a voxel grid");
-  evalCmd->add_option("FILE", evalFile, "the document: {\"kind\":\"part\"|\"shape\",...} or a POST /evaluate request")
+  evalCmd->add_option("SHAPE-ID|FILE", evalFile,
+                      "a stored shape's id (with --db), or a file: {\"kind\":\"part\"|\"shape\",...} or a POST /evaluate request")
       ->required();
   evalCmd->add_option("--resolution", eval.resolution, "voxels along the longest side")->check(CLI::Range(2, 4096));
   evalCmd->add_option("--alphas", eval.alphas, "levels, comma separated")->delimiter(',');
@@ -101,10 +157,27 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"lower", "upper"}))->capture_default_str();
   evalCmd->add_option("--vdb", eval.vdbPath, "write both grids (upper, lower) to OUT.vdb");
 
+  evalCmd->add_option("--db", eval.dbPath, "database for SHAPE-ID and for references in FILE");
+
+  fsdb::ImportOptions import;
+  import.dbPath = dbPath;
+  if (const char* t = std::getenv("FSDB_TOKEN")) import.token = t;
+  auto* importCmd = app.add_subcommand("import", "bulk import of JSON Lines files of part and shape documents");
+  importCmd->add_option("FILE", import.files, "JSON Lines files (or files holding one JSON array)")->required();
+  auto* importDb = importCmd->add_option("--db", import.dbPath, "database file")->capture_default_str();
+  importCmd->add_option("--server", import.serverUrl, "import through a running server, e.g. http://127.0.0.1:8080")
+      ->excludes(importDb);
+  importCmd->add_option("--token", import.token, "bearer token for --server (or FSDB_TOKEN)");
+  importCmd->add_option("--mode", import.mode, "create: a taken name is an error; upsert: it gets a new version")
+      ->check(CLI::IsMember({"create", "upsert"}))->capture_default_str();
+  importCmd->add_option("--batch", import.batchSize, "lines per transaction")->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+
   CLI11_PARSE(app, argc, argv);
   spdlog::set_level(spdlog::level::from_str(logLevel));
 
-  if (serveCmd->parsed()) return runServe(serve);
+  if (serveCmd->parsed()) return runServe(serve, dbPath, demoDir);
   if (evalCmd->parsed()) return fsdb::runEval(evalFile, eval);
+  if (importCmd->parsed()) return fsdb::runImport(import);
   return 2;
 }

@@ -1,0 +1,49 @@
+#pragma once
+// Documents on their way into the store: validation with the query/ parsers, references
+// resolved against the store, and the normalised columns the store keeps (db/store.h).
+//
+// Contract:
+// - prepareDocument validates a part or shape document exactly as evaluation would (every
+//   fuzzy number, range, reference and limit), so nothing the store holds fails to evaluate
+//   for a reason visible at write time. Errors are fsdb::Error with the JSON path inside the
+//   document, prefixed by `path` ("" for a request body, "line 7" style paths are the caller's).
+// - A part document may omit "kind" (it is the route's); a document of the other kind is
+//   invalid_document naming "kind". "name" is required: a non-empty string of at most 200
+//   characters without control characters.
+// - The stored text is the document as given, re-serialised compactly (key order kept as
+//   parsed by nlohmann::json: sorted), with "kind" filled in.
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+
+#include "db/store.h"
+#include "query/shape_json.h"
+
+namespace fsdb {
+
+struct ServerLimits;
+
+// Names → documents that are about to be written in the same batch, visible to references
+// before they are committed (bulk import: a shape may use a part from an earlier line).
+class PendingDocuments {
+ public:
+  void add(const std::string& kind, const std::string& name, const nlohmann::json& document);
+  const nlohmann::json* find(const std::string& kind, const std::string& name) const;
+
+ private:
+  std::map<std::pair<std::string, std::string>, nlohmann::json> documents_;
+};
+
+// Resolves references against the store (latest versions), then `pending` (may be null).
+// Pending documents get negative pseudo-ids (stable within the resolver's life).
+ReferenceResolver storeResolver(const Store& store, const PendingDocuments* pending = nullptr);
+
+NewObject prepareDocument(const nlohmann::json& document, const std::string& kind, const Store& store,
+                          size_t maxNodes, const std::string& path, const PendingDocuments* pending = nullptr);
+
+// The JSON the API returns for a stored version:
+//   {"id","kind","name","version","latest_version","created_at","content_hash","document"}
+nlohmann::json storedObjectJson(const StoredObject& object);
+
+}  // namespace fsdb
