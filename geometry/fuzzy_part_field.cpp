@@ -523,15 +523,6 @@ AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
 
 void FuzzyPartField::sampleBlock(const BlockLattice& b, AlphaLevels* out) const {
   constexpr int d = BlockLattice::kDim;
-  if (crisp_) {
-    for (int i = 0; i < d; ++i)
-      for (int j = 0; j < d; ++j)
-        for (int k = 0; k < d; ++k)
-          out[(i * d + j) * d + k] = crisp_->insideOutside(b.at(i, j, k)) <= 1.0
-                                         ? AlphaLevels{1.0f, 0.0f}
-                                         : AlphaLevels{0.0f, kNeverInside};
-    return;
-  }
   const int half = d / 2;
   for (int i = 0; i < d; i += half)
     for (int j = 0; j < d; j += half)
@@ -547,8 +538,12 @@ void FuzzyPartField::sampleSubBlock(const BlockLattice& b, int i, int j, int k, 
     for (int x = i; x < i + size; ++x)
       for (int y = j; y < j + size; ++y)
         for (int z = k; z < k + size; ++z)
-          out[(x * d + y) * d + z] = bounds.uniform() ? AlphaLevels{bounds.upperMin, bounds.lowerMin}
-                                                      : FuzzyPartField::levelsAt(b.at(x, y, z));
+          out[(x * d + y) * d + z] =
+              bounds.uniform() ? AlphaLevels{bounds.upperMin, bounds.lowerMin}
+              : crisp_         ? (crisp_->insideOutside(b.at(x, y, z)) <= 1.0
+                                      ? AlphaLevels{1.0f, 0.0f}
+                                      : AlphaLevels{0.0f, kNeverInside})
+                               : FuzzyPartField::levelsAt(b.at(x, y, z));
     return;
   }
   const int half = size / 2;

@@ -81,9 +81,9 @@ class FuzzyPartField : public AlphaFieldSource {
   AlphaLevels levelsAt(const Vec3& p) const override;
   AlphaLevelBounds boundsOver(const Vec3& lo, const Vec3& hi) const override;
   void boundingBox(Vec3* lo, Vec3* hi) const override;
-  // Per block: crisp parts evaluate F voxel by voxel without the virtual call; fuzzy parts
-  // bound 4³ and then 2³ sub-blocks (boundsOver) and fill the uniform ones, so that only voxels
-  // near the fuzzy band run the point search. Same values as levelsAt (up to budget exhaustion,
+  // Per block: bounds 4³ and then 2³ sub-blocks (boundsOver) and fills the uniform ones, so that
+  // only voxels near the fuzzy band (or the crisp surface) are evaluated one by one; crisp parts
+  // evaluate F there without the virtual call. Same values as levelsAt (up to budget exhaustion,
   // as for the grid's own block pruning).
   void sampleBlock(const BlockLattice& b, AlphaLevels* out) const override;
 
