@@ -62,8 +62,20 @@ struct AlphaLevelBounds {
   bool uniform() const { return upperMin == upperMax && lowerMin == lowerMax; }
 };
 
+// The voxel centres of one 8³ block, per axis: voxel (i, j, k) of the block is the point
+// (x[i], y[j], z[k]), and its levels go to index (i·8 + j)·8 + k (OpenVDB's leaf order). The
+// block's box of centres is [(x[0], y[0], z[0]), (x[7], y[7], z[7])] (coordinates increase).
+struct BlockLattice {
+  static constexpr int kDim = 8;
+  static constexpr int kSize = kDim * kDim * kDim;
+  double x[kDim], y[kDim], z[kDim];
+  Vec3 lo() const { return {x[0], y[0], z[0]}; }
+  Vec3 hi() const { return {x[kDim - 1], y[kDim - 1], z[kDim - 1]}; }
+  Vec3 at(int i, int j, int k) const { return {x[i], y[j], z[k]}; }
+};
+
 // A fuzzy solid as the voxel evaluator sees it. Implementations: fuzzy superquadric parts
-// (geometry/fuzzy_part_field.h) and analytic test solids. Both calls are thread-safe.
+// (geometry/fuzzy_part_field.h) and analytic test solids. Every call is thread-safe.
 class AlphaFieldSource {
  public:
   virtual ~AlphaFieldSource() = default;
@@ -73,6 +85,15 @@ class AlphaFieldSource {
   virtual AlphaLevelBounds boundsOver(const Vec3& lo, const Vec3& hi) const = 0;
   // An axis-aligned box that holds upper(0) (everything outside has u = 0, l = never).
   virtual void boundingBox(Vec3* lo, Vec3* hi) const = 0;
+  // The levels of the 8³ voxels of a block (out[(i·8 + j)·8 + k] = levelsAt(b.at(i, j, k)), the
+  // same values). The default asks levelsAt voxel by voxel; implementations override it to share
+  // work across the block (CSG nodes drop the children that cannot matter there).
+  virtual void sampleBlock(const BlockLattice& b, AlphaLevels* out) const {
+    for (int i = 0; i < BlockLattice::kDim; ++i)
+      for (int j = 0; j < BlockLattice::kDim; ++j)
+        for (int k = 0; k < BlockLattice::kDim; ++k)
+          out[(i * BlockLattice::kDim + j) * BlockLattice::kDim + k] = levelsAt(b.at(i, j, k));
+  }
 };
 
 }  // namespace fsdb

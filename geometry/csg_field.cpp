@@ -32,20 +32,81 @@ CsgField::CsgField(CsgOp op, std::vector<std::shared_ptr<const AlphaFieldSource>
     throw Error(errc::kInvalidDocument, "a Boolean node needs at least two children", "children");
   for (const auto& c : children_)
     if (!c) throw Error(errc::kInvalidDocument, "a Boolean node has an empty child", "children");
+  childLo_.resize(children_.size());
+  childHi_.resize(children_.size());
+  for (size_t i = 0; i < children_.size(); ++i) children_[i]->boundingBox(&childLo_[i], &childHi_[i]);
+}
+
+namespace {
+
+bool isBackground(AlphaLevels v) { return v.upper == 0.0f && v.lower == kNeverInside; }
+
+bool boxesMeet(const Vec3& alo, const Vec3& ahi, const Vec3& blo, const Vec3& bhi) {
+  return alo.x <= bhi.x && blo.x <= ahi.x && alo.y <= bhi.y && blo.y <= ahi.y && alo.z <= bhi.z &&
+         blo.z <= ahi.z;
+}
+
+AlphaLevels apply(CsgOp op, AlphaLevels a, AlphaLevels b) {
+  switch (op) {
+    case CsgOp::kUnion: return alphaUnion(a, b);
+    case CsgOp::kIntersection: return alphaIntersection(a, b);
+    case CsgOp::kDifference: return alphaDifference(a, b);
+  }
+  return a;
+}
+
+}  // namespace
+
+void CsgField::sampleBlock(const BlockLattice& b, AlphaLevels* out) const {
+  constexpr int n = BlockLattice::kSize;
+  const Vec3 lo = b.lo(), hi = b.hi();
+  // A child's value over the block when it is one value there (`*uniform` set), else false.
+  const auto constantOver = [&](size_t i, AlphaLevels* value) {
+    if (!boxesMeet(lo, hi, childLo_[i], childHi_[i])) {
+      *value = AlphaLevels{};
+      return true;
+    }
+    const AlphaLevelBounds cb = children_[i]->boundsOver(lo, hi);
+    if (!cb.uniform()) return false;
+    *value = {cb.upperMin, cb.lowerMin};
+    return true;
+  };
+  AlphaLevels c;
+  if (constantOver(0, &c))
+    std::fill(out, out + n, c);
+  else
+    children_[0]->sampleBlock(b, out);
+  std::vector<AlphaLevels> next;
+  for (size_t i = 1; i < children_.size(); ++i) {
+    // Nothing left to change: an empty intersection or difference, a union inside everywhere.
+    bool settled = true;
+    for (int v = 0; v < n && settled; ++v)
+      settled = op_ == CsgOp::kUnion ? (out[v].upper == 1.0f && out[v].lower == 0.0f)
+                                     : isBackground(out[v]);
+    if (settled) return;
+    if (constantOver(i, &c)) {
+      // The background is the identity of the union and of a subtrahend.
+      if (op_ != CsgOp::kIntersection && isBackground(c)) continue;
+      for (int v = 0; v < n; ++v) out[v] = apply(op_, out[v], c);
+      continue;
+    }
+    next.resize(n);
+    children_[i]->sampleBlock(b, next.data());
+    for (int v = 0; v < n; ++v) out[v] = apply(op_, out[v], next[v]);
+  }
 }
 
 AlphaLevels CsgField::levelsAt(const Vec3& p) const {
-  AlphaLevels acc = children_[0]->levelsAt(p);
+  // A child whose bounding box misses p is background there (boundingBox holds upper(0)).
+  const auto childAt = [&](size_t i) {
+    return boxesMeet(p, p, childLo_[i], childHi_[i]) ? children_[i]->levelsAt(p) : AlphaLevels{};
+  };
+  AlphaLevels acc = childAt(0);
   for (size_t i = 1; i < children_.size(); ++i) {
     // Short cuts that cannot change the result: an intersection or difference whose left side
     // is already empty at every level stays empty.
-    if (op_ != CsgOp::kUnion && acc.upper == 0.0f && acc.lower == kNeverInside) return acc;
-    const AlphaLevels next = children_[i]->levelsAt(p);
-    switch (op_) {
-      case CsgOp::kUnion: acc = alphaUnion(acc, next); break;
-      case CsgOp::kIntersection: acc = alphaIntersection(acc, next); break;
-      case CsgOp::kDifference: acc = alphaDifference(acc, next); break;
-    }
+    if (op_ != CsgOp::kUnion && isBackground(acc)) return acc;
+    acc = apply(op_, acc, childAt(i));
   }
   return acc;
 }

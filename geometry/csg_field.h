@@ -31,6 +31,12 @@ class CsgField : public AlphaFieldSource {
   AlphaLevels levelsAt(const Vec3& p) const override;
   AlphaLevelBounds boundsOver(const Vec3& lo, const Vec3& hi) const override;
   void boundingBox(Vec3* lo, Vec3* hi) const override;
+  // Per block, each child is bounded over the block first: a child whose bounding box misses the
+  // block is background there without any bound, a child whose bounds are uniform over the block
+  // enters as that one value, and only the rest are sampled (their own sampleBlock). Children
+  // that cannot change the result (background in a union or as a subtrahend, anything once an
+  // intersection or difference is empty, anything once a union is (1, 0)) are never sampled.
+  void sampleBlock(const BlockLattice& b, AlphaLevels* out) const override;
 
   CsgOp op() const { return op_; }
   const std::vector<std::shared_ptr<const AlphaFieldSource>>& children() const { return children_; }
@@ -38,6 +44,7 @@ class CsgField : public AlphaFieldSource {
  private:
   CsgOp op_;
   std::vector<std::shared_ptr<const AlphaFieldSource>> children_;
+  std::vector<Vec3> childLo_, childHi_;  // the children's bounding boxes
 };
 
 // Exact combination of bounds for each operation (interval extension of alpha_field.h's

@@ -230,8 +230,15 @@ class SourceSampler : public BlockSampler {
     return true;
   }
   void sampleLeaf(const Coord& origin, AlphaLevels* out) const override {
-    for (openvdb::Index n = 0; n < LeafT::SIZE; ++n)
-      out[n] = source_.levelsAt(centre(origin + LeafT::offsetToLocalCoord(n)));
+    static_assert(BlockLattice::kDim == kLeafDim, "a block is one leaf");
+    BlockLattice b;
+    for (int n = 0; n < kLeafDim; ++n) {
+      const Vec3 c = centre(origin.offsetBy(n));
+      b.x[n] = c.x;
+      b.y[n] = c.y;
+      b.z[n] = c.z;
+    }
+    source_.sampleBlock(b, out);
   }
 
  private:

@@ -521,6 +521,37 @@ AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
   return out;
 }
 
+void FuzzyPartField::sampleBlock(const BlockLattice& b, AlphaLevels* out) const {
+  constexpr int d = BlockLattice::kDim;
+  const int half = d / 2;
+  for (int i = 0; i < d; i += half)
+    for (int j = 0; j < d; j += half)
+      for (int k = 0; k < d; k += half) sampleSubBlock(b, i, j, k, half, out);
+}
+
+void FuzzyPartField::sampleSubBlock(const BlockLattice& b, int i, int j, int k, int size,
+                                    AlphaLevels* out) const {
+  constexpr int d = BlockLattice::kDim;
+  const AlphaLevelBounds bounds =
+      boundsOver(b.at(i, j, k), b.at(i + size - 1, j + size - 1, k + size - 1));
+  if (bounds.uniform() || size <= 2) {
+    for (int x = i; x < i + size; ++x)
+      for (int y = j; y < j + size; ++y)
+        for (int z = k; z < k + size; ++z)
+          out[(x * d + y) * d + z] =
+              bounds.uniform() ? AlphaLevels{bounds.upperMin, bounds.lowerMin}
+              : crisp_         ? (crisp_->insideOutside(b.at(x, y, z)) <= 1.0
+                                      ? AlphaLevels{1.0f, 0.0f}
+                                      : AlphaLevels{0.0f, kNeverInside})
+                               : FuzzyPartField::levelsAt(b.at(x, y, z));
+    return;
+  }
+  const int half = size / 2;
+  for (int x = i; x < i + size; x += half)
+    for (int y = j; y < j + size; y += half)
+      for (int z = k; z < k + size; z += half) sampleSubBlock(b, x, y, z, half, out);
+}
+
 namespace reference {
 
 // The previous levelsAt: bisection in α with one branch-and-bound decision per bracket.

@@ -81,6 +81,11 @@ class FuzzyPartField : public AlphaFieldSource {
   AlphaLevels levelsAt(const Vec3& p) const override;
   AlphaLevelBounds boundsOver(const Vec3& lo, const Vec3& hi) const override;
   void boundingBox(Vec3* lo, Vec3* hi) const override;
+  // Per block: bounds 4³ and then 2³ sub-blocks (boundsOver) and fills the uniform ones, so that
+  // only voxels near the fuzzy band (or the crisp surface) are evaluated one by one; crisp parts
+  // evaluate F there without the virtual call. Same values as levelsAt (up to budget exhaustion,
+  // as for the grid's own block pruning).
+  void sampleBlock(const BlockLattice& b, AlphaLevels* out) const override;
 
   // The branch-and-bound predicates at one level α in [0, 1] (see above).
   bool possiblyInside(const Vec3& p, double alpha) const;
@@ -106,6 +111,8 @@ class FuzzyPartField : public AlphaFieldSource {
   Search maxMin(const Vec3& p, bool inside) const;
   PartBox cutAt(double alpha) const;  // boxAt(alpha), cutting only the fuzzy values
   double valueAt(const PlacedSuperquadric& theta, const Vec3& p) const;  // F(p; θ)
+  // sampleBlock over the sub-block of `size`³ voxels at (i, j, k) of the block.
+  void sampleSubBlock(const BlockLattice& b, int i, int j, int k, int size, AlphaLevels* out) const;
 
   FuzzyPart part_;
   FuzzyPartFieldOptions options_;

@@ -5,6 +5,7 @@
 
 #include <random>
 
+#include "block_lattice.h"
 #include "geometry/error.h"
 #include "geometry/fuzzy_ball.h"
 
@@ -102,6 +103,17 @@ TEST(CsgField, BoundingBoxesFollowTheOperation) {
   EXPECT_EQ(hi.x, 1.0);
   CsgField(CsgOp::kIntersection, {a, b}).boundingBox(&lo, &hi);  // disjoint: collapses
   EXPECT_LE(hi.x - lo.x, 0.0);
+}
+
+TEST(CsgField, SampleBlockMatchesLevelsAtVoxelByVoxel) {
+  auto a = ball({0, 0, 0}, 0.5, 0.8, 1.0), b = ball({0.9, 0, 0}, 0.3, 0.6, 0.7);
+  auto c = ball({3, 3, 3}, 0.2, 0.3, 0.4);  // far away: pruned by its bounding box
+  const CsgField u(CsgOp::kUnion, {a, b, c}), n(CsgOp::kIntersection, {a, b, c});
+  const CsgField m(CsgOp::kDifference, {a, b, c}), nested(CsgOp::kDifference, {std::make_shared<CsgField>(u), b});
+  const double h = 0.05;
+  for (const Vec3 first : {Vec3{-1.1, -0.2, -0.2}, Vec3{0.5, -0.1, -0.1}, Vec3{-0.2, -0.2, -0.2},
+                           Vec3{0.55, 0.3, -0.1}, Vec3{2.8, 2.8, 2.8}, Vec3{5, 5, 5}})
+    for (const CsgField* f : {&u, &n, &m, &nested}) expectBlockMatchesPoints(*f, latticeAt(first, h));
 }
 
 TEST(CsgField, NeedsTwoChildren) {

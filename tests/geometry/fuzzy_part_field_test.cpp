@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "block_lattice.h"
 #include "expect_error.h"
 #include "geometry/interval_functions.h"
 #include "random_superquadric.h"
@@ -392,6 +393,19 @@ TEST(FuzzyPartFieldTest, UniformBlocksOfAFuzzySphere) {
   const AlphaLevelBounds shell = field.boundsOver({0.7, 0, 0}, {0.8, 0.05, 0.05});
   EXPECT_EQ(shell.upperMin, 1.0f);
   EXPECT_EQ(shell.lowerMax, 1.0f);
+}
+
+TEST(FuzzyPartFieldTest, SampleBlockMatchesLevelsAtVoxelByVoxel) {
+  FuzzyPart fuzzy;
+  fuzzy.a1 = tri(0.6, 1, 1.5);
+  fuzzy.tx = tri(-0.1, 0, 0.2);
+  const FuzzyPartField fuzzyField(fuzzy);
+  const FuzzyPartField crispField(FuzzyPart{});  // unit sphere
+  const double h = 0.06;
+  // Inside, outside, across the fuzzy band, across the crisp surface.
+  for (const Vec3 first : {Vec3{-0.2, -0.2, -0.2}, Vec3{2, 2, 2}, Vec3{0.55, -0.2, -0.2},
+                           Vec3{1.1, 0.1, -0.3}, Vec3{0.8, 0.3, 0.1}})
+    for (const FuzzyPartField* f : {&fuzzyField, &crispField}) expectBlockMatchesPoints(*f, latticeAt(first, h));
 }
 
 TEST(FuzzyPartFieldTest, PredicatesAreMonotoneInAlpha) {

@@ -1,0 +1,31 @@
+#pragma once
+// Test helpers for AlphaFieldSource::sampleBlock (geometry/alpha_field.h).
+#include <gtest/gtest.h>
+
+#include "geometry/alpha_field.h"
+
+// An 8³ lattice of voxel centres from `first`, spacing h.
+inline fsdb::BlockLattice latticeAt(const fsdb::Vec3& first, double h) {
+  fsdb::BlockLattice b;
+  for (int n = 0; n < fsdb::BlockLattice::kDim; ++n) {
+    b.x[n] = first.x + n * h;
+    b.y[n] = first.y + n * h;
+    b.z[n] = first.z + n * h;
+  }
+  return b;
+}
+
+// sampleBlock must give, voxel by voxel, exactly what levelsAt gives.
+inline void expectBlockMatchesPoints(const fsdb::AlphaFieldSource& s, const fsdb::BlockLattice& b) {
+  constexpr int d = fsdb::BlockLattice::kDim;
+  fsdb::AlphaLevels out[fsdb::BlockLattice::kSize];
+  s.sampleBlock(b, out);
+  for (int i = 0; i < d; ++i)
+    for (int j = 0; j < d; ++j)
+      for (int k = 0; k < d; ++k) {
+        const fsdb::AlphaLevels v = s.levelsAt(b.at(i, j, k));
+        const fsdb::AlphaLevels w = out[(i * d + j) * d + k];
+        ASSERT_EQ(v.upper, w.upper) << i << " " << j << " " << k;
+        ASSERT_EQ(v.lower, w.lower) << i << " " << j << " " << k;
+      }
+}
