@@ -20,7 +20,6 @@ async function main() {
   } catch (err) {
     console.error(`${file}: INVALID`);
     console.error(err.message);
-    for (const detail of err.details || []) console.error(JSON.stringify(detail));
     return 1;
   }
 }
