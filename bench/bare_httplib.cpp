@@ -1,0 +1,34 @@
+// The baseline of bench/bench_get_part.sh: a bare cpp-httplib server that answers
+// GET /parts/{id} with a fixed JSON body (the body fsdb returns for a stored part, read from a
+// file), with the same thread pool size fsdb uses, so the difference is fsdb's own work
+// (routing, SQLite read, JSON build and dump, logging).
+// Usage: bare_httplib BODY.json [THREADS]   prints "listening on http://127.0.0.1:PORT"
+#include <httplib.h>
+
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::cerr << "usage: bare_httplib BODY.json [THREADS]\n";
+    return 2;
+  }
+  std::ifstream in(argv[1]);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string body = text.str();
+  const size_t threads = argc > 2 ? static_cast<size_t>(std::stoul(argv[2])) : 2;
+
+  httplib::Server server;
+  server.new_task_queue = [threads] { return new httplib::ThreadPool(threads); };
+  server.Get(R"(/parts/(\d+))", [&body](const httplib::Request&, httplib::Response& res) {
+    res.set_content(body, "application/json");
+  });
+  const int port = server.bind_to_any_port("127.0.0.1");
+  if (port < 0) return 1;
+  std::cout << "listening on http://127.0.0.1:" << port << std::endl;
+  server.listen_after_bind();
+  return 0;
+}
