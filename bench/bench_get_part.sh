@@ -2,6 +2,7 @@
 # GET /parts/{id} throughput: `fsdb serve` holding 1000 parts under `wrk -t2 -c16 -d5s` (a Lua
 # script cycles through the 1000 ids), against bench/bare_httplib (a bare cpp-httplib server
 # returning the same JSON body on the same route, same thread pool size) under the same load.
+# Both set TCP_NODELAY.
 # Usage: bench/bench_get_part.sh [BUILD_DIR] [DURATION]   (default build, 5s); one run each.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -13,7 +14,7 @@ work=$(mktemp -d)
 trap 'stop_server; rm -rf "$work"' EXIT
 
 gen_parts 1000 "$work/parts.jsonl"
-"$build/fsdb" import "$work/parts.jsonl" --db "$work/parts.sqlite" | tail -1
+"$build/fsdb" import "$work/parts.jsonl" --db "$work/parts.sqlite" 2>/dev/null | tail -1
 
 # load NAME URL: wrk on URL cycling the ids; prints one summary line, sets RPS, P50, P99.
 load() {
@@ -46,7 +47,7 @@ print("request = function()\n  i = i % #ids + 1\n  return wrk.format(\"GET\", \"
   stop_server
 done
 
-start_server "$work/bare.log" "$build/bench/bare_httplib" "$work/body.json" "$threads"
+start_server "$work/bare.log" "$build/bench/bare_httplib" "$work/body.json" "$threads" nodelay
 load "bare cpp-httplib ($(wc -c <"$work/body.json") B body)" "$SERVER_URL"
 stop_server
 python3 -c "print('ratio bare / fsdb (log info) = %.2f' % ($RPS / $fsdb_rps))"

@@ -16,13 +16,13 @@ gen_parts "$n" "$work/parts.jsonl"
 echo "== bulk import of $n part documents ($(du -h "$work/parts.jsonl" | cut -f1))"
 
 t0=$(now)
-"$fsdb" import "$work/parts.jsonl" --db "$work/direct.sqlite" | tail -1
+"$fsdb" import "$work/parts.jsonl" --db "$work/direct.sqlite" 2>"$work/direct.log" | tail -1
 t1=$(now)
 direct=$(rate "$n" "$t0" "$t1")
 
 start_server "$work/serve.log" "$fsdb" serve --port 0 --db "$work/served.sqlite"
 t0=$(now)
-"$fsdb" import "$work/parts.jsonl" --server "$SERVER_URL" | tail -1
+"$fsdb" import "$work/parts.jsonl" --server "$SERVER_URL" 2>"$work/served.log" | tail -1
 t1=$(now)
 stop_server
 served=$(rate "$n" "$t0" "$t1")
@@ -30,7 +30,7 @@ served=$(rate "$n" "$t0" "$t1")
 # The baseline: the lines into a staging table (.import, tab mode: a line is one field), then
 # into a table like fsdb's objects in the same transaction.
 t0=$(now)
-sqlite3 "$work/shell.sqlite" <<SQL
+sqlite3 "$work/shell.sqlite" >/dev/null <<SQL
 PRAGMA journal_mode=WAL;
 CREATE TABLE objects(id INTEGER PRIMARY KEY AUTOINCREMENT, kind TEXT NOT NULL, name TEXT NOT NULL,
                      document TEXT NOT NULL, created_at TEXT NOT NULL, UNIQUE(kind, name));
