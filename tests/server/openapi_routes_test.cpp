@@ -2,8 +2,12 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
+
+#include <filesystem>
 #include <set>
 
+#include "db/store.h"
 #include "server/api.h"
 #include "server/http_server.h"
 #include "server/openapi.h"
@@ -19,7 +23,11 @@ TEST(OpenApi, DocumentIsOpenApi3WithInfo) {
 
 TEST(OpenApi, DescribesExactlyTheRegisteredRoutes) {
   fsdb::HttpServer server(fsdb::ServerOptions{});
-  fsdb::registerAllRoutes(server);
+  // The routes need a store to bind to; an empty one in a temporary file will do.
+  const auto dbPath = std::filesystem::temp_directory_path() /
+                      ("fsdb-openapi-routes-" + std::to_string(::getpid()) + ".sqlite");
+  auto store = fsdb::Store::open(dbPath.string());
+  fsdb::registerAllRoutes(server, *store);
   std::set<std::string> registered, documented;
   for (const auto& r : server.routes()) {
     std::string m = r.method;
@@ -30,6 +38,8 @@ TEST(OpenApi, DescribesExactlyTheRegisteredRoutes) {
   for (auto& [path, item] : doc["paths"].items())
     for (auto& [method, op] : item.items()) documented.insert(method + " " + path);
   EXPECT_EQ(registered, documented);
+  store.reset();
+  for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(dbPath.string() + suffix);
 }
 
 TEST(OpenApi, EveryLocalReferenceResolves) {
