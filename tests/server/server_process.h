@@ -1,7 +1,9 @@
 #pragma once
 // Test helper: runs the real `fsdb serve --port 0` as a child process, reads the port from the
-// first stdout line (SPEC §1), and talks to it with an httplib client. The destructor sends
-// SIGTERM and reaps the child, so a failing test never leaves a server behind.
+// first stdout line (SPEC §1), and talks to it with an httplib client. The destructor kills
+// and reaps the child, so a failing test never leaves a server behind. Extra arguments
+// (--db, --token, limits) go after `serve --port 0`; kill9() simulates a crash, and a new
+// ServerProcess with the same --db is a restart. TempDir gives each test its own directory.
 #include <httplib.h>
 #include <nlohmann/json.hpp>
 #include <signal.h>
@@ -9,6 +11,8 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -55,6 +59,14 @@ class ServerProcess {
     if (stdout_) fclose(stdout_);
   }
 
+  // Sends SIGKILL (a crash: no checkpoint, no graceful stop) and reaps the child.
+  void kill9() {
+    if (pid_ <= 0) return;
+    kill(pid_, SIGKILL);
+    waitpid(pid_, nullptr, 0);
+    pid_ = -1;
+  }
+
   // Sends SIGTERM and returns the exit status (the server must stop gracefully).
   int terminate() {
     kill(pid_, SIGTERM);
@@ -79,32 +91,101 @@ class ServerProcess {
     int status = 0;
     nlohmann::json json;
     std::string body;
+    std::string contentType;
+    std::string location;
   };
+
+  // Requests carry "Authorization: Bearer <token>" when setToken() was given one.
+  void setToken(std::string token) { token_ = std::move(token); }
 
   Reply get(const std::string& path) const {
     auto c = client();
-    return toReply(c.Get(path.c_str()));
+    return toReply(c.Get(path.c_str(), headers()));
   }
-  Reply post(const std::string& path, const std::string& body) const {
+  Reply post(const std::string& path, const std::string& body,
+             const std::string& contentType = "application/json") const {
     auto c = client();
-    return toReply(c.Post(path.c_str(), body, "application/json"));
+    return toReply(c.Post(path.c_str(), headers(), body, contentType.c_str()));
   }
   Reply post(const std::string& path, const nlohmann::json& body) const { return post(path, body.dump()); }
+  Reply put(const std::string& path, const std::string& body) const {
+    auto c = client();
+    return toReply(c.Put(path.c_str(), headers(), body, "application/json"));
+  }
+  Reply put(const std::string& path, const nlohmann::json& body) const { return put(path, body.dump()); }
+  Reply del(const std::string& path) const {
+    auto c = client();
+    return toReply(c.Delete(path.c_str(), headers()));
+  }
 
  private:
+  httplib::Headers headers() const {
+    httplib::Headers h;
+    if (!token_.empty()) h.emplace("Authorization", "Bearer " + token_);
+    return h;
+  }
+
   static Reply toReply(const httplib::Result& r) {
     if (!r) throw std::runtime_error("request failed: " + httplib::to_string(r.error()));
     Reply out;
     out.status = r->status;
     out.body = r->body;
+    out.contentType = r->get_header_value("Content-Type");
+    out.location = r->get_header_value("Location");
     out.json = nlohmann::json::parse(r->body, nullptr, false);
     return out;
   }
 
   pid_t pid_ = -1;
   FILE* stdout_ = nullptr;
-  std::string firstLine_, host_;
+  std::string firstLine_, host_, token_;
   int port_ = 0;
+};
+
+// Runs `fsdb ARGS...` to completion (stderr discarded unless keepStderr) and returns its exit
+// status and stdout. Arguments are single-quoted for the shell.
+struct CommandResult {
+  int exitCode = -1;
+  std::string out;
+};
+inline CommandResult runFsdb(const std::vector<std::string>& args, bool keepStderr = false) {
+  std::string command = std::string("'") + FSDB_BINARY + "'";
+  for (const std::string& a : args) {
+    std::string quoted = "'";
+    for (char c : a) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    command += " " + quoted + "'";
+  }
+  command += keepStderr ? " 2>&1" : " 2>/dev/null";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) throw std::runtime_error("popen failed");
+  CommandResult result;
+  char buffer[4096];
+  size_t n = 0;
+  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, n);
+  const int status = pclose(pipe);
+  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return result;
+}
+
+// A fresh directory under the system temp dir, removed with everything in it at destruction.
+class TempDir {
+ public:
+  TempDir() {
+    std::string pattern = (std::filesystem::temp_directory_path() / "fsdb-test-XXXXXX").string();
+    if (!mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
+    path_ = pattern;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
 };
 
 }  // namespace fsdb::test
