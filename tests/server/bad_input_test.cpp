@@ -173,6 +173,11 @@ TEST_F(BadInput, PathsAndQueryParameters) {
   expectError(s, s.get("/parts/-3"), 422, "invalid_parameter", "id");
   expectError(s, s.get("/parts/1.5"), 422, "invalid_parameter", "id");
   expectError(s, s.get("/shapes/0/membership?x=0&y=0&z=0"), 422, "invalid_parameter", "id");
+  // Every {id} is parsed alike: no sign, no overflow to "not found".
+  expectError(s, s.get("/shapes/+1/membership?x=0&y=0&z=0"), 422, "invalid_parameter", "id");
+  expectError(s, s.get("/parts/+1"), 422, "invalid_parameter", "id");
+  expectError(s, s.post("/shapes/99999999999999999999/evaluate", std::string("")), 422, "invalid_parameter", "id");
+  expectError(s, s.get("/shapes/1e3/grid.vdb"), 422, "invalid_parameter", "id");
   expectError(s, s.get("/parts/99999999"), 404, "not_found");
   expectError(s, s.get("/parts?limit=0"), 422, "invalid_parameter", "limit");
   expectError(s, s.get("/parts?limit=100000"), 422, "invalid_parameter", "limit");
