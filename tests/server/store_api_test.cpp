@@ -183,6 +183,15 @@ TEST_F(StoreApi, StoredShapeEvaluationIsCachedUntilAReferencedPartChanges) {
   EXPECT_EQ(third.json["cached"], false);
   const double v1 = first.json["alphas"][0]["upper_volume"], v3 = third.json["alphas"][0]["upper_volume"];
   EXPECT_GT(v3, 6 * v1);  // radius doubled: eight times the volume, up to the grid
+  // A change two references down (part A -> shape s -> shape t) invalidates t's cached result too.
+  const int64_t t = createdId(server.post("/shapes", json{{"kind", "shape"}, {"name", "t"}, {"tree", {{"ref", "s"}}}}));
+  const std::string tAt = "/shapes/" + std::to_string(t) + "/evaluate";
+  ASSERT_EQ(server.post(tAt, request).json["cached"], false);
+  ASSERT_EQ(server.post(tAt, request).json["cached"], true);
+  ASSERT_EQ(server.put("/parts/" + std::to_string(a), ball("A", 1)).status, 200);
+  auto t3 = server.post(tAt, request);
+  EXPECT_EQ(t3.json["cached"], false) << t3.body;
+  EXPECT_EQ(t3.json["alphas"], first.json["alphas"]);
   // An empty body means the defaults.
   auto defaults = server.post(at, std::string(""));
   EXPECT_EQ(defaults.status, 200) << defaults.body;
