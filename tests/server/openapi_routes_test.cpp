@@ -4,9 +4,11 @@
 
 #include <set>
 
+#include "db/store.h"
 #include "server/api.h"
 #include "server/http_server.h"
 #include "server/openapi.h"
+#include "tests/db/temp_dir.h"
 
 namespace {
 
@@ -18,8 +20,10 @@ TEST(OpenApi, DocumentIsOpenApi3WithInfo) {
 }
 
 TEST(OpenApi, DescribesExactlyTheRegisteredRoutes) {
+  fsdb::TempDir dir;
+  auto store = fsdb::Store::open(dir.file("routes.sqlite"));
   fsdb::HttpServer server(fsdb::ServerOptions{});
-  fsdb::registerAllRoutes(server);
+  fsdb::registerAllRoutes(server, *store);
   std::set<std::string> registered, documented;
   for (const auto& r : server.routes()) {
     std::string m = r.method;
