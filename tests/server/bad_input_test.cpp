@@ -169,21 +169,18 @@ TEST_F(BadInput, Limits) {
 
 TEST_F(BadInput, PathsAndQueryParameters) {
   const ServerProcess& s = *server;
-  expectError(s, s.get("/parts/abc"), 422, "invalid_parameter", "id");
-  expectError(s, s.get("/parts/-3"), 422, "invalid_parameter", "id");
-  expectError(s, s.get("/parts/1.5"), 422, "invalid_parameter", "id");
-  expectError(s, s.get("/shapes/0/membership?x=0&y=0&z=0"), 422, "invalid_parameter", "id");
-  // Every {id} is parsed alike: no sign, no overflow to "not found".
-  expectError(s, s.get("/shapes/+1/membership?x=0&y=0&z=0"), 422, "invalid_parameter", "id");
-  expectError(s, s.get("/parts/+1"), 422, "invalid_parameter", "id");
+  // GET requests whose path segment or query parameter is invalid: (target, the parameter named).
+  const std::vector<std::pair<std::string, std::string>> invalid = {
+      {"/parts/abc", "id"}, {"/parts/-3", "id"}, {"/parts/1.5", "id"},
+      {"/shapes/0/membership?x=0&y=0&z=0", "id"},
+      // Every {id} is parsed alike: no sign, no overflow to "not found".
+      {"/shapes/+1/membership?x=0&y=0&z=0", "id"}, {"/parts/+1", "id"}, {"/shapes/1e3/grid.vdb", "id"},
+      {"/parts?limit=0", "limit"}, {"/parts?limit=100000", "limit"}, {"/parts?after=x", "after"},
+      {"/parts?name=good&version=abc", "version"}, {"/parts/1?version=0", "version"}};
+  for (const auto& [target, parameter] : invalid)
+    expectError(s, s.get(target), 422, "invalid_parameter", parameter.c_str());
   expectError(s, s.post("/shapes/99999999999999999999/evaluate", std::string("")), 422, "invalid_parameter", "id");
-  expectError(s, s.get("/shapes/1e3/grid.vdb"), 422, "invalid_parameter", "id");
   expectError(s, s.get("/parts/99999999"), 404, "not_found");
-  expectError(s, s.get("/parts?limit=0"), 422, "invalid_parameter", "limit");
-  expectError(s, s.get("/parts?limit=100000"), 422, "invalid_parameter", "limit");
-  expectError(s, s.get("/parts?after=x"), 422, "invalid_parameter", "after");
-  expectError(s, s.get("/parts?name=good&version=abc"), 422, "invalid_parameter", "version");
-  expectError(s, s.get("/parts/1?version=0"), 422, "invalid_parameter", "version");
   expectError(s, s.del("/parts/1?cascade=maybe"), 422, "invalid_parameter", "cascade");
   expectError(s, s.post("/parts/bulk?mode=merge", std::string("")), 422, "invalid_parameter", "mode");
   auto shape = s.post("/shapes", unionOf("q", {{{"part", "good"}}}));

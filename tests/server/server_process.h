@@ -3,25 +3,39 @@
 // first stdout line (SPEC §1), and talks to it with an httplib client. The destructor kills
 // and reaps the child, so a failing test never leaves a server behind. Extra arguments
 // (--db, --token, limits) go after `serve --port 0`; kill9() simulates a crash, and a new
-// ServerProcess with the same --db is a restart. TempDir gives each test its own directory.
+// ServerProcess with the same --db is a restart; without --db it gets a temporary database.
+// TempDir gives each test its own directory.
 #include <httplib.h>
 #include <nlohmann/json.hpp>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "tests/db/temp_dir.h"
+
 namespace fsdb::test {
+
+// The db/ tests' temporary directory (removed with its contents at destruction).
+using fsdb::TempDir;
 
 class ServerProcess {
  public:
   explicit ServerProcess(std::vector<std::string> extraArgs = {}) {
+    // Without --db each server gets a database of its own (never data/fsdb.sqlite of the cwd).
+    if (std::find(extraArgs.begin(), extraArgs.end(), "--db") == extraArgs.end()) {
+      ownDir_ = std::make_unique<TempDir>();
+      extraArgs.push_back("--db");
+      extraArgs.push_back(ownDir_->file("fsdb.sqlite"));
+    }
     int out[2];
     if (pipe(out) != 0) throw std::runtime_error("pipe failed");
     pid_ = fork();
@@ -136,6 +150,7 @@ class ServerProcess {
     return out;
   }
 
+  std::unique_ptr<TempDir> ownDir_;  // the database of a server started without --db
   pid_t pid_ = -1;
   FILE* stdout_ = nullptr;
   std::string firstLine_, host_, token_;
@@ -166,26 +181,5 @@ inline CommandResult runFsdb(const std::vector<std::string>& args, bool keepStde
   result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   return result;
 }
-
-// A fresh directory under the system temp dir, removed with everything in it at destruction.
-class TempDir {
- public:
-  TempDir() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "fsdb-test-XXXXXX").string();
-    if (!mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
-    path_ = pattern;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
 
 }  // namespace fsdb::test
