@@ -109,6 +109,11 @@ TEST_F(BadInput, OutOfRangeParametersAndUnknownFields) {
   expectError(s, s.post("/parts", part("p", {{"a1", 1}, {"a3", 1}, {"kv", 100}})), 422, "", "params.kv");
   expectError(s, s.post("/parts", part("p", {{"a1", 1}, {"wobble", 1}})), 422, "invalid_document",
               "params.wobble");
+  // Valid parts too small or too large to grid: a 422 naming the shape, not a 500 or null volumes.
+  for (double a1 : {1e-300, 1e-7, 1e300}) {
+    json request = {{"shape", {{"kind", "part"}, {"params", {{"a1", a1}}}}}, {"resolution", 16}};
+    expectError(s, s.post("/evaluate", request), 422, "domain_error", "shape");
+  }
   json extra = part("p");
   extra["colour"] = "red";
   expectError(s, s.post("/parts", extra), 422, "invalid_document", "colour");
