@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <set>
 #include <thread>
 
 #include "tests/server/server_process.h"
@@ -88,6 +89,33 @@ TEST(Concurrency, EightClientsMixingReadsAndWrites) {
   EXPECT_GT(parts.load(), kThreads);
   std::cout << "[concurrency] " << requests.load() << " requests, " << parts.load() << " parts, " << shapes.load()
             << " shapes in 4 s" << std::endl;
+}
+
+TEST(Concurrency, ConcurrentPutsOfOneObjectGetDistinctVersions) {
+  TempDir dir;
+  ServerProcess server({"--db", dir.file("puts.sqlite"), "--threads", "8"});
+  auto created = server.post("/parts", json{{"kind", "part"}, {"name", "hot"}, {"params", {{"a1", 1}}}});
+  ASSERT_EQ(created.status, 201) << created.body;
+  const std::string at = "/parts/" + std::to_string(created.json["id"].get<int64_t>());
+  constexpr int kThreads = 8, kPuts = 10;
+  std::vector<std::vector<int>> versions(kThreads);
+  std::vector<std::thread> clients;
+  for (int t = 0; t < kThreads; ++t)
+    clients.emplace_back([&, t] {
+      for (int i = 0; i < kPuts; ++i) {
+        auto r = server.put(at, json{{"params", {{"a1", 1 + t + i / 100.0}}}});
+        if (r.status == 200) versions[t].push_back(r.json["version"]);
+        else ADD_FAILURE() << r.status << " " << r.body;
+      }
+    });
+  for (auto& c : clients) c.join();
+  std::set<int> all;
+  for (const auto& v : versions) all.insert(v.begin(), v.end());
+  EXPECT_EQ(all.size(), static_cast<size_t>(kThreads * kPuts));  // no version handed out twice
+  EXPECT_EQ(*all.begin(), 2);
+  EXPECT_EQ(*all.rbegin(), 1 + kThreads * kPuts);
+  EXPECT_EQ(server.get(at).json["latest_version"], 1 + kThreads * kPuts);
+  EXPECT_EQ(server.get(at + "?version=" + std::to_string(kThreads * kPuts)).status, 200);
 }
 
 }  // namespace

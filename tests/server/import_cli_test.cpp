@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "tests/server/server_process.h"
 
@@ -88,6 +89,27 @@ TEST(ImportCli, ThroughARunningServerGivesTheSameCounts) {
   EXPECT_EQ(h.json["parts"], 3);
   EXPECT_EQ(h.json["shapes"], 2);
   EXPECT_EQ(runFsdb({"import", file, "--server", "http://127.0.0.1:1", "--token", "tok"}).exitCode, 2);
+}
+
+TEST(ImportCli, IntoTheFileOfARunningServerWhileItWrites) {
+  TempDir dir;
+  const std::string file = dir.file("many.jsonl"), db = dir.file("shared.sqlite");
+  std::string lines;
+  for (int i = 0; i < 300; ++i)
+    lines += json{{"kind", "part"}, {"name", "imp" + std::to_string(i)}, {"params", {{"a1", 1}}}}.dump() + "\n";
+  writeFile(file, lines);
+  ServerProcess server({"--db", db});
+  std::thread writer([&] {
+    for (int i = 0; i < 30; ++i)
+      EXPECT_EQ(server.post("/parts", json{{"kind", "part"}, {"name", "w" + std::to_string(i)}, {"params", {{"a1", 1}}}})
+                    .status,
+                201);
+  });
+  auto r = runFsdb({"import", file, "--db", db, "--batch", "20"});
+  writer.join();
+  EXPECT_EQ(r.exitCode, 0) << r.out;
+  EXPECT_EQ(lastLine(r.out), "imported 300, failed 0") << r.out;
+  EXPECT_EQ(server.get("/health").json["parts"], 330);
 }
 
 TEST(EvalCli, PrintsTheVolumesOfAStoredShape) {
