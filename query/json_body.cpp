@@ -1,20 +1,67 @@
 #include "query/json_body.h"
 
 #include <cmath>
+#include <vector>
 
 #include "geometry/error.h"
 #include "geometry/number_format.h"
+#include "query/json_path.h"
 
 namespace fsdb {
+
+namespace {
+
+// Where the parser is, for errors the parser itself raises on a value (a number literal beyond
+// double range such as 1e999): the JSON path of the value being read.
+class ParsePosition {
+ public:
+  void event(nlohmann::json::parse_event_t event, const nlohmann::json& parsed) {
+    using E = nlohmann::json::parse_event_t;
+    switch (event) {
+      case E::object_start: frames_.push_back({false, "", 0}); break;
+      case E::array_start: frames_.push_back({true, "", 0}); break;
+      case E::key:
+        if (!frames_.empty() && parsed.is_string()) frames_.back().key = parsed.get<std::string>();
+        break;
+      case E::object_end:
+      case E::array_end:
+        if (!frames_.empty()) frames_.pop_back();
+        valueDone();
+        break;
+      case E::value: valueDone(); break;
+    }
+  }
+  // The path of the value being parsed now.
+  std::string path() const {
+    std::string out;
+    for (const Frame& f : frames_) out = f.isArray ? joinPath(out, f.index) : joinPath(out, f.key);
+    return out;
+  }
+
+ private:
+  struct Frame {
+    bool isArray;
+    std::string key;
+    std::size_t index;
+  };
+  void valueDone() {
+    if (!frames_.empty() && frames_.back().isArray) ++frames_.back().index;
+  }
+  std::vector<Frame> frames_;
+};
+
+}  // namespace
 
 nlohmann::json parseJsonBody(const std::string& body, int maxDepth) {
   if (body.empty()) throw Error(errc::kMalformedJson, "request body is empty; expected a JSON document", "body");
   // The parser callback sees the depth of every value; refusing deep nesting here keeps the
   // recursive destructor and every later recursive walk within bounds.
-  auto depthGuard = [maxDepth](int depth, nlohmann::json::parse_event_t, nlohmann::json&) {
+  ParsePosition position;
+  auto depthGuard = [maxDepth, &position](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
     if (depth > maxDepth)
       throw Error(errc::kLimitExceeded,
                   "JSON nesting deeper than max_json_depth=" + std::to_string(maxDepth), "body");
+    position.event(event, parsed);
     return true;
   };
   try {
@@ -22,6 +69,9 @@ nlohmann::json parseJsonBody(const std::string& body, int maxDepth) {
   } catch (const nlohmann::json::parse_error& e) {
     throw Error(errc::kMalformedJson,
                 "body is not valid JSON at byte " + std::to_string(e.byte) + ": " + e.what(), "body");
+  } catch (const nlohmann::json::out_of_range& e) {
+    // 406: a number literal beyond double range (1e999): not finite, like NaN (SPEC §2).
+    throw Error(errc::kInvalidDocument, std::string("a number must be finite: ") + e.what(), position.path());
   }
 }
 

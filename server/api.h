@@ -1,6 +1,9 @@
 #pragma once
 // Registration of fsdb's endpoints on an HttpServer, one function per resource family.
 // Each endpoint registered here must appear in schema/openapi.json (tests/server/openapi_test).
+#include <cstdint>
+#include <string>
+
 namespace fsdb {
 class HttpServer;
 class Store;
@@ -16,6 +19,10 @@ void registerEvaluationRoutes(HttpServer& server, Store& store);
 
 // POST/GET /parts, GET/PUT/DELETE /parts/{id}, POST /parts/bulk, and the same for /shapes
 void registerObjectRoutes(HttpServer& server, Store& store);
+
+// A positive integer from a path segment or query parameter (digits only, at most `max`);
+// 422 invalid_parameter naming `what` otherwise. Every {id} of every route goes through it.
+int64_t positiveInteger(const std::string& text, const std::string& what, int64_t max = INT64_MAX);
 
 // Every route family above, in order.
 void registerAllRoutes(HttpServer& server, Store& store);

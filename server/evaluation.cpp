@@ -7,6 +7,7 @@
 #include "geometry/boundary_method.h"
 #include "geometry/envelope_grid.h"
 #include "geometry/error.h"
+#include "geometry/number_format.h"
 #include "query/json_body.h"
 #include "query/shape_json.h"
 
@@ -15,6 +16,8 @@ namespace {
 
 constexpr int kDefaultResolution = 64;
 constexpr size_t kMaxAlphas = 101;
+constexpr double kMinVoxelSize = 2e-5;  // voxel volume 8e-15: above OpenVDB's 3e-15 floor
+constexpr double kMaxVoxelSize = 1e90;  // voxel volume 1e270: volumes stay finite
 
 std::vector<double> parseAlphas(const nlohmann::json& request) {
   if (!request.contains("alphas")) return {0.0, 0.25, 0.5, 0.75, 1.0};
@@ -77,6 +80,14 @@ Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& 
   if (!(extent > 0.0) || !std::isfinite(extent))
     throw Error(errc::kDomainError, "the shape has an empty or unbounded bounding box", "shape");
   const double voxelSize = extent / resolution;
+  // OpenVDB refuses a voxel whose volume is below ~3e-15 (h < ~1.5e-5), and volumes overflow to
+  // infinity (JSON null) for huge voxels: such shapes cannot be gridded at this resolution.
+  if (voxelSize < kMinVoxelSize || voxelSize > kMaxVoxelSize)
+    throw Error(errc::kDomainError,
+                "the shape's size " + formatNumber(extent) + " at resolution " + std::to_string(resolution) +
+                    " gives voxels of " + formatNumber(voxelSize) + ", outside [" + formatNumber(kMinVoxelSize) +
+                    ", " + formatNumber(kMaxVoxelSize) + "]",
+                "shape");
   auto grid = std::make_shared<const EnvelopeGrid>(EnvelopeGrid::build(*shape.field, voxelSize));
   std::vector<LevelVolume> volumes = grid->volumes(alphas);
   if (boundary) {

@@ -25,14 +25,7 @@ namespace {
 
 constexpr int kDefaultExportResolution = 64;
 
-int64_t shapeId(const ApiRequest& req) {
-  const std::string& text = req.pathParams[0];
-  char* end = nullptr;
-  const long long v = std::strtoll(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || v <= 0)
-    throw Error(errc::kInvalidParameter, "id must be a positive integer, got \"" + text + "\"", "id");
-  return v;
-}
+int64_t shapeId(const ApiRequest& req) { return positiveInteger(req.pathParams[0], "id"); }
 
 double numberParam(const ApiRequest& req, const std::string& name, std::optional<double> fallback) {
   if (!req.hasQueryParam(name)) {

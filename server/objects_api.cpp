@@ -9,15 +9,8 @@
 #include "server/http_server.h"
 
 namespace fsdb {
-namespace {
 
-constexpr int kDefaultListLimit = 100;
-constexpr int kMaxListLimit = 1000;
-constexpr size_t kDefaultBatch = 500;
-constexpr size_t kMaxBatch = 10000;
-
-// A positive integer from a path segment or query parameter; invalid_parameter otherwise.
-int64_t positiveInteger(const std::string& text, const std::string& what, int64_t max = INT64_MAX) {
+int64_t positiveInteger(const std::string& text, const std::string& what, int64_t max) {
   int64_t v = 0;
   bool ok = !text.empty() && text.size() <= 18;
   for (char c : text) {
@@ -34,6 +27,13 @@ int64_t positiveInteger(const std::string& text, const std::string& what, int64_
                 what);
   return v;
 }
+
+namespace {
+
+constexpr int kDefaultListLimit = 100;
+constexpr int kMaxListLimit = 1000;
+constexpr size_t kDefaultBatch = 500;
+constexpr size_t kMaxBatch = 10000;
 
 bool booleanParam(const ApiRequest& req, const std::string& name) {
   if (!req.hasQueryParam(name)) return false;

@@ -11,6 +11,7 @@
 #include "server/api.h"
 #include "server/http_server.h"
 #include "server/openapi.h"
+#include "tests/db/temp_dir.h"
 
 namespace {
 
@@ -22,11 +23,9 @@ TEST(OpenApi, DocumentIsOpenApi3WithInfo) {
 }
 
 TEST(OpenApi, DescribesExactlyTheRegisteredRoutes) {
+  fsdb::TempDir dir;
+  auto store = fsdb::Store::open(dir.file("routes.sqlite"));
   fsdb::HttpServer server(fsdb::ServerOptions{});
-  // The routes need a store to bind to; an empty one in a temporary file will do.
-  const auto dbPath = std::filesystem::temp_directory_path() /
-                      ("fsdb-openapi-routes-" + std::to_string(::getpid()) + ".sqlite");
-  auto store = fsdb::Store::open(dbPath.string());
   fsdb::registerAllRoutes(server, *store);
   std::set<std::string> registered, documented;
   for (const auto& r : server.routes()) {
@@ -38,8 +37,6 @@ TEST(OpenApi, DescribesExactlyTheRegisteredRoutes) {
   for (auto& [path, item] : doc["paths"].items())
     for (auto& [method, op] : item.items()) documented.insert(method + " " + path);
   EXPECT_EQ(registered, documented);
-  store.reset();
-  for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(dbPath.string() + suffix);
 }
 
 TEST(OpenApi, EveryLocalReferenceResolves) {

@@ -1,23 +1,41 @@
 #pragma once
 // Test helper: runs the real `fsdb serve --port 0` as a child process, reads the port from the
-// first stdout line (SPEC §1), and talks to it with an httplib client. The destructor sends
-// SIGTERM and reaps the child, so a failing test never leaves a server behind.
+// first stdout line (SPEC §1), and talks to it with an httplib client. The destructor kills
+// and reaps the child, so a failing test never leaves a server behind. Extra arguments
+// (--db, --token, limits) go after `serve --port 0`; kill9() simulates a crash, and a new
+// ServerProcess with the same --db is a restart; without --db it gets a temporary database.
+// TempDir gives each test its own directory.
 #include <httplib.h>
 #include <nlohmann/json.hpp>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "tests/db/temp_dir.h"
+
 namespace fsdb::test {
+
+// The db/ tests' temporary directory (removed with its contents at destruction).
+using fsdb::TempDir;
 
 class ServerProcess {
  public:
   explicit ServerProcess(std::vector<std::string> extraArgs = {}) {
+    // Without --db each server gets a database of its own (never data/fsdb.sqlite of the cwd).
+    if (std::find(extraArgs.begin(), extraArgs.end(), "--db") == extraArgs.end()) {
+      ownDir_ = std::make_unique<TempDir>();
+      extraArgs.push_back("--db");
+      extraArgs.push_back(ownDir_->file("fsdb.sqlite"));
+    }
     int out[2];
     if (pipe(out) != 0) throw std::runtime_error("pipe failed");
     pid_ = fork();
@@ -55,6 +73,14 @@ class ServerProcess {
     if (stdout_) fclose(stdout_);
   }
 
+  // Sends SIGKILL (a crash: no checkpoint, no graceful stop) and reaps the child.
+  void kill9() {
+    if (pid_ <= 0) return;
+    kill(pid_, SIGKILL);
+    waitpid(pid_, nullptr, 0);
+    pid_ = -1;
+  }
+
   // Sends SIGTERM and returns the exit status (the server must stop gracefully).
   int terminate() {
     kill(pid_, SIGTERM);
@@ -79,32 +105,81 @@ class ServerProcess {
     int status = 0;
     nlohmann::json json;
     std::string body;
+    std::string contentType;
+    std::string location;
   };
+
+  // Requests carry "Authorization: Bearer <token>" when setToken() was given one.
+  void setToken(std::string token) { token_ = std::move(token); }
 
   Reply get(const std::string& path) const {
     auto c = client();
-    return toReply(c.Get(path.c_str()));
+    return toReply(c.Get(path.c_str(), headers()));
   }
-  Reply post(const std::string& path, const std::string& body) const {
+  Reply post(const std::string& path, const std::string& body,
+             const std::string& contentType = "application/json") const {
     auto c = client();
-    return toReply(c.Post(path.c_str(), body, "application/json"));
+    return toReply(c.Post(path.c_str(), headers(), body, contentType.c_str()));
   }
   Reply post(const std::string& path, const nlohmann::json& body) const { return post(path, body.dump()); }
+  Reply put(const std::string& path, const std::string& body) const {
+    auto c = client();
+    return toReply(c.Put(path.c_str(), headers(), body, "application/json"));
+  }
+  Reply put(const std::string& path, const nlohmann::json& body) const { return put(path, body.dump()); }
+  Reply del(const std::string& path) const {
+    auto c = client();
+    return toReply(c.Delete(path.c_str(), headers()));
+  }
 
  private:
+  httplib::Headers headers() const {
+    httplib::Headers h;
+    if (!token_.empty()) h.emplace("Authorization", "Bearer " + token_);
+    return h;
+  }
+
   static Reply toReply(const httplib::Result& r) {
     if (!r) throw std::runtime_error("request failed: " + httplib::to_string(r.error()));
     Reply out;
     out.status = r->status;
     out.body = r->body;
+    out.contentType = r->get_header_value("Content-Type");
+    out.location = r->get_header_value("Location");
     out.json = nlohmann::json::parse(r->body, nullptr, false);
     return out;
   }
 
+  std::unique_ptr<TempDir> ownDir_;  // the database of a server started without --db
   pid_t pid_ = -1;
   FILE* stdout_ = nullptr;
-  std::string firstLine_, host_;
+  std::string firstLine_, host_, token_;
   int port_ = 0;
 };
+
+// Runs `fsdb ARGS...` to completion (stderr discarded unless keepStderr) and returns its exit
+// status and stdout. Arguments are single-quoted for the shell.
+struct CommandResult {
+  int exitCode = -1;
+  std::string out;
+};
+inline CommandResult runFsdb(const std::vector<std::string>& args, bool keepStderr = false) {
+  std::string command = std::string("'") + FSDB_BINARY + "'";
+  for (const std::string& a : args) {
+    std::string quoted = "'";
+    for (char c : a) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    command += " " + quoted + "'";
+  }
+  command += keepStderr ? " 2>&1" : " 2>/dev/null";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) throw std::runtime_error("popen failed");
+  CommandResult result;
+  char buffer[4096];
+  size_t n = 0;
+  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, n);
+  const int status = pclose(pipe);
+  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return result;
+}
 
 }  // namespace fsdb::test

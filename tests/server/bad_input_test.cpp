@@ -1,0 +1,273 @@
+// Bad requests against the real `fsdb serve --db FILE`: each gets a 4xx with the JSON error body
+// {"error":{"code","message","path"}}, and the server keeps serving (GET /health is 200 after
+// every one). Also the bearer token for writes.
+#include <gtest/gtest.h>
+
+#include "tests/server/server_process.h"
+
+using fsdb::test::ServerProcess;
+using fsdb::test::TempDir;
+using nlohmann::json;
+
+namespace {
+
+// Checks the status, the error body and the code (unless ""); `path` is checked when not null, and a
+// message mentioning `mention` when that is not empty. Then /health must still answer.
+void expectError(const ServerProcess& server, const ServerProcess::Reply& r, int status, const std::string& code,
+                 const char* path = nullptr, const std::string& mention = "") {
+  EXPECT_EQ(r.status, status) << r.body;
+  ASSERT_TRUE(r.json.is_object() && r.json.contains("error")) << r.body;
+  const json& e = r.json["error"];
+  ASSERT_TRUE(e.contains("code") && e.contains("message") && e.contains("path")) << r.body;
+  if (!code.empty()) {
+    EXPECT_EQ(e["code"], code) << r.body;
+  }
+  EXPECT_TRUE(e["path"].is_string()) << r.body;
+  if (path) {
+    EXPECT_EQ(e["path"], path) << r.body;
+  }
+  EXPECT_FALSE(e["message"].get<std::string>().empty()) << r.body;
+  if (!mention.empty()) {
+    EXPECT_NE(e["message"].get<std::string>().find(mention), std::string::npos) << r.body;
+  }
+  EXPECT_EQ(server.get("/health").status, 200) << "after " << r.body;
+}
+
+// A part document; params without "a1" get a1 = 1.
+json part(const std::string& name, json params = json::object()) {
+  if (params.is_object() && !params.contains("a1")) params["a1"] = 1;
+  return {{"kind", "part"}, {"name", name}, {"params", std::move(params)}};
+}
+
+// A union of `children` and the stored part "good" (a Boolean node needs two children).
+json unionOf(const std::string& name, json children) {
+  children.push_back({{"part", "good"}});
+  return {{"kind", "shape"}, {"name", name}, {"tree", {{"op", "union"}, {"children", std::move(children)}}}};
+}
+
+class BadInput : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir = new TempDir;
+    server = new ServerProcess({"--db", dir->file("bad.sqlite"), "--max-body-bytes", "4000", "--max-json-depth",
+                                "16", "--max-resolution", "64", "--max-nodes", "20"});
+    ASSERT_EQ(server->post("/parts", part("good")).status, 201);
+  }
+  static void TearDownTestSuite() {
+    delete server;
+    delete dir;
+  }
+  static TempDir* dir;
+  static ServerProcess* server;
+};
+TempDir* BadInput::dir = nullptr;
+ServerProcess* BadInput::server = nullptr;
+
+TEST_F(BadInput, MalformedJsonAndWrongTypes) {
+  const ServerProcess& s = *server;
+  expectError(s, s.post("/parts", std::string("{\"kind\":\"part\",")), 400, "malformed_json", "body");
+  expectError(s, s.post("/parts", std::string("")), 400, "malformed_json", "body");
+  expectError(s, s.post("/parts", std::string("[1,2,3]")), 422, "invalid_document", "");
+  expectError(s, s.post("/parts", json{{"kind", "part"}, {"name", 42}, {"params", {{"a1", 1}}}}), 422,
+              "invalid_document", "name");
+  expectError(s, s.post("/parts", json{{"kind", "part"}, {"name", ""}, {"params", {{"a1", 1}}}}), 422,
+              "invalid_document", "name");
+  expectError(s, s.post("/parts", json{{"kind", "part"}, {"params", {{"a1", 1}}}}), 422, "invalid_document", "name");
+  expectError(s, s.post("/parts", json{{"kind", "part"}, {"name", "p"}, {"params", {1, 2}}}), 422, "invalid_document",
+              "params");
+  expectError(s, s.post("/parts", part("p", {{"a1", "banana"}})), 422, "", "params.a1");
+  expectError(s, s.post("/parts", part("p", {{"a1", true}})), 422, "invalid_document", "params.a1");
+}
+
+TEST_F(BadInput, InvalidFuzzyNumbersNamingTheirPath) {
+  const ServerProcess& s = *server;
+  expectError(s, s.post("/parts", part("p", {{"a1", {{"tri", {2, 1, 3}}}}})), 422, "invalid_document",
+              "params.a1.tri[1]");
+  expectError(s, s.post("/parts", part("p", {{"a1", {{"points", {{1, 0.5}, {2, 1.5}}}}}})), 422, "invalid_document",
+              nullptr);
+  expectError(s, s.post("/parts", part("p", {{"a1", {{"points", json::array()}}}})), 422, "invalid_document", nullptr);
+  expectError(s, s.post("/parts", part("p", {{"a1", {{"trap", {1, 2, 3}}}}})), 422, "invalid_document", nullptr);
+  expectError(s, s.post("/parts", part("p", {{"a1", "NaN"}})), 422, "", "params.a1");
+  expectError(s, s.post("/parts", part("p", {{"a1", "inf"}})), 422, "", "params.a1");
+  expectError(s, s.post("/parts",
+                        std::string(R"({"kind":"part","name":"p","params":{"a1":1e999}})")),
+              422, "invalid_document", "params.a1");
+  expectError(s, s.post("/parts", std::string(R"({"kind":"part","name":"p","params":{"a1":{"tri":[1,2,1e999]}}})")),
+              422, "invalid_document", "params.a1.tri[2]");
+  expectError(s, s.post("/parts", std::string(R"({"kind":"part","name":"p","params":{"a1":1,"a2":-1e999}})")),
+              422, "invalid_document", "params.a2");
+  expectError(s, s.post("/evaluate", std::string(R"({"shape":{"kind":"part","params":{"a1":1}},"alphas":[1e400]})")),
+              422, "invalid_document", "alphas[0]");
+}
+
+TEST_F(BadInput, OutOfRangeParametersAndUnknownFields) {
+  const ServerProcess& s = *server;
+  expectError(s, s.post("/parts", part("p", {{"eps1", 5}})), 422, "", "params.eps1");
+  expectError(s, s.post("/parts", part("p", {{"eps2", 0}})), 422, "", "params.eps2");
+  expectError(s, s.post("/parts", part("p", {{"a1", -1}})), 422, "", "params.a1");
+  expectError(s, s.post("/parts", part("p", {{"kx", 2}})), 422, "", "params.kx");
+  expectError(s, s.post("/parts", part("p", {{"a1", 1}, {"a3", 1}, {"kv", 100}})), 422, "", "params.kv");
+  expectError(s, s.post("/parts", part("p", {{"a1", 1}, {"wobble", 1}})), 422, "invalid_document",
+              "params.wobble");
+  // Valid parts too small or too large to grid: a 422 naming the shape, not a 500 or null volumes.
+  for (double a1 : {1e-300, 1e-7, 1e300}) {
+    json request = {{"shape", {{"kind", "part"}, {"params", {{"a1", a1}}}}}, {"resolution", 16}};
+    expectError(s, s.post("/evaluate", request), 422, "domain_error", "shape");
+  }
+  json extra = part("p");
+  extra["colour"] = "red";
+  expectError(s, s.post("/parts", extra), 422, "invalid_document", "colour");
+  expectError(s, s.post("/parts", json{{"kind", "part"}, {"name", "p"}, {"text", "a glorbly frobnicated zyx"}}),
+              422, "", nullptr);
+}
+
+TEST_F(BadInput, ReferencesCyclesConflictsAndKinds) {
+  const ServerProcess& s = *server;
+  expectError(s, s.post("/shapes", unionOf("u", {{{"part", "nope"}}})), 422, "unknown_reference",
+              "tree.children[0].part");
+  expectError(s, s.post("/shapes", unionOf("u", {{{"ref", 999999}}})), 422, "unknown_reference",
+              "tree.children[0].ref");
+  expectError(s, s.post("/shapes", json{{"kind", "shape"}, {"name", "c"}, {"csg", "c = good + nope"}}), 422,
+              "unknown_reference", "csg");
+  // x -> y, then PUT x -> y and y -> x would close a cycle.
+  auto x = s.post("/shapes", unionOf("cx", {{{"part", "good"}}}));
+  ASSERT_EQ(x.status, 201) << x.body;
+  auto y = s.post("/shapes", unionOf("cy", {{{"ref", "cx"}}}));
+  ASSERT_EQ(y.status, 201) << y.body;
+  expectError(s, s.put("/shapes/" + std::to_string(x.json["id"].get<int64_t>()), unionOf("cx", {{{"ref", "cy"}}})),
+              422, "reference_cycle", nullptr);
+  EXPECT_EQ(s.get("/shapes/" + std::to_string(x.json["id"].get<int64_t>())).json["version"], 1);
+  expectError(s, s.put("/shapes/" + std::to_string(x.json["id"].get<int64_t>()), unionOf("cx", {{{"ref", "cx"}}})),
+              422, "reference_cycle", nullptr);
+  expectError(s, s.post("/parts", part("good")), 409, "conflict", nullptr);
+  // A name change on PUT is a conflict too.
+  expectError(s, s.put("/shapes/" + std::to_string(y.json["id"].get<int64_t>()), unionOf("renamed", {{{"part", "good"}}})),
+              409, "conflict", nullptr);
+  expectError(s, s.post("/parts", unionOf("u2", {{{"part", "good"}}})), 422, "invalid_document", "kind");
+  expectError(s, s.post("/shapes", part("p2")), 422, "invalid_document", "kind");
+  expectError(s, s.put("/parts/" + std::to_string(x.json["id"].get<int64_t>()), part("cx")), 404, "not_found");
+}
+
+TEST_F(BadInput, Limits) {
+  const ServerProcess& s = *server;
+  json big = part("big");
+  big["meta"] = {{"blob", std::string(5000, 'x')}};
+  expectError(s, s.post("/parts", big), 413, "limit_exceeded", nullptr, "max_body_bytes");
+  std::string deep = R"({"kind":"part","name":"deep","meta":)";
+  for (int i = 0; i < 40; ++i) deep += "[";
+  for (int i = 0; i < 40; ++i) deep += "]";
+  deep += "}";
+  expectError(s, s.post("/parts", deep), 413, "limit_exceeded", "body");
+  expectError(s, s.post("/evaluate", json{{"shape", part("e")}, {"resolution", 100000}}), 413, "limit_exceeded",
+              "resolution", "max_resolution");
+  auto shape = s.post("/shapes", unionOf("small", {{{"part", "good"}}}));
+  ASSERT_EQ(shape.status, 201);
+  const std::string sid = std::to_string(shape.json["id"].get<int64_t>());
+  expectError(s, s.post("/shapes/" + sid + "/evaluate", json{{"resolution", 65}}), 413, "limit_exceeded",
+              "resolution", "max_resolution");
+  expectError(s, s.get("/shapes/" + sid + "/mesh?resolution=9999"), 413, "limit_exceeded", "resolution",
+              "max_resolution");
+  json many = json::array();
+  for (int i = 0; i < 25; ++i) many.push_back({{"part", "good"}});
+  expectError(s, s.post("/shapes", unionOf("many", many)), 413, "limit_exceeded", nullptr, "max_nodes");
+}
+
+TEST_F(BadInput, PathsAndQueryParameters) {
+  const ServerProcess& s = *server;
+  // GET requests whose path segment or query parameter is invalid: (target, the parameter named).
+  const std::vector<std::pair<std::string, std::string>> invalid = {
+      {"/parts/abc", "id"}, {"/parts/-3", "id"}, {"/parts/1.5", "id"},
+      {"/shapes/0/membership?x=0&y=0&z=0", "id"},
+      // Every {id} is parsed alike: no sign, no overflow to "not found".
+      {"/shapes/+1/membership?x=0&y=0&z=0", "id"}, {"/parts/+1", "id"}, {"/shapes/1e3/grid.vdb", "id"},
+      {"/parts?limit=0", "limit"}, {"/parts?limit=100000", "limit"}, {"/parts?after=x", "after"},
+      {"/parts?name=good&version=abc", "version"}, {"/parts/1?version=0", "version"}};
+  for (const auto& [target, parameter] : invalid)
+    expectError(s, s.get(target), 422, "invalid_parameter", parameter.c_str());
+  expectError(s, s.post("/shapes/99999999999999999999/evaluate", std::string("")), 422, "invalid_parameter", "id");
+  expectError(s, s.get("/parts/99999999"), 404, "not_found");
+  expectError(s, s.del("/parts/1?cascade=maybe"), 422, "invalid_parameter", "cascade");
+  expectError(s, s.post("/parts/bulk?mode=merge", std::string("")), 422, "invalid_parameter", "mode");
+  auto shape = s.post("/shapes", unionOf("q", {{{"part", "good"}}}));
+  ASSERT_EQ(shape.status, 201);
+  const std::string sid = std::to_string(shape.json["id"].get<int64_t>());
+  expectError(s, s.get("/shapes/" + sid + "/membership?x=0&y=0"), 422, "invalid_parameter", "z");
+  expectError(s, s.get("/shapes/" + sid + "/membership?x=a&y=0&z=0"), 422, "invalid_parameter", "x");
+  expectError(s, s.get("/shapes/" + sid + "/mesh?format=ply"), 422, "invalid_parameter", "format");
+  expectError(s, s.get("/shapes/" + sid + "/mesh?bound=middle"), 422, "invalid_parameter", "bound");
+  expectError(s, s.get("/shapes/" + sid + "/mesh?alpha=2"), 422, "invalid_parameter", "alpha");
+  expectError(s, s.post("/shapes/" + sid + "/evaluate", json{{"shape", part("x")}}), 422, "invalid_document", "shape");
+}
+
+TEST_F(BadInput, RoutesAndMethods) {
+  const ServerProcess& s = *server;
+  expectError(s, s.get("/partz"), 404, "not_found", "");
+  expectError(s, s.get("/parts/1/2/3"), 404, "not_found", "");
+  expectError(s, s.put("/parts", part("x")), 405, "method_not_allowed", "");
+  expectError(s, s.del("/health"), 405, "method_not_allowed", "");
+  expectError(s, s.get("/parts/bulk"), 422, "invalid_parameter", "id");  // GET /parts/{id} with id "bulk"
+}
+
+TEST_F(BadInput, BulkReportsBadLinesAndImportsTheGoodOnes) {
+  const ServerProcess& s = *server;
+  const std::string body = part("bulk-a").dump() + "\n" +
+                           "{not json\n" +
+                           "\n" +
+                           part("bulk-b", {{"a1", -1}}).dump() + "\n" +
+                           part("good").dump() + "\n" +
+                           unionOf("bulk-s", {{{"part", "bulk-a"}}}).dump() + "\n" +
+                           part("bulk-c").dump() + "\n" +
+                           R"({"kind":"part","name":"bulk-d","params":{"a1":1e999}})" + "\n";
+  auto r = s.post("/parts/bulk", body, "application/x-ndjson");
+  ASSERT_EQ(r.status, 200) << r.body;
+  EXPECT_EQ(r.json["imported"], 2);
+  EXPECT_EQ(r.json["failed"], 5);
+  ASSERT_EQ(r.json["errors"].size(), 5u) << r.body;
+  const json& e = r.json["errors"];
+  EXPECT_EQ(e[0]["line"], 2);
+  EXPECT_EQ(e[0]["error"]["code"], "malformed_json");
+  EXPECT_EQ(e[1]["line"], 4);
+  EXPECT_EQ(e[1]["error"]["path"], "params.a1");
+  EXPECT_EQ(e[2]["line"], 5);
+  EXPECT_EQ(e[2]["error"]["code"], "conflict");
+  EXPECT_EQ(e[3]["line"], 6);
+  EXPECT_EQ(e[3]["error"]["code"], "invalid_document");
+  EXPECT_EQ(e[4]["line"], 8);
+  EXPECT_EQ(e[4]["error"]["path"], "params.a1");
+  for (const auto& err : e) EXPECT_TRUE(err["error"].contains("message") && err["error"].contains("path")) << err;
+  EXPECT_EQ(s.get("/parts?name=bulk-a").json["items"].size(), 1u);
+  EXPECT_EQ(s.get("/parts?name=bulk-c").json["items"].size(), 1u);
+  EXPECT_TRUE(s.get("/parts?name=bulk-b").json["items"].empty());
+  expectError(s, s.post("/parts/bulk", std::string("[{\"kind\":")), 400, "malformed_json", nullptr);
+  EXPECT_EQ(s.get("/health").status, 200);
+}
+
+TEST(BadInputToken, WritesNeedTheTokenReadsDoNot) {
+  TempDir dir;
+  ServerProcess server({"--db", dir.file("token.sqlite"), "--token", "s3cret"});
+  expectError(server, server.post("/parts", part("t")), 401, "unauthorized");
+  server.setToken("wrong");
+  expectError(server, server.post("/parts", part("t")), 401, "unauthorized");
+  expectError(server, server.post("/parts/bulk", part("t").dump()), 401, "unauthorized");
+  expectError(server, server.del("/parts/1"), 401, "unauthorized");
+  server.setToken("s3cret");
+  auto created = server.post("/parts", part("t"));
+  ASSERT_EQ(created.status, 201) << created.body;
+  const std::string at = "/parts/" + std::to_string(created.json["id"].get<int64_t>());
+  server.setToken("");
+  EXPECT_EQ(server.get(at).status, 200);
+  EXPECT_EQ(server.get("/parts").status, 200);
+  expectError(server, server.put(at, part("t", {{"a1", 2}})), 401, "unauthorized");
+  EXPECT_EQ(server.get(at).json["version"], 1);
+  // Evaluating a stored shape only reads: no token needed.
+  server.setToken("s3cret");
+  auto shape = server.post("/shapes", json{{"kind", "shape"}, {"name", "ts"}, {"tree", {{"part", "t"}}}});
+  ASSERT_EQ(shape.status, 201) << shape.body;
+  server.setToken("");
+  EXPECT_EQ(server.post("/shapes/" + std::to_string(shape.json["id"].get<int64_t>()) + "/evaluate",
+                        json{{"resolution", 16}})
+                .status,
+            200);
+}
+
+}  // namespace
