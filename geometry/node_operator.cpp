@@ -55,7 +55,11 @@ double necessityOf(AlphaLevels v) { return v.lower <= 1.0f ? 1.0 - double(v.lowe
 
 AlphaLevels levelsFromPossibility(double possibility, double necessity) {
   const float u = static_cast<float>(std::clamp(possibility, 0.0, 1.0));
-  return {u, necessity > 0.0 ? static_cast<float>(1.0 - std::min(necessity, 1.0)) : kNeverInside};
+  if (!(necessity > 0.0)) return {u, kNeverInside};
+  float l = static_cast<float>(1.0 - std::min(necessity, 1.0));
+  // Rounding must not break N <= Π: round l up (lower(α) only shrinks) until 1 − l <= u.
+  while (1.0 - double(l) > double(u)) l = std::nextafter(l, 2.0f);
+  return {u, l};
 }
 
 NodeOperator::NodeOperator(const OperatorConfig& config)
@@ -103,8 +107,9 @@ AlphaLevelBounds NodeOperator::combine(CsgOp op, const AlphaLevelBounds& a, cons
   const Range p = combineRange(op, possibility(a), difference ? necessity(b) : possibility(b));
   Range n = combineRange(op, necessity(a), difference ? possibility(b) : necessity(b));
   n = {std::min(n.lo, p.lo), std::min(n.hi, p.hi)};  // N' = min(N', Π') is monotone too
-  const AlphaLevels least = levelsFromPossibility(p.lo, n.hi), most = levelsFromPossibility(p.hi, n.lo);
-  return {least.upper, most.upper, least.lower, most.lower};
+  // l falls as N' rises and (by the rounding rule of levelsFromPossibility) as Π' rises.
+  return {levelsFromPossibility(p.lo, 0.0).upper, levelsFromPossibility(p.hi, 0.0).upper,
+          levelsFromPossibility(p.hi, n.hi).lower, levelsFromPossibility(p.lo, n.lo).lower};
 }
 
 }  // namespace fsdb

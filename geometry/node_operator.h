@@ -13,7 +13,8 @@
 // and converts back: u = Π', l = 1 − N' where N' > 0, else kNeverInside. With T = min this is
 // exactly alpha_field.h's Booleans, except on the single level α = 1: a point that Zadeh puts in
 // lower(1) only (l = 1, N = 0) becomes kNeverInside here (measure zero in α; volumes at α < 1
-// are unaffected). The conversions are exact in double precision (1 − l of a float is exact).
+// are unaffected). The conversions are exact in double precision (1 − l of a float is exact); for
+// other operators the float l is rounded up where needed to keep 1 − l <= u.
 //
 // Blends (kind "blend": ext_max, int_max) act on real fields, inside where f ≥ 0. The node
 // applies them to f = Π − 1/2 and f = N − 1/2 (the 0.5 level is the shape, seed 000 §2.1) and
