@@ -54,10 +54,16 @@ double possibilityOf(AlphaLevels v) { return v.upper; }
 double necessityOf(AlphaLevels v) { return v.lower <= 1.0f ? 1.0 - double(v.lower) : 0.0; }
 
 AlphaLevels levelsFromPossibility(double possibility, double necessity) {
-  const float u = static_cast<float>(std::clamp(possibility, 0.0, 1.0));
+  // Floats round u down and l up (upper(α) and lower(α) only shrink; as fuzzy_part_field.h), so
+  // u = 1 only where Π = 1 and l = 0 only where N = 1.
+  const double p = std::clamp(possibility, 0.0, 1.0);
+  float u = static_cast<float>(p);
+  if (double(u) > p) u = std::nextafter(u, 0.0f);
   if (!(necessity > 0.0)) return {u, kNeverInside};
-  float l = static_cast<float>(1.0 - std::min(necessity, 1.0));
-  // Rounding must not break N <= Π: round l up (lower(α) only shrinks) until 1 − l <= u.
+  const double complement = 1.0 - std::min(necessity, 1.0);
+  float l = static_cast<float>(complement);
+  if (double(l) < complement) l = std::nextafter(l, 2.0f);
+  // Rounding must not break N <= Π: round l further up until 1 − l <= u.
   while (1.0 - double(l) > double(u)) l = std::nextafter(l, 2.0f);
   return {u, l};
 }

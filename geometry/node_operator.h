@@ -14,7 +14,8 @@
 // exactly alpha_field.h's Booleans, except on the single level α = 1: a point that Zadeh puts in
 // lower(1) only (l = 1, N = 0) becomes kNeverInside here (measure zero in α; volumes at α < 1
 // are unaffected). The conversions are exact in double precision (1 − l of a float is exact); for
-// other operators the float l is rounded up where needed to keep 1 − l <= u.
+// other operators u is rounded down and l up (so u = 1 only where Π' = 1), and l further up
+// where needed to keep 1 − l <= u.
 //
 // Blends (kind "blend": ext_max, int_max) act on real fields, inside where f ≥ 0. The node
 // applies them to f = Π − 1/2 and f = N − 1/2 (the 0.5 level is the shape, seed 000 §2.1) and
@@ -27,7 +28,9 @@
 // NB = 1, and 1 where ΠA = 1 and NB = 0). Every t-norm satisfies these already; a blend does not
 // (Ext_max(x, x) = x + delta/4 would give every point of space, far from both operands,
 // membership delta/4), and without them the node's support would not stay inside its
-// children's (the bounding box contract of csg_field.h).
+// children's (the bounding box contract of csg_field.h). They patch exact 0 and 1 only: where
+// both memberships are small but positive Ext_max still adds up to delta/4, so upper(α) for
+// α < delta/4 fills the children's supports (grown boxes of smoothed parts).
 //
 // Monotonicity. Every t-norm of the catalogue is non-decreasing in each argument (difference
 // non-increasing in B), so N ≤ Π carries over to N' ≤ Π'. smooth_and_hat, ext_max and int_max

@@ -17,9 +17,21 @@ std::shared_ptr<const AlphaFieldSource> smoothCrispParts(const std::shared_ptr<c
   return field;
 }
 
+namespace {
+
+NodeOperator checkedOperator(const OperatorConfig& config) {
+  try {
+    return NodeOperator(config);
+  } catch (const Error& e) {
+    throw e.withPathPrefix("operator");
+  }
+}
+
+}  // namespace
+
 SmoothCsgField::SmoothCsgField(CsgOp op, const OperatorConfig& config, const LeafSmoothing& smoothing,
                                std::vector<std::shared_ptr<const AlphaFieldSource>> children)
-    : op_(op), operator_(config) {
+    : op_(op), operator_(checkedOperator(config)) {
   validateLeafSmoothing(smoothing);
   if (children.size() < 2)
     throw Error(errc::kInvalidDocument, "a Boolean node needs at least two children", "children");

@@ -16,8 +16,9 @@
 // - boundsOver: NodeOperator's bounds of the children's bounds (sound when theirs are).
 // - boundingBox: csgBoundingBox of the (smoothed) children: the boundary values of
 //   node_operator.h keep the support inside it.
-// Errors: NodeOperator's (paths "name", parameters), validateLeafSmoothing's ("range",
-// "step..."), and errc::kInvalidDocument "children" with fewer than two children.
+// Errors (paths as in a node document): NodeOperator's under "operator" ("operator.name",
+// "operator.n"), validateLeafSmoothing's ("range", "step.n"), and errc::kInvalidDocument
+// "children" with fewer than two children.
 #include <memory>
 #include <vector>
 

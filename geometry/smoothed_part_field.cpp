@@ -14,6 +14,10 @@ double defaultSmoothingRange(const PlacedSuperquadric& part) {
 
 namespace {
 
+// Below this N = μ is lost in l = 1 − N as a float (1 − 2^-25 rounds to 1): flush to 0 so that
+// Π and N agree on the support (and the boundary values of node_operator.h apply there).
+constexpr double kSmallestMembership = 0x1p-24;
+
 PlacedSuperquadric crispPart(const FuzzyPartField& leaf) {
   if (!leaf.isCrisp())
     throw Error(errc::kInvalidDocument, "only a crisp part is smoothed into a membership field", "part");
@@ -45,7 +49,8 @@ SmoothedPartField::SmoothedPartField(const FuzzyPartField& leaf, const LeafSmoot
 
 double SmoothedPartField::membership(const Vec3& p) const {
   if (p.x < lo_.x || p.y < lo_.y || p.z < lo_.z || p.x > hi_.x || p.y > hi_.y || p.z > hi_.z) return 0.0;
-  return (*step_)(-part_.pseudoDistance(p) / range_);  // seed 000 §2.1: μ(F(P))
+  const double mu = (*step_)(-part_.pseudoDistance(p) / range_);  // seed 000 §2.1: μ(F(P))
+  return mu < kSmallestMembership ? 0.0 : mu;
 }
 
 AlphaLevels SmoothedPartField::levelsAt(const Vec3& p) const {

@@ -6,8 +6,10 @@
 // with d the part's pseudo signed distance (placed_superquadric.h: negative inside, in world
 // units), `step` a smooth unit step of the catalogue rising from 0 at −1 to 1 at +1 with
 // step(0) = 1/2 (so the part's own surface is exactly the 0.5 level), and R > 0 the node's
-// rising range. Its alpha field is Π = N = μ: u = μ, l = 1 − μ where μ > 0, else kNeverInside
-// (node_operator.h).
+// rising range. Memberships below 2^-24 are flushed to 0 (1 − μ would round to 1 in a float l).
+// Its alpha field is Π = N = μ: u = μ, l = 1 − μ where μ > 0, else kNeverInside
+// (node_operator.h). So are the pairs of smooth nodes above crisp parts only: lower(α) =
+// {μ ≥ 1 − α} and upper(α) = {μ ≥ α} meet at the 0.5 level and swap above α = 1/2.
 //
 // Support: μ = 0 outside the part's bounding box grown by R on every side. For an undeformed part
 // step(−d/R) is 0 there anyway (the radial pseudo distance is at least the Euclidean distance to

@@ -183,7 +183,10 @@ TEST(SmoothCsgField, SmoothsCrispPartsBelowZadehNodesAndKeepsFuzzyOnes) {
 }
 
 TEST(SmoothCsgField, RefusesBadNodes) {
-  expectInvalidParameter([] { node(CsgOp::kUnion, {"bezier", {{"n", 0.0}}, {}}, twoSpheres()); }, "n");
+  expectInvalidParameter([] { node(CsgOp::kUnion, {"bezier", {{"n", 0.0}}, {}}, twoSpheres()); }, "operator.n");
+  expectInvalidParameter([] { node(CsgOp::kUnion, {"polynomial", {}, {}}, twoSpheres()); }, "operator.name");
+  expectInvalidParameter([] { node(CsgOp::kUnion, {"bezier", {}, {}}, twoSpheres(), {{}, {"sigmoid", {{"epsilon", 3.0}}, {}}}); },
+                         "step.epsilon");
   expectInvalidParameter([] { node(CsgOp::kUnion, {"bezier", {}, {}}, twoSpheres(), {0.0, {"polynomial", {}, {}}}); },
                          "range");
   // Checked even where no crisp part takes it.
