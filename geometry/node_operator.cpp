@@ -60,12 +60,12 @@ AlphaLevels levelsFromPossibility(double possibility, double necessity) {
   float u = static_cast<float>(p);
   if (double(u) > p) u = std::nextafter(u, 0.0f);
   if (!(necessity > 0.0)) return {u, kNeverInside};
-  const double complement = 1.0 - std::min(necessity, 1.0);
-  float l = static_cast<float>(complement);
-  if (double(l) < complement) l = std::nextafter(l, 2.0f);
-  // Rounding must not break N <= Π: round l further up until 1 − l <= u.
-  while (1.0 - double(l) > double(u)) l = std::nextafter(l, 2.0f);
-  return {u, l};
+  auto roundUp = [](double x) {
+    float f = static_cast<float>(x);
+    return double(f) < x ? std::nextafter(f, 2.0f) : f;
+  };
+  // Rounding must not break N <= Π: l >= 1 − u too (1 − u of a float is exact in double).
+  return {u, std::max(roundUp(1.0 - std::min(necessity, 1.0)), roundUp(1.0 - double(u)))};
 }
 
 NodeOperator::NodeOperator(const OperatorConfig& config)

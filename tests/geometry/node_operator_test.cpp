@@ -54,6 +54,14 @@ TEST(NodeOperator, PossibilityAndNecessityOfLevels) {
   EXPECT_EQ(back.lower, 0.25f);
   EXPECT_EQ(levelsFromPossibility(0.3, 0.0).lower, kNeverInside);
   EXPECT_EQ(levelsFromPossibility(1.5, 0.0).upper, 1.0f);
+  // Rounding: u down, l up, and 1 − l <= u kept, also next to 1 where float ulps differ.
+  for (double m : {0.99999997, 0.9999, 1.0 - 1e-12, 0.3 + 1e-12}) {
+    const AlphaLevels v = levelsFromPossibility(m, m);
+    EXPECT_LE(double(v.upper), m) << m;
+    EXPECT_GE(double(v.lower), 1.0 - m) << m;
+    EXPECT_LE(necessityOf(v), possibilityOf(v)) << m;
+  }
+  EXPECT_LT(levelsFromPossibility(1.0 - 1e-12, 0.0).upper, 1.0f);
 }
 
 // With T = min the pair rules are alpha_field.h's Booleans, except l = 1 → kNeverInside (the
