@@ -124,13 +124,16 @@ AlphaLevelBounds CsgField::boundsOver(const Vec3& lo, const Vec3& hi) const {
   return acc;
 }
 
-void CsgField::boundingBox(Vec3* lo, Vec3* hi) const {
-  children_[0]->boundingBox(lo, hi);
-  if (op_ == CsgOp::kDifference) return;
-  for (size_t i = 1; i < children_.size(); ++i) {
+void CsgField::boundingBox(Vec3* lo, Vec3* hi) const { csgBoundingBox(op_, children_, lo, hi); }
+
+void csgBoundingBox(CsgOp op, const std::vector<std::shared_ptr<const AlphaFieldSource>>& children, Vec3* lo,
+                    Vec3* hi) {
+  children[0]->boundingBox(lo, hi);
+  if (op == CsgOp::kDifference) return;
+  for (size_t i = 1; i < children.size(); ++i) {
     Vec3 clo, chi;
-    children_[i]->boundingBox(&clo, &chi);
-    if (op_ == CsgOp::kUnion) {
+    children[i]->boundingBox(&clo, &chi);
+    if (op == CsgOp::kUnion) {
       *lo = {std::min(lo->x, clo.x), std::min(lo->y, clo.y), std::min(lo->z, clo.z)};
       *hi = {std::max(hi->x, chi.x), std::max(hi->y, chi.y), std::max(hi->z, chi.z)};
     } else {
@@ -138,7 +141,7 @@ void CsgField::boundingBox(Vec3* lo, Vec3* hi) const {
       *hi = {std::min(hi->x, chi.x), std::min(hi->y, chi.y), std::min(hi->z, chi.z)};
     }
   }
-  if (op_ == CsgOp::kIntersection) {  // an empty overlap collapses to a point
+  if (op == CsgOp::kIntersection) {  // an empty overlap collapses to a point
     hi->x = std::max(hi->x, lo->x);
     hi->y = std::max(hi->y, lo->y);
     hi->z = std::max(hi->z, lo->z);

@@ -92,6 +92,8 @@ class FuzzyPartField : public AlphaFieldSource {
   bool necessarilyInside(const Vec3& p, double alpha) const;
 
   const FuzzyPart& part() const { return part_; }
+  // Every value crisp: the field is the part's indicator, (1, 0) inside and (0, never) outside.
+  bool isCrisp() const { return crisp_.has_value(); }
   double tolerance() const { return options_.tolerance; }
   // How many queries ran out of budget and answered conservatively, since construction.
   std::uint64_t budgetExhaustions() const { return exhaustions_.load(); }

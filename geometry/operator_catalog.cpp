@@ -476,16 +476,19 @@ void checkParameter(const ParamSpec& p, double v) {
   requireInRange(p.name, v, p.min, p.minInclusive, p.max, p.maxInclusive);
 }
 
-// The nested step of a blend: a known step with its range parameter left at 1.
-OperatorConfig validateNestedStep(const OperatorConfig& blendConfig) {
-  if (blendConfig.step.size() > 1)
+}  // namespace
+
+const std::vector<OperatorSpec>& operatorCatalog() { return catalog().specs; }
+
+OperatorConfig validateNestedStep(const OperatorConfig& owner) {
+  if (owner.step.size() > 1)
     throw Error(errc::kInvalidParameter,
-                "'" + blendConfig.name + "' takes one step function; got " +
-                    std::to_string(blendConfig.step.size()),
+                "'" + owner.name + "' takes one step function; got " +
+                    std::to_string(owner.step.size()),
                 "step");
-  OperatorConfig step = blendConfig.step.empty() ? OperatorConfig{"polynomial", {}, {}}
+  OperatorConfig step = owner.step.empty() ? OperatorConfig{"polynomial", {}, {}}
                                                  // seed 001 §4: H_3, C^2
-                                                 : blendConfig.step.front();
+                                                 : owner.step.front();
   try {
     step = validateOperator(step);
   } catch (const Error& e) {
@@ -494,23 +497,20 @@ OperatorConfig validateNestedStep(const OperatorConfig& blendConfig) {
   const std::string& kind = findOperator(step.name)->kind;
   if (kind != "step")
     throw Error(errc::kInvalidParameter,
-                "the step of '" + blendConfig.name + "' must be a step function; '" + step.name +
+                "the step of '" + owner.name + "' must be a step function; '" + step.name +
                     "' is of kind " + kind,
                 "step.name");
   for (const char* range : {"epsilon", "R"}) {
     auto it = step.params.find(range);
     if (it != step.params.end() && it->second != 1.0)
       throw Error(errc::kInvalidParameter,
-                  std::string("the blend's epsilon sets the rising range, so the step's ") + range +
+                  std::string("the rising range is set by '") + owner.name +
+                      "' (a blend's epsilon, a CSG node's range), so the step's " + range +
                       " must stay 1; got " + formatNumber(it->second),
                   std::string("step.") + range);
   }
   return step;
 }
-
-}  // namespace
-
-const std::vector<OperatorSpec>& operatorCatalog() { return catalog().specs; }
 
 const OperatorSpec* findOperator(const std::string& name) {
   for (const OperatorSpec& spec : operatorCatalog())

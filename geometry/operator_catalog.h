@@ -57,6 +57,12 @@ struct OperatorConfig {
 // keep its own range parameter (epsilon, or R) at 1: the blend's epsilon is the rising range.
 OperatorConfig validateOperator(const OperatorConfig& config);
 
+// The validated step of `owner` (owner.step: 0 or 1 element; none gives polynomial{n = 3}): a
+// known step of kind "step" whose range parameter (epsilon, or R) stays 1, because the owner sets
+// the rising range (a blend's epsilon; a CSG node's "range", geometry/smoothed_part_field.h).
+// Paths "step", "step.name", "step.<parameter>".
+OperatorConfig validateNestedStep(const OperatorConfig& owner);
+
 enum class Combine { Intersection, Union, Difference };
 
 class BinaryOperator {

@@ -6,6 +6,7 @@
 #include "geometry/error.h"
 #include "geometry/fuzzy_part_field.h"
 #include "query/csg_text.h"
+#include "geometry/smooth_csg_field.h"
 #include "query/json_body.h"
 #include "query/operator_json.h"
 #include "query/part_json.h"
@@ -133,18 +134,23 @@ struct Walker {
     else if (op == "difference") csg = CsgOp::kDifference;
     else throw Error(errc::kInvalidDocument, "unknown op '" + op + "'; expected union, intersection, difference", opPath);
     for (auto it = node.begin(); it != node.end(); ++it)
-      if (it.key() != "op" && it.key() != "operator" && it.key() != "children")
+      if (it.key() != "op" && it.key() != "operator" && it.key() != "children" && it.key() != "range" &&
+          it.key() != "step")
         throw Error(errc::kInvalidDocument,
-                    "unknown field '" + it.key() + "' in a Boolean node; expected op, operator, children",
+                    "unknown field '" + it.key() + "' in a Boolean node; expected op, operator, children, range, step",
                     joinPath(path, it.key()));
-    if (node.contains("operator")) {
-      const OperatorConfig config = parseOperatorConfig(node["operator"], joinPath(path, "operator"));
-      if (config.name != "zadeh")
-        throw Error(errc::kInvalidParameter,
-                    "only the zadeh operator is evaluated at CSG nodes so far (exact alpha-cut Booleans); '" +
-                        config.name + "' is in the catalogue but its voxel evaluation is not built yet",
-                    joinPath(joinPath(path, "operator"), "name"));
-    }
+    OperatorConfig config{"zadeh", {}, {}};
+    if (node.contains("operator")) config = parseOperatorConfig(node["operator"], joinPath(path, "operator"));
+    const bool smooth = config.name != "zadeh";  // geometry/smooth_csg_field.h
+    if (smooth && out.smoothOperatorPath.empty()) out.smoothOperatorPath = joinPath(path, "operator");
+    LeafSmoothing smoothing;
+    for (const char* key : {"range", "step"})
+      if (node.contains(key) && !smooth)
+        throw Error(errc::kInvalidDocument,
+                    std::string(key) + " applies to smooth operators only (the zadeh Booleans keep crisp parts crisp)",
+                    joinPath(path, key));
+    if (node.contains("range")) smoothing.range = requireNumber(node["range"], joinPath(path, "range"));
+    if (node.contains("step")) smoothing.step = parseOperatorConfig(node["step"], joinPath(path, "step"));
     const std::string cp = joinPath(path, "children");
     const auto& children = requireArray(requireField(node, "children", path), cp);
     if (children.size() < 2) throw Error(errc::kInvalidDocument, "a Boolean node needs at least two children", cp);
@@ -158,7 +164,12 @@ struct Walker {
       t->children.push_back(std::move(child));
     }
     *tree = t;
-    return std::make_shared<CsgField>(csg, std::move(fields));
+    if (!smooth) return std::make_shared<CsgField>(csg, std::move(fields));
+    try {
+      return std::make_shared<SmoothCsgField>(csg, config, smoothing, std::move(fields));
+    } catch (const Error& e) {
+      throw e.withPathPrefix(path);
+    }
   }
 };
 

@@ -7,7 +7,11 @@
 // A part document ({"kind":"part",...}) is accepted too, as a one-leaf tree.
 //
 // Semantics: each leaf is a fuzzy superquadric part (geometry/fuzzy_part_field.h); each inner
-// node a Boolean with the exact alpha-cut semantics of SPEC §3 (geometry/csg_field.h). A leaf's
+// node a Boolean with the exact alpha-cut semantics of SPEC §3 (geometry/csg_field.h), or, with
+// a non-zadeh "operator" (fuzzy_operator or blend of GET /operators), a fuzzy-set combination of
+// possibility and necessity with crisp parts smoothed to μ(F(P)) (geometry/smooth_csg_field.h);
+// such a node takes "range" (world units, > 0) and "step" (a step function, default polynomial
+// n = 3), e.g. {"op":"union","operator":{"name":"bezier","n":3},"range":0.1,"children":[...]}. A leaf's
 // "transform" places the inline part; a part that has its own transform cannot take a second
 // one (fuzzy placements do not compose into one placement in general), which is an error.
 //
@@ -21,8 +25,8 @@
 // and counts once against maxNodes. Unknown references are unknown_reference (422) with the
 // path of the reference; a shape that reaches itself is reference_cycle (422). Without a
 // resolver, references are invalid_document naming the path.
-// Not yet evaluated: node operators other than zadeh, and a transform on a "ref" leaf (a fuzzy
-// placement of a whole subtree does not reduce to the placements of its parts).
+// Not yet evaluated: a transform on a "ref" leaf (a fuzzy placement of a whole subtree does not
+// reduce to the placements of its parts).
 // Limits: more than maxNodes nodes is limit_exceeded.
 #include <cstdint>
 #include <functional>
@@ -42,6 +46,9 @@ struct ParsedShape {
   std::shared_ptr<const CsgTree> tree;            // the same tree of fuzzy parts (method boundary)
   size_t nodeCount = 0;  // leaves and Boolean nodes
   size_t partCount = 0;  // leaves
+  // JSON path of the first non-zadeh node operator ("shape.tree.operator"); empty if none. The
+  // boundary method (tree) knows only the zadeh Booleans.
+  std::string smoothOperatorPath;
 };
 
 // A stored document that a reference names.

@@ -73,6 +73,11 @@ Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& 
   const std::vector<double> alphas = parseAlphas(request);
   const auto started = std::chrono::steady_clock::now();
   const ParsedShape shape = parseShapeField(requireField(request, "shape", ""), "shape", limits.maxNodes, resolver);
+  if (boundary && !shape.smoothOperatorPath.empty())
+    throw Error(errc::kInvalidParameter,
+                "method boundary replaces parts by crisp corner shapes per level and knows only the zadeh Booleans; "
+                "use method envelope with smooth operators",
+                shape.smoothOperatorPath);
 
   Vec3 lo, hi;
   shape.field->boundingBox(&lo, &hi);

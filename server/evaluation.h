@@ -8,7 +8,8 @@
 //   alphas:     levels in [0,1] (default [0, 0.25, 0.5, 0.75, 1]), at most 101 of them
 //   method:     "envelope" (exact per-voxel levels, the default) or "boundary" (the paper's
 //               corner shapes of smallest/largest volume per level, seed 004 eq. 4,
-//               geometry/boundary_method.h: one crisp grid per level and bound).
+//               geometry/boundary_method.h: one crisp grid per level and bound); only with
+//               zadeh node operators, else invalid_parameter at the first smooth operator's path.
 // Response: {"alphas":[{"alpha","lower_volume","upper_volume"}], "voxel_size", "active_voxels",
 //            "millis", "parts", "nodes", "grid":{"leaf_nodes","tiles","memory_bytes"}}
 #include <memory>

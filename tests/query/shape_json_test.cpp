@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include "geometry/envelope_grid.h"
 #include "geometry/error.h"
+#include "geometry/smooth_csg_field.h"
 
 namespace fsdb {
 namespace {
@@ -56,9 +58,6 @@ TEST(ShapeJson, ErrorsNameTheJsonPath) {
   EXPECT_EQ(errorOf({{"tree", {{"op", "union"}, {"children", {ball(1, 0)}}}}}).path(), "shape.tree.children");
   EXPECT_EQ(errorOf({{"tree", {{"ref", "lamp"}}}}).path(), "shape.tree.ref");
   EXPECT_EQ(errorOf({{"csg", "C = A + B"}}).path(), "shape.csg");
-  EXPECT_EQ(errorOf({{"tree", {{"op", "union"}, {"operator", {{"name", "dombi"}}}, {"children", {ball(1, 0), ball(1, 1)}}}}})
-                .path(),
-            "shape.tree.operator.name");
   EXPECT_EQ(errorOf({{"tree", {{"op", "union"}, {"operator", {{"name", "nope"}}}, {"children", {ball(1, 0), ball(1, 1)}}}}})
                 .code(),
             errc::kUnknownName);
@@ -67,6 +66,92 @@ TEST(ShapeJson, ErrorsNameTheJsonPath) {
   EXPECT_EQ(errorOf({{"kind", "curve"}}).path(), "shape.kind");
   EXPECT_EQ(errorOf({{"tree", {{"op", "union"}, {"children", {ball(1, 0), ball(1, 1)}}, {"extra", 1}}}}).path(),
             "shape.tree.extra");
+}
+
+json smoothUnion(json op, json children) {
+  return {{"tree", {{"op", "union"}, {"operator", std::move(op)}, {"children", std::move(children)}}}};
+}
+
+TEST(ShapeJson, SmoothOperatorsAreAcceptedWithTheirParameters) {
+  json doc = smoothUnion({{"name", "bezier"}, {"n", 3}}, {ball(1, 0), ball(1, 1.9)});
+  doc["tree"]["range"] = 0.2;
+  doc["tree"]["step"] = {{"name", "bspline"}, {"m", 4}};
+  const ParsedShape s = parseShapeField(doc, "shape", 100);
+  const auto* node = dynamic_cast<const SmoothCsgField*>(s.field.get());
+  ASSERT_NE(node, nullptr);
+  EXPECT_EQ(node->nodeOperator().config().name, "bezier");
+  EXPECT_EQ(node->nodeOperator().config().params.at("n"), 3.0);
+  const auto* leaf = dynamic_cast<const SmoothedPartField*>(node->children()[0].get());
+  ASSERT_NE(leaf, nullptr);
+  EXPECT_EQ(leaf->range(), 0.2);
+  EXPECT_NEAR(leaf->membership({1, 0, 0}), 0.5, 1e-12);  // the sphere's surface
+  EXPECT_EQ(s.smoothOperatorPath, "shape.tree.operator");
+  EXPECT_EQ(s.nodeCount, 3u);
+  // Blends, and the default range: 10% of the smallest half-length (a1 = 1: 0.1).
+  const ParsedShape e = parseShapeField(smoothUnion({{"name", "ext_max"}, {"delta", 0.1}}, {ball(1, 0), ball(1, 1.9)}),
+                                        "shape", 100);
+  const auto* blended = dynamic_cast<const SmoothCsgField*>(e.field.get());
+  ASSERT_NE(blended, nullptr);
+  EXPECT_DOUBLE_EQ(dynamic_cast<const SmoothedPartField&>(*blended->children()[1]).range(), 0.1);
+  // zadeh stays the exact Boolean.
+  EXPECT_TRUE(parseShapeField(smoothUnion({{"name", "zadeh"}}, {ball(1, 0), ball(1, 1.9)}), "shape", 100)
+                  .smoothOperatorPath.empty());
+}
+
+TEST(ShapeJson, BadSmoothNodeParametersNameTheirPath) {
+  auto pathOf = [](json tree) { return errorOf({{"tree", std::move(tree)}}).path(); };
+  json node = smoothUnion({{"name", "bezier"}, {"n", 0}}, {ball(1, 0), ball(1, 1)})["tree"];
+  EXPECT_EQ(pathOf(node), "shape.tree.operator.n");
+  node["operator"] = {{"name", "polynomial"}};  // a step is no node operator
+  EXPECT_EQ(pathOf(node), "shape.tree.operator.name");
+  node["operator"] = {{"name", "bezier"}};
+  for (double bad : {0.0, -1.0}) {
+    node["range"] = bad;
+    EXPECT_EQ(errorOf({{"tree", node}}).code(), errc::kInvalidParameter);
+    EXPECT_EQ(pathOf(node), "shape.tree.range");
+  }
+  node["range"] = "wide";
+  EXPECT_EQ(pathOf(node), "shape.tree.range");
+  node.erase("range");
+  node["step"] = {{"name", "polynomial"}, {"n", 99}};
+  EXPECT_EQ(pathOf(node), "shape.tree.step.n");
+  node["step"] = {{"name", "rising_cutoff"}};  // step(0) != 1/2
+  EXPECT_EQ(pathOf(node), "shape.tree.step.name");
+  node["step"] = {{"name", "polynomial"}, {"epsilon", 2}};  // the range is the node's
+  EXPECT_EQ(pathOf(node), "shape.tree.step.epsilon");
+  // range and step belong to smooth operators only.
+  json zadeh = smoothUnion({{"name", "zadeh"}}, {ball(1, 0), ball(1, 1)})["tree"];
+  zadeh["range"] = 0.1;
+  EXPECT_EQ(pathOf(zadeh), "shape.tree.range");
+  // Nested nodes report their own path.
+  json nested = {{"op", "union"}, {"children", {ball(1, 0), node}}};
+  EXPECT_EQ(pathOf(nested), "shape.tree.children[1].step.epsilon");
+}
+
+// End to end: parse, then the envelope grid of a blended union of two overlapping spheres.
+// Crisp parts under a smooth node have Π = N = μ, and so does the node: lower(α) = {μ ≥ 1 − α}
+// and upper(α) = {μ ≥ α}. They are nested (lower ⊆ upper) for α <= 1/2, meet at the blended
+// shape at α = 1/2, and swap above it: lower(α) = upper(1 − α) (node_operator.h).
+TEST(ShapeJson, BlendedUnionEvaluatesToNestedFuzzyVolumes) {
+  json doc = smoothUnion({{"name", "ext_max"}}, {ball(1, 0), ball(1, 1.9)});
+  doc["tree"]["range"] = 0.3;
+  const ParsedShape blended = parseShapeField(doc, "shape", 100);
+  const ParsedShape zadeh = parseShapeField(smoothUnion({{"name", "zadeh"}}, {ball(1, 0), ball(1, 1.9)}), "shape", 100);
+  const std::vector<double> alphas{0.0, 0.25, 0.5, 0.75, 1.0};
+  const auto volumes = EnvelopeGrid::build(*blended.field, 0.05).volumes(alphas);
+  const double zadehHalf = EnvelopeGrid::build(*zadeh.field, 0.05).volumes({0.5})[0].upper_volume;
+  for (size_t i = 0; i < volumes.size(); ++i) {
+    if (alphas[i] <= 0.5) EXPECT_LE(volumes[i].lower_volume, volumes[i].upper_volume) << alphas[i];
+    if (i > 0) {  // nested in α: upper shrinks, lower grows
+      EXPECT_LE(volumes[i].upper_volume, volumes[i - 1].upper_volume) << alphas[i];
+      EXPECT_GE(volumes[i].lower_volume, volumes[i - 1].lower_volume) << alphas[i];
+    }
+    // The swap above 1/2 (up to the boundary voxels of one level set).
+    EXPECT_NEAR(volumes[i].lower_volume, volumes[volumes.size() - 1 - i].upper_volume, 0.02) << alphas[i];
+  }
+  EXPECT_NEAR(volumes[2].lower_volume, volumes[2].upper_volume, 1e-9);  // one shape at 1/2
+  EXPECT_GT(volumes[2].upper_volume, zadehHalf);                        // Ext_max grows the union
+  EXPECT_GT(volumes[0].upper_volume, volumes[4].upper_volume);           // graded: the levels differ
 }
 
 }  // namespace

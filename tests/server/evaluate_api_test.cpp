@@ -125,9 +125,17 @@ TEST_F(EvaluateApi, BadRequestsNameTheirPathAndLimit) {
   json smooth = {{"kind", "shape"},
                  {"tree", {{"op", "union"}, {"operator", {{"name", "einstein"}}},
                            {"children", {{{"part", fuzzyBall(1, 1, 1)}}, {{"part", fuzzyBall(1, 1, 1, 1)}}}}}}};
+  r = server->post("/evaluate", json{{"shape", smooth}, {"resolution", 24}, {"alphas", {0.25, 0.5}}});
+  ASSERT_EQ(r.status, 200) << r.body;  // smooth node operators evaluate (README: Operators at CSG nodes)
+  for (const auto& level : r.json["alphas"])
+    EXPECT_LE(level["lower_volume"].get<double>(), level["upper_volume"].get<double>()) << r.body;
+  r = server->post("/evaluate", json{{"shape", smooth}, {"method", "boundary"}});
+  EXPECT_EQ(r.status, 422);  // the boundary method knows only the zadeh Booleans
+  EXPECT_EQ(r.json["error"]["path"], "shape.tree.operator") << r.body;
+  smooth["tree"]["range"] = -1;
   r = server->post("/evaluate", json{{"shape", smooth}});
   EXPECT_EQ(r.status, 422);
-  EXPECT_EQ(r.json["error"]["path"], "shape.tree.operator.name") << r.body;
+  EXPECT_EQ(r.json["error"]["path"], "shape.tree.range") << r.body;
 
   json noSize = {{"kind", "part"}, {"params", {{"eps1", 1}}}};
   r = server->post("/evaluate", json{{"shape", noSize}});

@@ -1,0 +1,85 @@
+#pragma once
+// NodeOperator: how a CSG node with a fuzzy_operator or blend of the catalogue
+// (geometry/operator_catalog.h; SPEC §2 "operator", seeds 000 and 001) combines the alpha fields
+// (geometry/alpha_field.h) of its children.
+//
+// Possibility and necessity. For any alpha field, u(p) is exactly the POSSIBILITY that p is
+// inside, Π = u (the sup of α with p ∈ upper(α)), and 1 − l(p) the NECESSITY, N = 1 − l
+// (p ∈ lower(α) ⇔ α ≥ l); l = kNeverInside gives N = 0. N ≤ Π. A node with t-norm T (dual
+// conorm S) combines these pairs as fuzzy sets:
+//   intersection  Π' = T(ΠA, ΠB),      N' = T(NA, NB)
+//   union         Π' = S(ΠA, ΠB),      N' = S(NA, NB)
+//   difference    Π' = T(ΠA, 1 − NB),  N' = T(NA, 1 − ΠB)      (A − B)
+// and converts back: u = Π', l = 1 − N' where N' > 0, else kNeverInside. With T = min this is
+// exactly alpha_field.h's Booleans, except on the single level α = 1: a point that Zadeh puts in
+// lower(1) only (l = 1, N = 0) becomes kNeverInside here (measure zero in α; volumes at α < 1
+// are unaffected). The conversions are exact in double precision (1 − l of a float is exact); for
+// other operators u is rounded down and l up (so u = 1 only where Π' = 1), and l further up
+// where needed to keep 1 − l <= u.
+//
+// Blends (kind "blend": ext_max, int_max) act on real fields, inside where f ≥ 0. The node
+// applies them to f = Π − 1/2 and f = N − 1/2 (the 0.5 level is the shape, seed 000 §2.1) and
+// maps back with Π' = clamp(r + 1/2, 0, 1) (likewise N'). Their delta and epsilon are therefore
+// in MEMBERSHIP units (|f| ≤ 1/2): ext_max's defaults (delta 0.5, epsilon 0.25) blend almost
+// everywhere; delta ≈ 0.1 keeps the blend near the crease.
+//
+// Boundary values. Every operator, blends included, gets the t-norm's values at 0 and 1:
+// T(0, x) = 0, T(1, 1) = 1, S(1, x) = 1, S(0, 0) = 0 (so difference is 0 where ΠA = 0 or
+// NB = 1, and 1 where ΠA = 1 and NB = 0). Every t-norm satisfies these already; a blend does not
+// (Ext_max(x, x) = x + delta/4 would give every point of space, far from both operands,
+// membership delta/4), and without them the node's support would not stay inside its
+// children's (the bounding box contract of csg_field.h). They patch exact 0 and 1 only: where
+// both memberships are small but positive Ext_max still adds up to delta/4, so upper(α) for
+// α < delta/4 fills the children's supports (grown boxes of smoothed parts).
+//
+// Monotonicity. Every t-norm of the catalogue is non-decreasing in each argument (difference
+// non-increasing in B), so N ≤ Π carries over to N' ≤ Π'. smooth_and_hat, ext_max and int_max
+// are not (measured dips of 5e-4, 2e-5 and 4e-4 over [0,1]²; tests/geometry/node_operator_test),
+// so the node always returns N' = min(N', Π') (a no-op for the monotone ones).
+//
+// Bounds (block pruning). For a monotone operator the bounds are its values at the corners of
+// the children's bounds, widened by 1e-9 where they lie strictly inside (0, 1) (rounding dips of
+// 2e-16 measured for dubois_prade and smooth_and). For the others a bound is exact only where
+// the boundary values fix it over the whole box (e.g. a union of two children that are empty
+// there), else [0, 1]: such nodes are evaluated voxel by voxel inside their children's support.
+#include <memory>
+
+#include "geometry/alpha_field.h"
+#include "geometry/csg_field.h"
+#include "geometry/operator_catalog.h"
+
+namespace fsdb {
+
+// Π = u and N = 1 − l (0 for kNeverInside) of a point, and back (see above).
+double possibilityOf(AlphaLevels v);
+double necessityOf(AlphaLevels v);
+AlphaLevels levelsFromPossibility(double possibility, double necessity);
+
+class NodeOperator {
+ public:
+  // Validates (makeBinaryOperator: fsdb::Error with path "name" or the parameter's name); the
+  // kind must be fuzzy_operator or blend.
+  explicit NodeOperator(const OperatorConfig& config);
+
+  // On memberships in [0, 1], with the boundary values above; difference(a, b) = T(a, 1 − b).
+  double combine(CsgOp op, double a, double b) const;
+  // On the levels of two children (the pair rules above).
+  AlphaLevels combine(CsgOp op, AlphaLevels a, AlphaLevels b) const;
+  // Sound bounds of combine over boxes where the children's levels lie within a and b.
+  AlphaLevelBounds combine(CsgOp op, const AlphaLevelBounds& a, const AlphaLevelBounds& b) const;
+
+  const OperatorConfig& config() const { return config_; }
+  bool monotone() const { return monotone_; }
+
+ private:
+  struct Range {
+    double lo, hi;
+  };
+  Range combineRange(CsgOp op, Range a, Range b) const;
+
+  OperatorConfig config_;
+  std::shared_ptr<const BinaryOperator> op_;
+  bool monotone_;
+};
+
+}  // namespace fsdb
