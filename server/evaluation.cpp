@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 
 #include "geometry/boundary_method.h"
 #include "geometry/envelope_grid.h"
@@ -48,19 +49,17 @@ int parseResolution(const nlohmann::json& request, const EvaluationLimits& limit
   return static_cast<int>(n);
 }
 
-}  // namespace
-
-nlohmann::json evaluateRequest(const nlohmann::json& request, const EvaluationLimits& limits,
-                               const ReferenceResolver& resolver) {
-  return evaluateShape(request, limits, resolver).result;
-}
-
-Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& limits,
-                         const ReferenceResolver& resolver) {
+// The one evaluation path: `parse` yields the shape (parsed from the request, or already parsed
+// by the caller); `withShape` says whether the request carries "shape" itself.
+Evaluation evaluate(const nlohmann::json& request, const EvaluationLimits& limits, bool withShape,
+                    const std::function<ParsedShape()>& parse) {
   requireObject(request, "");
   for (auto it = request.begin(); it != request.end(); ++it)
-    if (it.key() != "shape" && it.key() != "resolution" && it.key() != "alphas" && it.key() != "method")
-      throw Error(errc::kInvalidDocument, "unknown field '" + it.key() + "'; expected shape, resolution, alphas, method",
+    if ((!withShape || it.key() != "shape") && it.key() != "resolution" && it.key() != "alphas" &&
+        it.key() != "method")
+      throw Error(errc::kInvalidDocument,
+                  "unknown field '" + it.key() + "'; expected " + (withShape ? "shape, " : "") +
+                      "resolution, alphas, method",
                   it.key());
   bool boundary = false;
   if (request.contains("method")) {
@@ -72,7 +71,7 @@ Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& 
   const int resolution = parseResolution(request, limits);
   const std::vector<double> alphas = parseAlphas(request);
   const auto started = std::chrono::steady_clock::now();
-  const ParsedShape shape = parseShapeField(requireField(request, "shape", ""), "shape", limits.maxNodes, resolver);
+  const ParsedShape shape = parse();
   if (boundary && !shape.smoothOperatorPath.empty())
     throw Error(errc::kInvalidParameter,
                 "method boundary replaces parts by crisp corner shapes per level and knows only the zadeh Booleans; "
@@ -127,6 +126,25 @@ Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& 
             {"tile_voxels", stats.tileVoxels},
             {"memory_bytes", stats.memoryBytes}}}};
   return {std::move(result), std::move(grid)};
+}
+
+}  // namespace
+
+Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& limits,
+                         const ReferenceResolver& resolver) {
+  return evaluate(request, limits, true, [&] {
+    return parseShapeField(requireField(request, "shape", ""), "shape", limits.maxNodes, resolver);
+  });
+}
+
+nlohmann::json evaluateRequest(const nlohmann::json& request, const EvaluationLimits& limits,
+                               const ReferenceResolver& resolver) {
+  return evaluateShape(request, limits, resolver).result;
+}
+
+Evaluation evaluateParsedShape(const nlohmann::json& request, const ParsedShape& shape,
+                               const EvaluationLimits& limits) {
+  return evaluate(request, limits, false, [&] { return shape; });
 }
 
 }  // namespace fsdb

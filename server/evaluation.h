@@ -35,6 +35,11 @@ struct Evaluation {
 Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& limits,
                          const ReferenceResolver& resolver = {});
 
+// The same for a shape the caller has parsed already (a stored shape): `request` holds only
+// resolution, alphas and method ("shape" is an unknown field there).
+Evaluation evaluateParsedShape(const nlohmann::json& request, const ParsedShape& shape,
+                               const EvaluationLimits& limits);
+
 // evaluateShape(...).result
 nlohmann::json evaluateRequest(const nlohmann::json& request, const EvaluationLimits& limits,
                                const ReferenceResolver& resolver = {});

@@ -40,17 +40,17 @@ double numberParam(const ApiRequest& req, const std::string& name, std::optional
   return v;
 }
 
-// The stored shape and a fingerprint of everything it is made of: its document and each
-// referenced object's id and document, in the order the parser resolves them.
+// The stored shape, parsed once (the same parse serves the cache key and, on a miss, the
+// evaluation), and a fingerprint of everything it is made of: its document and each referenced
+// object's id and document, in the order the parser resolves them.
 struct StoredShape {
   StoredObject object;
-  nlohmann::json document;
+  ParsedShape parsed;
   std::string fingerprint;
 };
 
 StoredShape loadShape(const Store& store, int64_t id, size_t maxNodes) {
-  StoredShape s{store.get("shape", id), nullptr, ""};
-  s.document = nlohmann::json::parse(s.object.documentJson);
+  StoredShape s{store.get("shape", id), {}, ""};
   std::string parts = s.object.documentJson;
   const ReferenceResolver base = storeResolver(store);
   const ReferenceResolver recording = [&](const std::string& kind, const nlohmann::json& key) {
@@ -58,7 +58,7 @@ StoredShape loadShape(const Store& store, int64_t id, size_t maxNodes) {
     if (r) parts += "\n" + kind + ":" + std::to_string(r->id) + ":" + r->document.dump();
     return r;
   };
-  parseShapeField(s.document, "", maxNodes, recording);
+  s.parsed = parseShapeField(nlohmann::json::parse(s.object.documentJson), "", maxNodes, recording);
   s.fingerprint = contentHash(parts);
   return s;
 }
@@ -94,7 +94,7 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
   const int maxDepth = server.options().limits.maxJsonDepth;
 
   server.addRoute("POST", "/evaluate", [limits, &store](const ApiRequest& req) {
-    return ApiResponse{200, evaluateRequest(req.body, limits, storeResolver(store)), {}, {}};
+    return ApiResponse{200, evaluateRequest(req.body, limits, storeResolver(store))};
   });
 
   // The body ({"resolution","alphas","method"}) may be empty: the defaults of POST /evaluate.
@@ -103,22 +103,19 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
     if (req.rawBody().find_first_not_of(" \t\r\n") != std::string::npos)
       request = parseJsonBody(req.rawBody(), maxDepth);
     requireObject(request, "");
-    if (request.contains("shape"))
-      throw Error(errc::kInvalidDocument, "the shape is the stored one; leave \"shape\" out", "shape");
     const StoredShape shape = loadShape(store, shapeId(req), limits.maxNodes);
     const std::string key = cacheKey("evaluate", shape, request.dump());
     if (auto hit = store.cachedEvaluation(key)) {
       nlohmann::json result = nlohmann::json::parse(hit->resultJson);
       result["cached"] = true;
-      return ApiResponse{200, result, {}, {}};
+      return ApiResponse{200, result};
     }
-    request["shape"] = shape.document;
-    nlohmann::json result = evaluateRequest(request, limits, storeResolver(store));
+    nlohmann::json result = evaluateParsedShape(request, shape.parsed, limits).result;
     result["shape_id"] = shape.object.id;
     result["shape_version"] = shape.object.version;
     store.storeEvaluation(shape.object.id, key, {result.dump(), ""});
     result["cached"] = false;
-    return ApiResponse{200, result, {}, {}};
+    return ApiResponse{200, result};
   }, RouteOptions{false, true});
 
   // SPEC §4: "upper" is the highest α with the point in upper(α). "lower" as the SPEC words it
@@ -128,19 +125,14 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
   server.addRoute("GET", "/shapes/{id}/membership", [limits, &store](const ApiRequest& req) {
     const Vec3 p{numberParam(req, "x", std::nullopt), numberParam(req, "y", std::nullopt),
                  numberParam(req, "z", std::nullopt)};
-    const StoredObject object = store.get("shape", shapeId(req));
-    const ParsedShape shape =
-        parseShapeField(nlohmann::json::parse(object.documentJson), "", limits.maxNodes, storeResolver(store));
-    const AlphaLevels levels = shape.field->levelsAt(p);
+    const AlphaLevels levels = loadShape(store, shapeId(req), limits.maxNodes).parsed.field->levelsAt(p);
     const bool everInLower = levels.lower <= 1.0f;
     return ApiResponse{200,
                        {{"point", {p.x, p.y, p.z}},
                         {"upper", levels.upper},
                         {"lower", everInLower ? 1.0 : 0.0},
                         {"lower_from", everInLower ? nlohmann::json(levels.lower) : nlohmann::json(nullptr)},
-                        {"necessity", everInLower ? 1.0 - levels.lower : 0.0}},
-                       {},
-                       {}};
+                        {"necessity", everInLower ? 1.0 - levels.lower : 0.0}}};
   });
 
   server.addRoute("GET", "/shapes/{id}/mesh", [limits, &store](const ApiRequest& req) {
@@ -160,8 +152,7 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
                                      nlohmann::json{{"alpha", alpha}, {"bound", bound}, {"format", format},
                                                     {"resolution", resolution}}.dump());
     if (auto hit = store.cachedEvaluation(key)) return bytesResponse(hit->vdb, contentType, filename, true);
-    const Evaluation e = evaluateShape({{"shape", shape.document}, {"resolution", resolution}, {"alphas", {alpha}}},
-                                       limits, storeResolver(store));
+    const Evaluation e = evaluateParsedShape({{"resolution", resolution}, {"alphas", {alpha}}}, shape.parsed, limits);
     const TriangleMesh mesh =
         extractMesh(*e.grid, alpha, bound == "lower" ? EnvelopeBound::kLower : EnvelopeBound::kUpper);
     std::string bytes = format == "obj" ? toObj(mesh) : toBinaryStl(mesh);
@@ -176,9 +167,7 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
     const std::string key = cacheKey("vdb", shape, std::to_string(resolution));
     if (auto hit = store.cachedEvaluation(key))
       return bytesResponse(hit->vdb, "application/octet-stream", filename, true);
-    const Evaluation e =
-        evaluateShape({{"shape", shape.document}, {"resolution", resolution}, {"alphas", {1.0}}}, limits,
-                      storeResolver(store));
+    const Evaluation e = evaluateParsedShape({{"resolution", resolution}, {"alphas", {1.0}}}, shape.parsed, limits);
     std::string bytes = vdbBytes(*e.grid);
     store.storeEvaluation(shape.object.id, key, {"{}", bytes});
     return bytesResponse(std::move(bytes), "application/octet-stream", filename, false);
