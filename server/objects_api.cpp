@@ -51,7 +51,7 @@ void registerKind(HttpServer& server, Store& store, const std::string& kind) {
 
   server.addRoute("POST", base, [&store, kind, maxNodes, base](const ApiRequest& req) {
     const StoredObject created = store.create(prepareDocument(req.body, kind, store, maxNodes, ""));
-    ApiResponse out{201, storedObjectJson(created), {}, {}};
+    ApiResponse out{201, storedObjectJson(created)};
     out.headers.emplace_back("Location", base + "/" + std::to_string(created.id));
     return out;
   }, write);
@@ -74,7 +74,7 @@ void registerKind(HttpServer& server, Store& store, const std::string& kind) {
     // Keyset paging: a full page may have more after it.
     nlohmann::json next = nullptr;
     if (static_cast<int>(found.size()) == q.limit && !found.empty()) next = found.back().id;
-    return ApiResponse{200, {{"items", items}, {"next_after", next}}, {}, {}};
+    return ApiResponse{200, {{"items", items}, {"next_after", next}}};
   });
 
   server.addRoute("GET", base + "/{id}", [&store, kind](const ApiRequest& req) {
@@ -82,7 +82,7 @@ void registerKind(HttpServer& server, Store& store, const std::string& kind) {
     std::optional<int> version;
     if (req.hasQueryParam("version"))
       version = static_cast<int>(positiveInteger(req.queryParam("version"), "version", INT32_MAX));
-    return ApiResponse{200, storedObjectJson(store.get(kind, id, version)), {}, {}};
+    return ApiResponse{200, storedObjectJson(store.get(kind, id, version))};
   });
 
   server.addRoute("PUT", base + "/{id}", [&store, kind, maxNodes](const ApiRequest& req) {
@@ -90,13 +90,13 @@ void registerKind(HttpServer& server, Store& store, const std::string& kind) {
     nlohmann::json doc = req.body;
     // The name may be left out: a new version keeps the object's name.
     if (doc.is_object() && !doc.contains("name")) doc["name"] = store.get(kind, id).name;
-    return ApiResponse{200, storedObjectJson(store.put(id, prepareDocument(doc, kind, store, maxNodes, ""))), {}, {}};
+    return ApiResponse{200, storedObjectJson(store.put(id, prepareDocument(doc, kind, store, maxNodes, "")))};
   }, write);
 
   server.addRoute("DELETE", base + "/{id}", [&store, kind](const ApiRequest& req) {
     const int64_t id = positiveInteger(req.pathParams[0], "id");
     const std::vector<int64_t> deleted = store.remove(kind, id, booleanParam(req, "cascade"));
-    return ApiResponse{200, {{"deleted", deleted}}, {}, {}};
+    return ApiResponse{200, {{"deleted", deleted}}};
   }, write);
 
   server.addRoute("POST", base + "/bulk", [&store, kind, maxNodes, maxDepth](const ApiRequest& req) {
@@ -113,7 +113,7 @@ void registerKind(HttpServer& server, Store& store, const std::string& kind) {
                             ? static_cast<size_t>(positiveInteger(req.queryParam("batch"), "batch", kMaxBatch))
                             : kDefaultBatch;
     const BulkReport report = importDocuments(store, splitBulkBody(req.rawBody(), maxDepth), options);
-    return ApiResponse{200, report.toJson(), {}, {}};
+    return ApiResponse{200, report.toJson()};
   }, RouteOptions{true, true});
 }
 

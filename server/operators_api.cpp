@@ -77,14 +77,14 @@ ApiResponse evaluate(const ApiRequest& req, const ServerLimits& limits) {
     if (!std::isfinite(values[i]))
       throw Error(errc::kDomainError, "the operator is not finite at this point", joinPath("points", i));
   result["values"] = std::move(values);
-  return ApiResponse{200, std::move(result), {}, {}};
+  return ApiResponse{200, std::move(result)};
 }
 
 }  // namespace
 
 void registerOperatorRoutes(HttpServer& server) {
   static const nlohmann::json catalogue = catalogueJson();
-  server.addRoute("GET", "/operators", [](const ApiRequest&) { return ApiResponse{200, catalogue, {}, {}}; });
+  server.addRoute("GET", "/operators", [](const ApiRequest&) { return ApiResponse{200, catalogue}; });
   const ServerLimits limits = server.options().limits;
   server.addRoute("POST", "/operators/evaluate", [limits](const ApiRequest& req) { return evaluate(req, limits); });
 }

@@ -24,13 +24,11 @@ void registerServiceRoutes(HttpServer& server, const Store& store) {
                         {"uptime_s", uptime},
                         {"parts", count("part")},
                         {"shapes", count("shape")},
-                        {"schema_version", store.schemaVersion()}},
-                       {},
-                       {}};
+                        {"schema_version", store.schemaVersion()}}};
   });
   // Parsed once: the document is constant for the life of the binary.
   static const nlohmann::json openapi = nlohmann::json::parse(openapiDocumentText());
-  server.addRoute("GET", "/openapi.json", [](const ApiRequest&) { return ApiResponse{200, openapi, {}, {}}; });
+  server.addRoute("GET", "/openapi.json", [](const ApiRequest&) { return ApiResponse{200, openapi}; });
 }
 
 void registerAllRoutes(HttpServer& server, Store& store) {
