@@ -1,15 +1,14 @@
 #include "server/bulk_import.h"
 
+#include <algorithm>
+
 #include "geometry/error.h"
 #include "query/json_body.h"
 #include "server/documents.h"
+#include "server/http_errors.h"
 
 namespace fsdb {
 namespace {
-
-nlohmann::json errorJson(const std::string& code, const std::string& message, const std::string& path) {
-  return {{"code", code}, {"message", message}, {"path", path}};
-}
 
 // The kind of a line: the route's, or (for mixed files) the document's own.
 std::string lineKind(const nlohmann::json& doc, const std::string& routeKind) {
@@ -45,7 +44,7 @@ std::vector<BulkLine> splitBulkBody(const std::string& body, int maxJsonDepth) {
     try {
       l.document = parseJsonBody(text, maxJsonDepth);
     } catch (const Error& e) {
-      l.parseError = errorJson(e.code(), e.what(), e.path());
+      l.parseError = errorObject(e.code(), e.what(), e.path());
     }
     out.push_back(std::move(l));
   }
@@ -56,13 +55,19 @@ nlohmann::json BulkReport::toJson() const {
   return {{"imported", imported}, {"failed", failed}, {"ids", ids}, {"errors", errors}};
 }
 
+void BulkReport::addFailure(size_t line, nlohmann::json error) {
+  ++failed;
+  errors.push_back({{"line", line}, {"error", std::move(error)}});
+}
+
+void BulkReport::sortErrors() {
+  std::stable_sort(errors.begin(), errors.end(),
+                   [](const nlohmann::json& a, const nlohmann::json& b) { return a["line"] < b["line"]; });
+}
+
 BulkReport importDocuments(Store& store, const std::vector<BulkLine>& lines, const BulkOptions& options) {
   BulkReport report;
   const size_t batch = options.batchSize == 0 ? 1 : options.batchSize;
-  auto fail = [&report](size_t line, nlohmann::json error) {
-    ++report.failed;
-    report.errors.push_back({{"line", line}, {"error", std::move(error)}});
-  };
   for (size_t start = 0; start < lines.size(); start += batch) {
     const size_t end = std::min(lines.size(), start + batch);
     PendingDocuments pending;
@@ -71,17 +76,17 @@ BulkReport importDocuments(Store& store, const std::vector<BulkLine>& lines, con
     for (size_t i = start; i < end; ++i) {
       const BulkLine& l = lines[i];
       if (!l.parseError.is_null()) {
-        fail(l.line, l.parseError);
+        report.addFailure(l.line, l.parseError);
         continue;
       }
       try {
         const std::string kind = lineKind(l.document, options.kind);
         NewObject object = prepareDocument(l.document, kind, store, options.maxNodes, "", &pending);
-        pending.add(object.kind, object.name, nlohmann::json::parse(object.documentJson));
+        pending.add(object.kind, object.name, l.document);  // as given: the resolver needs no "kind"
         items.push_back(std::move(object));
         itemLines.push_back(l.line);
       } catch (const Error& e) {
-        fail(l.line, errorJson(e.code(), e.what(), e.path()));
+        report.addFailure(l.line, errorObject(e.code(), e.what(), e.path()));
       }
     }
     if (!items.empty()) {
@@ -91,15 +96,13 @@ BulkReport importDocuments(Store& store, const std::vector<BulkLine>& lines, con
           ++report.imported;
           report.ids.push_back(*results[k].id);
         } else {
-          fail(itemLines[k], errorJson(results[k].errorCode, results[k].errorMessage, results[k].errorPath));
+          report.addFailure(itemLines[k], errorObject(results[k].errorCode, results[k].errorMessage, results[k].errorPath));
         }
       }
     }
     if (options.progress) options.progress(end, lines.size());
   }
-  // Errors in line order (validation errors and store errors of one batch interleave).
-  std::stable_sort(report.errors.begin(), report.errors.end(),
-                   [](const nlohmann::json& a, const nlohmann::json& b) { return a["line"] < b["line"]; });
+  report.sortErrors();
   return report;
 }
 

@@ -48,6 +48,10 @@ struct BulkReport {
   std::vector<int64_t> ids;  // of the imported lines, in line order
   nlohmann::json errors = nlohmann::json::array();  // [{"line":k,"error":{"code","message","path"}}]
   nlohmann::json toJson() const;  // {"imported","failed","ids","errors"}
+  // Counts a failed line and records its error ({"code","message","path"}).
+  void addFailure(size_t line, nlohmann::json error);
+  // Errors in line order (failures are found per batch, validation before storage).
+  void sortErrors();
 };
 
 BulkReport importDocuments(Store& store, const std::vector<BulkLine>& lines, const BulkOptions& options);

@@ -1,8 +1,6 @@
 #include "server/eval_command.h"
 
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "db/store.h"
 #include "geometry/error.h"
@@ -10,6 +8,7 @@
 #include "server/documents.h"
 #include "geometry/envelope_mesh.h"
 #include "server/evaluation.h"
+#include "server/file_io.h"
 #include "server/mesh_format.h"
 #include "server/http_errors.h"
 
@@ -19,12 +18,6 @@ namespace {
 
 bool endsWith(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-void writeFile(const std::string& path, const std::string& bytes, const std::string& option) {
-  std::ofstream out(path, std::ios::binary);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  if (!out) throw Error(errc::kInvalidParameter, "cannot write " + path, option);
 }
 
 }  // namespace
@@ -38,7 +31,7 @@ int runEval(const std::string& file, const EvalOptions& options) {
     std::unique_ptr<Store> store;
     if (!options.dbPath.empty()) store = Store::open(options.dbPath);
     const bool isId = store && !file.empty() && file.find_first_not_of("0123456789") == std::string::npos;
-    std::stringstream text;
+    std::string text;
     if (isId) {
       // A stored shape, else a stored part, by id.
       const int64_t id = std::stoll(file);
@@ -49,15 +42,11 @@ int runEval(const std::string& file, const EvalOptions& options) {
         found = store->find(ref);
       }
       if (!found) throw Error(errc::kNotFound, "no shape or part with id " + file + " in " + options.dbPath, "SHAPE-ID");
-      text << found->documentJson;
-    } else if (file == "-") {
-      text << std::cin.rdbuf();
+      text = found->documentJson;
     } else {
-      std::ifstream in(file);
-      if (!in) throw Error(errc::kNotFound, "cannot read " + file, "FILE");
-      text << in.rdbuf();
+      text = readTextFile(file, "FILE");
     }
-    nlohmann::json doc = parseJsonBody(text.str(), 256);
+    nlohmann::json doc = parseJsonBody(text, kFileJsonDepth);
     nlohmann::json request = doc.is_object() && doc.contains("shape") ? doc : nlohmann::json{{"shape", doc}};
     if (options.resolution) request["resolution"] = *options.resolution;
     if (!options.alphas.empty()) request["alphas"] = options.alphas;
@@ -69,12 +58,12 @@ int runEval(const std::string& file, const EvalOptions& options) {
     if (!options.meshPath.empty()) {
       const EnvelopeBound bound = options.meshBound == "lower" ? EnvelopeBound::kLower : EnvelopeBound::kUpper;
       const TriangleMesh mesh = extractMesh(*evaluation.grid, options.meshAlpha, bound);
-      writeFile(options.meshPath, endsWith(options.meshPath, ".stl") ? toBinaryStl(mesh) : toObj(mesh), "--mesh");
+      writeBinaryFile(options.meshPath, endsWith(options.meshPath, ".stl") ? toBinaryStl(mesh) : toObj(mesh), "--mesh");
       result["mesh"] = {{"path", options.meshPath}, {"alpha", options.meshAlpha}, {"bound", options.meshBound},
                         {"vertices", mesh.vertices.size()}, {"triangles", mesh.triangles.size()}};
     }
     if (!options.vdbPath.empty()) {
-      writeFile(options.vdbPath, vdbBytes(*evaluation.grid), "--vdb");
+      writeBinaryFile(options.vdbPath, vdbBytes(*evaluation.grid), "--vdb");
       result["vdb"] = options.vdbPath;
     }
     std::cout << result.dump(2) << std::endl;

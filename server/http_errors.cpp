@@ -20,8 +20,12 @@ int httpStatusFor(const std::string& code) {
   return it == kStatus.end() ? 500 : it->second;
 }
 
+nlohmann::json errorObject(const std::string& code, const std::string& message, const std::string& path) {
+  return {{"code", code}, {"message", message}, {"path", path}};
+}
+
 nlohmann::json errorBody(const std::string& code, const std::string& message, const std::string& path) {
-  return {{"error", {{"code", code}, {"message", message}, {"path", path}}}};
+  return {{"error", errorObject(code, message, path)}};
 }
 
 }  // namespace fsdb

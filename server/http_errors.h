@@ -11,6 +11,9 @@ namespace fsdb {
 // HTTP status for an fsdb::Error code; 500 for codes the table does not know.
 int httpStatusFor(const std::string& code);
 
+// {"code","message","path"}: the inner object (bulk reports list one per failed line).
+nlohmann::json errorObject(const std::string& code, const std::string& message, const std::string& path);
+
 // {"error":{"code","message","path"}}; path is always present ("" when the error has none).
 nlohmann::json errorBody(const std::string& code, const std::string& message, const std::string& path);
 

@@ -5,18 +5,15 @@
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "db/store.h"
 #include "geometry/error.h"
 #include "server/bulk_import.h"
+#include "server/file_io.h"
 
 namespace fsdb {
 namespace {
-
-constexpr int kMaxJsonDepth = 256;
 
 // Progress on stderr: a bar redrawn in place on a terminal, plain lines otherwise.
 class Progress {
@@ -46,14 +43,6 @@ class Progress {
   bool tty_;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
-
-std::string readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(errc::kNotFound, "cannot read " + path, path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 void printErrors(const std::string& file, const nlohmann::json& errors) {
   for (const auto& e : errors) {
@@ -90,8 +79,7 @@ BulkReport importThroughServer(const std::vector<BulkLine>& lines, const ImportO
     for (; j < lines.size() && j - i < options.batchSize && kindOfLine(lines[j]) == kind; ++j) {
       // Lines that are not JSON were found while splitting the file: report them here.
       if (!lines[j].parseError.is_null()) {
-        ++report.failed;
-        report.errors.push_back({{"line", lines[j].line}, {"error", lines[j].parseError}});
+        report.addFailure(lines[j].line, lines[j].parseError);
         continue;
       }
       body += lines[j].document.dump() + "\n";
@@ -122,6 +110,7 @@ BulkReport importThroughServer(const std::vector<BulkLine>& lines, const ImportO
     i = j;
     progress.update(doneBefore + i);
   }
+  report.sortErrors();
   return report;
 }
 
@@ -135,7 +124,7 @@ int runImport(const ImportOptions& options) {
     std::vector<std::pair<std::string, std::vector<BulkLine>>> files;
     size_t total = 0;
     for (const std::string& f : options.files) {
-      files.emplace_back(f, splitBulkBody(readFile(f), kMaxJsonDepth));
+      files.emplace_back(f, splitBulkBody(readTextFile(f, "FILE"), kFileJsonDepth));
       total += files.back().second.size();
     }
     Progress progress(total);

@@ -9,8 +9,6 @@
 #include <iostream>
 #include <pthread.h>
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 #include <thread>
 
 #include "fsdb_version.h"
@@ -19,6 +17,7 @@
 #include "server/api.h"
 #include "server/bulk_import.h"
 #include "server/eval_command.h"
+#include "server/file_io.h"
 #include "server/http_server.h"
 #include "server/import_command.h"
 
@@ -46,15 +45,17 @@ void loadDemo(fsdb::Store& store, const std::string& dir, size_t maxNodes) {
   }
   std::sort(files.begin(), files.end());
   for (const auto& f : files) {
-    std::ifstream in(f);
-    std::stringstream text;
-    text << in.rdbuf();
     fsdb::BulkOptions bulk;
     bulk.mode = fsdb::BulkMode::kUpsert;
     bulk.maxNodes = maxNodes;
-    const fsdb::BulkReport r = fsdb::importDocuments(store, fsdb::splitBulkBody(text.str(), 256), bulk);
-    spdlog::info("demo catalogue {}: imported {}, failed {}", f.string(), r.imported, r.failed);
-    for (const auto& e : r.errors) spdlog::warn("demo {}:{}: {}", f.string(), e["line"].dump(), e["error"].dump());
+    try {
+      const fsdb::BulkReport r = fsdb::importDocuments(
+          store, fsdb::splitBulkBody(fsdb::readTextFile(f.string(), "--demo"), fsdb::kFileJsonDepth), bulk);
+      spdlog::info("demo catalogue {}: imported {}, failed {}", f.string(), r.imported, r.failed);
+      for (const auto& e : r.errors) spdlog::warn("demo {}:{}: {}", f.string(), e["line"].dump(), e["error"].dump());
+    } catch (const fsdb::Error& e) {
+      spdlog::warn("demo catalogue {}: {}", f.string(), e.what());
+    }
   }
 }
 
