@@ -36,16 +36,6 @@ const Interval& slot(const PartBox& b, int i) { return slot(const_cast<PartBox&>
 // F at the centre of the box: a crisp witness (every θ of a validated part's box is valid).
 double centreValue(const PartBox& b, const Vec3& p) { return midpointPart(b).insideOutside(p); }
 
-// Directed conversions, so that float storage keeps the rounding directions of levelsAt.
-float floatDown(double v) {
-  float f = static_cast<float>(v);
-  return static_cast<double>(f) > v ? std::nextafter(f, -1.0f) : f;
-}
-float floatUp(double v) {
-  float f = static_cast<float>(v);
-  return static_cast<double>(f) < v ? std::nextafter(f, 2.0f) : f;
-}
-
 }  // namespace
 
 FuzzyPartField::FuzzyPartField(const FuzzyPart& part, FuzzyPartFieldOptions options)
