@@ -13,7 +13,6 @@
 #include <vector>
 
 #include "bench/grid_bench.h"
-#include "geometry/envelope_grid.h"
 #include "geometry/fuzzy_part_field.h"
 
 namespace fsdb {
@@ -70,9 +69,11 @@ std::vector<Vec3> samplePoints(const FuzzyPartField& field, int cls) {
   return points;
 }
 
+// ns per call of `levels(field, p)` over the sampled points, with the exhaustions it caused.
 // state.range(0): part (0 crisp sphere, 1 fuzzy sphere, 2 fuzzy deformed); state.range(1): point
 // class (0 inside, 1 outside, 2 boundary band).
-void BM_LevelsAt(benchmark::State& state) {
+template <typename Levels>
+void timeLevels(benchmark::State& state, Levels levels) {
   const FuzzyPartField field(makePart(static_cast<int>(state.range(0))));
   const std::vector<Vec3> points = samplePoints(field, static_cast<int>(state.range(1)));
   if (points.empty()) {
@@ -82,10 +83,14 @@ void BM_LevelsAt(benchmark::State& state) {
   const std::uint64_t before = field.budgetExhaustions();
   size_t i = 0;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(field.levelsAt(points[i]));
+    benchmark::DoNotOptimize(levels(field, points[i]));
     if (++i == points.size()) i = 0;
   }
   state.counters["exhausted"] = static_cast<double>(field.budgetExhaustions() - before);
+}
+
+void BM_LevelsAt(benchmark::State& state) {
+  timeLevels(state, [](const FuzzyPartField& f, const Vec3& p) { return f.levelsAt(p); });
 }
 BENCHMARK(BM_LevelsAt)
     ->ArgNames({"part", "class"})
@@ -95,19 +100,7 @@ BENCHMARK(BM_LevelsAt)
 // The same through the previous bisection (reference::bisectionLevelsAt), for before/after in one
 // run; its exhaustion counter counts bisection decisions, levelsAt's counts searches (two at most).
 void BM_LevelsAtBisection(benchmark::State& state) {
-  const FuzzyPartField field(makePart(static_cast<int>(state.range(0))));
-  const std::vector<Vec3> points = samplePoints(field, static_cast<int>(state.range(1)));
-  if (points.empty()) {
-    state.SkipWithError("no points of this class");
-    return;
-  }
-  const std::uint64_t before = field.budgetExhaustions();
-  size_t i = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(reference::bisectionLevelsAt(field, points[i]));
-    if (++i == points.size()) i = 0;
-  }
-  state.counters["exhausted"] = static_cast<double>(field.budgetExhaustions() - before);
+  timeLevels(state, reference::bisectionLevelsAt);
 }
 BENCHMARK(BM_LevelsAtBisection)
     ->ArgNames({"part", "class"})

@@ -23,6 +23,8 @@
 // The difference is exact except on the single level α = uB itself when 0 < uB < 1 (a point
 // counts as necessarily inside from α = uB on, instead of just above it): a set of measure zero
 // in α, and for one requested α a set of measure zero in space; volumes are unaffected.
+#include <cmath>
+
 #include "geometry/vec3.h"
 
 namespace fsdb {
@@ -73,6 +75,17 @@ struct BlockLattice {
   Vec3 hi() const { return {x[kDim - 1], y[kDim - 1], z[kDim - 1]}; }
   Vec3 at(int i, int j, int k) const { return {x[i], y[j], z[k]}; }
 };
+
+// Directed conversions of a level to float storage: u rounds down and l up, so that the stored
+// upper(α) and lower(α) only shrink.
+inline float floatDown(double v) {
+  const float f = static_cast<float>(v);
+  return static_cast<double>(f) > v ? std::nextafter(f, -1.0f) : f;
+}
+inline float floatUp(double v) {
+  const float f = static_cast<float>(v);
+  return static_cast<double>(f) < v ? std::nextafter(f, 2.0f) : f;
+}
 
 // A fuzzy solid as the voxel evaluator sees it. Implementations: fuzzy superquadric parts
 // (geometry/fuzzy_part_field.h) and analytic test solids. Every call is thread-safe.

@@ -46,7 +46,9 @@ bool boxesMeet(const Vec3& alo, const Vec3& ahi, const Vec3& blo, const Vec3& bh
          blo.z <= ahi.z;
 }
 
-AlphaLevels apply(CsgOp op, AlphaLevels a, AlphaLevels b) {
+}  // namespace
+
+AlphaLevels alphaCombine(CsgOp op, AlphaLevels a, AlphaLevels b) {
   switch (op) {
     case CsgOp::kUnion: return alphaUnion(a, b);
     case CsgOp::kIntersection: return alphaIntersection(a, b);
@@ -55,7 +57,14 @@ AlphaLevels apply(CsgOp op, AlphaLevels a, AlphaLevels b) {
   return a;
 }
 
-}  // namespace
+AlphaLevelBounds boundsCombine(CsgOp op, const AlphaLevelBounds& a, const AlphaLevelBounds& b) {
+  switch (op) {
+    case CsgOp::kUnion: return boundsUnion(a, b);
+    case CsgOp::kIntersection: return boundsIntersection(a, b);
+    case CsgOp::kDifference: return boundsDifference(a, b);
+  }
+  return a;
+}
 
 void CsgField::sampleBlock(const BlockLattice& b, AlphaLevels* out) const {
   constexpr int n = BlockLattice::kSize;
@@ -87,12 +96,12 @@ void CsgField::sampleBlock(const BlockLattice& b, AlphaLevels* out) const {
     if (constantOver(i, &c)) {
       // The background is the identity of the union and of a subtrahend.
       if (op_ != CsgOp::kIntersection && isBackground(c)) continue;
-      for (int v = 0; v < n; ++v) out[v] = apply(op_, out[v], c);
+      for (int v = 0; v < n; ++v) out[v] = alphaCombine(op_, out[v], c);
       continue;
     }
     next.resize(n);
     children_[i]->sampleBlock(b, next.data());
-    for (int v = 0; v < n; ++v) out[v] = apply(op_, out[v], next[v]);
+    for (int v = 0; v < n; ++v) out[v] = alphaCombine(op_, out[v], next[v]);
   }
 }
 
@@ -106,21 +115,14 @@ AlphaLevels CsgField::levelsAt(const Vec3& p) const {
     // Short cuts that cannot change the result: an intersection or difference whose left side
     // is already empty at every level stays empty.
     if (op_ != CsgOp::kUnion && isBackground(acc)) return acc;
-    acc = apply(op_, acc, childAt(i));
+    acc = alphaCombine(op_, acc, childAt(i));
   }
   return acc;
 }
 
 AlphaLevelBounds CsgField::boundsOver(const Vec3& lo, const Vec3& hi) const {
   AlphaLevelBounds acc = children_[0]->boundsOver(lo, hi);
-  for (size_t i = 1; i < children_.size(); ++i) {
-    const AlphaLevelBounds next = children_[i]->boundsOver(lo, hi);
-    switch (op_) {
-      case CsgOp::kUnion: acc = boundsUnion(acc, next); break;
-      case CsgOp::kIntersection: acc = boundsIntersection(acc, next); break;
-      case CsgOp::kDifference: acc = boundsDifference(acc, next); break;
-    }
-  }
+  for (size_t i = 1; i < children_.size(); ++i) acc = boundsCombine(op_, acc, children_[i]->boundsOver(lo, hi));
   return acc;
 }
 

@@ -53,6 +53,10 @@ AlphaLevelBounds boundsUnion(const AlphaLevelBounds& a, const AlphaLevelBounds& 
 AlphaLevelBounds boundsIntersection(const AlphaLevelBounds& a, const AlphaLevelBounds& b);
 AlphaLevelBounds boundsDifference(const AlphaLevelBounds& a, const AlphaLevelBounds& b);
 
+// alpha_field.h's combination for `op`, and its bounds counterpart.
+AlphaLevels alphaCombine(CsgOp op, AlphaLevels a, AlphaLevels b);
+AlphaLevelBounds boundsCombine(CsgOp op, const AlphaLevelBounds& a, const AlphaLevelBounds& b);
+
 // The bounding box rule of the contract above, for any node whose support stays inside it.
 void csgBoundingBox(CsgOp op, const std::vector<std::shared_ptr<const AlphaFieldSource>>& children, Vec3* lo,
                     Vec3* hi);

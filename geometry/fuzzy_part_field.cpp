@@ -36,16 +36,6 @@ const Interval& slot(const PartBox& b, int i) { return slot(const_cast<PartBox&>
 // F at the centre of the box: a crisp witness (every θ of a validated part's box is valid).
 double centreValue(const PartBox& b, const Vec3& p) { return midpointPart(b).insideOutside(p); }
 
-// Directed conversions, so that float storage keeps the rounding directions of levelsAt.
-float floatDown(double v) {
-  float f = static_cast<float>(v);
-  return static_cast<double>(f) > v ? std::nextafter(f, -1.0f) : f;
-}
-float floatUp(double v) {
-  float f = static_cast<float>(v);
-  return static_cast<double>(f) < v ? std::nextafter(f, 2.0f) : f;
-}
-
 }  // namespace
 
 FuzzyPartField::FuzzyPartField(const FuzzyPart& part, FuzzyPartFieldOptions options)
@@ -143,20 +133,16 @@ bool FuzzyPartField::decide(const Vec3& p, const PartBox& box, Question q) const
                      // outside (necessarily)
 }
 
+PartBox FuzzyPartField::levelBox(double alpha) const {
+  return alpha == 0.0 ? support_ : alpha == 1.0 ? core_ : part_.boxAt(alpha);
+}
+
 bool FuzzyPartField::possiblyInside(const Vec3& p, double alpha) const {
-  return decide(p,
-                alpha == 0.0   ? support_
-                : alpha == 1.0 ? core_
-                               : part_.boxAt(alpha),
-                Question::kPossibly);
+  return decide(p, levelBox(alpha), Question::kPossibly);
 }
 
 bool FuzzyPartField::necessarilyInside(const Vec3& p, double alpha) const {
-  return decide(p,
-                alpha == 0.0   ? support_
-                : alpha == 1.0 ? core_
-                               : part_.boxAt(alpha),
-                Question::kNecessarily);
+  return decide(p, levelBox(alpha), Question::kNecessarily);
 }
 
 namespace {
@@ -201,6 +187,13 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
   const double tau = options_.tolerance;
   const Interval px{p.x, p.x}, py{p.y, p.y}, pz{p.z, p.z};
   const auto witness = [&](double f) { return inside ? f <= 1.0 : f > 1.0; };
+  // m(θ) of a crisp parameter vector (the fuzzy values only).
+  const auto membershipAt = [&](const double (&v)[kSlots]) {
+    double m = 1.0;
+    for (int i = 0; i < kSlots; ++i)
+      if (supportWidth_[i] > 0.0) m = std::min(m, hullMembership(*values_[i], v[i]));
+    return m;
+  };
   const auto upperBound = [&](const PartBox& b) {
     double ub = 1.0;
     for (int i = 0; i < kSlots; ++i)
@@ -350,10 +343,7 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
     const PlacedSuperquadric peakTheta = thetaAt(node.box, peak);
     const double fPeak = valueAt(peakTheta, p);
     if (witness(fPeak)) {
-      double m = 1.0;
-      for (int i = 0; i < kSlots; ++i)
-        if (supportWidth_[i] > 0.0) m = std::min(m, hullMembership(*values_[i], peak[i]));
-      improve(m, peakTheta);
+      improve(membershipAt(peak), peakTheta);
       if (s.incumbent >= 1.0) break;
       continue;
     }
@@ -376,16 +366,10 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
       fGuess = valueAt(guessTheta, p);
     }
     if (witness(fGuess)) {
-      const auto mAt = [&](const double (&v)[kSlots]) {
-        double m = 1.0;
-        for (int i = 0; i < kSlots; ++i)
-          if (supportWidth_[i] > 0.0) m = std::min(m, hullMembership(*values_[i], v[i]));
-        return m;
-      };
       // Regula falsi (Illinois) on g(t) = F(θ(t)) − 1, kept inside the shrinking bracket.
       double lo = 0.0, hi = 1.0, at[kSlots];
       double gLo = fGuess - 1.0, gHi = fPeak - 1.0, gHiTrue = gHi;
-      double mLo = mAt(guess), mHi = mAt(peak);
+      double mLo = membershipAt(guess), mHi = membershipAt(peak);
       int side = 0;
       for (int k = 0; k < 40 && mHi - mLo > 0.125 * tau; ++k) {
         const double span = hi - lo;
@@ -399,14 +383,14 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
         if (witness(f)) {
           lo = t;
           gLo = f - 1.0;
-          mLo = mAt(at);
+          mLo = membershipAt(at);
           guessTheta = theta;
           if (side == -1) gHi *= 0.5;
           side = -1;
         } else {
           hi = t;
           gHi = gHiTrue = f - 1.0;
-          mHi = mAt(at);
+          mHi = membershipAt(at);
           if (side == 1) gLo *= 0.5;
           side = 1;
         }
@@ -415,7 +399,7 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
         if (side == -1 && std::isfinite(gHiTrue) && gHiTrue != gLo) {
           const double tEst = std::min(hi, lo - gLo * (hi - lo) / (gHiTrue - gLo));
           for (int i = 0; i < kSlots; ++i) at[i] = guess[i] + tEst * (peak[i] - guess[i]);
-          if (mAt(at) - mLo <= 0.25 * tau) break;
+          if (membershipAt(at) - mLo <= 0.25 * tau) break;
         }
       }
       improve(mLo, guessTheta);
@@ -456,12 +440,7 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
         const PlacedSuperquadric theta = thetaAt(child->box, c);
         const double fc = valueAt(theta, p);
         child->promise = inside ? -fc : fc;
-        if (witness(fc)) {
-          double m = 1.0;
-          for (int i = 0; i < kSlots; ++i)
-            if (supportWidth_[i] > 0.0) m = std::min(m, hullMembership(*values_[i], c[i]));
-          improve(m, theta);
-        }
+        if (witness(fc)) improve(membershipAt(c), theta);
       }
       if (base >= 0.0 && child->ub <= base + tau) {
         s.pruned = std::max(s.pruned, child->ub);
@@ -534,16 +513,14 @@ void FuzzyPartField::sampleSubBlock(const BlockLattice& b, int i, int j, int k, 
   constexpr int d = BlockLattice::kDim;
   const AlphaLevelBounds bounds =
       boundsOver(b.at(i, j, k), b.at(i + size - 1, j + size - 1, k + size - 1));
-  if (bounds.uniform() || size <= 2) {
+  const bool uniform = bounds.uniform();
+  if (uniform || size <= 2) {
+    // Qualified: no virtual call (levelsAt's first test is the crisp shortcut).
     for (int x = i; x < i + size; ++x)
       for (int y = j; y < j + size; ++y)
         for (int z = k; z < k + size; ++z)
-          out[(x * d + y) * d + z] =
-              bounds.uniform() ? AlphaLevels{bounds.upperMin, bounds.lowerMin}
-              : crisp_         ? (crisp_->insideOutside(b.at(x, y, z)) <= 1.0
-                                      ? AlphaLevels{1.0f, 0.0f}
-                                      : AlphaLevels{0.0f, kNeverInside})
-                               : FuzzyPartField::levelsAt(b.at(x, y, z));
+          out[(x * d + y) * d + z] = uniform ? AlphaLevels{bounds.upperMin, bounds.lowerMin}
+                                             : FuzzyPartField::levelsAt(b.at(x, y, z));
     return;
   }
   const int half = size / 2;

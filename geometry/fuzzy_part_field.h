@@ -112,6 +112,7 @@ class FuzzyPartField : public AlphaFieldSource {
   };
   Search maxMin(const Vec3& p, bool inside) const;
   PartBox cutAt(double alpha) const;  // boxAt(alpha), cutting only the fuzzy values
+  PartBox levelBox(double alpha) const;  // P(alpha), the stored support and core at 0 and 1
   double valueAt(const PlacedSuperquadric& theta, const Vec3& p) const;  // F(p; θ)
   // sampleBlock over the sub-block of `size`³ voxels at (i, j, k) of the block.
   void sampleSubBlock(const BlockLattice& b, int i, int j, int k, int size, AlphaLevels* out) const;

@@ -56,16 +56,10 @@ double necessityOf(AlphaLevels v) { return v.lower <= 1.0f ? 1.0 - double(v.lowe
 AlphaLevels levelsFromPossibility(double possibility, double necessity) {
   // Floats round u down and l up (upper(α) and lower(α) only shrink; as fuzzy_part_field.h), so
   // u = 1 only where Π = 1 and l = 0 only where N = 1.
-  const double p = std::clamp(possibility, 0.0, 1.0);
-  float u = static_cast<float>(p);
-  if (double(u) > p) u = std::nextafter(u, 0.0f);
+  const float u = floatDown(std::clamp(possibility, 0.0, 1.0));
   if (!(necessity > 0.0)) return {u, kNeverInside};
-  auto roundUp = [](double x) {
-    float f = static_cast<float>(x);
-    return double(f) < x ? std::nextafter(f, 2.0f) : f;
-  };
   // Rounding must not break N <= Π: l >= 1 − u too (1 − u of a float is exact in double).
-  return {u, std::max(roundUp(1.0 - std::min(necessity, 1.0)), roundUp(1.0 - double(u)))};
+  return {u, std::max(floatUp(1.0 - std::min(necessity, 1.0)), floatUp(1.0 - double(u)))};
 }
 
 NodeOperator::NodeOperator(const OperatorConfig& config)

@@ -1,5 +1,5 @@
 #pragma once
-// Test helpers for AlphaFieldSource::sampleBlock (geometry/alpha_field.h).
+// Test helpers for AlphaFieldSource (geometry/alpha_field.h): sampleBlock lattices, bounds checks.
 #include <gtest/gtest.h>
 
 #include "geometry/alpha_field.h"
@@ -28,4 +28,13 @@ inline void expectBlockMatchesPoints(const fsdb::AlphaFieldSource& s, const fsdb
         ASSERT_EQ(v.upper, w.upper) << i << " " << j << " " << k;
         ASSERT_EQ(v.lower, w.lower) << i << " " << j << " " << k;
       }
+}
+
+// Do the levels lie within the bounds (u in [upperMin, upperMax], l in [lowerMin, lowerMax])?
+inline ::testing::AssertionResult levelsWithin(const fsdb::AlphaLevels& v, const fsdb::AlphaLevelBounds& b) {
+  if (v.upper >= b.upperMin && v.upper <= b.upperMax && v.lower >= b.lowerMin && v.lower <= b.lowerMax)
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "levels (u " << v.upper << ", l " << v.lower << ") outside bounds u ["
+                                       << b.upperMin << ", " << b.upperMax << "], l [" << b.lowerMin << ", "
+                                       << b.lowerMax << "]";
 }

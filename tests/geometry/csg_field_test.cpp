@@ -80,10 +80,7 @@ TEST(CsgField, BoundsHoldEveryPointOfTheBoxAndAreUniformFarAway) {
       for (int k = 0; k < 20; ++k) {
         const Vec3 p{lo.x + unit(rng) * (hi.x - lo.x), lo.y + unit(rng) * (hi.y - lo.y), lo.z + unit(rng) * (hi.z - lo.z)};
         const AlphaLevels v = field.levelsAt(p);
-        ASSERT_GE(v.upper, bounds.upperMin);
-        ASSERT_LE(v.upper, bounds.upperMax);
-        ASSERT_GE(v.lower, bounds.lowerMin);
-        ASSERT_LE(v.lower, bounds.lowerMax);
+        ASSERT_TRUE(levelsWithin(v, bounds));
       }
     }
     const AlphaLevelBounds far = field.boundsOver({10, 10, 10}, {11, 11, 11});
