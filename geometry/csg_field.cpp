@@ -41,11 +41,6 @@ namespace {
 
 bool isBackground(AlphaLevels v) { return v.upper == 0.0f && v.lower == kNeverInside; }
 
-bool boxesMeet(const Vec3& alo, const Vec3& ahi, const Vec3& blo, const Vec3& bhi) {
-  return alo.x <= bhi.x && blo.x <= ahi.x && alo.y <= bhi.y && blo.y <= ahi.y && alo.z <= bhi.z &&
-         blo.z <= ahi.z;
-}
-
 }  // namespace
 
 AlphaLevels alphaCombine(CsgOp op, AlphaLevels a, AlphaLevels b) {

@@ -59,7 +59,7 @@ AlphaLevels SmoothedPartField::levelsAt(const Vec3& p) const {
 }
 
 AlphaLevelBounds SmoothedPartField::boundsOver(const Vec3& lo, const Vec3& hi) const {
-  if (hi.x < lo_.x || hi.y < lo_.y || hi.z < lo_.z || lo.x > hi_.x || lo.y > hi_.y || lo.z > hi_.z)
+  if (!boxesMeet(lo, hi, lo_, hi_))
     return {0.0f, 0.0f, kNeverInside, kNeverInside};
   return {};
 }

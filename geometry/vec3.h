@@ -43,4 +43,10 @@ inline bool isFinite(const Vec3& a) {
   return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
 }
 
+// Whether the closed axis-aligned boxes [alo, ahi] and [blo, bhi] share a point.
+inline bool boxesMeet(const Vec3& alo, const Vec3& ahi, const Vec3& blo, const Vec3& bhi) {
+  return alo.x <= bhi.x && blo.x <= ahi.x && alo.y <= bhi.y && blo.y <= ahi.y && alo.z <= bhi.z &&
+         blo.z <= ahi.z;
+}
+
 }  // namespace fsdb

@@ -153,7 +153,9 @@ TEST(SmoothCsgField, BoundsAndBoundingBoxAreSound) {
           const AlphaLevels v = f.levelsAt(p);
           ASSERT_TRUE(levelsWithin(v, b)) << name;
           const bool outside = p.x < blo.x || p.y < blo.y || p.z < blo.z || p.x > bhi.x || p.y > bhi.y || p.z > bhi.z;
-          if (outside) ASSERT_EQ(v.upper, 0.0f) << name;
+          if (outside) {
+            ASSERT_EQ(v.upper, 0.0f) << name;
+          }
         }
       }
       // Far from both spheres every operator proves the block empty.

@@ -52,4 +52,12 @@ TEST(Vec3, IsFinite) {
 }
 
 }  // namespace
+TEST(Vec3, BoxesMeetWhenTheyShareAPointTouchingIncluded) {
+  EXPECT_TRUE(boxesMeet({0, 0, 0}, {1, 1, 1}, {0.5, 0.5, 0.5}, {2, 2, 2}));
+  EXPECT_TRUE(boxesMeet({0, 0, 0}, {1, 1, 1}, {1, 1, 1}, {2, 2, 2}));  // one corner
+  EXPECT_TRUE(boxesMeet({0.5, 0.5, 0.5}, {0.5, 0.5, 0.5}, {0, 0, 0}, {1, 1, 1}));  // a point inside
+  EXPECT_FALSE(boxesMeet({0, 0, 0}, {1, 1, 1}, {1.5, 0, 0}, {2, 1, 1}));
+  EXPECT_FALSE(boxesMeet({0, 0, 0}, {1, 1, 1}, {0, 0, -2}, {1, 1, -0.1}));
+}
+
 }  // namespace fsdb
