@@ -88,6 +88,21 @@ const nlohmann::json& requireArray(const nlohmann::json& j, const std::string& p
   return j;
 }
 
+void rejectUnknownKeys(const nlohmann::json& obj, const std::string& path, std::initializer_list<const char*> known,
+                       const std::string& where) {
+  for (auto it = obj.begin(); it != obj.end(); ++it) {
+    bool ok = false;
+    std::string list;
+    for (const char* k : known) {
+      ok = ok || it.key() == k;
+      list += (list.empty() ? "" : ", ") + std::string(k);
+    }
+    if (!ok)
+      throw Error(errc::kInvalidDocument, "unknown field '" + it.key() + "'" + where + "; expected one of: " + list,
+                  joinPath(path, it.key()));
+  }
+}
+
 double requireNumber(const nlohmann::json& j, const std::string& path) {
   const std::string what = path.empty() ? "the value" : path;
   if (!j.is_number()) throw Error(errc::kInvalidDocument, what + " must be a number, got " + jsonTypeName(j), path);

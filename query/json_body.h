@@ -2,6 +2,7 @@
 // Parsing of request bodies. A body that is not JSON is an fsdb::Error with code malformed_json
 // and a message that gives the byte offset; nesting deeper than `maxDepth` is limit_exceeded
 // (path "body", the limit named) so a hostile document cannot exhaust the stack.
+#include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -19,6 +20,10 @@ double requireNumber(const nlohmann::json& j, const std::string& path);
 const std::string& requireString(const nlohmann::json& j, const std::string& path);
 // `j[key]` of an object, or invalid_document "missing required field".
 const nlohmann::json& requireField(const nlohmann::json& obj, const std::string& key, const std::string& path);
+// invalid_document at path.key for the first key of `obj` not in `known`: "unknown field 'k'"
+// + `where` (" in a leaf") + "; expected one of: a, b, c".
+void rejectUnknownKeys(const nlohmann::json& obj, const std::string& path, std::initializer_list<const char*> known,
+                       const std::string& where = "");
 // The JSON type name used in messages: "string", "number", "object", ...
 std::string jsonTypeName(const nlohmann::json& j);
 

@@ -18,20 +18,6 @@ const NamedParam kParams[] = {{"eps1", &FuzzyPart::eps1}, {"eps2", &FuzzyPart::e
                               {"a2", &FuzzyPart::a2},     {"a3", &FuzzyPart::a3},     {"kx", &FuzzyPart::kx},
                               {"ky", &FuzzyPart::ky},     {"kv", &FuzzyPart::kv},     {"t", &FuzzyPart::t}};
 
-void rejectUnknownKeys(const nlohmann::json& obj, const std::string& path, std::initializer_list<const char*> known) {
-  for (auto it = obj.begin(); it != obj.end(); ++it) {
-    bool ok = false;
-    std::string list;
-    for (const char* k : known) {
-      ok = ok || it.key() == k;
-      list += (list.empty() ? "" : ", ") + std::string(k);
-    }
-    if (!ok)
-      throw Error(errc::kInvalidDocument, "unknown field '" + it.key() + "'; expected one of: " + list,
-                  joinPath(path, it.key()));
-  }
-}
-
 void parseTransform(const nlohmann::json& t, const std::string& path, FuzzyPart* part) {
   requireObject(t, path);
   rejectUnknownKeys(t, path, {"translate", "rotate", "scale"});
