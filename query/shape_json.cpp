@@ -28,9 +28,22 @@ void checkReferenceKey(const nlohmann::json& key, const std::string& path) {
               path);
 }
 
+// `resolver` with each answer remembered for one parse: the csg text asks for every name (as a
+// part, then as a shape) and the walk asks again for the same reference when it builds the leaf.
+ReferenceResolver remembering(const ReferenceResolver& resolver) {
+  if (!resolver) return {};
+  auto answers = std::make_shared<std::map<std::string, std::optional<ResolvedReference>>>();
+  return [resolver, answers](const std::string& kind, const nlohmann::json& key) {
+    const std::string k = kind + '\n' + key.dump();
+    auto it = answers->find(k);
+    if (it == answers->end()) it = answers->emplace(k, resolver(kind, key)).first;
+    return it->second;
+  };
+}
+
 struct Walker {
   size_t maxNodes;
-  const ReferenceResolver& resolver;
+  ReferenceResolver resolver;  // remembering(the caller's)
   ParsedShape out;
   // Stored shapes already built (shared subtrees are built once) and the chain of stored
   // shapes being expanded (a repeat is a cycle).
@@ -66,10 +79,7 @@ struct Walker {
                     joinPath(path, "transform"));
       doc["transform"] = node["transform"];
     }
-    for (auto it = node.begin(); it != node.end(); ++it)
-      if (it.key() != "part" && it.key() != "transform")
-        throw Error(errc::kInvalidDocument, "unknown field '" + it.key() + "' in a leaf; expected part, transform",
-                    joinPath(path, it.key()));
+    rejectUnknownKeys(node, path, {"part", "transform"}, " in a leaf");
     FuzzyPart part;
     try {
       part = parsePart(doc, pp);
@@ -91,14 +101,12 @@ struct Walker {
   std::shared_ptr<const AlphaFieldSource> reference(const nlohmann::json& node, const std::string& path,
                                                     std::shared_ptr<const CsgTree>* tree) {
     const std::string rp = joinPath(path, "ref");
-    for (auto it = node.begin(); it != node.end(); ++it)
-      if (it.key() != "ref")
-        throw Error(errc::kInvalidDocument,
-                    it.key() == "transform"
-                        ? "a transform on a stored shape is not supported yet: a fuzzy placement of a whole "
-                          "subtree does not reduce to placements of its parts; place the parts instead"
-                        : "unknown field '" + it.key() + "' in a reference; expected ref",
-                    joinPath(path, it.key()));
+    if (node.contains("transform"))
+      throw Error(errc::kInvalidDocument,
+                  "a transform on a stored shape is not supported yet: a fuzzy placement of a whole "
+                  "subtree does not reduce to placements of its parts; place the parts instead",
+                  joinPath(path, "transform"));
+    rejectUnknownKeys(node, path, {"ref"}, " in a reference");
     const ResolvedReference r = resolve("shape", node["ref"], rp);
     if (auto it = built.find(r.id); it != built.end()) {
       *tree = it->second.second;
@@ -133,12 +141,7 @@ struct Walker {
     else if (op == "intersection") csg = CsgOp::kIntersection;
     else if (op == "difference") csg = CsgOp::kDifference;
     else throw Error(errc::kInvalidDocument, "unknown op '" + op + "'; expected union, intersection, difference", opPath);
-    for (auto it = node.begin(); it != node.end(); ++it)
-      if (it.key() != "op" && it.key() != "operator" && it.key() != "children" && it.key() != "range" &&
-          it.key() != "step")
-        throw Error(errc::kInvalidDocument,
-                    "unknown field '" + it.key() + "' in a Boolean node; expected op, operator, children, range, step",
-                    joinPath(path, it.key()));
+    rejectUnknownKeys(node, path, {"op", "operator", "children", "range", "step"}, " in a Boolean node");
     OperatorConfig config{"zadeh", {}, {}};
     if (node.contains("operator")) config = parseOperatorConfig(node["operator"], joinPath(path, "operator"));
     const bool smooth = config.name != "zadeh";  // geometry/smooth_csg_field.h
@@ -246,7 +249,7 @@ TreeOutline outlineTree(const nlohmann::json& tree, const std::string& path) {
 ParsedShape parseShapeField(const nlohmann::json& doc, const std::string& path, size_t maxNodes,
                             const ReferenceResolver& resolver) {
   requireObject(doc, path);
-  Walker w{maxNodes, resolver, {}, {}, {}};
+  Walker w{maxNodes, remembering(resolver), {}, {}, {}};
   const std::string kind = doc.contains("kind") ? requireString(doc["kind"], joinPath(path, "kind")) : "shape";
   if (kind == "part") {
     w.count(path);
@@ -259,13 +262,10 @@ ParsedShape parseShapeField(const nlohmann::json& doc, const std::string& path, 
   }
   if (kind != "shape")
     throw Error(errc::kInvalidDocument, "expected kind \"shape\" or \"part\", got \"" + kind + "\"", joinPath(path, "kind"));
-  for (auto it = doc.begin(); it != doc.end(); ++it)
-    if (it.key() != "kind" && it.key() != "name" && it.key() != "tree" && it.key() != "csg" &&
-        it.key() != "meta" && it.key() != "descriptors")
-      throw Error(errc::kInvalidDocument, "unknown field '" + it.key() + "'; expected kind, name, tree, csg, meta",
-                  joinPath(path, it.key()));
-  const nlohmann::json tree = shapeTree(doc, path, resolver);
-  w.out.field = w.node(tree, joinPath(path, doc.contains("tree") ? "tree" : "csg"), &w.out.tree);
+  rejectUnknownKeys(doc, path, {"kind", "name", "tree", "csg", "meta", "descriptors"});
+  w.out.documentTree = shapeTree(doc, path, w.resolver);
+  w.out.documentTreePath = joinPath(path, doc.contains("tree") ? "tree" : "csg");
+  w.out.field = w.node(w.out.documentTree, w.out.documentTreePath, &w.out.tree);
   return w.out;
 }
 

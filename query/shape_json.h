@@ -49,6 +49,11 @@ struct ParsedShape {
   // JSON path of the first non-zadeh node operator ("shape.tree.operator"); empty if none. The
   // boundary method (tree) knows only the zadeh Booleans.
   std::string smoothOperatorPath;
+  // The document's tree with its "csg" text parsed (names resolved to "part"/"ref" leaves): what
+  // shapeTree returns, kept so callers (outlineTree) need not parse and resolve the text again.
+  // Null for a part document.
+  nlohmann::json documentTree;
+  std::string documentTreePath;  // its JSON path: path + ".tree" or path + ".csg"
 };
 
 // A stored document that a reference names.

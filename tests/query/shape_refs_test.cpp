@@ -105,6 +105,22 @@ TEST(ShapeRefs, TheCsgTextFormResolvesNamesToPartsThenShapes) {
   EXPECT_EQ(errorOf({{"csg", "A + B"}, {"tree", {{"part", "A"}}}}, db.resolver()).path(), "csg");
 }
 
+TEST(ShapeRefs, TheParsedShapeKeepsTheResolvedTreeAndEachReferenceIsLookedUpOnce) {
+  ToyStore db;
+  db.add("part", "A", 1, ballPart(1, 0));
+  db.add("part", "B", 2, ballPart(1, 1.5));
+  const json doc = {{"kind", "shape"}, {"csg", "A + B - A"}};
+  const json expected = shapeTree(doc, "shape", db.resolver());
+  db.lookups = 0;
+  ParsedShape s = parseShapeField(doc, "shape", 100, db.resolver());
+  EXPECT_EQ(s.documentTree, expected);
+  EXPECT_EQ(s.documentTreePath, "shape.csg");
+  EXPECT_EQ(db.lookups, 2);  // part A, part B: the text and the walk share the answers
+  ParsedShape t = parseShapeField({{"kind", "shape"}, {"tree", expected}}, "", 100, db.resolver());
+  EXPECT_EQ(t.documentTree, expected);
+  EXPECT_EQ(t.documentTreePath, "tree");
+}
+
 TEST(ShapeRefs, WithoutAResolverReferencesAreRefusedWithTheirPath) {
   Error e = errorOf({{"tree", {{"op", "union"}, {"children", {{{"part", "x"}}, {{"part", "y"}}}}}}}, {});
   EXPECT_EQ(e.code(), errc::kInvalidDocument);
