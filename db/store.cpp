@@ -43,15 +43,14 @@ std::string describe(const std::string& kind, const std::string& name, int64_t i
   return kind + " '" + name + "' (id " + std::to_string(id) + ")";
 }
 
-// The objects whose latest version reaches `id` (ancestors in refs), `id` itself excluded.
-// UNION (not UNION ALL) makes the walk terminate whatever the graph.
-constexpr const char* kDependentsSql =
-    "WITH RECURSIVE up(id) AS (SELECT parent_id FROM refs WHERE child_id = ?1"
-    " UNION SELECT refs.parent_id FROM refs JOIN up ON refs.child_id = up.id)"
-    " SELECT id FROM up WHERE id != ?1 ORDER BY id";
+// The ids of the objects whose latest version reaches ?1 (its ancestors in refs; ?1 itself only
+// through a cycle), as a subquery. UNION (not UNION ALL) makes the walk terminate whatever the graph.
+#define FSDB_REACHING_SQL                                                 \
+  "WITH RECURSIVE up(id) AS (SELECT parent_id FROM refs WHERE child_id = ?1" \
+  " UNION SELECT refs.parent_id FROM refs JOIN up ON refs.child_id = up.id) SELECT id FROM up"
 
 std::vector<int64_t> dependentsOf(Connection& connection, int64_t id) {
-  auto statement = connection.prepare(kDependentsSql);
+  auto statement = connection.prepare("SELECT id FROM (" FSDB_REACHING_SQL ") WHERE id != ?1 ORDER BY id");
   statement->bind(1, id);
   std::vector<int64_t> ids;
   while (statement->step()) ids.push_back(statement->columnInt(0));
@@ -124,10 +123,8 @@ void checkCycles(Connection& connection, const ObjectRow& object,
 
 // Drops the cached evaluations of `id` and of every object that reaches it.
 void invalidateCache(Connection& connection, int64_t id) {
-  auto statement = connection.prepare(
-      "DELETE FROM eval_cache WHERE object_id = ?1 OR object_id IN ("
-      "WITH RECURSIVE up(id) AS (SELECT parent_id FROM refs WHERE child_id = ?1"
-      " UNION SELECT refs.parent_id FROM refs JOIN up ON refs.child_id = up.id) SELECT id FROM up)");
+  auto statement =
+      connection.prepare("DELETE FROM eval_cache WHERE object_id = ?1 OR object_id IN (" FSDB_REACHING_SQL ")");
   statement->bind(1, id);
   statement->run();
 }
@@ -160,7 +157,7 @@ void writeVersion(Connection& connection, const ObjectRow& row, int version, con
         "INSERT INTO csg_nodes (object_id, version, node, parent, position, kind, operator, ref_id,"
         " transform) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9)");
     for (const auto& node : object.nodes) {
-      std::optional<int64_t> refId = node.refId;
+      std::optional<int64_t> refId;
       if (node.refIndex >= 0) {
         if (static_cast<size_t>(node.refIndex) >= children.size())
           throw Error(errc::kInvalidDocument,
@@ -219,9 +216,8 @@ StoredObject createIn(Connection& connection, const NewObject& object) {
   std::string now = isoNow();
   {
     auto statement = connection.prepare(
-        "INSERT INTO objects (kind, name, latest_version, created_at, updated_at)"
-        " VALUES (?1, ?2, 1, ?3, ?3)");
-    statement->bind(1, object.kind).bind(2, object.name).bind(3, now);
+        "INSERT INTO objects (kind, name, latest_version) VALUES (?1, ?2, 1)");
+    statement->bind(1, object.kind).bind(2, object.name);
     statement->run();
   }
   ObjectRow row{connection.lastInsertId(), object.kind, object.name, 1};
@@ -248,8 +244,8 @@ StoredObject putIn(Connection& connection, int64_t id, const NewObject& object) 
   int version = row->latestVersion + 1;
   {
     auto statement = connection.prepare(
-        "UPDATE objects SET latest_version = ?2, updated_at = ?3 WHERE id = ?1");
-    statement->bind(1, id).bind(2, version).bind(3, now);
+        "UPDATE objects SET latest_version = ?2 WHERE id = ?1");
+    statement->bind(1, id).bind(2, version);
     statement->run();
   }
   writeVersion(connection, *row, version, object, children, now);
@@ -301,14 +297,17 @@ constexpr const char* kObjectColumns =
     "SELECT o.id, o.kind, o.name, o.latest_version, v.version, v.document, v.content_hash,"
     " v.created_at FROM objects o JOIN versions v ON v.object_id = o.id";
 
-std::optional<StoredObject> loadObject(Connection& connection, const std::string& kind, int64_t id,
-                                       std::optional<int> version) {
+// The object of `kind` with this id (or, without one, this name) at `version` (else the latest).
+std::optional<StoredObject> loadObject(Connection& connection, const std::string& kind, std::optional<int64_t> id,
+                                       const std::string& name, std::optional<int> version) {
   std::optional<StoredObject> object;
   {
+    // Two statements, not one with OR, so each is a plain index lookup.
     auto statement = connection.prepare(std::string(kObjectColumns) +
-                                        " AND v.version = COALESCE(?3, o.latest_version)"
-                                        " WHERE o.id = ?1 AND o.kind = ?2");
-    statement->bind(1, id).bind(2, kind);
+                                        " AND v.version = COALESCE(?3, o.latest_version) WHERE o.kind = ?2 AND " +
+                                        (id ? "o.id = ?1" : "o.name = ?1"));
+    if (id) statement->bind(1, *id); else statement->bind(1, name);
+    statement->bind(2, kind);
     statement->bind(3, version ? std::optional<int64_t>(*version) : std::nullopt);
     if (statement->step()) object = readObject(*statement);
   }
@@ -423,17 +422,17 @@ std::vector<int64_t> Store::remove(const std::string& kind, int64_t id, bool cas
       throw Error(errc::kInUse, describe(row->kind, row->name, id) + " is used by " + users);
     }
   }
-  std::vector<int64_t> removed{id};
-  for (int64_t dependent : dependentsOf(*connection, id)) removed.push_back(dependent);
   // One statement for all: refs.child_id has no ON DELETE, and SQLite checks foreign keys at the
   // end of a statement, when the parents are gone with their children. Versions, normalised rows
-  // and cache rows go by ON DELETE CASCADE.
-  auto statement = (*connection).prepare(
-      "DELETE FROM objects WHERE id = ?1 OR id IN ("
-      "WITH RECURSIVE up(id) AS (SELECT parent_id FROM refs WHERE child_id = ?1"
-      " UNION SELECT refs.parent_id FROM refs JOIN up ON refs.child_id = up.id) SELECT id FROM up)");
+  // and cache rows go by ON DELETE CASCADE. RETURNING names what went, so the walk runs once.
+  auto statement = (*connection).prepare("DELETE FROM objects WHERE id = ?1 OR id IN (" FSDB_REACHING_SQL
+                                         ") RETURNING id");
   statement->bind(1, id);
-  statement->run();
+  std::vector<int64_t> removed;
+  while (statement->step())
+    if (statement->columnInt(0) != id) removed.push_back(statement->columnInt(0));
+  std::sort(removed.begin(), removed.end());
+  removed.insert(removed.begin(), id);
   transaction.commit();
   return removed;
 }
@@ -472,11 +471,9 @@ void Store::storeEvaluation(int64_t objectId, const std::string& key, const Cach
   if (!objectRow(*connection, objectId))
     throw Error(errc::kNotFound, "object " + std::to_string(objectId) + " not found");
   auto statement = (*connection).prepare(
-      "INSERT OR REPLACE INTO eval_cache (key, object_id, result, vdb, created_at)"
-      " VALUES (?1, ?2, ?3, ?4, ?5)");
+      "INSERT OR REPLACE INTO eval_cache (key, object_id, result, vdb) VALUES (?1, ?2, ?3, ?4)");
   statement->bind(1, key).bind(2, objectId).bind(3, value.resultJson);
   if (value.vdb.empty()) statement->bindNull(4); else statement->bindBlob(4, value.vdb);
-  statement->bind(5, isoNow());
   statement->run();
   transaction.commit();
 }
@@ -494,7 +491,7 @@ void Store::checkpoint() {
 StoredObject Store::get(const std::string& kind, int64_t id, std::optional<int> version) const {
   Impl::Lease connection(*impl_);
   Transaction transaction(*connection, Transaction::Mode::kDeferred);
-  if (auto object = loadObject(*connection, kind, id, version)) return *object;
+  if (auto object = loadObject(*connection, kind, id, "", version)) return *object;
   auto row = objectRow(*connection, id);
   if (row && row->kind == kind && version)
     throw Error(errc::kNotFound, describe(kind, row->name, id) + " has no version " +
@@ -506,9 +503,7 @@ StoredObject Store::get(const std::string& kind, int64_t id, std::optional<int> 
 std::optional<StoredObject> Store::find(const ObjectReference& reference) const {
   Impl::Lease connection(*impl_);
   Transaction transaction(*connection, Transaction::Mode::kDeferred);
-  auto id = resolve(*connection, reference);
-  if (!id) return std::nullopt;
-  return loadObject(*connection, reference.kind, *id, std::nullopt);
+  return loadObject(*connection, reference.kind, reference.id, reference.name, std::nullopt);
 }
 
 std::vector<StoredObject> Store::list(const ListQuery& query) const {

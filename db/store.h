@@ -61,8 +61,8 @@ struct CsgNodeRow {
   int position = 0;            // child position under the parent (difference is ordered)
   std::string kind;            // "union", "intersection", "difference", "part" (inline), "ref"
   std::string operatorJson;    // node operator document, "" for zadeh / leaves
-  std::optional<int64_t> refId;  // "ref" leaves: the referenced object (resolved by the store)
-  int refIndex = -1;           // "ref" leaves: index into NewObject::references
+  int refIndex = -1;           // "ref" leaves: index into NewObject::references (the store
+                               // records the object it resolves to as csg_nodes.ref_id)
   std::string transformJson;   // the leaf's transform document, "" when none
 };
 

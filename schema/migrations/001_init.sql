@@ -5,13 +5,12 @@
 -- One row per live object. AUTOINCREMENT so an id is never reused, even after a delete: a
 -- client holding id 7 must never silently read a different object. Ids are shared by all kinds.
 -- latest_version is denormalised from versions so "get the latest" is one primary-key lookup.
+-- Times live on the versions (created_at of version 1 and of the latest one).
 CREATE TABLE objects (
   id INTEGER PRIMARY KEY AUTOINCREMENT,
   kind TEXT NOT NULL CHECK (kind IN ('part', 'shape', 'curve', 'surface')),
   name TEXT NOT NULL,
-  latest_version INTEGER NOT NULL,
-  created_at TEXT NOT NULL,  -- ISO 8601 UTC with milliseconds
-  updated_at TEXT NOT NULL
+  latest_version INTEGER NOT NULL
 );
 -- A name is unique among the live objects of its kind (deleting frees it).
 CREATE UNIQUE INDEX objects_kind_name ON objects (kind, name);
@@ -23,7 +22,7 @@ CREATE TABLE versions (
   version INTEGER NOT NULL,
   document TEXT NOT NULL,
   content_hash TEXT NOT NULL,
-  created_at TEXT NOT NULL,
+  created_at TEXT NOT NULL,  -- ISO 8601 UTC with milliseconds
   PRIMARY KEY (object_id, version)
 ) WITHOUT ROWID;
 
@@ -79,7 +78,6 @@ CREATE TABLE eval_cache (
   key TEXT PRIMARY KEY,
   object_id INTEGER NOT NULL REFERENCES objects (id) ON DELETE CASCADE,
   result TEXT NOT NULL,
-  vdb BLOB,
-  created_at TEXT NOT NULL
+  vdb BLOB
 );
 CREATE INDEX eval_cache_object ON eval_cache (object_id);

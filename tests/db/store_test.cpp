@@ -28,10 +28,9 @@ NewObject shape(const std::string& name, const std::vector<ObjectReference>& chi
                 const std::string& salt = "") {
   std::string document = "{\"union\":" + std::to_string(children.size()) + salt + "}";
   NewObject object{"shape", name, document, contentHash(document), children, {}, {}};
-  object.nodes.push_back({0, -1, 0, "union", "", std::nullopt, -1, ""});
+  object.nodes.push_back({0, -1, 0, "union", "", -1, ""});
   for (size_t i = 0; i < children.size(); ++i)
-    object.nodes.push_back({static_cast<int>(i + 1), 0, static_cast<int>(i), "ref", "", std::nullopt,
-                            static_cast<int>(i), "{\"translate\":[1,0,0]}"});
+    object.nodes.push_back({static_cast<int>(i + 1), 0, static_cast<int>(i), "ref", "", static_cast<int>(i), "{\"translate\":[1,0,0]}"});
   return object;
 }
 
