@@ -98,10 +98,9 @@ NewObject prepareDocument(const nlohmann::json& document, const std::string& kin
   if (kind == "part") {
     out.parameters = parameterSpans(parsePart(doc, path));
   } else {
-    const ReferenceResolver resolver = storeResolver(store, pending);
-    parseShapeField(doc, path, maxNodes, resolver);  // validates everything, references included
-    const nlohmann::json tree = shapeTree(doc, path, resolver);
-    const TreeOutline outline = outlineTree(tree, joinPath(path, doc.contains("tree") ? "tree" : "csg"));
+    // Validates everything, references included, and keeps the resolved tree (csg text parsed).
+    const ParsedShape parsed = parseShapeField(doc, path, maxNodes, storeResolver(store, pending));
+    const TreeOutline outline = outlineTree(parsed.documentTree, parsed.documentTreePath);
     for (const DocumentReference& r : outline.references) out.references.push_back(objectReference(r));
     for (size_t i = 0; i < outline.nodes.size(); ++i) {
       const TreeNodeOutline& n = outline.nodes[i];

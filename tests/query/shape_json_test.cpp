@@ -141,7 +141,9 @@ TEST(ShapeJson, BlendedUnionEvaluatesToNestedFuzzyVolumes) {
   const auto volumes = EnvelopeGrid::build(*blended.field, 0.05).volumes(alphas);
   const double zadehHalf = EnvelopeGrid::build(*zadeh.field, 0.05).volumes({0.5})[0].upper_volume;
   for (size_t i = 0; i < volumes.size(); ++i) {
-    if (alphas[i] <= 0.5) EXPECT_LE(volumes[i].lower_volume, volumes[i].upper_volume) << alphas[i];
+    if (alphas[i] <= 0.5) {
+      EXPECT_LE(volumes[i].lower_volume, volumes[i].upper_volume) << alphas[i];
+    }
     if (i > 0) {  // nested in α: upper shrinks, lower grows
       EXPECT_LE(volumes[i].upper_volume, volumes[i - 1].upper_volume) << alphas[i];
       EXPECT_GE(volumes[i].lower_volume, volumes[i - 1].lower_volume) << alphas[i];
