@@ -57,9 +57,9 @@ AlphaLevels levelsFromPossibility(double possibility, double necessity) {
   // Floats round u down and l up (upper(α) and lower(α) only shrink; as fuzzy_part_field.h), so
   // u = 1 only where Π = 1 and l = 0 only where N = 1.
   const float u = floatDown(std::clamp(possibility, 0.0, 1.0));
-  if (!(necessity > 0.0)) return {u, kNeverInside};
-  // Rounding must not break N <= Π: l >= 1 − u too (1 − u of a float is exact in double).
-  return {u, std::max(floatUp(1.0 - std::min(necessity, 1.0)), floatUp(1.0 - double(u)))};
+  // N > 0 ⇒ Π = 1 (lower(α) ⊆ upper(α)): where Π < 1 the point is in no lower(α).
+  if (!(necessity > 0.0) || u < 1.0f) return {u, kNeverInside};
+  return {u, floatUp(1.0 - std::min(necessity, 1.0))};
 }
 
 NodeOperator::NodeOperator(const OperatorConfig& config)
@@ -79,10 +79,10 @@ AlphaLevels NodeOperator::combine(CsgOp op, AlphaLevels a, AlphaLevels b) const 
   // difference: Π' = T(ΠA, 1 − NB), N' = T(NA, 1 − ΠB); otherwise the same operator on both.
   const double p = combine(op, possibilityOf(a), difference ? necessityOf(b) : possibilityOf(b));
   const double n = combine(op, necessityOf(a), difference ? possibilityOf(b) : necessityOf(b));
-  return levelsFromPossibility(p, std::min(n, p));
+  return levelsFromPossibility(p, n);
 }
 
-NodeOperator::Range NodeOperator::combineRange(CsgOp op, Range a, Range b) const {
+MembershipRange NodeOperator::combine(CsgOp op, MembershipRange a, MembershipRange b) const {
   // The boundary values fix the result over the box when they fix it at its four corners (the
   // regions where they apply are monotone).
   const double corner = boundaryValue(op, a.lo, b.lo);
@@ -99,15 +99,15 @@ NodeOperator::Range NodeOperator::combineRange(CsgOp op, Range a, Range b) const
 }
 
 AlphaLevelBounds NodeOperator::combine(CsgOp op, const AlphaLevelBounds& a, const AlphaLevelBounds& b) const {
-  auto possibility = [](const AlphaLevelBounds& x) { return Range{x.upperMin, x.upperMax}; };
+  auto possibility = [](const AlphaLevelBounds& x) { return MembershipRange{x.upperMin, x.upperMax}; };
   auto necessity = [](const AlphaLevelBounds& x) {
-    return Range{necessityOf({0.0f, x.lowerMax}), necessityOf({0.0f, x.lowerMin})};
+    return MembershipRange{necessityOf({0.0f, x.lowerMax}), necessityOf({0.0f, x.lowerMin})};
   };
   const bool difference = op == CsgOp::kDifference;
-  const Range p = combineRange(op, possibility(a), difference ? necessity(b) : possibility(b));
-  Range n = combineRange(op, necessity(a), difference ? possibility(b) : necessity(b));
-  n = {std::min(n.lo, p.lo), std::min(n.hi, p.hi)};  // N' = min(N', Π') is monotone too
-  // l falls as N' rises and (by the rounding rule of levelsFromPossibility) as Π' rises.
+  const MembershipRange p = combine(op, possibility(a), difference ? necessity(b) : possibility(b));
+  const MembershipRange n = combine(op, necessity(a), difference ? possibility(b) : necessity(b));
+  // levelsFromPossibility's l falls as N' rises and as Π' rises (the axiom's enforcement: never
+  // below Π' = 1, finite at 1), and its u rises with Π'.
   return {levelsFromPossibility(p.lo, 0.0).upper, levelsFromPossibility(p.hi, 0.0).upper,
           levelsFromPossibility(p.hi, n.hi).lower, levelsFromPossibility(p.lo, n.lo).lower};
 }

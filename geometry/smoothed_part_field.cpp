@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "geometry/error.h"
-#include "geometry/node_operator.h"
 
 namespace fsdb {
 
@@ -14,8 +13,8 @@ double defaultSmoothingRange(const PlacedSuperquadric& part) {
 
 namespace {
 
-// Below this N = μ is lost in l = 1 − N as a float (1 − 2^-25 rounds to 1): flush to 0 so that
-// Π and N agree on the support (and the boundary values of node_operator.h apply there).
+// Memberships below this are flushed to 0 (smoothed_part_field.h): the node operators' boundary
+// values apply where a step's unbounded tail would leave a trace.
 constexpr double kSmallestMembership = 0x1p-24;
 
 PlacedSuperquadric crispPart(const FuzzyPartField& leaf) {
@@ -53,15 +52,9 @@ double SmoothedPartField::membership(const Vec3& p) const {
   return mu < kSmallestMembership ? 0.0 : mu;
 }
 
-AlphaLevels SmoothedPartField::levelsAt(const Vec3& p) const {
-  const double mu = membership(p);
-  return levelsFromPossibility(mu, mu);
-}
-
-AlphaLevelBounds SmoothedPartField::boundsOver(const Vec3& lo, const Vec3& hi) const {
-  if (!boxesMeet(lo, hi, lo_, hi_))
-    return {0.0f, 0.0f, kNeverInside, kNeverInside};
-  return {};
+MembershipRange SmoothedPartField::membershipOver(const Vec3& lo, const Vec3& hi) const {
+  if (!boxesMeet(lo, hi, lo_, hi_)) return {0.0, 0.0};
+  return {0.0, 1.0};
 }
 
 void SmoothedPartField::boundingBox(Vec3* lo, Vec3* hi) const {

@@ -6,22 +6,24 @@
 // with d the part's pseudo signed distance (placed_superquadric.h: negative inside, in world
 // units), `step` a smooth unit step of the catalogue rising from 0 at −1 to 1 at +1 with
 // step(0) = 1/2 (so the part's own surface is exactly the 0.5 level), and R > 0 the node's
-// rising range. Memberships below 2^-24 are flushed to 0 (1 − μ would round to 1 in a float l).
-// Its alpha field is Π = N = μ: u = μ, l = 1 − μ where μ > 0, else kNeverInside
-// (node_operator.h). So are the pairs of smooth nodes above crisp parts only: lower(α) =
-// {μ ≥ 1 − α} and upper(α) = {μ ≥ α} meet at the 0.5 level and swap above α = 1/2.
+// rising range. Memberships below 2^-24 are flushed to 0: a step with unbounded tails (sigmoid)
+// would leave the whole grown box slightly positive, where node operators get no boundary values
+// (Ext_max adds delta/4 where both memberships are positive; node_operator.h).
+// It is a MembershipField (membership_field.h): smooth nodes combine μ itself, and its levels are
+// Π = min(1, 2μ), N = max(0, 2μ − 1), so its core is the part itself ({μ ≥ 1/2}), upper(α) =
+// {μ ≥ α/2} and lower(α) = {μ ≥ 1 − α/2} (the band of width R around the surface at α = 0).
 //
 // Support: μ = 0 outside the part's bounding box grown by R on every side. For an undeformed part
 // step(−d/R) is 0 there anyway (the radial pseudo distance is at least the Euclidean distance to
 // the solid, hence >= R); for a tapered, twisted or bent part the pseudo distance is not a
 // distance bound, and this cut keeps boundingBox and boundsOver sound by construction.
-// boundsOver: (0, never) on boxes outside the grown box, else the trivial [0, 1] (there is no
-// interval evaluation of d yet, so blocks inside the part are never proven uniform).
+// membershipOver (and so boundsOver): 0 on boxes outside the grown box, else the trivial [0, 1]
+// (there is no interval evaluation of d yet, so blocks inside the part are never proven uniform).
 #include <memory>
 #include <optional>
 
-#include "geometry/alpha_field.h"
 #include "geometry/fuzzy_part_field.h"
+#include "geometry/membership_field.h"
 #include "geometry/operator_catalog.h"
 #include "geometry/placed_superquadric.h"
 
@@ -43,15 +45,14 @@ struct LeafSmoothing {
 // Returns the step function.
 std::shared_ptr<const UnaryFunction> validateLeafSmoothing(const LeafSmoothing& smoothing);
 
-class SmoothedPartField : public AlphaFieldSource {
+class SmoothedPartField : public MembershipField {
  public:
   // `leaf` must be crisp (FuzzyPartField::isCrisp, else errc::kInvalidDocument, path "part");
   // validateLeafSmoothing's errors.
   SmoothedPartField(const FuzzyPartField& leaf, const LeafSmoothing& smoothing);
 
-  double membership(const Vec3& p) const;  // μ(p) above
-  AlphaLevels levelsAt(const Vec3& p) const override;
-  AlphaLevelBounds boundsOver(const Vec3& lo, const Vec3& hi) const override;
+  double membership(const Vec3& p) const override;  // μ(p) above
+  MembershipRange membershipOver(const Vec3& lo, const Vec3& hi) const override;
   void boundingBox(Vec3* lo, Vec3* hi) const override;
 
   double range() const { return range_; }

@@ -169,7 +169,7 @@ struct Walker {
     *tree = t;
     if (!smooth) return std::make_shared<CsgField>(csg, std::move(fields));
     try {
-      return std::make_shared<SmoothCsgField>(csg, config, smoothing, std::move(fields));
+      return makeSmoothCsgNode(csg, config, smoothing, std::move(fields));
     } catch (const Error& e) {
       throw e.withPathPrefix(path);
     }

@@ -38,3 +38,11 @@ inline ::testing::AssertionResult levelsWithin(const fsdb::AlphaLevels& v, const
                                        << b.upperMin << ", " << b.upperMax << "], l [" << b.lowerMin << ", "
                                        << b.lowerMax << "]";
 }
+
+// Does a point's pair keep lower(α) ⊆ upper(α) for every α, i.e. l <= 1 ⇒ u = 1 (SPEC §3;
+// geometry/node_operator.h)? Nesting in α holds for any pair (upper(α) = {u >= α} shrinks,
+// lower(α) = {l <= α} grows).
+inline ::testing::AssertionResult lowerInsideUpper(const fsdb::AlphaLevels& v) {
+  if (v.lower > 1.0f || v.upper == 1.0f) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "l = " << v.lower << " <= 1 but u = " << v.upper << " < 1";
+}

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "block_lattice.h"
+#include "operator_names.h"
 #include "geometry/expect_error.h"
 
 namespace fsdb {
@@ -16,44 +17,45 @@ namespace {
 
 const CsgOp kOps[] = {CsgOp::kUnion, CsgOp::kIntersection, CsgOp::kDifference};
 
-// Every binary operator of the catalogue, with its defaults.
-std::vector<std::string> binaryOperatorNames() {
-  std::vector<std::string> names;
-  for (const OperatorSpec& spec : operatorCatalog())
-    if (spec.kind == "fuzzy_operator" || spec.kind == "blend") names.push_back(spec.name);
-  return names;
-}
-
-// A valid point of an alpha field (N = 1 − l <= Π = u), with the special values 0, 1 and
+// A valid point of an alpha field (l <= 1 only where u = 1), with the special values 0, 1 and
 // kNeverInside drawn often.
 AlphaLevels randomLevels(std::mt19937& rng) {
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   std::uniform_int_distribution<int> pick(0, 3);
+  const int ku = pick(rng), kl = pick(rng);
+  const float u = ku == 0 ? 0.0f : ku <= 2 ? 1.0f : unit(rng);
+  if (u < 1.0f) return {u, kNeverInside};
+  return {u, kl == 0 ? 0.0f : kl == 1 ? 1.0f : kl == 2 ? kNeverInside : unit(rng)};
+}
+
+// Any pair with N <= Π, also ones that break lower ⊆ upper (no source of fsdb makes them).
+AlphaLevels randomBrokenLevels(std::mt19937& rng) {
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   for (;;) {
-    const int ku = pick(rng), kl = pick(rng);
-    const float u = ku == 0 ? 0.0f : ku == 1 ? 1.0f : unit(rng);
-    const float l = kl == 0 ? 0.0f : kl == 1 ? 1.0f : kl == 2 ? kNeverInside : unit(rng);
-    if (necessityOf({u, l}) <= u) return {u, l};
+    const AlphaLevels v{unit(rng), unit(rng)};
+    if (necessityOf(v) <= v.upper) return v;
   }
 }
 
 TEST(NodeOperator, PossibilityAndNecessityOfLevels) {
-  EXPECT_EQ(possibilityOf({0.25f, 0.5f}), 0.25);
+  EXPECT_EQ(possibilityOf({0.25f, kNeverInside}), 0.25);
   EXPECT_EQ(necessityOf({1.0f, 0.25f}), 0.75);
   EXPECT_EQ(necessityOf({1.0f, kNeverInside}), 0.0);
-  const AlphaLevels back = levelsFromPossibility(0.75, 0.75);
-  EXPECT_EQ(back.upper, 0.75f);
+  const AlphaLevels back = levelsFromPossibility(1.0, 0.75);
+  EXPECT_EQ(back.upper, 1.0f);
   EXPECT_EQ(back.lower, 0.25f);
   EXPECT_EQ(levelsFromPossibility(0.3, 0.0).lower, kNeverInside);
   EXPECT_EQ(levelsFromPossibility(1.5, 0.0).upper, 1.0f);
-  // Rounding: u down, l up, and 1 − l <= u kept, also next to 1 where float ulps differ.
+  // N > 0 only where Π = 1: below it the point is in no lower(α) (lower only shrinks).
+  EXPECT_EQ(levelsFromPossibility(0.75, 0.75).upper, 0.75f);
+  EXPECT_EQ(levelsFromPossibility(0.75, 0.75).lower, kNeverInside);
+  // Rounding: u down, l up; u = 1 only where Π >= 1, also next to 1 where float ulps differ.
   for (double m : {0.99999997, 0.9999, 1.0 - 1e-12, 0.3 + 1e-12}) {
-    const AlphaLevels v = levelsFromPossibility(m, m);
-    EXPECT_LE(double(v.upper), m) << m;
-    EXPECT_GE(double(v.lower), 1.0 - m) << m;
-    EXPECT_LE(necessityOf(v), possibilityOf(v)) << m;
+    EXPECT_LE(double(levelsFromPossibility(m, 0.0).upper), m) << m;
+    EXPECT_LT(levelsFromPossibility(m, m).upper, 1.0f) << m;
+    EXPECT_EQ(levelsFromPossibility(m, m).lower, kNeverInside) << m;
+    EXPECT_GE(double(levelsFromPossibility(1.0, m).lower), 1.0 - m) << m;
   }
-  EXPECT_LT(levelsFromPossibility(1.0 - 1e-12, 0.0).upper, 1.0f);
 }
 
 // With T = min the pair rules are alpha_field.h's Booleans, except l = 1 → kNeverInside (the
@@ -106,18 +108,26 @@ TEST(NodeOperator, EveryOperatorFlaggedMonotoneIsMonotoneAndTheOthersDip) {
   }
 }
 
-TEST(NodeOperator, NecessityNeverExceedsPossibilityForEveryOperator) {
+// The axiom N > 0 ⇒ Π = 1 carries over through the boundary values for every operator, without
+// the enforcement of levelsFromPossibility (the raw N', Π' are checked); and with children that
+// break it, the enforcement still gives lower ⊆ upper.
+TEST(NodeOperator, EveryOperatorKeepsLowerInsideUpper) {
   std::mt19937 rng(5);
   for (const std::string& name : binaryOperatorNames()) {
     const NodeOperator op({name, {}, {}});
     for (int i = 0; i < 20000; ++i) {
       const AlphaLevels a = randomLevels(rng), b = randomLevels(rng);
       for (CsgOp c : kOps) {
+        const bool difference = c == CsgOp::kDifference;
+        const double p = op.combine(c, possibilityOf(a), difference ? necessityOf(b) : possibilityOf(b));
+        const double n = op.combine(c, necessityOf(a), difference ? possibilityOf(b) : necessityOf(b));
+        ASSERT_TRUE(n <= 0.0 || p == 1.0) << name << " " << int(c) << ": N' = " << n << ", Π' = " << p;
         const AlphaLevels r = op.combine(c, a, b);
-        ASSERT_LE(necessityOf(r), possibilityOf(r)) << name;
+        ASSERT_TRUE(lowerInsideUpper(r)) << name;
         ASSERT_GE(r.upper, 0.0f);
         ASSERT_LE(r.upper, 1.0f);
       }
+      for (CsgOp c : kOps) ASSERT_TRUE(lowerInsideUpper(op.combine(c, randomBrokenLevels(rng), randomBrokenLevels(rng)))) << name;
     }
   }
 }
@@ -153,6 +163,7 @@ TEST(NodeOperator, BlendsActOnMembershipMinusOneHalf) {
 TEST(NodeOperator, BoundsHoldEveryCombinationOfPointsInside) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
+  long checked = 0;
   for (const std::string& name : binaryOperatorNames()) {
     const NodeOperator op({name, {}, {}});
     for (int box = 0; box < 300; ++box) {
@@ -162,24 +173,53 @@ TEST(NodeOperator, BoundsHoldEveryCombinationOfPointsInside) {
                                 std::max(x.lower, y.lower)};
       };
       const AlphaLevelBounds ba = boundsOf(a0, a1), bb = boundsOf(b0, b1);
-      auto inside = [&](const AlphaLevelBounds& b) {
-        for (;;) {
-          const float u = float(b.upperMin + unit(rng) * (b.upperMax - b.upperMin));
+      // A valid pair (randomLevels' kind) within the bounds b; false when none was drawn.
+      auto inside = [&](const AlphaLevelBounds& b, AlphaLevels* v) {
+        for (int tries = 0; tries < 100; ++tries) {
+          const float u = unit(rng) < 0.3 ? b.upperMax : float(b.upperMin + unit(rng) * (b.upperMax - b.upperMin));
           const float lo = std::min(b.lowerMin, 1.0f), hi = std::min(b.lowerMax, 1.0f);
-          float l = unit(rng) < 0.2 ? b.lowerMax : float(lo + unit(rng) * (hi - lo));
+          float l = unit(rng) < 0.3 ? b.lowerMax : float(lo + unit(rng) * (hi - lo));
           if (l > 1.0f) l = kNeverInside;
-          if (l < b.lowerMin || l > b.lowerMax) continue;
-          if (necessityOf({u, l}) <= u) return AlphaLevels{u, l};
+          if (l < b.lowerMin || l > b.lowerMax || (l <= 1.0f && u < 1.0f)) continue;
+          *v = {u, l};
+          return true;
         }
+        return false;
       };
       for (CsgOp c : kOps) {
         const AlphaLevelBounds r = op.combine(c, ba, bb);
         for (int k = 0; k < 20; ++k) {
-          // Only pairs that are valid levels (N <= Π) are drawn; skip boxes that hold none.
-          if (necessityOf({ba.upperMax, ba.lowerMin}) > ba.upperMax || necessityOf({bb.upperMax, bb.lowerMin}) > bb.upperMax)
-            break;
-          const AlphaLevels v = op.combine(c, inside(ba), inside(bb));
+          AlphaLevels va, vb;
+          if (!inside(ba, &va) || !inside(bb, &vb)) continue;
+          const AlphaLevels v = op.combine(c, va, vb);
           ASSERT_TRUE(levelsWithin(v, r)) << name;
+          ++checked;
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 100000);
+}
+
+TEST(NodeOperator, MembershipBoundsHoldEveryCombinationInside) {
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  auto end = [&] {
+    const double x = unit(rng);
+    return x < 0.15 ? 0.0 : x > 0.85 ? 1.0 : unit(rng);
+  };
+  for (const std::string& name : binaryOperatorNames()) {
+    const NodeOperator op({name, {}, {}});
+    for (int box = 0; box < 2000; ++box) {
+      const double a0 = end(), a1 = end(), b0 = end(), b1 = end();
+      const MembershipRange a{std::min(a0, a1), std::max(a0, a1)}, b{std::min(b0, b1), std::max(b0, b1)};
+      for (CsgOp c : kOps) {
+        const MembershipRange r = op.combine(c, a, b);
+        for (int k = 0; k < 10; ++k) {
+          const double x = a.lo + unit(rng) * (a.hi - a.lo), y = b.lo + unit(rng) * (b.hi - b.lo);
+          const double v = op.combine(c, k == 0 ? a.lo : k == 1 ? a.hi : x, k == 0 ? b.hi : k == 1 ? b.lo : y);
+          ASSERT_GE(v, r.lo) << name << " " << int(c);
+          ASSERT_LE(v, r.hi) << name << " " << int(c);
         }
       }
     }

@@ -30,9 +30,14 @@ TEST(SmoothedPartField, MembershipIsTheStepOfMinusDistanceOverRange) {
     EXPECT_NEAR(f.membership(p), polynomialStep(3, -d / 0.5), 1e-12) << d;
   }
   EXPECT_NEAR(f.membership({3, 2, 3}), 0.5, 1e-12);  // the surface is the 0.5 level
-  const AlphaLevels v = f.levelsAt({3.1, 2, 3});     // Π = N = μ
-  EXPECT_NEAR(v.upper, polynomialStep(3, -0.2), 1e-6);
-  EXPECT_NEAR(necessityOf(v), v.upper, 1e-6);
+  // Levels: Π = min(1, 2μ), N = max(0, 2μ − 1) (membership_field.h).
+  const AlphaLevels outside = f.levelsAt({3.1, 2, 3});
+  EXPECT_NEAR(outside.upper, 2 * polynomialStep(3, -0.2), 1e-6);
+  EXPECT_EQ(outside.lower, kNeverInside);
+  const AlphaLevels inside = f.levelsAt({2.9, 2, 3});
+  EXPECT_EQ(inside.upper, 1.0f);
+  EXPECT_NEAR(necessityOf(inside), 2 * polynomialStep(3, 0.2) - 1, 1e-6);
+  EXPECT_EQ(f.levelsAt({3, 2, 3}).upper, 1.0f);  // the surface is in the core
   EXPECT_EQ(f.levelsAt({0, 0, 10}).lower, kNeverInside);
   EXPECT_EQ(f.levelsAt({1, 2, 3}).lower, 0.0f);  // deep inside: μ = 1
 }
@@ -73,11 +78,14 @@ TEST(SmoothedPartField, BoundsHoldTheLevelsOfEveryPointOfTheBox) {
   for (int i = 0; i < 2000; ++i) {
     const Vec3 lo{c(rng), c(rng), c(rng)}, hi = lo + Vec3{w(rng), w(rng), w(rng)};
     const AlphaLevelBounds b = f.boundsOver(lo, hi);
+    const MembershipRange m = f.membershipOver(lo, hi);
     exact += b.uniform();
     for (int k = 0; k < 10; ++k) {
       const Vec3 p{lo.x + t(rng) * (hi.x - lo.x), lo.y + t(rng) * (hi.y - lo.y), lo.z + t(rng) * (hi.z - lo.z)};
       const AlphaLevels v = f.levelsAt(p);
       ASSERT_TRUE(levelsWithin(v, b));
+      ASSERT_GE(f.membership(p), m.lo);
+      ASSERT_LE(f.membership(p), m.hi);
     }
   }
   EXPECT_GT(exact, 100);  // boxes outside the grown box are proven empty

@@ -77,7 +77,8 @@ TEST(ShapeJson, SmoothOperatorsAreAcceptedWithTheirParameters) {
   doc["tree"]["range"] = 0.2;
   doc["tree"]["step"] = {{"name", "bspline"}, {"m", 4}};
   const ParsedShape s = parseShapeField(doc, "shape", 100);
-  const auto* node = dynamic_cast<const SmoothCsgField*>(s.field.get());
+  // Crisp children only: the node combines their memberships (geometry/smooth_csg_field.h).
+  const auto* node = dynamic_cast<const MembershipCsgField*>(s.field.get());
   ASSERT_NE(node, nullptr);
   EXPECT_EQ(node->nodeOperator().config().name, "bezier");
   EXPECT_EQ(node->nodeOperator().config().params.at("n"), 3.0);
@@ -90,7 +91,7 @@ TEST(ShapeJson, SmoothOperatorsAreAcceptedWithTheirParameters) {
   // Blends, and the default range: 10% of the smallest half-length (a1 = 1: 0.1).
   const ParsedShape e = parseShapeField(smoothUnion({{"name", "ext_max"}, {"delta", 0.1}}, {ball(1, 0), ball(1, 1.9)}),
                                         "shape", 100);
-  const auto* blended = dynamic_cast<const SmoothCsgField*>(e.field.get());
+  const auto* blended = dynamic_cast<const MembershipCsgField*>(e.field.get());
   ASSERT_NE(blended, nullptr);
   EXPECT_DOUBLE_EQ(dynamic_cast<const SmoothedPartField&>(*blended->children()[1]).range(), 0.1);
   // zadeh stays the exact Boolean.
@@ -129,9 +130,9 @@ TEST(ShapeJson, BadSmoothNodeParametersNameTheirPath) {
 }
 
 // End to end: parse, then the envelope grid of a blended union of two overlapping spheres.
-// Crisp parts under a smooth node have Π = N = μ, and so does the node: lower(α) = {μ ≥ 1 − α}
-// and upper(α) = {μ ≥ α}. They are nested (lower ⊆ upper) for α <= 1/2, meet at the blended
-// shape at α = 1/2, and swap above it: lower(α) = upper(1 − α) (node_operator.h).
+// Crisp parts under a smooth node combine as memberships μ (geometry/smooth_csg_field.h), read as
+// Π = min(1, 2μ), N = max(0, 2μ − 1) (geometry/membership_field.h): lower(α) = {μ ≥ 1 − α/2} and
+// upper(α) = {μ ≥ α/2}, nested (lower ⊆ upper at every α), one blended shape at α = 1.
 TEST(ShapeJson, BlendedUnionEvaluatesToNestedFuzzyVolumes) {
   json doc = smoothUnion({{"name", "ext_max"}}, {ball(1, 0), ball(1, 1.9)});
   doc["tree"]["range"] = 0.3;
@@ -139,21 +140,29 @@ TEST(ShapeJson, BlendedUnionEvaluatesToNestedFuzzyVolumes) {
   const ParsedShape zadeh = parseShapeField(smoothUnion({{"name", "zadeh"}}, {ball(1, 0), ball(1, 1.9)}), "shape", 100);
   const std::vector<double> alphas{0.0, 0.25, 0.5, 0.75, 1.0};
   const auto volumes = EnvelopeGrid::build(*blended.field, 0.05).volumes(alphas);
-  const double zadehHalf = EnvelopeGrid::build(*zadeh.field, 0.05).volumes({0.5})[0].upper_volume;
+  const double zadehCore = EnvelopeGrid::build(*zadeh.field, 0.05).volumes({1.0})[0].upper_volume;
   for (size_t i = 0; i < volumes.size(); ++i) {
-    if (alphas[i] <= 0.5) {
-      EXPECT_LE(volumes[i].lower_volume, volumes[i].upper_volume) << alphas[i];
-    }
+    EXPECT_LE(volumes[i].lower_volume, volumes[i].upper_volume) << alphas[i];
     if (i > 0) {  // nested in α: upper shrinks, lower grows
       EXPECT_LE(volumes[i].upper_volume, volumes[i - 1].upper_volume) << alphas[i];
       EXPECT_GE(volumes[i].lower_volume, volumes[i - 1].lower_volume) << alphas[i];
     }
-    // The swap above 1/2 (up to the boundary voxels of one level set).
-    EXPECT_NEAR(volumes[i].lower_volume, volumes[volumes.size() - 1 - i].upper_volume, 0.02) << alphas[i];
   }
-  EXPECT_NEAR(volumes[2].lower_volume, volumes[2].upper_volume, 1e-9);  // one shape at 1/2
-  EXPECT_GT(volumes[2].upper_volume, zadehHalf);                        // Ext_max grows the union
-  EXPECT_GT(volumes[0].upper_volume, volumes[4].upper_volume);           // graded: the levels differ
+  // One shape at α = 1 (lower(1) = {μ > 1/2}, upper(1) = {μ ≥ 1/2}: equal up to voxels at exactly 1/2).
+  EXPECT_NEAR(volumes[4].lower_volume, volumes[4].upper_volume, 1e-3 * volumes[4].upper_volume);
+  EXPECT_GT(volumes[4].upper_volume, zadehCore);                   // Ext_max grows the union
+  EXPECT_GT(volumes[0].upper_volume, volumes[4].upper_volume);     // graded: the levels differ
+  EXPECT_LT(volumes[2].lower_volume, volumes[4].lower_volume);
+}
+
+// A fuzzy child puts the node in the (Π, N) world; crisp-only nodes combine memberships.
+TEST(ShapeJson, SmoothNodesWithAFuzzyChildCombinePairs) {
+  json fuzzy = {{"part", {{"params", {{"a1", {{"tri", {0.8, 1.0, 1.2}}}}}}}}, {"transform", {{"translate", {1.9, 0, 0}}}}};
+  const ParsedShape mixed = parseShapeField(smoothUnion({{"name", "bezier"}}, {ball(1, 0), fuzzy}), "shape", 100);
+  const auto* node = dynamic_cast<const SmoothCsgField*>(mixed.field.get());
+  ASSERT_NE(node, nullptr);
+  EXPECT_NE(dynamic_cast<const SmoothedPartField*>(node->children()[0].get()), nullptr);
+  EXPECT_EQ(dynamic_cast<const SmoothedPartField*>(node->children()[1].get()), nullptr);
 }
 
 }  // namespace

@@ -125,10 +125,13 @@ TEST_F(EvaluateApi, BadRequestsNameTheirPathAndLimit) {
   json smooth = {{"kind", "shape"},
                  {"tree", {{"op", "union"}, {"operator", {{"name", "einstein"}}},
                            {"children", {{{"part", fuzzyBall(1, 1, 1)}}, {{"part", fuzzyBall(1, 1, 1, 1)}}}}}}};
-  r = server->post("/evaluate", json{{"shape", smooth}, {"resolution", 24}, {"alphas", {0.25, 0.5}}});
+  r = server->post("/evaluate", json{{"shape", smooth}, {"resolution", 24}, {"alphas", {0.25, 0.5, 0.75, 1}}});
   ASSERT_EQ(r.status, 200) << r.body;  // smooth node operators evaluate (README: Operators at CSG nodes)
-  for (const auto& level : r.json["alphas"])
+  for (const auto& level : r.json["alphas"])  // lower(α) ⊆ upper(α) at every level
     EXPECT_LE(level["lower_volume"].get<double>(), level["upper_volume"].get<double>()) << r.body;
+  // Crisp parts only: the blended shape at α = 1, where lower and upper meet.
+  const double lower1 = r.json["alphas"][3]["lower_volume"], upper1 = r.json["alphas"][3]["upper_volume"];
+  EXPECT_NEAR(lower1, upper1, 0.01 * upper1) << r.body;
   r = server->post("/evaluate", json{{"shape", smooth}, {"method", "boundary"}});
   EXPECT_EQ(r.status, 422);  // the boundary method knows only the zadeh Booleans
   EXPECT_EQ(r.json["error"]["path"], "shape.tree.operator") << r.body;
