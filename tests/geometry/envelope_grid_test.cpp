@@ -14,21 +14,13 @@
 #include "geometry/error.h"
 #include "tests/geometry/expect_error.h"
 #include "tests/geometry/fuzzy_ball.h"
+#include "tests/geometry/sphere_volumes.h"
 
 namespace fsdb {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-double ballVolume(double r) { return r > 0.0 ? 4.0 / 3.0 * kPi * r * r * r : 0.0; }
-
-// Volume of the intersection of balls of radii R and r whose centres are d apart.
-double lensVolume(double R, double r, double d) {
-  if (R <= 0.0 || r <= 0.0 || d >= R + r) return 0.0;
-  if (d <= std::fabs(R - r)) return ballVolume(std::min(R, r));
-  return kPi * (R + r - d) * (R + r - d) *
-         (d * d + 2 * d * r - 3 * r * r + 2 * d * R + 6 * r * R - 3 * R * R) / (12 * d);
-}
+using testing::ballVolume;
+using testing::lensVolume;
 
 // A radius of 1 spans 60 voxels. The centres are off the lattice so nothing lines up.
 constexpr double kH = 1.0 / 60.0;

@@ -9,6 +9,7 @@
 
 #include "block_lattice.h"
 #include "expect_error.h"
+#include "geometry/envelope_grid.h"
 #include "geometry/interval_functions.h"
 #include "random_superquadric.h"
 
@@ -467,6 +468,64 @@ TEST(FuzzyPartFieldTest, ExhaustedBudgetAnswersConservatively) {
   }
   EXPECT_GT(starved.budgetExhaustions(), 0u);
   EXPECT_EQ(exact.budgetExhaustions(), 0u);
+}
+
+// The same definitions on the voxel grid the evaluator builds (sampleBlock, and tiles proven
+// uniform by boundsOver), at a low resolution: every voxel centre against brute-force sampling of
+// the parameter boxes P(0), P(1/2), P(1), and lower ⊆ core ⊆ upper. A budget exhaustion only
+// raises u and l, which none of these checks can mistake for a violation.
+TEST(FuzzyPartFieldTest, RandomFuzzyPartsOnALowResolutionGridRespectTheDefinitions) {
+  std::mt19937_64 rng(23);
+  const double margin = 1e-6;
+  const double levels[] = {0.0, 0.5, 1.0};
+  int inUpper = 0, inLower = 0;
+  for (int k = 0; k < 3; ++k) {
+    FuzzyPart part;
+    if (k == 0) {
+      part.a1 = tri(0.7, 0.8, 1.0);
+      part.tx = tri(-0.5, 0.0, 0.5);
+      part.deg = tri(-20, 0, 30);
+      part.a2 = tri(0.6, 1.0, 1.1);
+    } else {
+      part = randomFuzzyPart(rng);
+    }
+    const FuzzyPartField field(part);
+    const PlacedSuperquadric core = part.coreRepresentative();
+    std::vector<PartBox> boxes;
+    for (double a : levels) boxes.push_back(part.boxAt(a));
+    Vec3 lo, hi;
+    field.boundingBox(&lo, &hi);
+    const double h = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) / 12;
+    const EnvelopeGrid grid = EnvelopeGrid::build(field, h);
+    for (int i = int(std::floor(lo.x / h)) - 1; i <= int(std::ceil(hi.x / h)); ++i)
+      for (int j = int(std::floor(lo.y / h)) - 1; j <= int(std::ceil(hi.y / h)); ++j)
+        for (int l = int(std::floor(lo.z / h)) - 1; l <= int(std::ceil(hi.z / h)); ++l) {
+          const Vec3 p{(i + 0.5) * h, (j + 0.5) * h, (l + 0.5) * h};  // the grid's voxel centres
+          const AlphaLevels v = grid.levelsAt(p);
+          inUpper += v.upper > 0.0f;
+          inLower += v.lower <= 1.0f;
+          for (size_t b = 0; b < boxes.size(); ++b)
+            for (int s = 0; s < 16; ++s) {
+              const double f = sampleTheta(rng, boxes[b], s < 8).insideOutside(p);
+              if (f <= 1.0 - margin) {
+                ASSERT_GE(v.upper, levels[b] - kTau - kSlack) << k << " " << p.x << " " << p.y << " " << p.z;
+              }
+              if (f > 1.0 + margin) {
+                ASSERT_GE(v.lower, levels[b] - kSlack) << k << " " << p.x << " " << p.y << " " << p.z;
+              }
+            }
+          const double fc = core.insideOutside(p);
+          if (v.lower <= 1.0f) {
+            ASSERT_LE(fc, 1.0 + margin) << k;
+            ASSERT_EQ(v.upper, 1.0f) << k;
+          }
+          if (fc <= 1.0 - margin) {
+            ASSERT_EQ(v.upper, 1.0f) << k;
+          }
+        }
+  }
+  EXPECT_GT(inUpper, 300);  // the grids hold the parts, and the checks bite
+  EXPECT_GT(inLower, 20);
 }
 
 }  // namespace
