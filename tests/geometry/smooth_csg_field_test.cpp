@@ -311,6 +311,21 @@ TEST(SmoothCsgField, NestedMembershipsCombineAndMeetPairsThroughTheMap) {
   }
 }
 
+// In the (Π, N) world the core blends only where the operator reaches 1 with both arguments
+// below 1: lukasiewicz's min(1, x + y) fills the crease at α = 1, bezier's strict conorm does not
+// (its core is the union of the children's cores).
+TEST(SmoothCsgField, PairNodesBlendTheCoreOnlyWhereTheOperatorReachesOne) {
+  const Children children{sphere({-0.95, 0, 0}, 1.0), std::make_shared<FuzzyBall>(Vec3{0.95, 0, 0}, 0.8, 1.0, 1.3)};
+  const Field lukasiewicz = node(CsgOp::kUnion, {"lukasiewicz", {}, {}}, children);
+  const Field bezier = node(CsgOp::kUnion, {"bezier", {}, {}}, children);
+  ASSERT_NE(dynamic_cast<const SmoothCsgField*>(bezier.get()), nullptr);
+  const Vec3 crease{0, 0.33, 0};  // outside the sphere and outside the ball's core
+  EXPECT_LT(children[1]->levelsAt(crease).upper, 1.0f);
+  EXPECT_EQ(lukasiewicz->levelsAt(crease).upper, 1.0f);
+  EXPECT_LT(bezier->levelsAt(crease).upper, 1.0f);
+  EXPECT_GT(bezier->levelsAt(crease).upper, children[1]->levelsAt(crease).upper);  // blended below α = 1
+}
+
 // A random tree of crisp and fuzzy leaves (crisp superquadric parts, fuzzy superquadric parts,
 // fuzzy balls) and nodes with random operators of the catalogue (zadeh nodes as CsgField).
 class RandomTrees {
