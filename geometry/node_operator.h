@@ -10,8 +10,8 @@
 //   N > 0 ⇒ Π = 1      (the normal-distribution axiom; it implies N <= Π)
 // (every point is either only possibly inside, Π < 1 and N = 0, or possible to degree 1 and
 // necessary to degree N). Every source of fsdb keeps it (fuzzy_part_field.h seeks l only where
-// u = 1; membership_field.h's map from memberships). A node with t-norm T (dual conorm S)
-// combines these pairs as fuzzy sets:
+// u = 1; membership_field.h's map from memberships), and alpha_field.h's Booleans preserve it.
+// A node with t-norm T (dual conorm S) combines these pairs as fuzzy sets:
 //   intersection  Π' = T(ΠA, ΠB),      N' = T(NA, NB)
 //   union         Π' = S(ΠA, ΠB),      N' = S(NA, NB)
 //   difference    Π' = T(ΠA, 1 − NB),  N' = T(NA, 1 − ΠB)      (A − B)
