@@ -154,6 +154,47 @@ class Parser {
     return q;
   }
 
+  // part_description = [ article ] { [ intensity ] adjective [ "," | "and" ] } noun
+  PartDescription partDescription() {
+    PartDescription d;
+    if (tokens_.empty()) fail({"words such as 'a slightly bent cylinder'"});
+    acceptAny(kArticles);
+    std::string word;
+    while (true) {
+      const size_t start = pos_;
+      const FuzzyNumber* intensity = nullptr;
+      if (size_t n = matchPhrase(v_.intensityWords(), &word)) {
+        intensity = v_.intensity(word);
+        pos_ += n;
+      }
+      const size_t n = matchPhrase(v_.adjectiveWords(), &word);
+      if (n == 0) {
+        if (intensity) fail({"an adjective (" + joinList(v_.adjectiveWords()) + ")"});
+        break;
+      }
+      pos_ += n;
+      d.adjectives.push_back({v_.adjective(word), intensity, span(start, pos_)});
+      if (acceptWord(",") || acceptWord("and")) {
+        std::string next;
+        if (!matchPhrase(v_.intensityWords(), &next) && !matchPhrase(v_.adjectiveWords(), &next))
+          fail({"an intensity (" + joinList(v_.intensityWords()) + ")", "an adjective (" + joinList(v_.adjectiveWords()) + ")"});
+      }
+    }
+    const size_t n = matchPhrase(v_.nounWords(), &word);
+    if (n == 0) {
+      std::vector<std::string> expected = {"a noun (" + joinList(v_.nounWords()) + ")"};
+      if (d.adjectives.empty()) {
+        const std::vector<std::string> starts = conditionStarts();  // 'not', '(', intensity, adjective
+        expected.insert(expected.begin(), starts.begin() + 2, starts.end());
+      }
+      fail(expected);
+    }
+    pos_ += n;
+    d.noun = v_.noun(word);
+    if (pos_ < tokens_.size()) fail({"the end of the description (a part is adjectives and one noun)"});
+    return d;
+  }
+
  private:
   // --- tokens ---------------------------------------------------------------------------------
   bool at(const std::string& w) const { return pos_ < tokens_.size() && tokens_[pos_].text == w; }
@@ -451,6 +492,10 @@ nlohmann::json conditionJson(const QueryCondition& c) {
 
 LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary) {
   return Parser(text, vocabulary).parse();
+}
+
+PartDescription parsePartDescription(const std::string& text, const Vocabulary& vocabulary) {
+  return Parser(text, vocabulary).partDescription();
 }
 
 nlohmann::json toJson(const LinguisticQuery& query) {

@@ -73,6 +73,21 @@ struct LinguisticQuery {
 // position and the expected words; unknown words name the closest known ones.
 LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary);
 
+// The words of a part described by words ("a slightly bent cylinder", "a long, very twisted
+// box"): [ article ] { [ intensity ] adjective [ "," | "and" ] } noun. The pointers point into
+// `vocabulary`. Errors as parseLinguisticQuery (path "text"). query/part_from_words.h turns it
+// into parameters.
+struct AdjectiveUse {
+  const Adjective* adjective;
+  const FuzzyNumber* intensity;  // null: the plain adjective
+  std::string text;              // "slightly bent"
+};
+struct PartDescription {
+  const Noun* noun = nullptr;
+  std::vector<AdjectiveUse> adjectives;
+};
+PartDescription parsePartDescription(const std::string& text, const Vocabulary& vocabulary);
+
 struct ConditionScore {
   std::string text;
   double score;
