@@ -22,6 +22,11 @@ const NamedParam kParams[] = {{"eps1", &FuzzyPart::eps1}, {"eps2", &FuzzyPart::e
 
 void parseTransform(const nlohmann::json& t, const std::string& path, FuzzyPart* part) {
   requireObject(t, path);
+  if (t.contains("place"))
+    throw Error(errc::kInvalidDocument,
+                "a placement from words places a leaf of a shape against an earlier leaf; a part on its own "
+                "has nothing to be placed against (give \"translate\")",
+                joinPath(path, "place"));
   rejectUnknownKeys(t, path, {"translate", "rotate", "scale"});
   if (t.contains("translate")) {
     const std::string p = joinPath(path, "translate");
@@ -63,8 +68,9 @@ FuzzyPart parsePart(const nlohmann::json& doc, const std::string& path) {
   requireObject(doc, path);
   if (doc.contains("place"))
     throw Error(errc::kInvalidDocument,
-                "placements from words (\"place\") are not implemented yet; give \"transform\" with "
-                "numbers or fuzzy numbers (\"translate\":[\"about 3\",0,0])",
+                "a placement from words goes in the transform of a leaf of a shape: "
+                "{\"transform\":{\"place\":{\"relative_to\":\"<earlier leaf>\",\"direction\":\"top right\","
+                "\"distance\":\"about 3\"}}}",
                 joinPath(path, "place"));
   rejectUnknownKeys(doc, path,
                     {"kind", "name", "descriptors", "params", "text", "transform", "meta", "id", "version"});

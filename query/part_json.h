@@ -17,7 +17,8 @@
 // active vocabulary (query/part_from_words.h); "params" entries given too override them one by
 // one, and a1 is then optional. Errors in the words are invalid_document at path "text" (the
 // message gives the position, expected words, closest known words). Placements from words
-// ("place") are refused with a message that says so.
+// ("place", query/placement_words.h) belong in the transform of a leaf of a shape and are
+// refused in a part on its own, with a message that says so.
 #include <nlohmann/json.hpp>
 #include <string>
 

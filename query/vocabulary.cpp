@@ -342,6 +342,10 @@ std::vector<RankedDirection> directionCandidates(const Direction& direction) {
       out.push_back({{std::sin(gr) * std::cos(br), std::cos(gr), std::sin(gr) * std::sin(br)}, std::min(g.mu, b.mu)});
     }
   }
+  // cos(90°) is 6e-17, not 0: snap such rounding so "right" is exactly (1, 0, 0).
+  for (RankedDirection& d : out)
+    for (double* c : {&d.vector.x, &d.vector.y, &d.vector.z})
+      if (std::fabs(*c) < 1e-12) *c = 0.0;
   std::stable_sort(out.begin(), out.end(), [](const RankedDirection& a, const RankedDirection& b) { return a.mu > b.mu; });
   return out;
 }

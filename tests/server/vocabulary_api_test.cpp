@@ -39,6 +39,27 @@ TEST(VocabularyApi, PartsFromWords) {
       << r.body;
 }
 
+TEST(VocabularyApi, LeavesPlacedByWords) {
+  ServerProcess server;
+  json shape = {{"kind", "shape"},
+                {"name", "ball-above"},
+                {"tree",
+                 {{"op", "union"},
+                  {"children",
+                   {{{"part", {{"name", "base"}, {"text", "a box"}}}},
+                    {{"part", {{"text", "a sphere"}}},
+                     {"transform", {{"place", {{"relative_to", "base"}, {"direction", "above"}, {"distance", "about 3"}}}}}}}}}}};
+  auto r = server.post("/shapes", shape);
+  ASSERT_EQ(r.status, 201) << r.body;
+  r = server.post("/shapes/" + std::to_string(r.json["id"].get<int>()) + "/evaluate", json{{"resolution", 24}});
+  ASSERT_EQ(r.status, 200) << r.body;
+  shape["name"] = "ball-lost";
+  shape["tree"]["children"][1]["transform"]["place"]["relative_to"] = "bse";
+  r = server.post("/shapes", shape);
+  EXPECT_EQ(r.status, 422);
+  EXPECT_EQ(r.json["error"]["path"], "tree.children[1].transform.place.relative_to") << r.body;
+}
+
 TEST(VocabularyApi, ExtendedVocabularyFile) {
   fsdb::TempDir dir;
   json doc = schemaVocabulary();
