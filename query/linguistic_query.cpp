@@ -31,7 +31,7 @@ struct Token {
 const std::vector<std::string>& grammarWords() {
   static const std::vector<std::string> words = {
       "find", "show", "search", "for", "get", "list", "a", "an", "the", "any", "some", "all",
-      "that", "which", "is", "are", "and", "or", "not", "to", "of", "with", "score", "at", "least",
+      "that", "which", "is", "are", "has", "have", "and", "or", "not", "to", "of", "with", "score", "at", "least", "most",
       "exactly", "about", "around", "approximately", "roughly", "between"};
   return words;
 }
@@ -98,6 +98,23 @@ QueryCondition descriptorCondition(const std::string& descriptor, FuzzyNumber se
   return c;
 }
 
+// The membership restricted to [0, 1] (the degrees a descriptor can take): pieces crossing 0 or
+// 1 are cut there, the ends become vertical sides. The core must meet [0, 1] (checked before).
+FuzzyNumber restrictedToUnit(const FuzzyNumber& set) {
+  const std::vector<Breakpoint>& p = set.breakpoints();
+  std::vector<Breakpoint> out;
+  for (size_t i = 0; i < p.size(); ++i) {
+    if (i > 0)
+      for (double cut : {0.0, 1.0})
+        if ((p[i - 1].x < cut && p[i].x > cut) || (p[i - 1].x > cut && p[i].x < cut)) {
+          const double t = (cut - p[i - 1].x) / (p[i].x - p[i - 1].x);
+          out.push_back({cut, p[i - 1].mu + t * (p[i].mu - p[i - 1].mu)});
+        }
+    if (p[i].x >= 0.0 && p[i].x <= 1.0) out.push_back(p[i]);
+  }
+  return FuzzyNumber::fromPoints(out);
+}
+
 // The set of a low-pole adjective: d -> 1 - d (exact: negation and a crisp shift).
 FuzzyNumber mirrored(const FuzzyNumber& set) { return add(negate(set), FuzzyNumber::crisp(1.0)); }
 
@@ -105,7 +122,7 @@ class Parser {
  public:
   Parser(const std::string& text, const Vocabulary& vocabulary)
       : text_(text), v_(vocabulary), tokens_(tokenize(text)) {
-    for (const auto* list : {&grammarWords()}) known_.insert(list->begin(), list->end());
+    for (const auto* list : {&grammarWords(), &descriptorNames()}) known_.insert(list->begin(), list->end());
     for (const auto& list : {v_.intensityWords(), v_.adjectiveWords(), v_.nounWords(), v_.directionWords(),
                              v_.distanceWords()})
       for (const std::string& phrase : list) splitInto(phrase, &known_);
@@ -185,7 +202,7 @@ class Parser {
       std::vector<std::string> expected = {"a noun (" + joinList(v_.nounWords()) + ")"};
       if (d.adjectives.empty()) {
         const std::vector<std::string> starts = conditionStarts();  // 'not', '(', intensity, adjective
-        expected.insert(expected.begin(), starts.begin() + 2, starts.end());
+        expected.insert(expected.begin(), starts.begin() + 2, starts.begin() + 4);
       }
       fail(expected);
     }
@@ -269,13 +286,15 @@ class Parser {
   // --- productions ----------------------------------------------------------------------------
   bool startsCondition() const {
     if (at("not") || at("(")) return true;
+    if (pos_ < tokens_.size() && descriptorIndex(tokens_[pos_].text) >= 0) return true;
     std::string m;
     return matchPhrase(v_.intensityWords(), &m) > 0 || matchPhrase(v_.adjectiveWords(), &m) > 0;
   }
 
   std::vector<std::string> conditionStarts() const {
     return {"'not'", "'('", "an intensity (" + joinList(v_.intensityWords()) + ")",
-            "an adjective (" + joinList(v_.adjectiveWords()) + ")"};
+            "an adjective (" + joinList(v_.adjectiveWords()) + ")",
+            "a descriptor and its degree (" + joinList(descriptorNames()) + ")"};
   }
 
   // noun_phrase = [ article ] [ condition ] noun [ ("that"|"which") ("is"|"are") condition ]
@@ -314,7 +333,11 @@ class Parser {
       }
     }
     if (acceptWord("that") || acceptWord("which")) {
-      if (!acceptWord("is") && !acceptWord("are")) fail({"'is'", "'are'"});
+      if (!acceptAny({"is", "are", "has", "have"})) fail({"'is'", "'are'", "'has'", "'have'"});
+      if (!startsCondition()) fail(conditionStarts());
+      parts.push_back(condition());
+    } else if (at("with") && !(pos_ + 1 < tokens_.size() && tokens_[pos_ + 1].text == "score")) {
+      ++pos_;
       if (!startsCondition()) fail(conditionStarts());
       parts.push_back(condition());
     }
@@ -379,6 +402,11 @@ class Parser {
       if (!acceptWord(")")) fail({"')'", "'and'", "'or'"});
       return inner;
     }
+    if (pos_ < tokens_.size() && descriptorIndex(tokens_[pos_].text) >= 0) {
+      const std::string descriptor = tokens_[pos_++].text;
+      FuzzyNumber set = degree();
+      return descriptorCondition(descriptor, std::move(set), span(start, pos_));
+    }
     std::string word;
     const FuzzyNumber* intensity = nullptr;
     if (size_t n = matchPhrase(v_.intensityWords(), &word)) {
@@ -409,6 +437,11 @@ class Parser {
       pos_ += n;
       return *v_.distance(word);
     }
+    return numberPhrase("distance");
+  }
+
+  // number_phrase (query/number_phrases.h): N | ("exactly"|"about"|...) N | "between" N "and" N
+  std::optional<FuzzyNumber> numberPhrase(const char* what) {
     const size_t start = pos_;
     if (at("between")) {
       ++pos_;
@@ -429,9 +462,40 @@ class Parser {
       return parseNumberPhrase(phrase);
     } catch (const Error& e) {
       throw Error(errc::kInvalidParameter,
-                  "bad distance '" + phrase + "' at character " + std::to_string(tokens_[start].offset) + ": " + e.what(),
+                  std::string("bad ") + what + " '" + phrase + "' at character " + std::to_string(tokens_[start].offset) +
+                      ": " + e.what(),
                   "text");
     }
+  }
+
+  // degree = [ "is" ] ( number_phrase | "at" "least" NUMBER | "at" "most" NUMBER ), in [0, 1]:
+  // "bendness at least 0.5" is trap(0.5, 0.5, 1, 1), "roundness about 1" the triangle of about 1
+  // restricted to [0, 1].
+  FuzzyNumber degree() {
+    acceptWord("is");
+    const size_t start = pos_;
+    if (acceptWord("at")) {
+      const bool least = acceptWord("least");
+      if (!least && !acceptWord("most")) fail({"'least'", "'most'"});
+      if (pos_ >= tokens_.size() || !tokens_[pos_].number) fail({"a number in [0, 1]"});
+      const double x = std::strtod(tokens_[pos_].text.c_str(), nullptr);
+      checkDegree(x, start);
+      ++pos_;
+      return least ? FuzzyNumber::trapezoidal(x, x, 1, 1) : FuzzyNumber::trapezoidal(0, 0, x, x);
+    }
+    std::optional<FuzzyNumber> set = numberPhrase("degree");
+    if (!set) fail({"a degree ('about 0.3', '0.5', 'between 0.2 and 0.4', 'at least 0.7', 'at most 0.2')"});
+    checkDegree(set->core().lo, start);
+    checkDegree(set->core().hi, start);
+    return restrictedToUnit(*set);
+  }
+
+  void checkDegree(double x, size_t start) const {
+    if (x < 0.0 || x > 1.0)
+      throw Error(errc::kInvalidParameter,
+                  "a descriptor degree is in [0, 1]; the one at character " + std::to_string(tokens_[start].offset) +
+                      " is not",
+                  "text");
   }
 
   void expectNumber() {
