@@ -36,6 +36,9 @@ const std::vector<std::string>& grammarWords() {
   return words;
 }
 
+// The deepest nesting of parentheses and "not" a query may have.
+constexpr int kMaxNesting = 64;
+
 const std::vector<std::string> kVerbs = {"find", "show", "search", "get", "list"};
 const std::vector<std::string> kArticles = {"a", "an", "the", "any", "some", "all"};
 const std::vector<std::string> kApproximately = {"exactly", "about", "around", "approximately", "roughly"};
@@ -121,11 +124,17 @@ FuzzyNumber mirrored(const FuzzyNumber& set) { return add(negate(set), FuzzyNumb
 class Parser {
  public:
   Parser(const std::string& text, const Vocabulary& vocabulary)
-      : text_(text), v_(vocabulary), tokens_(tokenize(text)) {
+      : text_(text),
+        v_(vocabulary),
+        tokens_(tokenize(text)),
+        intensityWords_(vocabulary.intensityWords()),
+        adjectiveWords_(vocabulary.adjectiveWords()),
+        nounWords_(vocabulary.nounWords()),
+        directionWords_(vocabulary.directionWords()),
+        distanceWords_(vocabulary.distanceWords()) {
     for (const auto* list : {&grammarWords(), &descriptorNames()}) known_.insert(list->begin(), list->end());
-    for (const auto& list : {v_.intensityWords(), v_.adjectiveWords(), v_.nounWords(), v_.directionWords(),
-                             v_.distanceWords()})
-      for (const std::string& phrase : list) splitInto(phrase, &known_);
+    for (const auto* list : {&intensityWords_, &adjectiveWords_, &nounWords_, &directionWords_, &distanceWords_})
+      for (const std::string& phrase : *list) splitInto(phrase, &known_);
   }
 
   LinguisticQuery parse() {
@@ -166,7 +175,7 @@ class Parser {
     }
     if (pos_ < tokens_.size())
       fail({"'and'", "'or'", "'that is'", "'at least' NUMBER", "a distance and a direction (" +
-                                                                    joinList(v_.directionWords()) + ")",
+                                                                    joinList(directionWords_) + ")",
             "the end of the query"});
     return q;
   }
@@ -180,26 +189,26 @@ class Parser {
     while (true) {
       const size_t start = pos_;
       const FuzzyNumber* intensity = nullptr;
-      if (size_t n = matchPhrase(v_.intensityWords(), &word)) {
+      if (size_t n = matchPhrase(intensityWords_, &word)) {
         intensity = v_.intensity(word);
         pos_ += n;
       }
-      const size_t n = matchPhrase(v_.adjectiveWords(), &word);
+      const size_t n = matchPhrase(adjectiveWords_, &word);
       if (n == 0) {
-        if (intensity) fail({"an adjective (" + joinList(v_.adjectiveWords()) + ")"});
+        if (intensity) fail({"an adjective (" + joinList(adjectiveWords_) + ")"});
         break;
       }
       pos_ += n;
       d.adjectives.push_back({v_.adjective(word), intensity, span(start, pos_)});
       if (acceptWord(",") || acceptWord("and")) {
         std::string next;
-        if (!matchPhrase(v_.intensityWords(), &next) && !matchPhrase(v_.adjectiveWords(), &next))
-          fail({"an intensity (" + joinList(v_.intensityWords()) + ")", "an adjective (" + joinList(v_.adjectiveWords()) + ")"});
+        if (!matchPhrase(intensityWords_, &next) && !matchPhrase(adjectiveWords_, &next))
+          fail({"an intensity (" + joinList(intensityWords_) + ")", "an adjective (" + joinList(adjectiveWords_) + ")"});
       }
     }
-    const size_t n = matchPhrase(v_.nounWords(), &word);
+    const size_t n = matchPhrase(nounWords_, &word);
     if (n == 0) {
-      std::vector<std::string> expected = {"a noun (" + joinList(v_.nounWords()) + ")"};
+      std::vector<std::string> expected = {"a noun (" + joinList(nounWords_) + ")"};
       if (d.adjectives.empty()) {
         const std::vector<std::string> starts = conditionStarts();  // 'not', '(', intensity, adjective
         expected.insert(expected.begin(), starts.begin() + 2, starts.begin() + 4);
@@ -288,12 +297,12 @@ class Parser {
     if (at("not") || at("(")) return true;
     if (pos_ < tokens_.size() && descriptorIndex(tokens_[pos_].text) >= 0) return true;
     std::string m;
-    return matchPhrase(v_.intensityWords(), &m) > 0 || matchPhrase(v_.adjectiveWords(), &m) > 0;
+    return matchPhrase(intensityWords_, &m) > 0 || matchPhrase(adjectiveWords_, &m) > 0;
   }
 
   std::vector<std::string> conditionStarts() const {
-    return {"'not'", "'('", "an intensity (" + joinList(v_.intensityWords()) + ")",
-            "an adjective (" + joinList(v_.adjectiveWords()) + ")",
+    return {"'not'", "'('", "an intensity (" + joinList(intensityWords_) + ")",
+            "an adjective (" + joinList(adjectiveWords_) + ")",
             "a descriptor and its degree (" + joinList(descriptorNames()) + ")"};
   }
 
@@ -306,11 +315,11 @@ class Parser {
     if (hasModifiers) parts.push_back(condition());
     std::string word;
     const size_t nounStart = pos_;
-    const size_t n = matchPhrase(v_.nounWords(), &word);
+    const size_t n = matchPhrase(nounWords_, &word);
     if (n == 0) {
       std::vector<std::string> expected;
       if (!hasModifiers) expected = conditionStarts();
-      expected.push_back("a noun (" + joinList(v_.nounWords()) + ")");
+      expected.push_back("a noun (" + joinList(nounWords_) + ")");
       fail(expected);
     }
     pos_ += n;
@@ -387,6 +396,17 @@ class Parser {
 
   // negation = "not" negation | "(" condition ")" | [ intensity ] adjective
   QueryCondition negation() {
+    // Deep nesting ("((((..." or "not not not ...") would exhaust the stack: a limit instead.
+    struct Nesting {
+      int& depth;
+      explicit Nesting(int& d) : depth(++d) {}
+      ~Nesting() { --depth; }
+    } nesting(depth_);
+    if (depth_ > kMaxNesting)
+      throw Error(errc::kLimitExceeded,
+                  "the query nests conditions deeper than " + std::to_string(kMaxNesting) + " levels (at character " +
+                      std::to_string(tokens_[pos_].offset) + ")",
+                  "text");
     const size_t start = pos_;
     if (acceptWord("not")) {
       if (!startsCondition()) fail(conditionStarts());
@@ -409,12 +429,12 @@ class Parser {
     }
     std::string word;
     const FuzzyNumber* intensity = nullptr;
-    if (size_t n = matchPhrase(v_.intensityWords(), &word)) {
+    if (size_t n = matchPhrase(intensityWords_, &word)) {
       intensity = v_.intensity(word);
       pos_ += n;
     }
-    const size_t n = matchPhrase(v_.adjectiveWords(), &word);
-    if (n == 0) fail({"an adjective (" + joinList(v_.adjectiveWords()) + ")"});
+    const size_t n = matchPhrase(adjectiveWords_, &word);
+    if (n == 0) fail({"an adjective (" + joinList(adjectiveWords_) + ")"});
     pos_ += n;
     const Adjective& adjective = *v_.adjective(word);
     FuzzyNumber set = intensity ? *intensity : v_.plain();
@@ -427,13 +447,13 @@ class Parser {
     if (pos_ >= tokens_.size()) return false;
     if (tokens_[pos_].number || contains(kApproximately, tokens_[pos_].text) || at("between") || at("to")) return true;
     std::string m;
-    return matchPhrase(v_.distanceWords(), &m) > 0 || matchPhrase(v_.directionWords(), &m) > 0;
+    return matchPhrase(distanceWords_, &m) > 0 || matchPhrase(directionWords_, &m) > 0;
   }
 
   // distance = number_phrase | distance_word
   std::optional<FuzzyNumber> optionalDistance() {
     std::string word;
-    if (size_t n = matchPhrase(v_.distanceWords(), &word)) {
+    if (size_t n = matchPhrase(distanceWords_, &word)) {
       pos_ += n;
       return *v_.distance(word);
     }
@@ -508,8 +528,8 @@ class Parser {
     const bool to = acceptWord("to");
     if (to) acceptWord("the");
     std::string word;
-    const size_t n = matchPhrase(v_.directionWords(), &word);
-    if (n == 0) fail({"a direction (" + joinList(v_.directionWords()) + ")"});
+    const size_t n = matchPhrase(directionWords_, &word);
+    if (n == 0) fail({"a direction (" + joinList(directionWords_) + ")"});
     pos_ += n;
     const Direction& d = *v_.direction(word);
     if (d.word != word && !to) return d;  // a phrase: "above", "in front of"
@@ -521,6 +541,9 @@ class Parser {
   const Vocabulary& v_;
   std::vector<Token> tokens_;
   size_t pos_ = 0;
+  int depth_ = 0;  // nesting of conditions (parentheses, not), bounded by kMaxNesting
+  // The vocabulary's words, listed once per parse.
+  const std::vector<std::string> intensityWords_, adjectiveWords_, nounWords_, directionWords_, distanceWords_;
   std::set<std::string> known_;
 };
 

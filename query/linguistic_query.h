@@ -130,4 +130,8 @@ FuzzyNumber centreDistance(const FuzzyPart& a, const FuzzyPart& b);
 // direction, distance}}.
 nlohmann::json toJson(const LinguisticQuery& query);
 
+// A score's explain as JSON: [{"text","score","component"}] ("component" only when set), for the
+// "explain" member of a result.
+nlohmann::json explainJson(const QueryScore& score);
+
 }  // namespace fsdb

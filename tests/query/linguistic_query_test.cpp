@@ -220,6 +220,27 @@ TEST(LinguisticQuery, ParseErrorsGivePositionAndExpectedWords) {
   EXPECT_NE(e.find("expected a number"), std::string::npos) << e;
 }
 
+// Deep nesting is a limit, not a stack overflow.
+TEST(LinguisticQuery, NestingLimit) {
+  auto nested = [](int n) {
+    std::string open, close;
+    for (int i = 0; i < n; ++i) open += "(", close += ")";
+    return "find shapes that are " + open + "bent" + close;
+  };
+  EXPECT_NO_THROW(parse(nested(60)));
+  std::string nots = "find shapes that are";
+  for (int i = 0; i < 100000; ++i) nots += " not";
+  for (const std::string& text : {nested(100000), nots + " bent"}) {
+    try {
+      parse(text);
+      ADD_FAILURE();
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), errc::kLimitExceeded);
+      EXPECT_EQ(e.path(), "text");
+    }
+  }
+}
+
 // Every example of schema/query_grammar.ebnf (lines "(* example: ... *)") parses.
 TEST(LinguisticQuery, GrammarExamplesParse) {
   std::ifstream in(std::string(FSDB_SOURCE_DIR) + "/schema/query_grammar.ebnf");

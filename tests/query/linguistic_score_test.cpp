@@ -226,6 +226,10 @@ TEST(LinguisticScore, CylinderLeftOfACube) {
   EXPECT_EQ(left.explain[0].component, "tree.children[1], tree.children[0]");
   EXPECT_EQ(left.explain[1].text, "cylinder");
   EXPECT_EQ(left.explain[1].component, "tree.children[1]");
+  const nlohmann::json j = explainJson(left);
+  EXPECT_EQ(j[0], nlohmann::json({{"text", "a cylinder to the left of a cube"}, {"score", 1.0},
+                                  {"component", "tree.children[1], tree.children[0]"}}));
+  EXPECT_EQ(explainJson(scoreDescriptors(q, {}))[0].count("component"), 0u);
   // One component cannot be in a relation with itself.
   EXPECT_EQ(scoreShape(q, componentsOf(leaf("cylinder", 0, 0, 0))).score, 0.0);
 }
