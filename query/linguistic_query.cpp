@@ -131,11 +131,7 @@ class Parser {
         adjectiveWords_(vocabulary.adjectiveWords()),
         nounWords_(vocabulary.nounWords()),
         directionWords_(vocabulary.directionWords()),
-        distanceWords_(vocabulary.distanceWords()) {
-    for (const auto* list : {&grammarWords(), &descriptorNames()}) known_.insert(list->begin(), list->end());
-    for (const auto* list : {&intensityWords_, &adjectiveWords_, &nounWords_, &directionWords_, &distanceWords_})
-      for (const std::string& phrase : *list) splitInto(phrase, &known_);
-  }
+        distanceWords_(vocabulary.distanceWords()) {}
 
   LinguisticQuery parse() {
     LinguisticQuery q;
@@ -238,16 +234,6 @@ class Parser {
     if (!acceptWord(w)) fail({"'" + w + "'"});
   }
 
-  static void splitInto(const std::string& phrase, std::set<std::string>* words) {
-    size_t i = 0;
-    while (i < phrase.size()) {
-      size_t j = phrase.find(' ', i);
-      if (j == std::string::npos) j = phrase.size();
-      if (j > i) words->insert(phrase.substr(i, j - i));
-      i = j + 1;
-    }
-  }
-
   // The longest phrase of `phrases` (words separated by one space) starting at the current
   // token: the number of tokens it spans (0: none) and the phrase.
   size_t matchPhrase(const std::vector<std::string>& phrases, std::string* matched) const {
@@ -275,6 +261,10 @@ class Parser {
     return text_.substr(tokens_[from].offset, tokens_[to - 1].end - tokens_[from].offset);
   }
 
+  bool knows(const std::string& word) const {
+    return v_.knowsWord(word) || contains(grammarWords(), word) || descriptorIndex(word) >= 0;
+  }
+
   [[noreturn]] void fail(const std::vector<std::string>& expected) const {
     if (pos_ >= tokens_.size())
       throw Error(errc::kInvalidParameter,
@@ -282,11 +272,15 @@ class Parser {
                       "); expected " + joinList(expected),
                   "text");
     const Token& t = tokens_[pos_];
-    if (!t.number && t.text.size() > 1 && std::isalpha(static_cast<unsigned char>(t.text[0])) && !known_.count(t.text))
+    if (!t.number && t.text.size() > 1 && std::isalpha(static_cast<unsigned char>(t.text[0])) && !knows(t.text)) {
+      std::vector<std::string> known(v_.words().begin(), v_.words().end());
+      known.insert(known.end(), grammarWords().begin(), grammarWords().end());
+      known.insert(known.end(), descriptorNames().begin(), descriptorNames().end());
       throw Error(errc::kInvalidParameter,
                   "unknown word '" + t.text + "' at character " + std::to_string(t.offset) + "; closest known words: " +
-                      closestNames(t.text, std::vector<std::string>(known_.begin(), known_.end())),
+                      closestNames(t.text, known),
                   "text");
+    }
     throw Error(errc::kInvalidParameter,
                 "unexpected '" + t.text + "' at character " + std::to_string(t.offset) + "; expected " + joinList(expected),
                 "text");
@@ -542,9 +536,8 @@ class Parser {
   std::vector<Token> tokens_;
   size_t pos_ = 0;
   int depth_ = 0;  // nesting of conditions (parentheses, not), bounded by kMaxNesting
-  // The vocabulary's words, listed once per parse.
-  const std::vector<std::string> intensityWords_, adjectiveWords_, nounWords_, directionWords_, distanceWords_;
-  std::set<std::string> known_;
+  // The vocabulary's word lists.
+  const std::vector<std::string>&intensityWords_, &adjectiveWords_, &nounWords_, &directionWords_, &distanceWords_;
 };
 
 const char* kindName(Kind k) {
