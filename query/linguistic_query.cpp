@@ -32,6 +32,7 @@ const std::vector<std::string>& grammarWords() {
   static const std::vector<std::string> words = {
       "find", "show", "search", "for", "get", "list", "a", "an", "the", "any", "some", "all",
       "that", "which", "is", "are", "has", "have", "and", "or", "not", "to", "of", "with", "score", "at", "least", "most",
+      "using", "min", "product", "mean",
       "exactly", "about", "around", "approximately", "roughly", "between"};
   return words;
 }
@@ -156,7 +157,10 @@ class Parser {
     } else {
       q.root = std::move(first);
     }
-    if (acceptWord("with")) expectWord("score");
+    if (acceptWord("with")) {
+      expectWord("score");
+      if (!at("at")) fail({"'at least' NUMBER"});
+    }
     if (at("at")) {
       ++pos_;
       expectWord("least");
@@ -169,10 +173,15 @@ class Parser {
       q.atLeast = threshold;
       ++pos_;
     }
+    // aggregation = "using" ( "min" | "product" | "mean" ): how "and" combines scores
+    if (acceptWord("using")) {
+      if (pos_ >= tokens_.size() || !v_.isAggregation(tokens_[pos_].text))
+        fail({"an aggregation (" + joinList(v_.aggregationNames()) + ")"});
+      q.aggregation = tokens_[pos_++].text;
+    }
     if (pos_ < tokens_.size())
-      fail({"'and'", "'or'", "'that is'", "'at least' NUMBER", "a distance and a direction (" +
-                                                                    joinList(directionWords_) + ")",
-            "the end of the query"});
+      fail({"'and'", "'or'", "'that is'", "'at least' NUMBER", "'using' AGGREGATION",
+            "a distance and a direction (" + joinList(directionWords_) + ")", "the end of the query"});
     return q;
   }
 

@@ -4,7 +4,7 @@
 // §2.2), and scoring a part's descriptor values or a shape's components against it.
 //
 // The grammar is schema/query_grammar.ebnf (a test parses every example listed there). In short:
-//   query       = [ "find" ] phrase [ threshold ]
+//   query       = [ "find" ] phrase [ threshold ] [ "using" ("min"|"product"|"mean") ]
 //   phrase      = noun_phrase [ [ distance ] direction_phrase noun_phrase ]
 //   noun_phrase = [ article ] [ condition ] noun
 //                 [ ("that"|"which") ("is"|"are"|"has"|"have") condition | "with" condition ]

@@ -141,6 +141,17 @@ TEST(LinguisticQuery, Threshold) {
   EXPECT_DOUBLE_EQ(parse("find a very bent shape with score at least 0.25").atLeast, 0.25);
   EXPECT_NE(errorOf("find a bent shape at least 1.5").find("[0, 1]"), std::string::npos);
   EXPECT_NE(errorOf("find a bent shape at least").find("a number in [0, 1]"), std::string::npos);
+  EXPECT_NE(errorOf("find a bent shape with score").find("'at least' NUMBER"), std::string::npos);
+}
+
+TEST(LinguisticQuery, Aggregation) {
+  EXPECT_EQ(parse("find a very bent cylinder").aggregation, "min");
+  EXPECT_EQ(parse("find a very bent cylinder using product").aggregation, "product");
+  const LinguisticQuery q = parse("find a very bent cylinder at least 0.3 using mean");
+  EXPECT_EQ(q.aggregation, "mean");
+  EXPECT_DOUBLE_EQ(q.atLeast, 0.3);
+  EXPECT_NE(errorOf("find a very bent cylinder using least").find("an aggregation (min, product, mean)"), std::string::npos);
+  EXPECT_NE(errorOf("find a very bent cylinder using max").find("unknown word 'max'"), std::string::npos);
 }
 
 TEST(LinguisticQuery, Relations) {
