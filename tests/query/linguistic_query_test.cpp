@@ -150,7 +150,7 @@ TEST(LinguisticQuery, Aggregation) {
   const LinguisticQuery q = parse("find a very bent cylinder at least 0.3 using mean");
   EXPECT_EQ(q.aggregation, "mean");
   EXPECT_DOUBLE_EQ(q.atLeast, 0.3);
-  EXPECT_NE(errorOf("find a very bent cylinder using least").find("an aggregation (min, product, mean)"), std::string::npos);
+  EXPECT_NE(errorOf("find a very bent cylinder using least").find("an aggregation (mean, min, product)"), std::string::npos);
   EXPECT_NE(errorOf("find a very bent cylinder using max").find("unknown word 'max'"), std::string::npos);
 }
 
