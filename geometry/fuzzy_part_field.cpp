@@ -9,6 +9,7 @@
 #include "geometry/number_format.h"
 #include "geometry/deformation.h"
 #include "geometry/superquadric.h"
+#include "geometry/superquadric_slopes.h"
 #include "geometry/transform.h"
 
 namespace fsdb {
@@ -24,14 +25,8 @@ constexpr double kMargin = 1e-12;
 constexpr double kDegenerate = 1e-12;
 
 // The fourteen fuzzy values of a part box, addressed by index for splitting.
-Interval& slot(PartBox& b, int i) {
-  SuperquadricBox& q = b.params;
-  PlacementBox& p = b.placement;
-  Interval* const slots[kSlots] = {&q.eps1, &q.eps2, &q.a1, &q.a2, &q.a3, &q.kx,  &q.ky,
-                                   &q.kv,   &q.t,    &p.tx, &p.ty, &p.tz, &p.deg, &p.scale};
-  return *slots[i];
-}
-const Interval& slot(const PartBox& b, int i) { return slot(const_cast<PartBox&>(b), i); }
+Interval& slot(PartBox& b, int i) { return partSlot(b, i); }
+const Interval& slot(const PartBox& b, int i) { return partSlot(b, i); }
 
 // F at the centre of the box: a crisp witness (every θ of a validated part's box is valid).
 double centreValue(const PartBox& b, const Vec3& p) { return midpointPart(b).insideOutside(p); }
@@ -54,6 +49,8 @@ FuzzyPartField::FuzzyPartField(const FuzzyPart& part, FuzzyPartFieldOptions opti
       &part_.eps1, &part_.eps2, &part_.a1, &part_.a2, &part_.a3, &part_.kx,  &part_.ky,
       &part_.kv,   &part_.t,    &part_.tx, &part_.ty, &part_.tz, &part_.deg, &part_.scale};
   for (int i = 0; i < kSlots; ++i) values_[i] = values[i];
+  for (int i = 0; i < kSlots; ++i)
+    if (supportWidth_[i] > 0.0) fuzzySlots_[fuzzyCount_++] = i;
   crispAngle_ = supportWidth_[12] <= 0.0;
   if (crispAngle_) rotation_ = Rotation::fromAxisAngle(part_.axis, support_.placement.deg.lo);
   bool allCrisp = true;
@@ -170,13 +167,7 @@ double supHullMembership(const FuzzyNumber& v, const Interval& core, const Inter
 constexpr double kMembershipSlack = 1e-12;
 
 PlacedSuperquadric thetaAt(const PartBox& b, const double (&v)[kSlots]) {
-  PlacedSuperquadric part;
-  part.params = {v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]};
-  part.placement.translate = {v[9], v[10], v[11]};
-  part.placement.axis = b.placement.axis;
-  part.placement.deg = v[12];
-  part.placement.scale = v[13];
-  return part;
+  return partFromSlots(b.placement.axis, v);
 }
 
 }  // namespace
@@ -454,11 +445,128 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
   return s;
 }
 
+namespace {
+
+// Narrows [lo, hi] around the level where F at a corner moving with α crosses 1: on entry
+// qualifies(value(lo)) and !qualifies(value(hi)), with qualifies(f) = f <= 1 (inside) or f > 1
+// (!inside), value(α) monotone; on return the same holds and hi − lo <= tau. Secant steps on
+// value − 1 (the corners move linearly in α between breakpoints, so the first estimates are
+// good), each probed τ·0.45 on both sides so that a good estimate closes the bracket at once;
+// halving after six.
+template <typename Value>
+void narrowBracket(const Value& value, bool inside, double tau, double* lo, double* hi, double fLo,
+                   double fHi) {
+  const auto qualifies = [inside](double f) { return inside ? f <= 1.0 : f > 1.0; };
+  for (int k = 0; *hi - *lo > tau; ++k) {
+    double t = 0.5 * (*lo + *hi);
+    const double gLo = fLo - 1.0, gHi = fHi - 1.0;
+    if (k < 6 && std::isfinite(gLo) && std::isfinite(gHi) && gLo != gHi) {
+      const double s = *lo - gLo * (*hi - *lo) / (gHi - gLo);
+      if (s > *lo && s < *hi) t = s;
+    }
+    bool moved = false;
+    for (const double probe : {t - 0.45 * tau, t + 0.45 * tau}) {
+      if (!(probe > *lo && probe < *hi)) continue;
+      moved = true;
+      const double f = value(probe);
+      if (qualifies(f)) {
+        *lo = probe;
+        fLo = f;
+      } else {
+        *hi = probe;
+        fHi = f;
+      }
+    }
+    if (!moved) break;  // τ below the spacing of doubles near the bracket
+  }
+}
+
+}  // namespace
+
+bool FuzzyPartField::monotoneSigns(const Vec3& lo, const Vec3& hi, signed char* sign) const {
+  Interval d[kSlots];
+  if (fuzzyCount_ == 0 ||
+      !insideOutsideSlopes(support_, {lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}, fuzzySlots_,
+                           fuzzyCount_, d))
+    return false;
+  for (int i = 0; i < kSlots; ++i) sign[i] = 0;
+  for (int j = 0; j < fuzzyCount_; ++j) {
+    if (d[j].lo >= 0.0)
+      sign[fuzzySlots_[j]] = 1;
+    else if (d[j].hi <= 0.0)
+      sign[fuzzySlots_[j]] = -1;
+    else
+      return false;
+  }
+  return true;
+}
+
+PlacedSuperquadric FuzzyPartField::cornerAt(double alpha, const signed char* sign,
+                                            bool least) const {
+  double v[kSlots];
+  for (int i = 0; i < kSlots; ++i) v[i] = slot(support_, i).lo;  // crisp values: lo == hi
+  for (int j = 0; j < fuzzyCount_; ++j) {
+    const int i = fuzzySlots_[j];
+    const Interval c = alpha == 0.0   ? slot(support_, i)
+                       : alpha == 1.0 ? slot(core_, i)
+                                      : values_[i]->alphaCut(alpha);
+    v[i] = (sign[i] > 0) == least ? c.lo : c.hi;
+  }
+  return thetaAt(support_, v);
+}
+
+float FuzzyPartField::roundedUpper(double level, const PlacedSuperquadric& witness) const {
+  float u = floatDown(level);
+  while (u > 0.0f && !contains(u == 1.0f ? core_ : cutAt(u), witness))
+    u = std::nextafter(u, -1.0f);
+  return u;
+}
+
+// The monotone shortcut. Where F is monotone in every fuzzy value over P(0) at p (signs certified
+// by insideOutsideSlopes), moving one value at a time to the end that lowers F never raises it, so
+//   g(α) = min{F(p; θ) : θ ∈ P(α)} = F(p; least corner of P(α)),
+//   h(α) = max{F(p; θ) : θ ∈ P(α)} = F(p; largest corner of P(α)),
+// exactly (P(α) ⊆ P(0) is a box). With θ ∈ P(α) ⇔ m(θ) >= α (α > 0), u_true = sup{α : g(α) <= 1}
+// and l_true = inf{α : h(α) <= 1}; g rises and h falls with α (P(α) shrinks). So brackets
+// [lo, hi] with g(lo) <= 1 < g(hi) hold u_true (u = lo, witness the least corner of P(lo)), and
+// ones with h(lo) > 1 >= h(hi) hold l_true (l = hi, proven: the largest F over P(hi) is <= 1),
+// each to τ: the guarantees of the search, with no budget to run out. g(0) > 1: no θ puts p
+// inside (u = 0, never); h(0) <= 1: p ∈ lower(0) (l = 0); h(1) > 1: a θ of P(1) puts p outside.
+AlphaLevels FuzzyPartField::cornerLevels(const Vec3& p, const signed char* sign) const {
+  const double tau = options_.tolerance;
+  const auto least = [&](double a) { return valueAt(cornerAt(a, sign, true), p); };
+  const double g0 = least(0.0);
+  if (g0 > 1.0) return {0.0f, kNeverInside};
+  AlphaLevels out;
+  const double g1 = least(1.0);
+  if (g1 > 1.0) {
+    double lo = 0.0, hi = 1.0;
+    narrowBracket(least, true, tau, &lo, &hi, g0, g1);
+    out.upper = roundedUpper(lo, cornerAt(lo, sign, true));
+    return out;  // l <= 1 needs p ∈ lower(1) ⊆ upper(1)
+  }
+  out.upper = 1.0f;
+  const auto largest = [&](double a) { return valueAt(cornerAt(a, sign, false), p); };
+  const double h0 = largest(0.0);
+  if (h0 <= 1.0) {
+    out.lower = 0.0f;
+    return out;
+  }
+  const double h1 = largest(1.0);
+  if (h1 > 1.0) return out;  // never in lower(1)
+  double lo = 0.0, hi = 1.0;
+  narrowBracket(largest, false, tau, &lo, &hi, h0, h1);
+  out.lower = floatUp(hi);
+  return out;
+}
+
 AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
   if (crisp_) {
     if (crisp_->insideOutside(p) <= 1.0) return {1.0f, 0.0f};
     return {0.0f, kNeverInside};
   }
+  signed char sign[kSlots];
+  if (monotoneSigns(p, p, sign)) return cornerLevels(p, sign);
   const double tau = options_.tolerance;
   // u(p) = sup{m(θ) : F(p; θ) <= 1}: the incumbent, whose witness is in P(incumbent).
   {
@@ -476,9 +584,7 @@ AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
   } else {
     if (up.incumbent < 0.0) return out;  // no θ of P(0) puts p inside: u = 0, l = never
     // Round down, keeping the witness: p ∈ upper(u) is shown by θ ∈ P(u).
-    float u = floatDown(up.incumbent);
-    while (u > 0.0f && !contains(u == 1.0f ? core_ : cutAt(u), up.witness))
-      u = std::nextafter(u, -1.0f);
+    const float u = roundedUpper(up.incumbent, up.witness);
     out.upper = u;
     if (u < 1.0f) return out;  // l <= 1 needs p ∈ lower(1) ⊆ upper(1)
   }
@@ -503,17 +609,31 @@ AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
 void FuzzyPartField::sampleBlock(const BlockLattice& b, AlphaLevels* out) const {
   constexpr int d = BlockLattice::kDim;
   const int half = d / 2;
+  BlockSigns signs;
   for (int i = 0; i < d; i += half)
     for (int j = 0; j < d; j += half)
-      for (int k = 0; k < d; k += half) sampleSubBlock(b, i, j, k, half, out);
+      for (int k = 0; k < d; k += half) sampleSubBlock(b, i, j, k, half, &signs, out);
 }
 
 void FuzzyPartField::sampleSubBlock(const BlockLattice& b, int i, int j, int k, int size,
-                                    AlphaLevels* out) const {
+                                    BlockSigns* signs, AlphaLevels* out) const {
   constexpr int d = BlockLattice::kDim;
   const AlphaLevelBounds bounds =
       boundsOver(b.at(i, j, k), b.at(i + size - 1, j + size - 1, k + size - 1));
   const bool uniform = bounds.uniform();
+  if (!uniform && size <= 2 && !crisp_) {
+    // Signs that hold over the whole block serve every voxel of it (one slope enclosure per block
+    // instead of one per voxel); otherwise levelsAt tries the voxel's own.
+    if (signs->state == 0)
+      signs->state = monotoneSigns(b.lo(), b.hi(), signs->sign) ? 1 : 2;
+    for (int x = i; x < i + size; ++x)
+      for (int y = j; y < j + size; ++y)
+        for (int z = k; z < k + size; ++z)
+          out[(x * d + y) * d + z] = signs->state == 1
+                                         ? cornerLevels(b.at(x, y, z), signs->sign)
+                                         : FuzzyPartField::levelsAt(b.at(x, y, z));
+    return;
+  }
   if (uniform || size <= 2) {
     // Qualified: no virtual call (levelsAt's first test is the crisp shortcut).
     for (int x = i; x < i + size; ++x)
@@ -526,7 +646,7 @@ void FuzzyPartField::sampleSubBlock(const BlockLattice& b, int i, int j, int k, 
   const int half = size / 2;
   for (int x = i; x < i + size; x += half)
     for (int y = j; y < j + size; y += half)
-      for (int z = k; z < k + size; z += half) sampleSubBlock(b, x, y, z, half, out);
+      for (int z = k; z < k + size; z += half) sampleSubBlock(b, x, y, z, half, signs, out);
 }
 
 namespace reference {
