@@ -163,16 +163,6 @@ class Diff {
 
 }  // namespace
 
-Interval& partSlot(PartBox& b, int i) {
-  SuperquadricBox& q = b.params;
-  PlacementBox& p = b.placement;
-  Interval* const slots[kPartSlots] = {&q.eps1, &q.eps2, &q.a1, &q.a2, &q.a3, &q.kx,  &q.ky,
-                                       &q.kv,   &q.t,    &p.tx, &p.ty, &p.tz, &p.deg, &p.scale};
-  return *slots[i];
-}
-
-const Interval& partSlot(const PartBox& b, int i) { return partSlot(const_cast<PartBox&>(b), i); }
-
 PlacedSuperquadric partFromSlots(const Vec3& axis, const double (&v)[kPartSlots]) {
   PlacedSuperquadric part;
   part.params = {v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]};

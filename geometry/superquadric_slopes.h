@@ -29,9 +29,29 @@ namespace fsdb {
 
 inline constexpr int kPartSlots = 14;
 
-// The interval of slot i (order above) of a part box.
-Interval& partSlot(PartBox& box, int i);
-const Interval& partSlot(const PartBox& box, int i);
+// The interval of slot i (order above) of a part box (inline: the searches call it in their
+// inner loops).
+inline Interval& partSlot(PartBox& b, int i) {
+  switch (i) {
+    case 0: return b.params.eps1;
+    case 1: return b.params.eps2;
+    case 2: return b.params.a1;
+    case 3: return b.params.a2;
+    case 4: return b.params.a3;
+    case 5: return b.params.kx;
+    case 6: return b.params.ky;
+    case 7: return b.params.kv;
+    case 8: return b.params.t;
+    case 9: return b.placement.tx;
+    case 10: return b.placement.ty;
+    case 11: return b.placement.tz;
+    case 12: return b.placement.deg;
+    default: return b.placement.scale;
+  }
+}
+inline const Interval& partSlot(const PartBox& b, int i) {
+  return partSlot(const_cast<PartBox&>(b), i);
+}
 
 // The crisp part whose values are v, in slot order, with the given rotation axis.
 PlacedSuperquadric partFromSlots(const Vec3& axis, const double (&v)[kPartSlots]);
