@@ -449,35 +449,41 @@ namespace {
 
 // Narrows [lo, hi] around the level where F at a corner moving with α crosses 1: on entry
 // qualifies(value(lo)) and !qualifies(value(hi)), with qualifies(f) = f <= 1 (inside) or f > 1
-// (!inside), value(α) monotone; on return the same holds and hi − lo <= tau. Secant steps on
-// value − 1 (the corners move linearly in α between breakpoints, so the first estimates are
-// good), each probed τ·0.45 on both sides so that a good estimate closes the bracket at once;
-// halving after six.
+// (!inside), value(α) monotone; on return the same holds and hi − lo <= tau. Secant steps through
+// the two latest points (the corners move linearly in α between breakpoints, so they converge
+// fast), kept τ/4 inside the bracket, halving after eight; when the next estimate lies within
+// 0.45·τ of the last point, a probe τ/2 beyond it on that side usually closes the bracket.
 template <typename Value>
 void narrowBracket(const Value& value, bool inside, double tau, double* lo, double* hi, double fLo,
                    double fHi) {
   const auto qualifies = [inside](double f) { return inside ? f <= 1.0 : f > 1.0; };
+  double a = *lo, fa = fLo, b = *hi, fb = fHi;  // the two latest points
+  const auto secant = [&](double* r) {
+    if (!(std::isfinite(fa) && std::isfinite(fb) && fa != fb)) return false;
+    *r = b - (fb - 1.0) * (b - a) / (fb - fa);
+    return std::isfinite(*r);
+  };
+  const auto take = [&](double t) {
+    const double f = value(t);
+    if (qualifies(f))
+      *lo = t;
+    else
+      *hi = t;
+    a = b;
+    fa = fb;
+    b = t;
+    fb = f;
+  };
   for (int k = 0; *hi - *lo > tau; ++k) {
-    double t = 0.5 * (*lo + *hi);
-    const double gLo = fLo - 1.0, gHi = fHi - 1.0;
-    if (k < 6 && std::isfinite(gLo) && std::isfinite(gHi) && gLo != gHi) {
-      const double s = *lo - gLo * (*hi - *lo) / (gHi - gLo);
-      if (s > *lo && s < *hi) t = s;
+    double t = 0.5 * (*lo + *hi), r;
+    if (k < 8 && secant(&r) && r > *lo && r < *hi)
+      t = std::min(std::max(r, *lo + 0.25 * tau), *hi - 0.25 * tau);
+    if (!(t > *lo && t < *hi)) break;  // τ below the spacing of doubles near the bracket
+    take(t);
+    if (*hi - *lo > tau && secant(&r) && std::fabs(r - t) < 0.45 * tau) {
+      const double q = r > t ? t + 0.5 * tau : t - 0.5 * tau;
+      if (q > *lo && q < *hi) take(q);
     }
-    bool moved = false;
-    for (const double probe : {t - 0.45 * tau, t + 0.45 * tau}) {
-      if (!(probe > *lo && probe < *hi)) continue;
-      moved = true;
-      const double f = value(probe);
-      if (qualifies(f)) {
-        *lo = probe;
-        fLo = f;
-      } else {
-        *hi = probe;
-        fHi = f;
-      }
-    }
-    if (!moved) break;  // τ below the spacing of doubles near the bracket
   }
 }
 
@@ -532,13 +538,14 @@ float FuzzyPartField::roundedUpper(double level, const PlacedSuperquadric& witne
 // ones with h(lo) > 1 >= h(hi) hold l_true (l = hi, proven: the largest F over P(hi) is <= 1),
 // each to τ: the guarantees of the search, with no budget to run out. g(0) > 1: no θ puts p
 // inside (u = 0, never); h(0) <= 1: p ∈ lower(0) (l = 0); h(1) > 1: a θ of P(1) puts p outside.
-AlphaLevels FuzzyPartField::cornerLevels(const Vec3& p, const signed char* sign) const {
+AlphaLevels FuzzyPartField::cornerLevels(const Vec3& p, const signed char* sign,
+                                         bool inCore) const {
   const double tau = options_.tolerance;
-  const auto least = [&](double a) { return valueAt(cornerAt(a, sign, true), p); };
-  const double g0 = least(0.0);
-  if (g0 > 1.0) return {0.0f, kNeverInside};
   AlphaLevels out;
-  const double g1 = least(1.0);
+  const auto least = [&](double a) { return valueAt(cornerAt(a, sign, true), p); };
+  const double g0 = inCore ? 0.0 : least(0.0);
+  if (g0 > 1.0) return {0.0f, kNeverInside};
+  const double g1 = inCore ? 0.0 : least(1.0);
   if (g1 > 1.0) {
     double lo = 0.0, hi = 1.0;
     narrowBracket(least, true, tau, &lo, &hi, g0, g1);
@@ -626,12 +633,14 @@ void FuzzyPartField::sampleSubBlock(const BlockLattice& b, int i, int j, int k, 
     // instead of one per voxel); otherwise levelsAt tries the voxel's own.
     if (signs->state == 0)
       signs->state = monotoneSigns(b.lo(), b.hi(), signs->sign) ? 1 : 2;
+    // Inside S(θ) for every θ of P(1) (boundsOver): g(1) <= 1, so u = 1 with no evaluation.
+    const bool inCore = bounds.upperMin == 1.0f;
     for (int x = i; x < i + size; ++x)
       for (int y = j; y < j + size; ++y)
         for (int z = k; z < k + size; ++z)
-          out[(x * d + y) * d + z] = signs->state == 1
-                                         ? cornerLevels(b.at(x, y, z), signs->sign)
-                                         : FuzzyPartField::levelsAt(b.at(x, y, z));
+          out[(x * d + y) * d + z] =
+              signs->state == 1 ? cornerLevels(b.at(x, y, z), signs->sign, inCore)
+                                : FuzzyPartField::levelsAt(b.at(x, y, z));
     return;
   }
   if (uniform || size <= 2) {

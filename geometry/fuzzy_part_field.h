@@ -124,8 +124,9 @@ class FuzzyPartField : public AlphaFieldSource {
   // fuzzy value i over the point box [lo, hi] × P(0) (0 for crisp values); false unless every
   // fuzzy value has a sign.
   bool monotoneSigns(const Vec3& lo, const Vec3& hi, signed char* sign) const;
-  // levelsAt where monotoneSigns holds over a box that contains p.
-  AlphaLevels cornerLevels(const Vec3& p, const signed char* sign) const;
+  // levelsAt where monotoneSigns holds over a box that contains p; inCore: p is known to be
+  // inside S(θ) for every θ of P(1) (then u = 1 needs no evaluation).
+  AlphaLevels cornerLevels(const Vec3& p, const signed char* sign, bool inCore = false) const;
   // The corner of P(alpha) where F is least (least) or largest, for the given signs.
   PlacedSuperquadric cornerAt(double alpha, const signed char* sign, bool least) const;
   // u rounded down to a float whose cut still holds the witness (p ∈ upper(u) stays shown).
