@@ -93,6 +93,7 @@ bool FuzzyPartField::decide(const Vec3& p, const PartBox& box, Question q) const
     const Item item = std::move(stack.back());
     stack.pop_back();
     ++evaluations;
+    if (possibly && missesDeformedHull(item.box, px, py, pz)) continue;  // F > 1 on the box
     const Interval f = insideOutsideBounds(item.box, px, py, pz);
     // The enclosure excludes the box from the question (no witness can lie in it).
     if (possibly ? f.lo > 1.0 : f.hi <= 1.0) continue;
@@ -320,6 +321,7 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
       }
     }
     ++evaluations;
+    if (inside && missesDeformedHull(node.box, px, py, pz)) continue;  // F > 1 on the whole box
     const Interval f = insideOutsideBounds(node.box, px, py, pz);
     if (inside ? f.lo > 1.0 : f.hi <= 1.0) continue;  // no θ of the box qualifies
     // The peak of the box: each value clamped towards its core maximises μ̂_i over the box, so a
@@ -572,6 +574,9 @@ AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
     if (crisp_->insideOutside(p) <= 1.0) return {1.0f, 0.0f};
     return {0.0f, kNeverInside};
   }
+  // Outside the local box that holds every S(θ): u = 0, l = never (the enclosure of the
+  // deformations alone is loose far from the part).
+  if (missesDeformedHull(support_, {p.x, p.x}, {p.y, p.y}, {p.z, p.z})) return {0.0f, kNeverInside};
   signed char sign[kSlots];
   if (monotoneSigns(p, p, sign)) return cornerLevels(p, sign);
   const double tau = options_.tolerance;
@@ -701,6 +706,7 @@ AlphaLevels bisectionLevelsAt(const FuzzyPartField& field, const Vec3& p) {
 AlphaLevelBounds FuzzyPartField::boundsOver(const Vec3& lo, const Vec3& hi) const {
   const Interval x{lo.x, hi.x}, y{lo.y, hi.y}, z{lo.z, hi.z};
   AlphaLevelBounds b;  // the non-uniform default: u in [0, 1], l in [0, never]
+  if (missesDeformedHull(support_, x, y, z)) return {0.0f, 0.0f, kNeverInside, kNeverInside};
   const Interval f0 = insideOutsideBounds(support_, x, y, z);
   if (f0.lo > 1.0 + kMargin) return {0.0f, 0.0f, kNeverInside, kNeverInside};
   if (f0.hi <= 1.0 - kMargin) return {1.0f, 1.0f, 0.0f, 0.0f};
@@ -717,25 +723,9 @@ AlphaLevelBounds FuzzyPartField::boundsOver(const Vec3& lo, const Vec3& hi) cons
 }
 
 void FuzzyPartField::boundingBox(Vec3* lo, Vec3* hi) const {
-  const SuperquadricBox& q = support_.params;
   const PlacementBox& pl = support_.placement;
-  // Canonical half-lengths, widened by the taper factor (SPEC §2: X = x(kx·z/C + 1), |z| <= C).
-  double X = q.a1.hi * (1.0 + magnitude(q.kx));
-  double Y = q.a1.hi * q.a2.hi * (1.0 + magnitude(q.ky));
-  double Z = q.a1.hi * q.a3.hi;
-  // Twist turns the cross-section about z: it stays within the circle of the corner radius.
-  if (magnitude(q.t) > 0.0) X = Y = std::hypot(X, Y);
-  // Bend with curvature k, γ = k·z: X' − x = (1/k − x)(1 − cos γ) and Z' = sin γ·(1/k − x).
-  // With 1 − cos γ <= min(2, γ²/2) and |sin γ| <= min(1, |γ|):
-  //   |X' − x| <= (1 + K·X)·min(2/|k|, |k|·Z²/2) <= (1 + K·X)·min(Z, K·Z²/2),
-  //   |Z'| <= min(1/|k|, Z) + X·min(1, |k|·Z) <= Z + X·min(1, K·Z),   K = max |kv|.
-  const double K = magnitude(q.kv);
-  if (K > 0.0) {
-    const double bentX = X + (1.0 + K * X) * std::min(Z, 0.5 * K * Z * Z);
-    const double bentZ = Z + X * std::min(1.0, K * Z);
-    X = bentX;
-    Z = bentZ;
-  }
+  double X, Y, Z;
+  deformedHalfExtents(support_.params, &X, &Y, &Z);
   // Placement: scale, rotate, translate. The local box is symmetric, so every scale up to the
   // largest maps it into the largest scaled box.
   const double s = pl.scale.hi;
