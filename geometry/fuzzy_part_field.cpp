@@ -173,6 +173,42 @@ PlacedSuperquadric thetaAt(const PartBox& b, const double (&v)[kSlots]) {
 
 }  // namespace
 
+// Monotone collapse as an exclusion test: where F is nondecreasing in a value over the box, some θ
+// of the box has F <= 1 only if one with that value at its low end has (moving it down never
+// raises F), and some θ has F > 1 only if one with it at its high end has. So if the box with
+// every signed value collapsed to that end (slopes: superquadric_slopes.h) is excluded by its
+// enclosure, which is tighter than the whole box's, no θ of the whole box qualifies. (Only
+// exclusion rests on it: a witness in the collapsed box says nothing about the best m(θ) of the
+// rest.) Each slope enclosure counts as an evaluation.
+bool FuzzyPartField::collapsedExcludes(const PartBox& box, const Vec3& p, bool inside,
+                                       int* evaluations) const {
+  const Interval px{p.x, p.x}, py{p.y, p.y}, pz{p.z, p.z};
+  PartBox c = box;
+  for (int round = 0; round < 3 && *evaluations < options_.evaluationBudget; ++round) {
+    int open[kSlots], n = 0;
+    for (int i = 0; i < kSlots; ++i)
+      if (supportWidth_[i] > 0.0 && width(slot(c, i)) > 0.0) open[n++] = i;
+    if (n == 0) return false;
+    Interval d[kSlots];
+    ++*evaluations;
+    if (!insideOutsideSlopes(c, px, py, pz, open, n, d)) return false;
+    bool collapsed = false;
+    for (int j = 0; j < n; ++j) {
+      const int sign = d[j].lo >= 0.0 ? 1 : d[j].hi <= 0.0 ? -1 : 0;
+      if (sign == 0) continue;
+      Interval& v = slot(c, open[j]);
+      const double end = (sign > 0) == inside ? v.lo : v.hi;
+      v = {end, end};
+      collapsed = true;
+    }
+    if (!collapsed) return false;
+    ++*evaluations;
+    const Interval f = insideOutsideBounds(c, px, py, pz);
+    if (inside ? f.lo > 1.0 : f.hi <= 1.0) return true;
+  }
+  return false;
+}
+
 // Max-min branch and bound (see the header): maximise m(θ) = min_i μ̂_i(θ_i) over the θ of P(0)
 // with F(p; θ) <= 1 (inside) or F(p; θ) > 1 (!inside).
 FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const {
@@ -324,6 +360,7 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
     if (inside && missesDeformedHull(node.box, px, py, pz)) continue;  // F > 1 on the whole box
     const Interval f = insideOutsideBounds(node.box, px, py, pz);
     if (inside ? f.lo > 1.0 : f.hi <= 1.0) continue;  // no θ of the box qualifies
+    if (collapsedExcludes(node.box, p, inside, &evaluations)) continue;
     // The peak of the box: each value clamped towards its core maximises μ̂_i over the box, so a
     // witness there settles the box (m = its bound).
     double peak[kSlots], centre[kSlots];

@@ -119,6 +119,9 @@ class FuzzyPartField : public AlphaFieldSource {
     PlacedSuperquadric witness;
   };
   Search maxMin(const Vec3& p, bool inside) const;
+  // Is the box excluded for the search (inside: no θ with F <= 1; else none with F > 1) once its
+  // monotone values are collapsed to their ends? Adds its evaluations to *evaluations.
+  bool collapsedExcludes(const PartBox& box, const Vec3& p, bool inside, int* evaluations) const;
   PartBox cutAt(double alpha) const;  // boxAt(alpha), cutting only the fuzzy values
   // Monotone shortcut (see above): sign[i] = +1 / −1 when F is nondecreasing / nonincreasing in
   // fuzzy value i over the point box [lo, hi] × P(0) (0 for crisp values); false unless every
