@@ -179,7 +179,8 @@ PlacedSuperquadric thetaAt(const PartBox& b, const double (&v)[kSlots]) {
 // every signed value collapsed to that end (slopes: superquadric_slopes.h) is excluded by its
 // enclosure, which is tighter than the whole box's, no θ of the whole box qualifies. (Only
 // exclusion rests on it: a witness in the collapsed box says nothing about the best m(θ) of the
-// rest.) Each slope enclosure counts as an evaluation.
+// rest.) The collapsed box is also bounded by the mean value form with those slopes. Each
+// slope enclosure and each enclosure counts as an evaluation.
 bool FuzzyPartField::collapsedExcludes(const PartBox& box, const Vec3& p, bool inside,
                                        int* evaluations) const {
   const Interval px{p.x, p.x}, py{p.y, p.y}, pz{p.z, p.z};
@@ -203,7 +204,18 @@ bool FuzzyPartField::collapsedExcludes(const PartBox& box, const Vec3& p, bool i
     }
     if (!collapsed) return false;
     ++*evaluations;
-    const Interval f = insideOutsideBounds(c, px, py, pz);
+    // The enclosure, and the mean value form F(θ) ∈ F(m) + Σ D_j·(θ_j − m_j) about the centre m
+    // (the slopes D over the larger box hold those over the collapsed one).
+    Interval f = insideOutsideBounds(c, px, py, pz);
+    const double fm = centreValue(c, p);
+    Interval mv{fm, fm};
+    for (int j = 0; j < n; ++j) {
+      const Interval& v = slot(c, open[j]);
+      if (v.lo == v.hi) continue;
+      const double m = mid(v);
+      mv = add(mv, mul(d[j], Interval{v.lo - m, v.hi - m}));
+    }
+    if (std::isfinite(mv.lo) && std::isfinite(mv.hi)) f = intersect(f, mv);
     if (inside ? f.lo > 1.0 : f.hi <= 1.0) return true;
   }
   return false;
