@@ -755,7 +755,9 @@ AlphaLevels bisectionLevelsAt(const FuzzyPartField& field, const Vec3& p) {
 AlphaLevelBounds FuzzyPartField::boundsOver(const Vec3& lo, const Vec3& hi) const {
   const Interval x{lo.x, hi.x}, y{lo.y, hi.y}, z{lo.z, hi.z};
   AlphaLevelBounds b;  // the non-uniform default: u in [0, 1], l in [0, never]
-  if (missesDeformedHull(support_, x, y, z)) return {0.0f, 0.0f, kNeverInside, kNeverInside};
+  // (Crisp parts skip it: their enclosure is the crisp value up to rounding.)
+  if (!crisp_ && missesDeformedHull(support_, x, y, z))
+    return {0.0f, 0.0f, kNeverInside, kNeverInside};
   const Interval f0 = insideOutsideBounds(support_, x, y, z);
   if (f0.lo > 1.0 + kMargin) return {0.0f, 0.0f, kNeverInside, kNeverInside};
   if (f0.hi <= 1.0 - kMargin) return {1.0f, 1.0f, 0.0f, 0.0f};

@@ -31,7 +31,11 @@
 // falsi walk towards the peak; boxes are split where fixing a value to its midpoint moved the
 // enclosure most (measured once per search). Until the first witness the search dives (the box
 // whose centre is nearest a witness first). For u the search starts cut to P(τ): u = 0 is a correct
-// answer for any u_true <= τ. A fast exit first tries the enclosure over P(0) at p.
+// answer for any u_true <= τ. A fast exit first tries the enclosure over P(0) at p. Two more
+// sound exclusions: a box whose placement cannot bring p into the local box that holds every
+// S(θ) of it (missesDeformedHull) has no θ with F <= 1, and a box is dropped when the box with
+// its monotone values collapsed to their F-lowering (u) or F-raising (l) ends is excluded by its
+// enclosure or mean value form (a θ qualifies in the box only if one does in the collapsed box).
 //  * u: the incumbent, rounded down and checked: its witness lies in P(u) (so u = 1 only when p ∈
 //    upper(1) was shown). u lies in [u_true − τ, u_true] unless the budget ran out; then u is the
 //    largest bound still open (an upper bound of u_true: upper grows).
@@ -52,8 +56,8 @@
 // Each of the two searches is one query with the evaluation budget (the split weights' enclosures
 // count). reference::bisectionLevelsAt keeps the previous bisection (tests compare the two).
 //
-// boundsOver(lo, hi) bounds the true levels of every point of the box, from the enclosure over the
-// point box with P(0) and P(1) (decisions keep a relative margin of 1e-12 from 1, for the unrounded
+// boundsOver(lo, hi) bounds the true levels of every point of the box, from missesDeformedHull and
+// the enclosure over the point box with P(0) and P(1) (decisions keep a relative margin of 1e-12 from 1, for the unrounded
 // enclosure). levelsAt answers lie within them unless a point query ran out of budget: the
 // enclosure is not monotone under inclusion, so a block may be excluded whole while one of its
 // points needs splitting. boundingBox() is a simple sound box around upper(0) (deformation and
