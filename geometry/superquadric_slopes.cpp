@@ -72,10 +72,11 @@ class Diff {
   }
   Ad div(const Ad& a, const Ad& b) {  // d(a/b) = (da − (a/b)·db)/b, b away from 0
     if (contains(b.v, 0.0)) return failed();
+    const Interval inverse{1.0 / b.v.hi, 1.0 / b.v.lo};  // 1/y decreases away from 0
     Ad r;
-    r.v = fsdb::div(a.v, b.v);
+    r.v = fsdb::mul(a.v, inverse);
     for (int j = 0; j < n_; ++j)
-      r.d[j] = fsdb::div(fsdb::sub(a.d[j], fsdb::mul(r.v, b.d[j])), b.v);
+      r.d[j] = fsdb::mul(fsdb::sub(a.d[j], fsdb::mul(r.v, b.d[j])), inverse);
     return check(r);
   }
   Ad sin(const Ad& a) { return chain(fsdb::sin(a.v), fsdb::cos(a.v), a); }
@@ -90,8 +91,9 @@ class Diff {
     if (!(h.lo > 0.0)) return failed();
     Ad r;
     r.v = h;
+    const Interval inverse{1.0 / h.hi, 1.0 / h.lo};
     for (int j = 0; j < n_; ++j)
-      r.d[j] = fsdb::div(fsdb::add(fsdb::mul(a.v, a.d[j]), fsdb::mul(b.v, b.d[j])), h);
+      r.d[j] = fsdb::mul(fsdb::add(fsdb::mul(a.v, a.d[j]), fsdb::mul(b.v, b.d[j])), inverse);
     return check(r);
   }
   // |x|: where x may change sign the slope is ±dx (either one-sided derivative).
