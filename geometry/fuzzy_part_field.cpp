@@ -9,6 +9,7 @@
 #include "geometry/number_format.h"
 #include "geometry/deformation.h"
 #include "geometry/superquadric.h"
+#include "geometry/superquadric_slopes.h"
 #include "geometry/transform.h"
 
 namespace fsdb {
@@ -24,14 +25,8 @@ constexpr double kMargin = 1e-12;
 constexpr double kDegenerate = 1e-12;
 
 // The fourteen fuzzy values of a part box, addressed by index for splitting.
-Interval& slot(PartBox& b, int i) {
-  SuperquadricBox& q = b.params;
-  PlacementBox& p = b.placement;
-  Interval* const slots[kSlots] = {&q.eps1, &q.eps2, &q.a1, &q.a2, &q.a3, &q.kx,  &q.ky,
-                                   &q.kv,   &q.t,    &p.tx, &p.ty, &p.tz, &p.deg, &p.scale};
-  return *slots[i];
-}
-const Interval& slot(const PartBox& b, int i) { return slot(const_cast<PartBox&>(b), i); }
+Interval& slot(PartBox& b, int i) { return partSlot(b, i); }
+const Interval& slot(const PartBox& b, int i) { return partSlot(b, i); }
 
 // F at the centre of the box: a crisp witness (every θ of a validated part's box is valid).
 double centreValue(const PartBox& b, const Vec3& p) { return midpointPart(b).insideOutside(p); }
@@ -54,6 +49,8 @@ FuzzyPartField::FuzzyPartField(const FuzzyPart& part, FuzzyPartFieldOptions opti
       &part_.eps1, &part_.eps2, &part_.a1, &part_.a2, &part_.a3, &part_.kx,  &part_.ky,
       &part_.kv,   &part_.t,    &part_.tx, &part_.ty, &part_.tz, &part_.deg, &part_.scale};
   for (int i = 0; i < kSlots; ++i) values_[i] = values[i];
+  for (int i = 0; i < kSlots; ++i)
+    if (supportWidth_[i] > 0.0) fuzzySlots_[fuzzyCount_++] = i;
   crispAngle_ = supportWidth_[12] <= 0.0;
   if (crispAngle_) rotation_ = Rotation::fromAxisAngle(part_.axis, support_.placement.deg.lo);
   bool allCrisp = true;
@@ -96,6 +93,7 @@ bool FuzzyPartField::decide(const Vec3& p, const PartBox& box, Question q) const
     const Item item = std::move(stack.back());
     stack.pop_back();
     ++evaluations;
+    if (possibly && missesDeformedHull(item.box, px, py, pz)) continue;  // F > 1 on the box
     const Interval f = insideOutsideBounds(item.box, px, py, pz);
     // The enclosure excludes the box from the question (no witness can lie in it).
     if (possibly ? f.lo > 1.0 : f.hi <= 1.0) continue;
@@ -170,16 +168,58 @@ double supHullMembership(const FuzzyNumber& v, const Interval& core, const Inter
 constexpr double kMembershipSlack = 1e-12;
 
 PlacedSuperquadric thetaAt(const PartBox& b, const double (&v)[kSlots]) {
-  PlacedSuperquadric part;
-  part.params = {v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]};
-  part.placement.translate = {v[9], v[10], v[11]};
-  part.placement.axis = b.placement.axis;
-  part.placement.deg = v[12];
-  part.placement.scale = v[13];
-  return part;
+  return partFromSlots(b.placement.axis, v);
 }
 
 }  // namespace
+
+// Monotone collapse as an exclusion test: where F is nondecreasing in a value over the box, some θ
+// of the box has F <= 1 only if one with that value at its low end has (moving it down never
+// raises F), and some θ has F > 1 only if one with it at its high end has. So if the box with
+// every signed value collapsed to that end (slopes: superquadric_slopes.h) is excluded by its
+// enclosure, which is tighter than the whole box's, no θ of the whole box qualifies. (Only
+// exclusion rests on it: a witness in the collapsed box says nothing about the best m(θ) of the
+// rest.) The collapsed box is also bounded by the mean value form with those slopes. Each
+// slope enclosure and each enclosure counts as an evaluation.
+bool FuzzyPartField::collapsedExcludes(const PartBox& box, const Vec3& p, bool inside,
+                                       int* evaluations) const {
+  const Interval px{p.x, p.x}, py{p.y, p.y}, pz{p.z, p.z};
+  PartBox c = box;
+  for (int round = 0; round < 3 && *evaluations < options_.evaluationBudget; ++round) {
+    int open[kSlots], n = 0;
+    for (int i = 0; i < kSlots; ++i)
+      if (supportWidth_[i] > 0.0 && width(slot(c, i)) > 0.0) open[n++] = i;
+    if (n == 0) return false;
+    Interval d[kSlots];
+    ++*evaluations;
+    if (!insideOutsideSlopes(c, px, py, pz, open, n, d)) return false;
+    bool collapsed = false;
+    for (int j = 0; j < n; ++j) {
+      const int sign = d[j].lo >= 0.0 ? 1 : d[j].hi <= 0.0 ? -1 : 0;
+      if (sign == 0) continue;
+      Interval& v = slot(c, open[j]);
+      const double end = (sign > 0) == inside ? v.lo : v.hi;
+      v = {end, end};
+      collapsed = true;
+    }
+    if (!collapsed) return false;
+    ++*evaluations;
+    // The enclosure, and the mean value form F(θ) ∈ F(m) + Σ D_j·(θ_j − m_j) about the centre m
+    // (the slopes D over the larger box hold those over the collapsed one).
+    Interval f = insideOutsideBounds(c, px, py, pz);
+    const double fm = centreValue(c, p);
+    Interval mv{fm, fm};
+    for (int j = 0; j < n; ++j) {
+      const Interval& v = slot(c, open[j]);
+      if (v.lo == v.hi) continue;
+      const double m = mid(v);
+      mv = add(mv, mul(d[j], Interval{v.lo - m, v.hi - m}));
+    }
+    if (std::isfinite(mv.lo) && std::isfinite(mv.hi)) f = intersect(f, mv);
+    if (inside ? f.lo > 1.0 : f.hi <= 1.0) return true;
+  }
+  return false;
+}
 
 // Max-min branch and bound (see the header): maximise m(θ) = min_i μ̂_i(θ_i) over the θ of P(0)
 // with F(p; θ) <= 1 (inside) or F(p; θ) > 1 (!inside).
@@ -329,8 +369,10 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
       }
     }
     ++evaluations;
+    if (inside && missesDeformedHull(node.box, px, py, pz)) continue;  // F > 1 on the whole box
     const Interval f = insideOutsideBounds(node.box, px, py, pz);
     if (inside ? f.lo > 1.0 : f.hi <= 1.0) continue;  // no θ of the box qualifies
+    if (collapsedExcludes(node.box, p, inside, &evaluations)) continue;
     // The peak of the box: each value clamped towards its core maximises μ̂_i over the box, so a
     // witness there settles the box (m = its bound).
     double peak[kSlots], centre[kSlots];
@@ -454,11 +496,138 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
   return s;
 }
 
+namespace {
+
+// Narrows [lo, hi] around the level where F at a corner moving with α crosses 1: on entry
+// qualifies(value(lo)) and !qualifies(value(hi)), with qualifies(f) = f <= 1 (inside) or f > 1
+// (!inside), value(α) monotone; on return the same holds and hi − lo <= tau. Secant steps through
+// the two latest points (the corners move linearly in α between breakpoints, so they converge
+// fast), kept τ/4 inside the bracket, halving after eight; when the next estimate lies within
+// 0.45·τ of the last point, a probe τ/2 beyond it on that side usually closes the bracket.
+template <typename Value>
+void narrowBracket(const Value& value, bool inside, double tau, double* lo, double* hi, double fLo,
+                   double fHi) {
+  const auto qualifies = [inside](double f) { return inside ? f <= 1.0 : f > 1.0; };
+  double a = *lo, fa = fLo, b = *hi, fb = fHi;  // the two latest points
+  const auto secant = [&](double* r) {
+    if (!(std::isfinite(fa) && std::isfinite(fb) && fa != fb)) return false;
+    *r = b - (fb - 1.0) * (b - a) / (fb - fa);
+    return std::isfinite(*r);
+  };
+  const auto take = [&](double t) {
+    const double f = value(t);
+    if (qualifies(f))
+      *lo = t;
+    else
+      *hi = t;
+    a = b;
+    fa = fb;
+    b = t;
+    fb = f;
+  };
+  for (int k = 0; *hi - *lo > tau; ++k) {
+    double t = 0.5 * (*lo + *hi), r;
+    if (k < 8 && secant(&r) && r > *lo && r < *hi)
+      t = std::min(std::max(r, *lo + 0.25 * tau), *hi - 0.25 * tau);
+    if (!(t > *lo && t < *hi)) break;  // τ below the spacing of doubles near the bracket
+    take(t);
+    if (*hi - *lo > tau && secant(&r) && std::fabs(r - t) < 0.45 * tau) {
+      const double q = r > t ? t + 0.5 * tau : t - 0.5 * tau;
+      if (q > *lo && q < *hi) take(q);
+    }
+  }
+}
+
+}  // namespace
+
+bool FuzzyPartField::monotoneSigns(const Vec3& lo, const Vec3& hi, signed char* sign) const {
+  Interval d[kSlots];
+  if (fuzzyCount_ == 0 ||
+      !insideOutsideSlopes(support_, {lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}, fuzzySlots_,
+                           fuzzyCount_, d))
+    return false;
+  for (int i = 0; i < kSlots; ++i) sign[i] = 0;
+  for (int j = 0; j < fuzzyCount_; ++j) {
+    if (d[j].lo >= 0.0)
+      sign[fuzzySlots_[j]] = 1;
+    else if (d[j].hi <= 0.0)
+      sign[fuzzySlots_[j]] = -1;
+    else
+      return false;
+  }
+  return true;
+}
+
+PlacedSuperquadric FuzzyPartField::cornerAt(double alpha, const signed char* sign,
+                                            bool least) const {
+  double v[kSlots];
+  for (int i = 0; i < kSlots; ++i) v[i] = slot(support_, i).lo;  // crisp values: lo == hi
+  for (int j = 0; j < fuzzyCount_; ++j) {
+    const int i = fuzzySlots_[j];
+    const Interval c = alpha == 0.0   ? slot(support_, i)
+                       : alpha == 1.0 ? slot(core_, i)
+                                      : values_[i]->alphaCut(alpha);
+    v[i] = (sign[i] > 0) == least ? c.lo : c.hi;
+  }
+  return thetaAt(support_, v);
+}
+
+float FuzzyPartField::roundedUpper(double level, const PlacedSuperquadric& witness) const {
+  float u = floatDown(level);
+  while (u > 0.0f && !contains(u == 1.0f ? core_ : cutAt(u), witness))
+    u = std::nextafter(u, -1.0f);
+  return u;
+}
+
+// The monotone shortcut. Where F is monotone in every fuzzy value over P(0) at p (signs certified
+// by insideOutsideSlopes), moving one value at a time to the end that lowers F never raises it, so
+//   g(α) = min{F(p; θ) : θ ∈ P(α)} = F(p; least corner of P(α)),
+//   h(α) = max{F(p; θ) : θ ∈ P(α)} = F(p; largest corner of P(α)),
+// exactly (P(α) ⊆ P(0) is a box). With θ ∈ P(α) ⇔ m(θ) >= α (α > 0), u_true = sup{α : g(α) <= 1}
+// and l_true = inf{α : h(α) <= 1}; g rises and h falls with α (P(α) shrinks). So brackets
+// [lo, hi] with g(lo) <= 1 < g(hi) hold u_true (u = lo, witness the least corner of P(lo)), and
+// ones with h(lo) > 1 >= h(hi) hold l_true (l = hi, proven: the largest F over P(hi) is <= 1),
+// each to τ: the guarantees of the search, with no budget to run out. g(0) > 1: no θ puts p
+// inside (u = 0, never); h(0) <= 1: p ∈ lower(0) (l = 0); h(1) > 1: a θ of P(1) puts p outside.
+AlphaLevels FuzzyPartField::cornerLevels(const Vec3& p, const signed char* sign,
+                                         bool inCore) const {
+  const double tau = options_.tolerance;
+  AlphaLevels out;
+  const auto least = [&](double a) { return valueAt(cornerAt(a, sign, true), p); };
+  const double g0 = inCore ? 0.0 : least(0.0);
+  if (g0 > 1.0) return {0.0f, kNeverInside};
+  const double g1 = inCore ? 0.0 : least(1.0);
+  if (g1 > 1.0) {
+    double lo = 0.0, hi = 1.0;
+    narrowBracket(least, true, tau, &lo, &hi, g0, g1);
+    out.upper = roundedUpper(lo, cornerAt(lo, sign, true));
+    return out;  // l <= 1 needs p ∈ lower(1) ⊆ upper(1)
+  }
+  out.upper = 1.0f;
+  const auto largest = [&](double a) { return valueAt(cornerAt(a, sign, false), p); };
+  const double h0 = largest(0.0);
+  if (h0 <= 1.0) {
+    out.lower = 0.0f;
+    return out;
+  }
+  const double h1 = largest(1.0);
+  if (h1 > 1.0) return out;  // never in lower(1)
+  double lo = 0.0, hi = 1.0;
+  narrowBracket(largest, false, tau, &lo, &hi, h0, h1);
+  out.lower = floatUp(hi);
+  return out;
+}
+
 AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
   if (crisp_) {
     if (crisp_->insideOutside(p) <= 1.0) return {1.0f, 0.0f};
     return {0.0f, kNeverInside};
   }
+  // Outside the local box that holds every S(θ): u = 0, l = never (the enclosure of the
+  // deformations alone is loose far from the part).
+  if (missesDeformedHull(support_, {p.x, p.x}, {p.y, p.y}, {p.z, p.z})) return {0.0f, kNeverInside};
+  signed char sign[kSlots];
+  if (monotoneSigns(p, p, sign)) return cornerLevels(p, sign);
   const double tau = options_.tolerance;
   // u(p) = sup{m(θ) : F(p; θ) <= 1}: the incumbent, whose witness is in P(incumbent).
   {
@@ -476,9 +645,7 @@ AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
   } else {
     if (up.incumbent < 0.0) return out;  // no θ of P(0) puts p inside: u = 0, l = never
     // Round down, keeping the witness: p ∈ upper(u) is shown by θ ∈ P(u).
-    float u = floatDown(up.incumbent);
-    while (u > 0.0f && !contains(u == 1.0f ? core_ : cutAt(u), up.witness))
-      u = std::nextafter(u, -1.0f);
+    const float u = roundedUpper(up.incumbent, up.witness);
     out.upper = u;
     if (u < 1.0f) return out;  // l <= 1 needs p ∈ lower(1) ⊆ upper(1)
   }
@@ -503,17 +670,33 @@ AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
 void FuzzyPartField::sampleBlock(const BlockLattice& b, AlphaLevels* out) const {
   constexpr int d = BlockLattice::kDim;
   const int half = d / 2;
+  BlockSigns signs;
   for (int i = 0; i < d; i += half)
     for (int j = 0; j < d; j += half)
-      for (int k = 0; k < d; k += half) sampleSubBlock(b, i, j, k, half, out);
+      for (int k = 0; k < d; k += half) sampleSubBlock(b, i, j, k, half, &signs, out);
 }
 
 void FuzzyPartField::sampleSubBlock(const BlockLattice& b, int i, int j, int k, int size,
-                                    AlphaLevels* out) const {
+                                    BlockSigns* signs, AlphaLevels* out) const {
   constexpr int d = BlockLattice::kDim;
   const AlphaLevelBounds bounds =
       boundsOver(b.at(i, j, k), b.at(i + size - 1, j + size - 1, k + size - 1));
   const bool uniform = bounds.uniform();
+  if (!uniform && size <= 2 && !crisp_) {
+    // Signs that hold over the whole block serve every voxel of it (one slope enclosure per block
+    // instead of one per voxel); otherwise levelsAt tries the voxel's own.
+    if (signs->state == 0)
+      signs->state = monotoneSigns(b.lo(), b.hi(), signs->sign) ? 1 : 2;
+    // Inside S(θ) for every θ of P(1) (boundsOver): g(1) <= 1, so u = 1 with no evaluation.
+    const bool inCore = bounds.upperMin == 1.0f;
+    for (int x = i; x < i + size; ++x)
+      for (int y = j; y < j + size; ++y)
+        for (int z = k; z < k + size; ++z)
+          out[(x * d + y) * d + z] =
+              signs->state == 1 ? cornerLevels(b.at(x, y, z), signs->sign, inCore)
+                                : FuzzyPartField::levelsAt(b.at(x, y, z));
+    return;
+  }
   if (uniform || size <= 2) {
     // Qualified: no virtual call (levelsAt's first test is the crisp shortcut).
     for (int x = i; x < i + size; ++x)
@@ -526,7 +709,7 @@ void FuzzyPartField::sampleSubBlock(const BlockLattice& b, int i, int j, int k, 
   const int half = size / 2;
   for (int x = i; x < i + size; x += half)
     for (int y = j; y < j + size; y += half)
-      for (int z = k; z < k + size; z += half) sampleSubBlock(b, x, y, z, half, out);
+      for (int z = k; z < k + size; z += half) sampleSubBlock(b, x, y, z, half, signs, out);
 }
 
 namespace reference {
@@ -572,6 +755,9 @@ AlphaLevels bisectionLevelsAt(const FuzzyPartField& field, const Vec3& p) {
 AlphaLevelBounds FuzzyPartField::boundsOver(const Vec3& lo, const Vec3& hi) const {
   const Interval x{lo.x, hi.x}, y{lo.y, hi.y}, z{lo.z, hi.z};
   AlphaLevelBounds b;  // the non-uniform default: u in [0, 1], l in [0, never]
+  // (Crisp parts skip it: their enclosure is the crisp value up to rounding.)
+  if (!crisp_ && missesDeformedHull(support_, x, y, z))
+    return {0.0f, 0.0f, kNeverInside, kNeverInside};
   const Interval f0 = insideOutsideBounds(support_, x, y, z);
   if (f0.lo > 1.0 + kMargin) return {0.0f, 0.0f, kNeverInside, kNeverInside};
   if (f0.hi <= 1.0 - kMargin) return {1.0f, 1.0f, 0.0f, 0.0f};
@@ -588,25 +774,9 @@ AlphaLevelBounds FuzzyPartField::boundsOver(const Vec3& lo, const Vec3& hi) cons
 }
 
 void FuzzyPartField::boundingBox(Vec3* lo, Vec3* hi) const {
-  const SuperquadricBox& q = support_.params;
   const PlacementBox& pl = support_.placement;
-  // Canonical half-lengths, widened by the taper factor (SPEC §2: X = x(kx·z/C + 1), |z| <= C).
-  double X = q.a1.hi * (1.0 + magnitude(q.kx));
-  double Y = q.a1.hi * q.a2.hi * (1.0 + magnitude(q.ky));
-  double Z = q.a1.hi * q.a3.hi;
-  // Twist turns the cross-section about z: it stays within the circle of the corner radius.
-  if (magnitude(q.t) > 0.0) X = Y = std::hypot(X, Y);
-  // Bend with curvature k, γ = k·z: X' − x = (1/k − x)(1 − cos γ) and Z' = sin γ·(1/k − x).
-  // With 1 − cos γ <= min(2, γ²/2) and |sin γ| <= min(1, |γ|):
-  //   |X' − x| <= (1 + K·X)·min(2/|k|, |k|·Z²/2) <= (1 + K·X)·min(Z, K·Z²/2),
-  //   |Z'| <= min(1/|k|, Z) + X·min(1, |k|·Z) <= Z + X·min(1, K·Z),   K = max |kv|.
-  const double K = magnitude(q.kv);
-  if (K > 0.0) {
-    const double bentX = X + (1.0 + K * X) * std::min(Z, 0.5 * K * Z * Z);
-    const double bentZ = Z + X * std::min(1.0, K * Z);
-    X = bentX;
-    Z = bentZ;
-  }
+  double X, Y, Z;
+  deformedHalfExtents(support_.params, &X, &Y, &Z);
   // Placement: scale, rotate, translate. The local box is symmetric, so every scale up to the
   // largest maps it into the largest scaled box.
   const double s = pl.scale.hi;

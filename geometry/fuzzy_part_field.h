@@ -31,7 +31,11 @@
 // falsi walk towards the peak; boxes are split where fixing a value to its midpoint moved the
 // enclosure most (measured once per search). Until the first witness the search dives (the box
 // whose centre is nearest a witness first). For u the search starts cut to P(τ): u = 0 is a correct
-// answer for any u_true <= τ. A fast exit first tries the enclosure over P(0) at p.
+// answer for any u_true <= τ. A fast exit first tries the enclosure over P(0) at p. Two more
+// sound exclusions: a box whose placement cannot bring p into the local box that holds every
+// S(θ) of it (missesDeformedHull) has no θ with F <= 1, and a box is dropped when the box with
+// its monotone values collapsed to their F-lowering (u) or F-raising (l) ends is excluded by its
+// enclosure or mean value form (a θ qualifies in the box only if one does in the collapsed box).
 //  * u: the incumbent, rounded down and checked: its witness lies in P(u) (so u = 1 only when p ∈
 //    upper(1) was shown). u lies in [u_true − τ, u_true] unless the budget ran out; then u is the
 //    largest bound still open (an upper bound of u_true: upper grows).
@@ -41,11 +45,19 @@
 //    kNeverInside. A budget exhaustion gives the largest bound still open (l can only rise). l is
 //    sought only where u = 1, so l <= 1 implies u = 1 in the output. Floats keep the rounding
 //    directions (u down, l up).
+// Monotone shortcut, tried first: where the interval slopes (superquadric_slopes.h) of F over
+// P(0) at p give every fuzzy value a sign, F is monotone in each, so min / max of F over P(α) are
+// F at two corners of P(α) that move with α, exactly; u and l are then brackets of width τ on
+// those two functions of α (secant steps, a few crisp evaluations, no budget), with the same
+// guarantees and rounding as below. sampleBlock tries the slopes over the whole block first and
+// uses them for all its voxels. Parts with a few fuzzy size, scale, exponent or translation
+// values take it almost everywhere; with many fuzzy deformation values the slopes over P(0)
+// rarely all have a sign and the search below runs.
 // Each of the two searches is one query with the evaluation budget (the split weights' enclosures
 // count). reference::bisectionLevelsAt keeps the previous bisection (tests compare the two).
 //
-// boundsOver(lo, hi) bounds the true levels of every point of the box, from the enclosure over the
-// point box with P(0) and P(1) (decisions keep a relative margin of 1e-12 from 1, for the unrounded
+// boundsOver(lo, hi) bounds the true levels of every point of the box, from missesDeformedHull and
+// the enclosure over the point box with P(0) and P(1) (decisions keep a relative margin of 1e-12 from 1, for the unrounded
 // enclosure). levelsAt answers lie within them unless a point query ran out of budget: the
 // enclosure is not monotone under inclusion, so a block may be excluded whole while one of its
 // points needs splitting. boundingBox() is a simple sound box around upper(0) (deformation and
@@ -111,11 +123,31 @@ class FuzzyPartField : public AlphaFieldSource {
     PlacedSuperquadric witness;
   };
   Search maxMin(const Vec3& p, bool inside) const;
+  // Is the box excluded for the search (inside: no θ with F <= 1; else none with F > 1) once its
+  // monotone values are collapsed to their ends? Adds its evaluations to *evaluations.
+  bool collapsedExcludes(const PartBox& box, const Vec3& p, bool inside, int* evaluations) const;
   PartBox cutAt(double alpha) const;  // boxAt(alpha), cutting only the fuzzy values
+  // Monotone shortcut (see above): sign[i] = +1 / −1 when F is nondecreasing / nonincreasing in
+  // fuzzy value i over the point box [lo, hi] × P(0) (0 for crisp values); false unless every
+  // fuzzy value has a sign.
+  bool monotoneSigns(const Vec3& lo, const Vec3& hi, signed char* sign) const;
+  // levelsAt where monotoneSigns holds over a box that contains p; inCore: p is known to be
+  // inside S(θ) for every θ of P(1) (then u = 1 needs no evaluation).
+  AlphaLevels cornerLevels(const Vec3& p, const signed char* sign, bool inCore = false) const;
+  // The corner of P(alpha) where F is least (least) or largest, for the given signs.
+  PlacedSuperquadric cornerAt(double alpha, const signed char* sign, bool least) const;
+  // u rounded down to a float whose cut still holds the witness (p ∈ upper(u) stays shown).
+  float roundedUpper(double u, const PlacedSuperquadric& witness) const;
   PartBox levelBox(double alpha) const;  // P(alpha), the stored support and core at 0 and 1
   double valueAt(const PlacedSuperquadric& theta, const Vec3& p) const;  // F(p; θ)
+  // Signs of monotoneSigns over a whole block, computed when first needed.
+  struct BlockSigns {
+    int state = 0;  // 0 not computed, 1 monotone over the block, 2 not
+    signed char sign[14];
+  };
   // sampleBlock over the sub-block of `size`³ voxels at (i, j, k) of the block.
-  void sampleSubBlock(const BlockLattice& b, int i, int j, int k, int size, AlphaLevels* out) const;
+  void sampleSubBlock(const BlockLattice& b, int i, int j, int k, int size, BlockSigns* signs,
+                      AlphaLevels* out) const;
 
   FuzzyPart part_;
   FuzzyPartFieldOptions options_;
@@ -123,6 +155,8 @@ class FuzzyPartField : public AlphaFieldSource {
   PartBox core_;             // P(1)
   double supportWidth_[14];  // widths of P(0), the yardstick for choosing a split
   const FuzzyNumber* values_[14];  // the part's values, in slot order
+  int fuzzySlots_[14];             // the slots of the fuzzy values, fuzzyCount_ of them
+  int fuzzyCount_ = 0;
   bool crispAngle_ = false;        // deg crisp: one rotation for every θ
   Rotation rotation_;
   // Set when every value is crisp: then P(α) is one θ for every α, upper(α) = lower(α) = S(θ),

@@ -10,16 +10,6 @@ namespace fsdb {
 bool operator==(const Interval& a, const Interval& b) { return a.lo == b.lo && a.hi == b.hi; }
 bool operator!=(const Interval& a, const Interval& b) { return !(a == b); }
 
-Interval add(const Interval& a, const Interval& b) { return {a.lo + b.lo, a.hi + b.hi}; }
-
-Interval sub(const Interval& a, const Interval& b) { return {a.lo - b.hi, a.hi - b.lo}; }
-
-Interval mul(const Interval& a, const Interval& b) {
-  // seed 004 eq. 4: the ends are the min / max of a o b over the end points (x*y is bilinear).
-  const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
-  return {std::min({p1, p2, p3, p4}), std::max({p1, p2, p3, p4})};
-}
-
 Interval div(const Interval& a, const Interval& b) {
   if (contains(b, 0.0)) {
     throw Error(errc::kDomainError,

@@ -40,16 +40,6 @@ double saturatedPow(double x, double e) {
 
 }  // namespace
 
-Interval mul(double c, const Interval& a) {
-  return c >= 0.0 ? Interval{c * a.lo, c * a.hi} : Interval{c * a.hi, c * a.lo};
-}
-
-Interval neg(const Interval& a) { return {-a.hi, -a.lo}; }
-
-double mid(const Interval& a) { return 0.5 * a.lo + 0.5 * a.hi; }  // halves first: no overflow
-
-double magnitude(const Interval& a) { return std::max(std::fabs(a.lo), std::fabs(a.hi)); }
-
 Interval intersect(const Interval& a, const Interval& b) {
   const double lo = std::max(a.lo, b.lo), hi = std::min(a.hi, b.hi);
   return lo <= hi ? Interval{lo, hi} : Interval{hi, lo};

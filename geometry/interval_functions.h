@@ -13,14 +13,22 @@
 //    enough and costs nothing.
 //  * Results that would overflow saturate at the largest finite double where stated, as the
 //    crisp inside-outside function does (superquadric.h).
+#include <algorithm>
+#include <cmath>
+
 #include "geometry/interval.h"
 
 namespace fsdb {
 
-Interval mul(double c, const Interval& a);  // {c·x}
-Interval neg(const Interval& a);            // {−x}
-double mid(const Interval& a);              // (lo + hi)/2
-double magnitude(const Interval& a);        // max |x| over a
+// Inline: the enclosures call these in their innermost loops.
+inline Interval mul(double c, const Interval& a) {  // {c·x}
+  return c >= 0.0 ? Interval{c * a.lo, c * a.hi} : Interval{c * a.hi, c * a.lo};
+}
+inline Interval neg(const Interval& a) { return {-a.hi, -a.lo}; }  // {−x}
+inline double mid(const Interval& a) { return 0.5 * a.lo + 0.5 * a.hi; }  // halves first: no overflow
+inline double magnitude(const Interval& a) {  // max |x| over a
+  return std::max(std::fabs(a.lo), std::fabs(a.hi));
+}
 
 // The intersection of two enclosures of the same quantity. Both are sound, so the true value
 // lies in both; if rounding makes them miss each other by an ulp, the gap between them is

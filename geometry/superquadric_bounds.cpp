@@ -97,8 +97,15 @@ IntervalVec3 unbend(const Interval& k, const IntervalVec3& p) {
   const double m = std::max(kPi * magnitude(p.x), 2.0 * magnitude(p.z));
   Interval z{-m, m};
   // Reciprocals of values above 1/kTame stay tame, so the products below stay finite.
-  if (u.lo >= 1.0 / kTame) z = intersect(z, mul(div(p.z, u), atancRange(div(v, u))));
   const Interval ak = abs(k);
+  if (u.lo >= 1.0 / kTame) {
+    const Interval w = div(v, u);
+    z = intersect(z, mul(div(p.z, u), atancRange(w)));
+    // The same z as atan(v/u)/k: where k keeps away from 0 this keeps the correlation between
+    // Z/u and atanc(v/u) that the product above loses (both are large together when u is
+    // small), e.g. for points near the bending axis. atan is increasing: its range is its ends.
+    if (ak.lo >= 1.0 / kTame) z = intersect(z, div({std::atan(w.lo), std::atan(w.hi)}, k));
+  }
   if (u.lo < 1.0 / kTame && ak.lo >= 1.0 / kTame) z = intersect(z, div(atan2(v, u), k));
   return {x, p.y, z};
 }
@@ -150,7 +157,31 @@ Interval absUntaper(const Interval& x, const Interval& k, const Interval& zc) {
 // The box of canonical |x|/A, |y|/B, |z|/C over the point and parameter boxes: the inputs of
 // the canonical F, which increases in each. Returns false when intermediate values leave
 // the tame range (absurd coordinates or sizes); the caller then answers the trivial bound.
-bool canonicalRatios(const PartBox& part, const IntervalVec3& world, IntervalVec3* ratios) {
+// Smallest |x| over an interval.
+double mignitude(const Interval& a) { return a.lo > 0.0 ? a.lo : a.hi < 0.0 ? -a.hi : 0.0; }
+
+// A lower bound of the cross-section norm R = ||(X, Y)||_(2/eps2) that the twist cannot blur:
+// the twist turns (x, y) about z and keeps its radius r, and with M >= A·|fx|, B·|fy| (the taper
+// factors f) X >= |x'|/M and Y >= |y'|/M, so |(X, Y)| >= r/M; a q-norm of two values is at least
+// their 2-norm for q <= 2 and at least 2^(1/q − 1/2) times it for q > 2 (power means). Interval
+// twists of a wide z spin the box of (x', y') and lose its distance from the axis; this keeps it.
+double radialLowerBound(const SuperquadricBox& q, const IntervalVec3& unbent, const Interval& zc) {
+  const double r = std::hypot(mignitude(unbent.x), mignitude(unbent.y));
+  if (!(r > 0.0)) return 0.0;
+  const auto factor = [&](const Interval& k) {
+    if (isPoint(k, 0.0)) return 1.0;
+    if (!(std::isfinite(zc.lo) && std::isfinite(zc.hi))) return kInf;
+    return magnitude(add(mul(k, zc), kOne));
+  };
+  const double m = std::max(q.a1.hi * factor(q.kx), q.a1.hi * q.a2.hi * factor(q.ky));
+  if (!(m > 0.0 && std::isfinite(m))) return 0.0;
+  const double qMax = 2.0 / q.eps2.lo;
+  const double norm = qMax <= 2.0 ? 1.0 : std::pow(2.0, 1.0 / qMax - 0.5);
+  return norm * r / m;
+}
+
+bool canonicalRatios(const PartBox& part, const IntervalVec3& world, IntervalVec3* ratios,
+                     double* radialLo) {
   const SuperquadricBox& q = part.params;
   const PlacementBox& pl = part.placement;
   // Half-lengths (superquadric.h): A = a1, B = a1·a2, C = a1·a3, all positive.
@@ -164,10 +195,12 @@ bool canonicalRatios(const PartBox& part, const IntervalVec3& world, IntervalVec
   if (!isTame(local.x) || !isTame(local.y) || !isTame(local.z)) return false;
   const double reach = std::max({magnitude(local.x), magnitude(local.y), magnitude(local.z)});
   if (!(magnitude(q.kv) * reach <= kTame)) return false;
-  const IntervalVec3 p = untwist(q.t, c, unbend(q.kv, local));
+  const IntervalVec3 unbent = unbend(q.kv, local);
+  const IntervalVec3 p = untwist(q.t, c, unbent);
   const Interval zc = div(p.z, c);
   *ratios = {div(absUntaper(p.x, q.kx, zc), a), div(absUntaper(p.y, q.ky, zc), b),
              div(abs(p.z), c)};
+  *radialLo = isPoint(q.t, 0.0) ? 0.0 : radialLowerBound(q, unbent, zc);
   return true;
 }
 
@@ -184,9 +217,10 @@ double unitG(double eps1, double eps2, double x, double y, double z) {
 // nonnegative values increases with them and decreases with p, so G increases in X, Y, Z,
 // eps1 and eps2: its range over the box is the value at the low corner with the low eps and
 // at the high corner with the high eps, exactly.
-Interval gRange(const SuperquadricBox& q, const IntervalVec3& r) {
-  return {unitG(q.eps1.lo, q.eps2.lo, r.x.lo, r.y.lo, r.z.lo),
-          unitG(q.eps1.hi, q.eps2.hi, r.x.hi, r.y.hi, r.z.hi)};
+// G >= max(R, Z) >= R: radialLo (a lower bound of R) raises the lower end.
+Interval gRange(const SuperquadricBox& q, const IntervalVec3& r, double radialLo) {
+  const double hi = unitG(q.eps1.hi, q.eps2.hi, r.x.hi, r.y.hi, r.z.hi);
+  return {std::min(std::max(unitG(q.eps1.lo, q.eps2.lo, r.x.lo, r.y.lo, r.z.lo), radialLo), hi), hi};
 }
 
 Interval saturate(const Interval& a) {
@@ -238,26 +272,69 @@ bool contains(const PartBox& box, const PlacedSuperquadric& part) {
 Interval insideOutsideBounds(const PartBox& part, const Interval& x, const Interval& y,
                              const Interval& z) {
   IntervalVec3 r;
-  if (!canonicalRatios(part, {x, y, z}, &r)) return {0.0, kMaxFinite};
+  double radialLo = 0.0;
+  if (!canonicalRatios(part, {x, y, z}, &r, &radialLo)) return {0.0, kMaxFinite};
   const SuperquadricBox& q = part.params;
   const Interval exponent{2.0 / q.eps1.hi, 2.0 / q.eps1.lo};  // 2/eps1
   // Two sound forms of F; they differ only where eps1 is an interval (both use it twice).
   //   F = G^(2/eps1)                                         (superquadric.cpp)
   //   F = R^(2/eps1) + Z^(2/eps1),  R = ||(X, Y)||_(2/eps2)   (seed 004 eq. 1)
   // R increases in X, Y and eps2, like G (gRange), so its range is two corner values.
-  const Interval viaG = pow(gRange(q, r), exponent);
+  const Interval viaG = pow(gRange(q, r, radialLo), exponent);
   if (q.eps1.lo == q.eps1.hi) return viaG;  // one exponent: viaG is already the exact range
-  const Interval R{unitG(q.eps1.lo, q.eps2.lo, r.x.lo, r.y.lo, 0.0),
-                   unitG(q.eps1.hi, q.eps2.hi, r.x.hi, r.y.hi, 0.0)};
+  const double rHi = unitG(q.eps1.hi, q.eps2.hi, r.x.hi, r.y.hi, 0.0);
+  const Interval R{std::min(std::max(unitG(q.eps1.lo, q.eps2.lo, r.x.lo, r.y.lo, 0.0), radialLo), rHi),
+                   rHi};
   const Interval viaSum = saturate(add(pow(R, exponent), pow(r.z, exponent)));
   return intersect(viaG, viaSum);
+}
+
+void deformedHalfExtents(const SuperquadricBox& q, double* X, double* Y, double* Z) {
+  // Canonical half-lengths, widened by the taper factor (SPEC §2: X = x(kx·z/C + 1), |z| <= C).
+  double x = q.a1.hi * (1.0 + magnitude(q.kx));
+  double y = q.a1.hi * q.a2.hi * (1.0 + magnitude(q.ky));
+  double z = q.a1.hi * q.a3.hi;
+  // Twist turns the cross-section about z: it stays within the circle of the corner radius.
+  if (magnitude(q.t) > 0.0) x = y = std::hypot(x, y);
+  // Bend with curvature k, γ = k·z: X' − x = (1/k − x)(1 − cos γ) and Z' = sin γ·(1/k − x).
+  // With 1 − cos γ <= min(2, γ²/2) and |sin γ| <= min(1, |γ|):
+  //   |X' − x| <= (1 + K·X)·min(2/|k|, |k|·Z²/2) <= (1 + K·X)·min(Z, K·Z²/2),
+  //   |Z'| <= min(1/|k|, Z) + X·min(1, |k|·Z) <= Z + X·min(1, K·Z),   K = max |kv|.
+  const double K = magnitude(q.kv);
+  if (K > 0.0) {
+    const double bentX = x + (1.0 + K * x) * std::min(z, 0.5 * K * z * z);
+    const double bentZ = z + x * std::min(1.0, K * z);
+    x = bentX;
+    z = bentZ;
+  }
+  *X = x;
+  *Y = y;
+  *Z = z;
+}
+
+bool missesDeformedHull(const PartBox& part, const Interval& x, const Interval& y,
+                        const Interval& z) {
+  const PlacementBox& pl = part.placement;
+  if (!(isTame(x) && isTame(y) && isTame(z) && isTame(pl.tx) && isTame(pl.ty) && isTame(pl.tz) &&
+        pl.scale.lo >= 1.0 / kTame))
+    return false;
+  double e[3];
+  deformedHalfExtents(part.params, &e[0], &e[1], &e[2]);
+  const IntervalVec3 local = unplace(pl, {x, y, z});
+  const Interval l[3] = {local.x, local.y, local.z};
+  for (int i = 0; i < 3; ++i) {
+    const double reach = e[i] * (1.0 + 1e-9);
+    if (l[i].lo > reach || l[i].hi < -reach) return true;
+  }
+  return false;
 }
 
 Interval homogeneousInsideOutsideBounds(const PartBox& part, const Interval& x,
                                         const Interval& y, const Interval& z) {
   IntervalVec3 r;
-  if (!canonicalRatios(part, {x, y, z}, &r)) return {0.0, kInf};
-  return gRange(part.params, r);
+  double radialLo = 0.0;
+  if (!canonicalRatios(part, {x, y, z}, &r, &radialLo)) return {0.0, kInf};
+  return gRange(part.params, r, radialLo);
 }
 
 }  // namespace fsdb

@@ -63,6 +63,18 @@ bool contains(const PartBox& box, const PlacedSuperquadric& part);
 Interval insideOutsideBounds(const PartBox& part, const Interval& x, const Interval& y,
                              const Interval& z);
 
+// Half-extents (X, Y, Z) of a box [−X, X] × [−Y, Y] × [−Z, Z] of local (unplaced) coordinates
+// that holds the deformed part S(θ) in its own frame for every θ of the box: the canonical
+// half-lengths at their largest, widened by the taper, turned by the twist within the corner
+// circle and swung by the bend (the derivation is in the .cpp).
+void deformedHalfExtents(const SuperquadricBox& q, double* X, double* Y, double* Z);
+
+// True when, for every θ of `part`, no point of x × y × z maps into that local box (unplace by
+// the placement box, as the enclosure does): then F > 1 there, however loose the enclosure of
+// the deformations is. The miss keeps a relative margin of 1e-9 (no outward rounding).
+bool missesDeformedHull(const PartBox& part, const Interval& x, const Interval& y,
+                        const Interval& z);
+
 // The same for the homogeneous G = F^(eps1/2) (superquadric.h): G <= 1 iff F <= 1, and G grows
 // like a length, so it suits narrow bands around the surface. Never NaN; the upper end may be
 // +infinity (where the crisp G overflows, and for the out-of-range boxes above).

@@ -292,6 +292,29 @@ TEST(FuzzyPartFieldTest, MaxMinSearchMatchesTheBisectionReference) {
   EXPECT_LE(newExhaustions, oldExhaustions);
 }
 
+// Parts with a few fuzzy values in which F is monotone at most points (size, scale, exponent,
+// translation): levelsAt takes the corner shortcut there (geometry/superquadric_slopes.h) and
+// must agree with the bisection reference to τ, without running out of budget.
+TEST(FuzzyPartFieldTest, MonotoneShortcutMatchesTheBisectionReference) {
+  std::mt19937_64 rng(23);
+  int compared = 0;
+  std::uint64_t newExhaustions = 0, oldExhaustions = 0;
+  FuzzyPart sized;
+  sized.a1 = tri(0.7, 0.8, 1.0);
+  sized.scale = tri(0.9, 1.0, 1.2);
+  sized.eps1 = tri(0.6, 0.8, 0.9);
+  compareWithBisection(sized, rng, 60, &compared, &newExhaustions, &oldExhaustions);
+  FuzzyPart moved;
+  moved.a1 = tri(0.5, 0.6, 0.7);
+  moved.a3 = FuzzyNumber::crisp(2.0);
+  moved.ty = tri(-0.2, 0.0, 0.1);
+  moved.axis = {1, 0, 0};
+  moved.deg = FuzzyNumber::crisp(30);
+  compareWithBisection(moved, rng, 60, &compared, &newExhaustions, &oldExhaustions);
+  EXPECT_GT(compared, 100);
+  EXPECT_EQ(newExhaustions, 0u);
+}
+
 // boundsOver bounds the true levels. levelsAt gives them (to τ) unless a query ran out of budget;
 // its conservative answer may then leave the bounds (the enclosure is not monotone under inclusion,
 // so a block can be excluded where its points are not), so those points are skipped and counted.

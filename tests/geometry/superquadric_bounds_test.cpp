@@ -373,3 +373,64 @@ TEST(MidpointPart, InvertsCrispPartBoxAndTakesIntervalMidpoints) {
 
 }  // namespace
 }  // namespace fsdb
+
+namespace fsdb {
+namespace {
+
+// missesDeformedHull says "outside for every θ": then every sampled part has F > 1 at every
+// sampled point of the box; and far boxes are missed.
+TEST(SuperquadricBounds, DeformedHullHoldsEverySampledPart) {
+  std::mt19937_64 rng(20261201);
+  const double paramSpreads[] = {0.0, 0.05, 0.2};
+  const double pointSpreads[] = {0.0, 0.01, 0.1};
+  int missed = 0, checks = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const PlacedSuperquadric centre = randomPart(rng);
+    const PartBox box = fuzzify(rng, centre, paramSpreads[trial % 3]);
+    PointBox points = randomPointBox(rng, centre, pointSpreads[(trial / 3) % 3]);
+    // Reach further out than randomPointBox does, where the hull decides.
+    const Vec3 shift = centre.placement.translate;
+    const double grow = uniform(rng, 1.0, 4.0);
+    points.x = {shift.x + grow * (points.x.lo - shift.x), shift.x + grow * (points.x.hi - shift.x)};
+    points.y = {shift.y + grow * (points.y.lo - shift.y), shift.y + grow * (points.y.hi - shift.y)};
+    points.z = {shift.z + grow * (points.z.lo - shift.z), shift.z + grow * (points.z.hi - shift.z)};
+    if (points.x.lo > points.x.hi) std::swap(points.x.lo, points.x.hi);
+    if (points.y.lo > points.y.hi) std::swap(points.y.lo, points.y.hi);
+    if (points.z.lo > points.z.hi) std::swap(points.z.lo, points.z.hi);
+    if (!missesDeformedHull(box, points.x, points.y, points.z)) continue;
+    ++missed;
+    for (int s = 0; s < 12; ++s) {
+      const PlacedSuperquadric part = samplePart(rng, box);
+      const Vec3 w{sample(rng, points.x), sample(rng, points.y), sample(rng, points.z)};
+      EXPECT_GT(part.insideOutside(w), 1.0) << "trial " << trial;
+      ++checks;
+    }
+  }
+  EXPECT_GT(missed, 300);
+  // A unit sphere: the hull is the cube of half-edge 1 (no deformation), placed at the origin.
+  PartBox sphere;
+  EXPECT_TRUE(missesDeformedHull(sphere, {1.01, 1.2}, {0.0, 0.0}, {0.0, 0.0}));
+  EXPECT_FALSE(missesDeformedHull(sphere, {0.99, 1.2}, {0.0, 0.0}, {0.0, 0.0}));
+}
+
+// A twisted part with a fuzzy twist, at a point well off its axis: the radius that the twist
+// keeps bounds F from below, where turning the box of (x, y) by an interval angle alone would
+// bring a coordinate near 0.
+TEST(SuperquadricBounds, TwistKeepsTheDistanceFromTheAxis) {
+  PartBox box;
+  box.params.a3 = {3.0, 3.0};  // C = 3
+  box.params.t = {2.0, 3.0};   // up to 3 rad over the half-length
+  const Interval f = insideOutsideBounds(box, {1.2, 1.2}, {1.2, 1.2}, {-2.5, 2.5});
+  // r = 1.2·√2 ≈ 1.70: every point is at least that far from the axis of a unit cross-section.
+  EXPECT_GT(f.lo, 1.0);
+  for (double z : {-2.5, 0.0, 1.0, 2.5})
+    for (double t : {2.0, 2.5, 3.0}) {
+      PlacedSuperquadric part;
+      part.params.a3 = 3.0;
+      part.params.t = t;
+      EXPECT_GE(part.insideOutside({1.2, 1.2, z}), f.lo * (1 - 1e-12));
+    }
+}
+
+}  // namespace
+}  // namespace fsdb
