@@ -525,18 +525,20 @@ TEST(FuzzyPartFieldTest, RandomFuzzyPartsOnALowResolutionGridRespectTheDefinitio
         for (int l = int(std::floor(lo.z / h)) - 1; l <= int(std::ceil(hi.z / h)); ++l) {
           const Vec3 p{(i + 0.5) * h, (j + 0.5) * h, (l + 0.5) * h};  // the grid's voxel centres
           const AlphaLevels v = grid.levelsAt(p);
-          inUpper += v.upper > 0.0f;
           inLower += v.lower <= 1.0f;
+          bool witnessed = false;  // some sampled θ of P(0) puts p inside: the upper checks bite
           for (size_t b = 0; b < boxes.size(); ++b)
             for (int s = 0; s < 16; ++s) {
               const double f = sampleTheta(rng, boxes[b], s < 8).insideOutside(p);
               if (f <= 1.0 - margin) {
+                witnessed = true;
                 ASSERT_GE(v.upper, levels[b] - kTau - kSlack) << k << " " << p.x << " " << p.y << " " << p.z;
               }
               if (f > 1.0 + margin) {
                 ASSERT_GE(v.lower, levels[b] - kSlack) << k << " " << p.x << " " << p.y << " " << p.z;
               }
             }
+          inUpper += witnessed;
           const double fc = core.insideOutside(p);
           if (v.lower <= 1.0f) {
             ASSERT_LE(fc, 1.0 + margin) << k;
@@ -547,8 +549,10 @@ TEST(FuzzyPartFieldTest, RandomFuzzyPartsOnALowResolutionGridRespectTheDefinitio
           }
         }
   }
-  EXPECT_GT(inUpper, 300);  // the grids hold the parts, and the checks bite
-  EXPECT_GT(inLower, 20);
+  // The grids hold the parts and the checks bite: counted from the sampling, not from the grid,
+  // so a tighter (more exact) grid cannot fail it.
+  EXPECT_GT(inUpper, 100) << inUpper;  // 131 with these seeds
+  EXPECT_GT(inLower, 20) << inLower;
 }
 
 }  // namespace
