@@ -1,0 +1,52 @@
+#pragma once
+// The SQL prefilter of linguistic queries (issue 5; the derivation principle of SQLf): from a
+// parsed query (query/linguistic_query.h), a plan of descriptor support overlaps that every
+// object scoring above 0 satisfies, so the search scores only the plan's candidates and returns
+// exactly what scoring every object would (tests/server/linguistic_index_property_test).
+//
+// Rules (SPEC §5: S(A, B) = min(|A∩B|/|A|, |A∩B|/|B|), and μ_C(x) for a crisp value, is 0 unless
+// the supports of value and condition meet):
+// - kDescriptor: overlap of the component value's support with the support of `set` (an
+//   "at least t" threshold keeps the support overlap: the plan only has to be a superset).
+// - kAnd: every child when the aggregation is a t-norm (T(0, x) = 0: min, product, ...); any
+//   child otherwise (a mean is > 0 when one child is).
+// - kOr: any child (every t-conorm and max is 0 only when all children are).
+// - kNot: no filter (1 − S is 1 where S is 0).
+// - kRelation: for parts, nothing (a lone part scores 0 on a relation, query/linguistic_query.h);
+//   for shapes, no filter.
+// The plan is simplified as it is built: kAll children of a kAnd and kNone children of a kOr
+// drop out, a kNone child of a needs-all kAnd makes it kNone, a kAll child of a kOr makes it kAll.
+#include <cstdint>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "query/lquery_contract_tmp.h"
+
+namespace fsdb {
+
+struct PrefilterPlan {
+  enum class Kind { kAll, kNone, kOverlap, kAnd, kOr };
+  Kind kind = Kind::kAll;
+  std::string descriptor;  // kOverlap: a component's `descriptor` support meets [lo, hi]
+  double lo = 0, hi = 0;
+  std::vector<PrefilterPlan> children;  // kAnd, kOr: two or more
+};
+
+// Whether kAnd under this aggregation is 0 as soon as one child is (a t-norm).
+bool aggregationNeedsAll(const std::string& aggregation);
+
+// The plan for objects of `kind` ("part" or "shape").
+PrefilterPlan prefilterPlan(const LinguisticQuery& query, const std::string& kind);
+
+// Sorted candidate ids of `plan`: kOverlap through `overlap(descriptor, lo, hi)`, kAll through
+// `all()` (both return sorted ids), kAnd as the intersection, kOr as the union.
+using OverlapSource = std::function<std::vector<int64_t>(const std::string& descriptor, double lo, double hi)>;
+using AllSource = std::function<std::vector<int64_t>()>;
+std::vector<int64_t> runPrefilter(const PrefilterPlan& plan, const OverlapSource& overlap, const AllSource& all);
+
+// {"all":true} | {"none":true} | {"overlap":{"descriptor","lo","hi"}} | {"and":[...]} | {"or":[...]}
+nlohmann::json prefilterPlanJson(const PrefilterPlan& plan);
+
+}  // namespace fsdb
