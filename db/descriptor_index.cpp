@@ -73,12 +73,19 @@ void clearDescriptorsPending(sqlite::Connection& connection, int64_t objectId) {
   statement->run();
 }
 
+namespace {
+
+double above(double x) { return std::nextafter(x, std::numeric_limits<double>::infinity()); }
+double below(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
+
+}  // namespace
+
 std::vector<int64_t> descriptorCandidatesIn(sqlite::Connection& connection, const std::string& kind,
-                                            const std::string& descriptor, double lo, double hi) {
+                                            const DescriptorOverlap& test) {
   std::vector<int> classes;
   {
     auto statement = connection.prepare("SELECT width_class FROM descriptor_classes WHERE descriptor = ?1");
-    statement->bind(1, descriptor);
+    statement->bind(1, test.descriptor);
     while (statement->step()) classes.push_back(static_cast<int>(statement->columnInt(0)));
   }
   std::vector<int64_t> ids;
@@ -86,8 +93,19 @@ std::vector<int64_t> descriptorCandidatesIn(sqlite::Connection& connection, cons
       "SELECT object_id FROM descriptor_index WHERE kind = ?1 AND descriptor = ?2 AND width_class = ?3"
       " AND support_lo BETWEEN ?4 AND ?5 AND support_hi >= ?6");
   for (int c : classes) {
+    double fromLo, toLo, leastHi;  // support_lo BETWEEN fromLo AND toLo AND support_hi >= leastHi
+    if (c == kCrispWidthClass) {
+      fromLo = test.loIncluded ? test.lo : above(test.lo);
+      toLo = test.hiIncluded ? test.hi : below(test.hi);
+      leastHi = fromLo;
+    } else {
+      fromLo = lowestSupportLo(test.lo, c);
+      toLo = test.wideStrict ? below(test.hi) : test.hi;
+      leastHi = test.wideStrict ? above(test.lo) : test.lo;
+    }
+    if (fromLo > toLo) continue;
     scan->reset();
-    scan->bind(1, kind).bind(2, descriptor).bind(3, c).bind(4, lowestSupportLo(lo, c)).bind(5, hi).bind(6, lo);
+    scan->bind(1, kind).bind(2, test.descriptor).bind(3, c).bind(4, fromLo).bind(5, toLo).bind(6, leastHi);
     while (scan->step()) ids.push_back(scan->columnInt(0));
   }
   auto pending = connection.prepare(

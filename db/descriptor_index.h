@@ -6,6 +6,8 @@
 // w <= 2^c (crisp rows: kCrispWidthClass, w = 0). A support that meets [lo, hi] then has
 // support_lo in [lo - 2^c, hi], so one range scan per class on descriptor_index_overlap finds
 // every overlap (checking support_hi >= lo in the index) without reading the rows below lo - 2^c.
+// Strict and excluded ends become inclusive bounds one double further in (x > lo is
+// x >= nextafter(lo, +inf)), so every test is BETWEEN on the index.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -34,6 +36,6 @@ void markDescriptorsPending(sqlite::Connection& connection, int64_t objectId);
 void clearDescriptorsPending(sqlite::Connection& connection, int64_t objectId);
 
 std::vector<int64_t> descriptorCandidatesIn(sqlite::Connection& connection, const std::string& kind,
-                                            const std::string& descriptor, double lo, double hi);
+                                            const DescriptorOverlap& test);
 
 }  // namespace fsdb

@@ -552,11 +552,10 @@ std::vector<int64_t> Store::dependents(int64_t id) const {
 
 // --- The descriptor index -----------------------------------------------------------------------
 
-std::vector<int64_t> Store::descriptorCandidates(const std::string& kind, const std::string& descriptor, double lo,
-                                                 double hi) const {
+std::vector<int64_t> Store::descriptorCandidates(const std::string& kind, const DescriptorOverlap& test) const {
   Impl::Lease connection(*impl_);
   Transaction transaction(*connection, Transaction::Mode::kDeferred);
-  return descriptorCandidatesIn(*connection, kind, descriptor, lo, hi);
+  return descriptorCandidatesIn(*connection, kind, test);
 }
 
 std::vector<int64_t> Store::objectIds(const std::string& kind) const {

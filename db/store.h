@@ -132,6 +132,17 @@ struct StoreOptions {
   int poolSize = 8;
 };
 
+// A support test of the descriptor index: which rows of `descriptor` a prefilter wants (the
+// store's side of query/descriptor_prefilter.h SupportTest). A crisp row (support_lo ==
+// support_hi = x) passes when x is in [lo, hi], each end only when included; a wide row when
+// support_lo <= hi and support_hi >= lo, both strict when wideStrict.
+struct DescriptorOverlap {
+  std::string descriptor;
+  double lo = 0, hi = 0;
+  bool loIncluded = true, hiIncluded = true;
+  bool wideStrict = false;
+};
+
 // An object as the linguistic search scores it (Store::indexedObjects): its name and the
 // encoded descriptor values of its components. pending: the rows are missing or may be stale
 // (descriptor_pending), so the caller must describe the document instead of using `components`.
@@ -201,11 +212,9 @@ class Store {
   // that existed before it. Pending objects are candidates of every prefilter, so the index never
   // hides a match; the server recomputes them (pendingDescriptors, replaceDescriptors).
   //
-  // Sorted ids of the objects of `kind` with a component whose `descriptor` support meets
-  // [lo, hi] (support_lo <= hi and support_hi >= lo, one index range scan per width class), and
-  // of every pending object of `kind`.
-  std::vector<int64_t> descriptorCandidates(const std::string& kind, const std::string& descriptor, double lo,
-                                            double hi) const;
+  // Sorted ids of the objects of `kind` with a component row passing `test` (one index range
+  // scan per width class, db/descriptor_index.h), and of every pending object of `kind`.
+  std::vector<int64_t> descriptorCandidates(const std::string& kind, const DescriptorOverlap& test) const;
   // Sorted ids of every live object of `kind` (the full scan's candidates).
   std::vector<int64_t> objectIds(const std::string& kind) const;
   // The objects of `kind` among `ids`, in the order given (ids of other kinds or deleted are skipped).

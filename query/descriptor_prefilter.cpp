@@ -38,10 +38,7 @@ PrefilterPlan planOf(const QueryCondition& condition, bool andNeedsAll, bool for
   switch (condition.kind) {
     case QueryCondition::Kind::kDescriptor: {
       PrefilterPlan plan = leaf(Kind::kOverlap);
-      plan.descriptor = condition.descriptor;
-      const Interval support = condition.set.support();
-      plan.lo = support.lo;
-      plan.hi = support.hi;
+      plan.test = supportTest(condition.descriptor, condition.set);
       return plan;
     }
     case QueryCondition::Kind::kAnd:
@@ -73,6 +70,27 @@ std::vector<int64_t> unite(const std::vector<int64_t>& a, const std::vector<int6
 
 }  // namespace
 
+SupportTest supportTest(const std::string& descriptor, const FuzzyNumber& set) {
+  const Interval support = set.support();
+  SupportTest test;
+  test.descriptor = descriptor;
+  test.lo = support.lo;
+  test.hi = support.hi;
+  test.loIncluded = set.membership(support.lo) > 0;
+  test.hiIncluded = set.membership(support.hi) > 0;
+  test.wideStrict = set.cardinality() > 0;
+  return test;
+}
+
+bool admits(const SupportTest& test, double slo, double shi) {
+  if (slo == shi) {
+    const double x = slo;
+    return (x > test.lo || (x == test.lo && test.loIncluded)) && (x < test.hi || (x == test.hi && test.hiIncluded));
+  }
+  if (test.wideStrict) return slo < test.hi && shi > test.lo;
+  return slo <= test.hi && shi >= test.lo;
+}
+
 bool aggregationNeedsAll(const std::string& aggregation) {
   // Every t-norm T has T(0, x) = 0; the names are those of the operator catalogue and the
   // common spellings of the product.
@@ -93,7 +111,7 @@ std::vector<int64_t> runPrefilter(const PrefilterPlan& plan, const OverlapSource
     case Kind::kNone:
       return {};
     case Kind::kOverlap:
-      return overlap(plan.descriptor, plan.lo, plan.hi);
+      return overlap(plan.test);
     case Kind::kAnd: {
       std::vector<int64_t> ids = runPrefilter(plan.children.front(), overlap, all);
       for (size_t i = 1; i < plan.children.size() && !ids.empty(); ++i)
@@ -116,7 +134,10 @@ nlohmann::json prefilterPlanJson(const PrefilterPlan& plan) {
     case Kind::kNone:
       return {{"none", true}};
     case Kind::kOverlap:
-      return {{"overlap", {{"descriptor", plan.descriptor}, {"lo", plan.lo}, {"hi", plan.hi}}}};
+      return {{"overlap",
+               {{"descriptor", plan.test.descriptor}, {"lo", plan.test.lo}, {"hi", plan.test.hi},
+                {"lo_included", plan.test.loIncluded}, {"hi_included", plan.test.hiIncluded},
+                {"wide_strict", plan.test.wideStrict}}}};
     case Kind::kAnd:
     case Kind::kOr: {
       nlohmann::json children = nlohmann::json::array();

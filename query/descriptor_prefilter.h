@@ -6,8 +6,14 @@
 //
 // Rules (SPEC §5: S(A, B) = min(|A∩B|/|A|, |A∩B|/|B|), and μ_C(x) for a crisp value, is 0 unless
 // the supports of value and condition meet):
-// - kDescriptor: overlap of the component value's support with the support of `set` (an
-//   "at least t" threshold keeps the support overlap: the plan only has to be a superset).
+// - kDescriptor: the component value's support [slo, shi] must meet the support [lo, hi] of
+//   `set` as far as S can be > 0 (geometry/fuzzy_similarity.h), which is sharper than touching:
+//   * a crisp value x scores μ_set(x): x in [lo, hi], an end only where μ_set is > 0 there (a
+//     vertical side), so a crisp 0 does not meet a set rising from 0;
+//   * a wide value (slo < shi; describePart's values are convex, so it has area > 0) against a
+//     set of area > 0 needs |A∩B| > 0: the interiors overlap, slo < hi and shi > lo;
+//   * against a set of area 0 (a crisp set) S is the height of A∩B: slo <= hi and shi >= lo.
+//   An "at least t" threshold keeps this support test (the plan only has to be a superset).
 // - kAnd: every child when the aggregation is a t-norm (T(0, x) = 0: min, product, ...); any
 //   child otherwise (a mean is > 0 when one child is).
 // - kOr: any child (every t-conorm and max is 0 only when all children are).
@@ -26,11 +32,22 @@
 
 namespace fsdb {
 
+// What a component's support [slo, shi] of one descriptor must satisfy (see the rules above).
+struct SupportTest {
+  std::string descriptor;
+  double lo = 0, hi = 0;     // the support of the condition's set
+  bool loIncluded = true;    // a crisp value may equal lo (μ_set(lo) > 0)
+  bool hiIncluded = true;    // a crisp value may equal hi (μ_set(hi) > 0)
+  bool wideStrict = false;   // wide values need slo < hi and shi > lo (set of area > 0)
+};
+SupportTest supportTest(const std::string& descriptor, const FuzzyNumber& set);
+// Whether a value with support [slo, shi] passes (what the store's index scan computes).
+bool admits(const SupportTest& test, double slo, double shi);
+
 struct PrefilterPlan {
   enum class Kind { kAll, kNone, kOverlap, kAnd, kOr };
   Kind kind = Kind::kAll;
-  std::string descriptor;  // kOverlap: a component's `descriptor` support meets [lo, hi]
-  double lo = 0, hi = 0;
+  SupportTest test;                     // kOverlap
   std::vector<PrefilterPlan> children;  // kAnd, kOr: two or more
 };
 
@@ -40,13 +57,14 @@ bool aggregationNeedsAll(const std::string& aggregation);
 // The plan for objects of `kind` ("part" or "shape").
 PrefilterPlan prefilterPlan(const LinguisticQuery& query, const std::string& kind);
 
-// Sorted candidate ids of `plan`: kOverlap through `overlap(descriptor, lo, hi)`, kAll through
-// `all()` (both return sorted ids), kAnd as the intersection, kOr as the union.
-using OverlapSource = std::function<std::vector<int64_t>(const std::string& descriptor, double lo, double hi)>;
+// Sorted candidate ids of `plan`: kOverlap through `overlap(test)`, kAll through `all()` (both
+// return sorted ids), kAnd as the intersection, kOr as the union.
+using OverlapSource = std::function<std::vector<int64_t>(const SupportTest& test)>;
 using AllSource = std::function<std::vector<int64_t>()>;
 std::vector<int64_t> runPrefilter(const PrefilterPlan& plan, const OverlapSource& overlap, const AllSource& all);
 
-// {"all":true} | {"none":true} | {"overlap":{"descriptor","lo","hi"}} | {"and":[...]} | {"or":[...]}
+// {"all":true} | {"none":true} | {"overlap":{"descriptor","lo","hi","lo_included","hi_included",
+// "wide_strict"}} | {"and":[...]} | {"or":[...]}
 nlohmann::json prefilterPlanJson(const PrefilterPlan& plan);
 
 }  // namespace fsdb

@@ -92,14 +92,21 @@ TEST_F(DescriptorIndexTest, CreateWritesRowsAndCandidatesOverlap) {
   EXPECT_EQ(rows[0].spans[0].supportHi, 0.4);
   EXPECT_TRUE(pendingIds(*store).empty());
 
-  EXPECT_EQ(store->descriptorCandidates("part", "bendness", 0.3, 0.35), std::vector<int64_t>{id});
-  EXPECT_EQ(store->descriptorCandidates("part", "bendness", 0.4, 0.9), std::vector<int64_t>{id});  // touching
-  EXPECT_EQ(store->descriptorCandidates("part", "bendness", 0.0, 0.2), std::vector<int64_t>{id});
-  EXPECT_TRUE(store->descriptorCandidates("part", "bendness", 0.41, 0.9).empty());
-  EXPECT_TRUE(store->descriptorCandidates("part", "bendness", 0.0, 0.19).empty());
-  EXPECT_TRUE(store->descriptorCandidates("shape", "bendness", 0.0, 1.0).empty());
-  EXPECT_EQ(store->descriptorCandidates("part", "size", 0.5, 0.5), std::vector<int64_t>{id});  // crisp
-  EXPECT_TRUE(store->descriptorCandidates("part", "twistness", 0.0, 1.0).empty());
+  EXPECT_EQ(store->descriptorCandidates("part", {"bendness", 0.3, 0.35}), std::vector<int64_t>{id});
+  EXPECT_EQ(store->descriptorCandidates("part", {"bendness", 0.4, 0.9}), std::vector<int64_t>{id});  // touching
+  EXPECT_EQ(store->descriptorCandidates("part", {"bendness", 0.0, 0.2}), std::vector<int64_t>{id});
+  EXPECT_TRUE(store->descriptorCandidates("part", {"bendness", 0.41, 0.9}).empty());
+  EXPECT_TRUE(store->descriptorCandidates("part", {"bendness", 0.0, 0.19}).empty());
+  EXPECT_TRUE(store->descriptorCandidates("shape", {"bendness", 0.0, 1.0}).empty());
+  EXPECT_EQ(store->descriptorCandidates("part", {"size", 0.5, 0.5}), std::vector<int64_t>{id});  // crisp
+  // Excluded ends and strict overlaps: a crisp 0.5 is not in (0.5, 1]; [0.2, 0.4] does not meet
+  // (0.4, 0.9) strictly.
+  EXPECT_TRUE(store->descriptorCandidates("part", {"size", 0.5, 1.0, false, true}).empty());
+  EXPECT_TRUE(store->descriptorCandidates("part", {"size", 0.0, 0.5, true, false}).empty());
+  EXPECT_EQ(store->descriptorCandidates("part", {"size", 0.0, 0.5, false, true}), std::vector<int64_t>{id});
+  EXPECT_TRUE(store->descriptorCandidates("part", {"bendness", 0.4, 0.9, true, true, true}).empty());
+  EXPECT_EQ(store->descriptorCandidates("part", {"bendness", 0.39, 0.9, true, true, true}), std::vector<int64_t>{id});
+  EXPECT_TRUE(store->descriptorCandidates("part", {"twistness", 0.0, 1.0}).empty());
 
   const auto objects = store->indexedObjects("part", {id, id + 100});
   ASSERT_EQ(objects.size(), 1u);
@@ -114,8 +121,8 @@ TEST_F(DescriptorIndexTest, CreateWritesRowsAndCandidatesOverlap) {
 TEST_F(DescriptorIndexTest, PutReplacesAndDeleteRemoves) {
   const int64_t id = store->create(part("p", 0.2, 0.4)).id;
   store->put(id, part("p", 0.7, 0.8, ",\"v\":2"));
-  EXPECT_TRUE(store->descriptorCandidates("part", "bendness", 0.2, 0.4).empty());
-  EXPECT_EQ(store->descriptorCandidates("part", "bendness", 0.75, 0.75), std::vector<int64_t>{id});
+  EXPECT_TRUE(store->descriptorCandidates("part", {"bendness", 0.2, 0.4}).empty());
+  EXPECT_EQ(store->descriptorCandidates("part", {"bendness", 0.75, 0.75}), std::vector<int64_t>{id});
   const auto rows = store->descriptorRows(id);
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_EQ(rows[0].values, "values of p,\"v\":2");
@@ -123,7 +130,7 @@ TEST_F(DescriptorIndexTest, PutReplacesAndDeleteRemoves) {
 
   store->remove("part", id, false);
   EXPECT_TRUE(store->descriptorRows(id).empty());
-  EXPECT_TRUE(store->descriptorCandidates("part", "bendness", 0, 1).empty());
+  EXPECT_TRUE(store->descriptorCandidates("part", {"bendness", 0, 1}).empty());
   sqlite::Connection db(path);
   for (const char* table : {"descriptor_index", "descriptor_values", "descriptor_pending"}) {
     auto statement = db.prepare(std::string("SELECT COUNT(*) FROM ") + table);
@@ -138,7 +145,7 @@ TEST_F(DescriptorIndexTest, CreateBatchWritesRowsOfEveryItemThatCommits) {
       store->createBatch({part("a", 0.5, 0.6), part("taken", 0.5, 0.6), part("b", 0.55, 0.9)}, BulkMode::kCreate);
   ASSERT_TRUE(results[0].id && results[2].id);
   EXPECT_FALSE(results[1].id);
-  EXPECT_EQ(store->descriptorCandidates("part", "bendness", 0.58, 0.59),
+  EXPECT_EQ(store->descriptorCandidates("part", {"bendness", 0.58, 0.59}),
             (std::vector<int64_t>{*results[0].id, *results[2].id}));
 }
 
@@ -149,7 +156,7 @@ TEST_F(DescriptorIndexTest, ReferencesAndNewVersionsMarkPending) {
   const int64_t frame = store->create(shapeOf("frame", {"bolt"}, 0.2, 0.4)).id;
   EXPECT_EQ(pendingIds(*store), std::vector<int64_t>{frame});
   // Pending objects are candidates of every overlap of their kind.
-  EXPECT_EQ(store->descriptorCandidates("shape", "bendness", 0.9, 1.0), std::vector<int64_t>{frame});
+  EXPECT_EQ(store->descriptorCandidates("shape", {"bendness", 0.9, 1.0}), std::vector<int64_t>{frame});
   EXPECT_TRUE(store->indexedObjects("shape", {frame})[0].pending);
 
   auto pending = store->pendingDescriptors();
@@ -157,7 +164,7 @@ TEST_F(DescriptorIndexTest, ReferencesAndNewVersionsMarkPending) {
   EXPECT_EQ(pending[0].kind, "shape");
   EXPECT_TRUE(store->replaceDescriptors(pending[0], {component(0, 0.25, 0.3)}));
   EXPECT_TRUE(pendingIds(*store).empty());
-  EXPECT_TRUE(store->descriptorCandidates("shape", "bendness", 0.9, 1.0).empty());
+  EXPECT_TRUE(store->descriptorCandidates("shape", {"bendness", 0.9, 1.0}).empty());
   EXPECT_FALSE(store->indexedObjects("shape", {frame})[0].pending);
   EXPECT_FALSE(store->replaceDescriptors(pending[0], {}));  // no longer pending
 
@@ -172,7 +179,7 @@ TEST_F(DescriptorIndexTest, ReferencesAndNewVersionsMarkPending) {
   const auto fresh = store->pendingDescriptors();
   EXPECT_GT(fresh[0].generation, stale[0].generation);
   EXPECT_TRUE(store->replaceDescriptors(fresh[0], {component(0, 0.9, 1.0)}));
-  EXPECT_EQ(store->descriptorCandidates("shape", "bendness", 0.95, 0.95), std::vector<int64_t>{frame});
+  EXPECT_EQ(store->descriptorCandidates("shape", {"bendness", 0.95, 0.95}), std::vector<int64_t>{frame});
 
   // A put that writes the object's own rows without references clears its mark.
   NewObject frame2 = shapeOf("frame", {}, 0.1, 0.2);
@@ -196,13 +203,28 @@ TEST_F(DescriptorIndexTest, OverlapScanEqualsBruteForce) {
     items.push_back(part("p" + std::to_string(i), lo, lo + width));
   }
   const auto results = store->createBatch(items, BulkMode::kCreate);
-  for (int q = 0; q < 300; ++q) {
-    double a = unit(rng) * 1.2 - 0.1, b = a + (unit(rng) < 0.3 ? 0.0 : unit(rng) * 0.3);
-    if (q % 10 == 0) a = b = supports[q].first;  // exactly on a support end
+  for (int q = 0; q < 600; ++q) {
+    DescriptorOverlap test{"bendness", unit(rng) * 1.2 - 0.1, 0};
+    test.hi = test.lo + (unit(rng) < 0.3 ? 0.0 : unit(rng) * 0.3);
+    if (q % 10 == 0) test.lo = supports[q].first;   // exactly on a support end
+    if (q % 10 == 1) test.hi = supports[q].second;
+    if (test.hi < test.lo) test.hi = test.lo;
+    test.loIncluded = q % 3 != 0;
+    test.hiIncluded = q % 5 != 0;
+    test.wideStrict = q % 2 == 0;
     std::vector<int64_t> expected;
-    for (size_t i = 0; i < supports.size(); ++i)
-      if (supports[i].first <= b && supports[i].second >= a) expected.push_back(*results[i].id);
-    EXPECT_EQ(store->descriptorCandidates("part", "bendness", a, b), expected) << a << " " << b;
+    for (size_t i = 0; i < supports.size(); ++i) {
+      const double slo = supports[i].first, shi = supports[i].second;
+      bool pass;
+      if (slo == shi)
+        pass = (slo > test.lo || (slo == test.lo && test.loIncluded)) && (slo < test.hi || (slo == test.hi && test.hiIncluded));
+      else if (test.wideStrict)
+        pass = slo < test.hi && shi > test.lo;
+      else
+        pass = slo <= test.hi && shi >= test.lo;
+      if (pass) expected.push_back(*results[i].id);
+    }
+    EXPECT_EQ(store->descriptorCandidates("part", test), expected) << test.lo << " " << test.hi << " " << q;
   }
 }
 
@@ -219,8 +241,8 @@ TEST(DescriptorIndexMigration, ObjectsOfAnOlderDatabaseArePending) {
   auto store = Store::open(path);
   EXPECT_EQ(store->schemaVersion(), embeddedMigrations().back().first);
   EXPECT_EQ(pendingIds(*store), (std::vector<int64_t>{1, 2}));
-  EXPECT_EQ(store->descriptorCandidates("part", "bendness", 0, 1), std::vector<int64_t>{1});
-  EXPECT_EQ(store->descriptorCandidates("shape", "size", 0, 1), std::vector<int64_t>{2});
+  EXPECT_EQ(store->descriptorCandidates("part", {"bendness", 0, 1}), std::vector<int64_t>{1});
+  EXPECT_EQ(store->descriptorCandidates("shape", {"size", 0, 1}), std::vector<int64_t>{2});
   // The next generation is above the migration's.
   const int64_t id = store->create(part("new", 0.1, 0.2)).id;
   store->put(id, part("new", 0.1, 0.2, ",\"v\":2"));

@@ -4,6 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
+#include "geometry/fuzzy_similarity.h"
+#include "tests/testing/random_fuzzy.h"
+
 namespace fsdb {
 namespace {
 
@@ -33,8 +38,48 @@ using K = QueryCondition::Kind;
 
 TEST(DescriptorPrefilter, DescriptorIsTheSupportOfItsSet) {
   const PrefilterPlan plan = prefilterPlan(query(descriptor("bendness", 0.1, 0.25, 0.4)), "part");
-  EXPECT_EQ(prefilterPlanJson(plan),
-            nlohmann::json::parse(R"({"overlap":{"descriptor":"bendness","lo":0.1,"hi":0.4}})"));
+  EXPECT_EQ(prefilterPlanJson(plan), nlohmann::json::parse(R"({"overlap":{"descriptor":"bendness","lo":0.1,"hi":0.4,
+            "lo_included":false,"hi_included":false,"wide_strict":true}})"));
+}
+
+TEST(DescriptorPrefilter, SupportTestEnds) {
+  // The plain set mu(d) = d: a crisp 0 scores 0 and is not admitted; any d > 0 is.
+  const SupportTest plain = supportTest("bendness", FuzzyNumber::fromPoints({{0, 0}, {1, 1}}));
+  EXPECT_FALSE(admits(plain, 0, 0));
+  EXPECT_TRUE(admits(plain, 1e-9, 1e-9));
+  EXPECT_TRUE(admits(plain, 1, 1));  // mu(1) = 1: the end is included
+  EXPECT_TRUE(admits(plain, 0, 0.01));
+  EXPECT_FALSE(admits(plain, -0.5, 0));  // touches at one point: |A∩B| = 0
+  // A crisp set (area 0): S is the height of A∩B, so touching wide values count.
+  const SupportTest crisp = supportTest("size", FuzzyNumber::crisp(0.5));
+  EXPECT_TRUE(admits(crisp, 0.5, 0.5));
+  EXPECT_TRUE(admits(crisp, 0.2, 0.5));
+  EXPECT_FALSE(admits(crisp, 0.2, 0.49));
+}
+
+// The derivation principle: whatever scores > 0 passes the support test, for random values
+// (crisp, triangles, trapezoids, vertical sides) and sets.
+TEST(DescriptorPrefilter, EverythingThatScoresPassesItsSupportTest) {
+  std::mt19937 rng(17);
+  auto random = [&rng](bool maybeCrisp) {
+    const double u = testing::uniform(rng, 0, 1);
+    if (maybeCrisp && u < 0.3) return FuzzyNumber::crisp(std::round(testing::uniform(rng, -8, 8)));
+    if (u < 0.6) return testing::randomTriangular(rng, true);
+    if (u < 0.8) return testing::randomTrapezoidal(rng);
+    return testing::randomConvexPoints(rng);
+  };
+  int positive = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const FuzzyNumber value = random(true), set = random(i % 4 == 0);
+    const Interval s = value.support();
+    const bool passes = admits(supportTest("d", set), s.lo, s.hi);
+    if (similarity(value, set) > 0) {
+      ++positive;
+      EXPECT_TRUE(passes) << "value [" << s.lo << ", " << s.hi << "] set [" << set.support().lo << ", "
+                          << set.support().hi << "]";
+    }
+  }
+  EXPECT_GT(positive, 1000);
 }
 
 TEST(DescriptorPrefilter, AndOrNotRelation) {
@@ -43,9 +88,9 @@ TEST(DescriptorPrefilter, AndOrNotRelation) {
   relation.direction = "left";
   const QueryCondition notBig = node(K::kNot, {big});
 
-  EXPECT_EQ(prefilterPlanJson(prefilterPlan(query(node(K::kAnd, {bent, big})), "part")).dump(),
-            R"({"and":[{"overlap":{"descriptor":"bendness","hi":0.4,"lo":0.1}},)"
-            R"({"overlap":{"descriptor":"size","hi":1.0,"lo":0.6}}]})");
+  EXPECT_EQ(prefilterPlanJson(prefilterPlan(query(node(K::kAnd, {bent, big})), "part")),
+            nlohmann::json({{"and", {prefilterPlanJson(prefilterPlan(query(bent), "part")),
+                                     prefilterPlanJson(prefilterPlan(query(big), "part"))}}}));
   EXPECT_EQ(prefilterPlanJson(prefilterPlan(query(node(K::kOr, {bent, big})), "part")).begin().key(), "or");
   // A mean is > 0 when one child is: kAnd needs any child.
   EXPECT_EQ(prefilterPlanJson(prefilterPlan(query(node(K::kAnd, {bent, big}), "mean"), "part")).begin().key(), "or");
@@ -77,7 +122,8 @@ TEST(DescriptorPrefilter, AggregationsThatNeedEveryChild) {
 }
 
 TEST(DescriptorPrefilter, RunIntersectsAndUnites) {
-  const OverlapSource overlap = [](const std::string& d, double, double) -> std::vector<int64_t> {
+  const OverlapSource overlap = [](const SupportTest& t) -> std::vector<int64_t> {
+    const std::string& d = t.descriptor;
     if (d == "bendness") return {1, 3, 5, 7};
     if (d == "size") return {3, 4, 5};
     return {};
