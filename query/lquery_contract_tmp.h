@@ -29,4 +29,20 @@ struct LinguisticQuery {
   double atLeast = 0.0;
   std::string aggregation = "min";
 };
+const std::vector<std::string>& descriptorNames();
+std::vector<DescriptorValue> describePart(const FuzzyPart& part);
+class Vocabulary {
+ public:
+  static const Vocabulary& builtin();
+};
+LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary);
+struct ConditionScore { std::string text; double score; };
+struct QueryScore { double score = 0.0; std::vector<ConditionScore> explain; };
+QueryScore scoreDescriptors(const LinguisticQuery& query, const std::vector<DescriptorValue>& values);
+struct ShapeComponent {
+  std::string path;
+  FuzzyPart part;
+  std::vector<DescriptorValue> descriptors;
+};
+QueryScore scoreShape(const LinguisticQuery& query, const std::vector<ShapeComponent>& components);
 }  // namespace fsdb

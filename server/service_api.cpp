@@ -36,6 +36,7 @@ void registerAllRoutes(HttpServer& server, Store& store) {
   registerOperatorRoutes(server);
   registerObjectRoutes(server, store);
   registerEvaluationRoutes(server, store);
+  registerQueryRoutes(server, store);
 }
 
 }  // namespace fsdb

@@ -1,0 +1,214 @@
+// See server/linguistic_search.h.
+#include "server/linguistic_search.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "geometry/error.h"
+#include "query/descriptor_prefilter.h"
+#include "query/fuzzy_json.h"
+#include "query/json_body.h"
+#include "query/part_json.h"
+#include "server/descriptor_rows.h"
+
+namespace fsdb {
+namespace {
+
+constexpr size_t kChunk = 1000;  // objects read from the store at a time
+constexpr int kDefaultLimit = 10;
+constexpr int kMaxLimit = 1000;
+
+using Clock = std::chrono::steady_clock;
+
+double millisSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Best first, ties by id.
+bool better(const LinguisticHit& a, const LinguisticHit& b) {
+  if (a.score.score != b.score.score) return a.score.score > b.score.score;
+  return a.id < b.id;
+}
+
+class Scorer {
+ public:
+  Scorer(const Store& store, const LinguisticQuery& query, const LinguisticSearchOptions& options)
+      : store_(store), query_(query), options_(options),
+        cut_(std::max(options.threshold, query.atLeast)), start_(Clock::now()) {}
+
+  void scoreAll(const std::string& kind, const std::vector<int64_t>& ids) {
+    for (size_t from = 0; from < ids.size(); from += kChunk) {
+      checkTime();
+      const std::vector<int64_t> chunk(ids.begin() + static_cast<std::ptrdiff_t>(from),
+                                       ids.begin() + static_cast<std::ptrdiff_t>(std::min(ids.size(), from + kChunk)));
+      for (const IndexedObject& object : store_.indexedObjects(kind, chunk)) {
+        try {
+          keep(kind, object, kind == "part" ? scorePart(object) : scoreStoredShape(object));
+        } catch (const Error& e) {
+          if (e.code() != std::string(errc::kNotFound)) throw;  // deleted meanwhile
+        }
+      }
+      scored_ += chunk.size();
+    }
+  }
+
+  LinguisticSearchResult result() {
+    const size_t n = std::min(hits_.size(), static_cast<size_t>(std::max(0, options_.limit)));
+    std::partial_sort(hits_.begin(), hits_.begin() + static_cast<std::ptrdiff_t>(n), hits_.end(), better);
+    hits_.resize(n);
+    return {std::move(hits_), scored_};
+  }
+
+ private:
+  QueryScore scorePart(const IndexedObject& object) {
+    if (!object.pending && !object.components.empty())
+      return scoreDescriptors(query_, decodeDescriptorValues(object.components.front().second));
+    // Rows missing or possibly stale: describe the document, as the rows would.
+    const StoredObject stored = store_.get("part", object.id);
+    return scoreDescriptors(query_, describePart(parsePart(nlohmann::json::parse(stored.documentJson), "")));
+  }
+
+  QueryScore scoreStoredShape(const IndexedObject& object) {
+    // Relations need the components' placements, which the rows do not keep.
+    const StoredObject stored = store_.get("shape", object.id);
+    return scoreShape(query_, storedShapeComponents(store_, stored.documentJson, options_.maxNodes));
+  }
+
+  void keep(const std::string& kind, const IndexedObject& object, QueryScore score) {
+    if (!(score.score > 0) || score.score < cut_) return;
+    hits_.push_back({object.id, kind, object.name, std::move(score)});
+  }
+
+  void checkTime() const {
+    if (options_.maxMillis > 0 && millisSince(start_) > options_.maxMillis)
+      throw Error(errc::kLimitExceeded,
+                  "the query ran longer than max_query_ms=" + std::to_string(static_cast<long long>(options_.maxMillis)) +
+                      " ms; narrow it (a kind, more conditions, a threshold) or raise --max-query-ms",
+                  "text");
+  }
+
+  const Store& store_;
+  const LinguisticQuery& query_;
+  const LinguisticSearchOptions& options_;
+  const double cut_;
+  const Clock::time_point start_;
+  std::vector<LinguisticHit> hits_;
+  size_t scored_ = 0;
+};
+
+const char* conditionKind(QueryCondition::Kind kind) {
+  switch (kind) {
+    case QueryCondition::Kind::kDescriptor: return "descriptor";
+    case QueryCondition::Kind::kAnd: return "and";
+    case QueryCondition::Kind::kOr: return "or";
+    case QueryCondition::Kind::kNot: return "not";
+    case QueryCondition::Kind::kRelation: return "relation";
+  }
+  return "descriptor";
+}
+
+nlohmann::json conditionJson(const QueryCondition& c) {
+  nlohmann::json out = {{"kind", conditionKind(c.kind)}, {"text", c.text}};
+  if (c.kind == QueryCondition::Kind::kDescriptor) {
+    out["descriptor"] = c.descriptor;
+    out["set"] = toJson(c.set);
+  }
+  if (c.kind == QueryCondition::Kind::kRelation) {
+    out["direction"] = c.direction;
+    if (c.distance) out["distance"] = toJson(*c.distance);
+  }
+  if (!c.children.empty()) {
+    nlohmann::json children = nlohmann::json::array();
+    for (const QueryCondition& child : c.children) children.push_back(conditionJson(child));
+    out["children"] = children;
+  }
+  return out;
+}
+
+nlohmann::json hitJson(const LinguisticHit& hit) {
+  nlohmann::json explain = nlohmann::json::array();
+  for (const ConditionScore& c : hit.score.explain) explain.push_back({{"text", c.text}, {"score", c.score}});
+  return {{"id", hit.id}, {"kind", hit.kind}, {"name", hit.name}, {"score", hit.score.score}, {"explain", explain}};
+}
+
+}  // namespace
+
+LinguisticSearchResult searchLinguistic(const Store& store, const LinguisticQuery& query,
+                                        const LinguisticSearchOptions& options) {
+  Scorer scorer(store, query, options);
+  for (const std::string& kind : options.kinds) {
+    const AllSource all = [&store, &kind] { return store.objectIds(kind); };
+    if (options.scan) {
+      scorer.scoreAll(kind, all());
+      continue;
+    }
+    const OverlapSource overlap = [&store, &kind](const SupportTest& t) {
+      return store.descriptorCandidates(kind, {t.descriptor, t.lo, t.hi, t.loIncluded, t.hiIncluded, t.wideStrict});
+    };
+    scorer.scoreAll(kind, runPrefilter(prefilterPlan(query, kind), overlap, all));
+  }
+  return scorer.result();
+}
+
+std::vector<std::string> searchKinds(const LinguisticQuery& query, const std::string& requestKind) {
+  std::vector<std::string> kinds;
+  for (const char* kind : {"part", "shape"})
+    if ((query.subject == "any" || query.subject == kind) && (requestKind.empty() || requestKind == kind))
+      kinds.push_back(kind);
+  return kinds;
+}
+
+nlohmann::json linguisticQueryJson(const LinguisticQuery& query) {
+  return {{"subject", query.subject},
+          {"aggregation", query.aggregation},
+          {"at_least", query.atLeast},
+          {"root", conditionJson(query.root)}};
+}
+
+nlohmann::json linguisticQueryResponse(const Store& store, const nlohmann::json& request,
+                                       const LinguisticRequestLimits& limits) {
+  const auto start = Clock::now();
+  requireObject(request, "");
+  rejectUnknownKeys(request, "", {"text", "limit", "threshold", "kind", "scan"});
+  const std::string& text = requireString(requireField(request, "text", ""), "text");
+  LinguisticSearchOptions options;
+  options.maxNodes = limits.maxNodes;
+  options.maxMillis = limits.maxQueryMs;
+  options.limit = kDefaultLimit;
+  if (request.contains("limit")) {
+    const nlohmann::json& l = request["limit"];
+    if (!l.is_number_integer() || l.get<int64_t>() < 1 || l.get<int64_t>() > kMaxLimit)
+      throw Error(errc::kInvalidParameter, "limit must be an integer from 1 to " + std::to_string(kMaxLimit) +
+                                               ", got " + l.dump(), "limit");
+    options.limit = static_cast<int>(l.get<int64_t>());
+  }
+  if (request.contains("threshold")) {
+    options.threshold = requireNumber(request["threshold"], "threshold");
+    if (!(options.threshold >= 0 && options.threshold <= 1))
+      throw Error(errc::kInvalidParameter, "threshold must be in [0, 1], got " + request["threshold"].dump(),
+                  "threshold");
+  }
+  std::string kind;
+  if (request.contains("kind")) {
+    kind = requireString(request["kind"], "kind");
+    if (kind != "part" && kind != "shape")
+      throw Error(errc::kInvalidParameter, "kind must be \"part\" or \"shape\", got \"" + kind + "\"", "kind");
+  }
+  if (request.contains("scan")) {
+    if (!request["scan"].is_boolean())
+      throw Error(errc::kInvalidDocument, "scan must be a boolean, got " + jsonTypeName(request["scan"]), "scan");
+    options.scan = request["scan"].get<bool>();
+  }
+  const LinguisticQuery query = parseLinguisticQuery(text, Vocabulary::builtin());
+  options.kinds = searchKinds(query, kind);
+  const LinguisticSearchResult found = searchLinguistic(store, query, options);
+  nlohmann::json results = nlohmann::json::array();
+  for (const LinguisticHit& hit : found.hits) results.push_back(hitJson(hit));
+  return {{"parsed", linguisticQueryJson(query)},
+          {"results", results},
+          {"candidates", found.candidates},
+          {"scan", options.scan},
+          {"millis", millisSince(start)}};
+}
+
+}  // namespace fsdb
