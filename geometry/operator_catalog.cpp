@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "geometry/bezier_operator.h"
+#include "geometry/closest_names.h"
 #include "geometry/blending.h"
 #include "geometry/error.h"
 #include "geometry/parameter_check.h"
@@ -432,30 +433,11 @@ SmoothUnitStep stepFromConfig(const OperatorConfig& c) {
 
 // --- validation -------------------------------------------------------------------------------
 
-size_t editDistance(const std::string& a, const std::string& b) {
-  std::vector<size_t> row(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    size_t diagonal = row[0];
-    row[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j) {
-      size_t substitution = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
-      diagonal = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitution});
-    }
-  }
-  return row[b.size()];
-}
-
 // The three known names nearest to `name`, nearest first.
-std::string closestNames(const std::string& name) {
-  std::vector<std::pair<size_t, std::string>> ranked;
-  for (const OperatorSpec& spec : operatorCatalog())
-    ranked.emplace_back(editDistance(name, spec.name), spec.name);
-  std::sort(ranked.begin(), ranked.end());
-  std::string list;
-  for (size_t i = 0; i < ranked.size() && i < 3; ++i) list += (i ? ", " : "") + ranked[i].second;
-  return list;
+std::string closestOperatorNames(const std::string& name) {
+  std::vector<std::string> names;
+  for (const OperatorSpec& spec : operatorCatalog()) names.push_back(spec.name);
+  return closestNames(name, names);
 }
 
 std::string parameterNames(const OperatorSpec& spec) {
@@ -522,7 +504,7 @@ OperatorConfig validateOperator(const OperatorConfig& config) {
   const OperatorSpec* found = findOperator(config.name);
   if (!found)
     throw Error(errc::kUnknownName,
-                "unknown operator '" + config.name + "'; closest: " + closestNames(config.name),
+                "unknown operator '" + config.name + "'; closest: " + closestOperatorNames(config.name),
                 "name");
   const OperatorSpec& spec = *found;
   for (const auto& given : config.params) {

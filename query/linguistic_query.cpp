@@ -1,0 +1,463 @@
+// The parser of linguistic queries (query/linguistic_query.h, schema/query_grammar.ebnf):
+// recursive descent over word tokens, one function per production.
+#include "query/linguistic_query.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <set>
+
+#include "geometry/closest_names.h"
+#include "geometry/error.h"
+#include "geometry/fuzzy_arithmetic.h"
+#include "query/fuzzy_json.h"
+#include "query/number_phrases.h"
+#include "query/vocabulary.h"
+
+namespace fsdb {
+namespace {
+
+using Kind = QueryCondition::Kind;
+
+struct Token {
+  std::string text;  // lower case
+  size_t offset;     // character position in the query text
+  size_t end;
+  bool number = false;
+};
+
+// The words of the grammar itself (the vocabulary supplies the rest).
+const std::vector<std::string>& grammarWords() {
+  static const std::vector<std::string> words = {
+      "find", "show", "search", "for", "get", "list", "a", "an", "the", "any", "some", "all",
+      "that", "which", "is", "are", "and", "or", "not", "to", "of", "with", "score", "at", "least",
+      "exactly", "about", "around", "approximately", "roughly", "between"};
+  return words;
+}
+
+const std::vector<std::string> kVerbs = {"find", "show", "search", "get", "list"};
+const std::vector<std::string> kArticles = {"a", "an", "the", "any", "some", "all"};
+const std::vector<std::string> kApproximately = {"exactly", "about", "around", "approximately", "roughly"};
+
+bool contains(const std::vector<std::string>& list, const std::string& w) {
+  return std::find(list.begin(), list.end(), w) != list.end();
+}
+
+std::vector<Token> tokenize(const std::string& text) {
+  std::vector<Token> tokens;
+  size_t i = 0;
+  while (i < text.size()) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (std::isspace(c)) {
+      ++i;
+      continue;
+    }
+    Token t;
+    t.offset = i;
+    if (std::isalpha(c)) {
+      while (i < text.size() && (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '-' || text[i] == '\''))
+        t.text += static_cast<char>(std::tolower(static_cast<unsigned char>(text[i++])));
+    } else if (std::isdigit(c) || ((c == '-' || c == '+' || c == '.') && i + 1 < text.size() &&
+                                   (std::isdigit(static_cast<unsigned char>(text[i + 1])) || text[i + 1] == '.'))) {
+      const char* begin = text.c_str() + i;
+      char* stop = nullptr;
+      const double value = std::strtod(begin, &stop);
+      if (stop == begin || !std::isfinite(value))
+        throw Error(errc::kInvalidParameter, "bad number at character " + std::to_string(i), "text");
+      i += static_cast<size_t>(stop - begin);
+      t.text = text.substr(t.offset, i - t.offset);
+      t.number = true;
+    } else if (c == '(' || c == ')' || c == ',') {
+      t.text = std::string(1, static_cast<char>(c));
+      ++i;
+    } else {
+      throw Error(errc::kInvalidParameter,
+                  "unexpected character '" + std::string(1, static_cast<char>(c)) + "' at character " +
+                      std::to_string(i) + "; a query is words, numbers, parentheses and commas",
+                  "text");
+    }
+    t.end = i;
+    tokens.push_back(t);
+  }
+  return tokens;
+}
+
+std::string joinList(const std::vector<std::string>& words) {
+  std::string out;
+  for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
+  return out;
+}
+
+QueryCondition descriptorCondition(const std::string& descriptor, FuzzyNumber set, std::string text) {
+  QueryCondition c;
+  c.kind = Kind::kDescriptor;
+  c.descriptor = descriptor;
+  c.set = std::move(set);
+  c.text = std::move(text);
+  return c;
+}
+
+// The set of a low-pole adjective: d -> 1 - d (exact: negation and a crisp shift).
+FuzzyNumber mirrored(const FuzzyNumber& set) { return add(negate(set), FuzzyNumber::crisp(1.0)); }
+
+class Parser {
+ public:
+  Parser(const std::string& text, const Vocabulary& vocabulary)
+      : text_(text), v_(vocabulary), tokens_(tokenize(text)) {
+    for (const auto* list : {&grammarWords()}) known_.insert(list->begin(), list->end());
+    for (const auto& list : {v_.intensityWords(), v_.adjectiveWords(), v_.nounWords(), v_.directionWords(),
+                             v_.distanceWords()})
+      for (const std::string& phrase : list) splitInto(phrase, &known_);
+  }
+
+  LinguisticQuery parse() {
+    LinguisticQuery q;
+    if (tokens_.empty()) fail({"a query such as 'find a slightly bent shape'"});
+    if (acceptAny(kVerbs)) acceptWord("for");
+    const size_t start = pos_;
+    std::string subject;
+    QueryCondition first = nounPhrase(&subject);
+    q.subject = subject;
+    if (startsRelation()) {
+      QueryCondition relation;
+      relation.kind = Kind::kRelation;
+      relation.distance = optionalDistance();
+      relation.directionSets = directionPhrase();
+      relation.direction = relation.directionSets->word;
+      std::string otherSubject;
+      QueryCondition other = nounPhrase(&otherSubject);
+      relation.children = {std::move(first), std::move(other)};
+      relation.text = span(start, pos_);
+      q.root = std::move(relation);
+      q.subject = "shape";
+    } else {
+      q.root = std::move(first);
+    }
+    if (acceptWord("with")) expectWord("score");
+    if (at("at")) {
+      ++pos_;
+      expectWord("least");
+      if (pos_ >= tokens_.size() || !tokens_[pos_].number) fail({"a number in [0, 1] (the least score)"});
+      const double threshold = std::strtod(tokens_[pos_].text.c_str(), nullptr);
+      if (threshold < 0.0 || threshold > 1.0)
+        throw Error(errc::kInvalidParameter,
+                    "the least score at character " + std::to_string(tokens_[pos_].offset) + " must be in [0, 1]",
+                    "text");
+      q.atLeast = threshold;
+      ++pos_;
+    }
+    if (pos_ < tokens_.size())
+      fail({"'and'", "'or'", "'that is'", "'at least' NUMBER", "a distance and a direction (" +
+                                                                    joinList(v_.directionWords()) + ")",
+            "the end of the query"});
+    return q;
+  }
+
+ private:
+  // --- tokens ---------------------------------------------------------------------------------
+  bool at(const std::string& w) const { return pos_ < tokens_.size() && tokens_[pos_].text == w; }
+  bool acceptWord(const std::string& w) {
+    if (!at(w)) return false;
+    ++pos_;
+    return true;
+  }
+  bool acceptAny(const std::vector<std::string>& words) {
+    for (const std::string& w : words)
+      if (acceptWord(w)) return true;
+    return false;
+  }
+  void expectWord(const std::string& w) {
+    if (!acceptWord(w)) fail({"'" + w + "'"});
+  }
+
+  static void splitInto(const std::string& phrase, std::set<std::string>* words) {
+    size_t i = 0;
+    while (i < phrase.size()) {
+      size_t j = phrase.find(' ', i);
+      if (j == std::string::npos) j = phrase.size();
+      if (j > i) words->insert(phrase.substr(i, j - i));
+      i = j + 1;
+    }
+  }
+
+  // The longest phrase of `phrases` (words separated by one space) starting at the current
+  // token: the number of tokens it spans (0: none) and the phrase.
+  size_t matchPhrase(const std::vector<std::string>& phrases, std::string* matched) const {
+    size_t best = 0;
+    for (const std::string& phrase : phrases) {
+      size_t k = 0, i = 0;
+      bool ok = true;
+      while (ok && i < phrase.size()) {
+        size_t j = phrase.find(' ', i);
+        if (j == std::string::npos) j = phrase.size();
+        ok = pos_ + k < tokens_.size() && tokens_[pos_ + k].text == phrase.substr(i, j - i);
+        ++k;
+        i = j + 1;
+      }
+      if (ok && k > best) {
+        best = k;
+        *matched = phrase;
+      }
+    }
+    return best;
+  }
+
+  std::string span(size_t from, size_t to) const {
+    if (to <= from) return "";
+    return text_.substr(tokens_[from].offset, tokens_[to - 1].end - tokens_[from].offset);
+  }
+
+  [[noreturn]] void fail(const std::vector<std::string>& expected) const {
+    if (pos_ >= tokens_.size())
+      throw Error(errc::kInvalidParameter,
+                  "the query ends too early (character " + std::to_string(text_.size()) +
+                      "); expected " + joinList(expected),
+                  "text");
+    const Token& t = tokens_[pos_];
+    if (!t.number && t.text.size() > 1 && std::isalpha(static_cast<unsigned char>(t.text[0])) && !known_.count(t.text))
+      throw Error(errc::kInvalidParameter,
+                  "unknown word '" + t.text + "' at character " + std::to_string(t.offset) + "; closest known words: " +
+                      closestNames(t.text, std::vector<std::string>(known_.begin(), known_.end())),
+                  "text");
+    throw Error(errc::kInvalidParameter,
+                "unexpected '" + t.text + "' at character " + std::to_string(t.offset) + "; expected " + joinList(expected),
+                "text");
+  }
+
+  // --- productions ----------------------------------------------------------------------------
+  bool startsCondition() const {
+    if (at("not") || at("(")) return true;
+    std::string m;
+    return matchPhrase(v_.intensityWords(), &m) > 0 || matchPhrase(v_.adjectiveWords(), &m) > 0;
+  }
+
+  std::vector<std::string> conditionStarts() const {
+    return {"'not'", "'('", "an intensity (" + joinList(v_.intensityWords()) + ")",
+            "an adjective (" + joinList(v_.adjectiveWords()) + ")"};
+  }
+
+  // noun_phrase = [ article ] [ condition ] noun [ ("that"|"which") ("is"|"are") condition ]
+  QueryCondition nounPhrase(std::string* subject) {
+    const size_t start = pos_;
+    acceptAny(kArticles);
+    std::vector<QueryCondition> parts;
+    const bool hasModifiers = startsCondition();
+    if (hasModifiers) parts.push_back(condition());
+    std::string word;
+    const size_t nounStart = pos_;
+    const size_t n = matchPhrase(v_.nounWords(), &word);
+    if (n == 0) {
+      std::vector<std::string> expected;
+      if (!hasModifiers) expected = conditionStarts();
+      expected.push_back("a noun (" + joinList(v_.nounWords()) + ")");
+      fail(expected);
+    }
+    pos_ += n;
+    const Noun& noun = *v_.noun(word);
+    *subject = noun.subject;
+    if (!noun.conditions.empty()) {
+      const std::string nounText = span(nounStart, pos_);
+      std::vector<QueryCondition> leaves;
+      for (const NounCondition& c : noun.conditions)
+        leaves.push_back(descriptorCondition(c.descriptor, c.set, nounText + ": " + c.descriptor));
+      if (leaves.size() == 1) {
+        leaves[0].text = nounText;
+        parts.push_back(std::move(leaves[0]));
+      } else {
+        QueryCondition all;
+        all.kind = Kind::kAnd;
+        all.text = nounText;
+        all.children = std::move(leaves);
+        parts.push_back(std::move(all));
+      }
+    }
+    if (acceptWord("that") || acceptWord("which")) {
+      if (!acceptWord("is") && !acceptWord("are")) fail({"'is'", "'are'"});
+      if (!startsCondition()) fail(conditionStarts());
+      parts.push_back(condition());
+    }
+    if (parts.size() == 1) return std::move(parts[0]);
+    QueryCondition all;  // empty: "anything" (a bare "shape")
+    all.kind = Kind::kAnd;
+    all.children = std::move(parts);
+    if (all.children.empty()) all.text = span(start, pos_);
+    return all;
+  }
+
+  // condition = conjunct { "or" conjunct }
+  QueryCondition condition() {
+    const size_t start = pos_;
+    std::vector<QueryCondition> alternatives{conjunct()};
+    while (acceptWord("or")) {
+      if (!startsCondition()) fail(conditionStarts());
+      alternatives.push_back(conjunct());
+    }
+    return group(Kind::kOr, std::move(alternatives), start);
+  }
+
+  // conjunct = negation { [ "and" | "," ] negation }
+  QueryCondition conjunct() {
+    const size_t start = pos_;
+    std::vector<QueryCondition> all{negation()};
+    while (true) {
+      if (acceptWord("and") || acceptWord(",")) {
+        if (!startsCondition()) fail(conditionStarts());
+      } else if (!startsCondition()) {
+        break;
+      }
+      all.push_back(negation());
+    }
+    return group(Kind::kAnd, std::move(all), start);
+  }
+
+  // One condition stays itself; several become an and / or labelled with the words they cover.
+  QueryCondition group(Kind kind, std::vector<QueryCondition> children, size_t start) const {
+    if (children.size() == 1) return std::move(children[0]);
+    QueryCondition c;
+    c.kind = kind;
+    c.text = span(start, pos_);
+    c.children = std::move(children);
+    return c;
+  }
+
+  // negation = "not" negation | "(" condition ")" | [ intensity ] adjective
+  QueryCondition negation() {
+    const size_t start = pos_;
+    if (acceptWord("not")) {
+      if (!startsCondition()) fail(conditionStarts());
+      QueryCondition c;
+      c.kind = Kind::kNot;
+      c.children.push_back(negation());
+      c.text = span(start, pos_);
+      return c;
+    }
+    if (acceptWord("(")) {
+      if (!startsCondition()) fail(conditionStarts());
+      QueryCondition inner = condition();
+      if (!acceptWord(")")) fail({"')'", "'and'", "'or'"});
+      return inner;
+    }
+    std::string word;
+    const FuzzyNumber* intensity = nullptr;
+    if (size_t n = matchPhrase(v_.intensityWords(), &word)) {
+      intensity = v_.intensity(word);
+      pos_ += n;
+    }
+    const size_t n = matchPhrase(v_.adjectiveWords(), &word);
+    if (n == 0) fail({"an adjective (" + joinList(v_.adjectiveWords()) + ")"});
+    pos_ += n;
+    const Adjective& adjective = *v_.adjective(word);
+    FuzzyNumber set = intensity ? *intensity : v_.plain();
+    if (adjective.lowPole) set = mirrored(set);
+    return descriptorCondition(adjective.descriptor, set, span(start, pos_));
+  }
+
+  // The start of a distance or a direction phrase after a noun phrase.
+  bool startsRelation() const {
+    if (pos_ >= tokens_.size()) return false;
+    if (tokens_[pos_].number || contains(kApproximately, tokens_[pos_].text) || at("between") || at("to")) return true;
+    std::string m;
+    return matchPhrase(v_.distanceWords(), &m) > 0 || matchPhrase(v_.directionWords(), &m) > 0;
+  }
+
+  // distance = number_phrase | distance_word
+  std::optional<FuzzyNumber> optionalDistance() {
+    std::string word;
+    if (size_t n = matchPhrase(v_.distanceWords(), &word)) {
+      pos_ += n;
+      return *v_.distance(word);
+    }
+    const size_t start = pos_;
+    if (at("between")) {
+      ++pos_;
+      expectNumber();
+      expectWord("and");
+      expectNumber();
+    } else if (pos_ < tokens_.size() && contains(kApproximately, tokens_[pos_].text)) {
+      ++pos_;
+      expectNumber();
+    } else if (pos_ < tokens_.size() && tokens_[pos_].number) {
+      ++pos_;
+    } else {
+      return std::nullopt;
+    }
+    std::string phrase;
+    for (size_t i = start; i < pos_; ++i) phrase += (i > start ? " " : "") + tokens_[i].text;
+    try {
+      return parseNumberPhrase(phrase);
+    } catch (const Error& e) {
+      throw Error(errc::kInvalidParameter,
+                  "bad distance '" + phrase + "' at character " + std::to_string(tokens_[start].offset) + ": " + e.what(),
+                  "text");
+    }
+  }
+
+  void expectNumber() {
+    if (pos_ >= tokens_.size() || !tokens_[pos_].number) fail({"a number"});
+    ++pos_;
+  }
+
+  // direction_phrase = [ "to" "the" ] direction "of" | a phrase of the vocabulary ("above")
+  Direction directionPhrase() {
+    const bool to = acceptWord("to");
+    if (to) acceptWord("the");
+    std::string word;
+    const size_t n = matchPhrase(v_.directionWords(), &word);
+    if (n == 0) fail({"a direction (" + joinList(v_.directionWords()) + ")"});
+    pos_ += n;
+    const Direction& d = *v_.direction(word);
+    if (d.word != word && !to) return d;  // a phrase: "above", "in front of"
+    if (!acceptWord("of")) fail({"'of'"});
+    return d;
+  }
+
+  const std::string& text_;
+  const Vocabulary& v_;
+  std::vector<Token> tokens_;
+  size_t pos_ = 0;
+  std::set<std::string> known_;
+};
+
+const char* kindName(Kind k) {
+  switch (k) {
+    case Kind::kDescriptor: return "descriptor";
+    case Kind::kAnd: return "and";
+    case Kind::kOr: return "or";
+    case Kind::kNot: return "not";
+    case Kind::kRelation: return "relation";
+  }
+  return "";
+}
+
+nlohmann::json conditionJson(const QueryCondition& c) {
+  nlohmann::json j = {{"kind", kindName(c.kind)}, {"text", c.text}};
+  if (c.kind == Kind::kDescriptor) {
+    j["descriptor"] = c.descriptor;
+    j["set"] = toJson(c.set);
+  }
+  if (c.kind == Kind::kRelation) {
+    j["direction"] = c.direction;
+    j["distance"] = c.distance ? toJson(*c.distance) : nlohmann::json();
+  }
+  if (c.kind != Kind::kDescriptor) {
+    j["children"] = nlohmann::json::array();
+    for (const QueryCondition& child : c.children) j["children"].push_back(conditionJson(child));
+  }
+  return j;
+}
+
+}  // namespace
+
+LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary) {
+  return Parser(text, vocabulary).parse();
+}
+
+nlohmann::json toJson(const LinguisticQuery& query) {
+  return {{"subject", query.subject},
+          {"aggregation", query.aggregation},
+          {"at_least", query.atLeast},
+          {"condition", conditionJson(query.root)}};
+}
+
+}  // namespace fsdb

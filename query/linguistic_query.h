@@ -1,0 +1,111 @@
+#pragma once
+// Linguistic queries (seed 004 §5: "find a slightly bent shape"; SPEC §5): parsing the text into
+// a condition tree over shape descriptors (query/descriptors.h) and spatial relations (seed 004
+// §2.2), and scoring a part's descriptor values or a shape's components against it.
+//
+// The grammar is schema/query_grammar.ebnf (a test parses every example listed there). In short:
+//   query       = [ "find" ] phrase [ threshold ]
+//   phrase      = noun_phrase [ [ distance ] direction_phrase noun_phrase ]
+//   noun_phrase = [ article ] [ condition ] noun [ ("that"|"which") ("is"|"are") condition ]
+//   condition   = conjunct { "or" conjunct };  conjunct = negation { ["and"|","] negation }
+//   negation    = "not" negation | "(" condition ")" | [ intensity ] adjective
+//   threshold   = [ "with" "score" ] "at least" number
+// Words are case-insensitive; nouns, adjectives, intensities, directions and distance words come
+// from the Vocabulary (query/vocabulary.h), so a user's vocabulary file extends the language.
+//
+// Meaning of the tree:
+//   * [intensity] adjective: a kDescriptor condition on the adjective's descriptor with the
+//     intensity's fuzzy set (plain: μ(d) = d), mirrored d → 1 − d for low-pole adjectives.
+//   * a noun: its conditions (a kDescriptor, or a kAnd of them labelled with the noun);
+//     "shape", "part", ... have none. LinguisticQuery::subject: "part" for part nouns, "shape" for
+//     relations (only shapes have several components), else "any".
+//   * and / or / not: kAnd (scores aggregated by LinguisticQuery::aggregation: min, the default,
+//     product or mean), kOr (max), kNot (1 − the child's score). A kAnd without children is
+//     "anything" (score 1): the condition of a relation's bare noun ("a shape above a cube").
+//   * relations: kRelation, children[0] the subject noun phrase, children[1] the other one,
+//     `direction` a direction word of the vocabulary ("left", "top right"; phrases such as
+//     "above", "in front of" name one), `distance` the fuzzy distance between the centres.
+// Scores: a kDescriptor condition scores S(value, set) of SPEC §5 (geometry/fuzzy_similarity.h;
+// for a crisp value μ_set(value)). A relation scores, over ordered pairs (i, j) of distinct
+// components, the best min(subject(i), other(j), μ_direction(centre_i − centre_j),
+// S(|centre_i − centre_j|, distance)); centres are the translations' core midpoints for the
+// direction and the fuzzy translations (exact alpha-cuts of the norm) for the distance.
+// explain: every condition with text, in pre-order (the and / or nodes carry the text they
+// cover), with its score for the component (pair) that gave the total.
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/boundary_method.h"
+#include "geometry/fuzzy_number.h"
+#include "geometry/fuzzy_part.h"
+#include "query/descriptors.h"
+#include "query/vocabulary.h"
+
+namespace fsdb {
+class Vocabulary;  // query/vocabulary.h: Vocabulary::builtin() is the compiled-in schema/vocabulary.json
+
+struct QueryCondition {
+  enum class Kind { kDescriptor, kAnd, kOr, kNot, kRelation };
+  Kind kind = Kind::kDescriptor;
+  std::string text;            // the words it came from ("slightly bent"), for explain
+  // kDescriptor: the part's descriptor value must match the fuzzy set `set` (S of SPEC §5)
+  std::string descriptor;
+  FuzzyNumber set;
+  // kAnd / kOr: children (2 or more); kNot: one child.
+  // kRelation: children[0] = the subject part's condition, children[1] = the other part's condition;
+  // direction: a direction word of seed 004 §2.2 ("left", "top right"); distance optional.
+  std::vector<QueryCondition> children;
+  std::string direction;
+  std::optional<FuzzyNumber> distance;
+  // kRelation: the direction's memberships as the parser's vocabulary defines them (when empty,
+  // scoring looks `direction` up in activeVocabulary()).
+  std::optional<Direction> directionSets;
+};
+struct LinguisticQuery {
+  std::string subject = "any";   // "part", "shape" or "any" (from the noun: "shape" = any)
+  QueryCondition root;
+  double atLeast = 0.0;          // "at least 0.7": results below are dropped
+  std::string aggregation = "min";  // how kAnd combines scores (documented choices)
+};
+// Throws fsdb::Error(errc::kInvalidParameter) with path "text" and a message giving the character
+// position and the expected words; unknown words name the closest known ones.
+LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary);
+
+struct ConditionScore {
+  std::string text;
+  double score;
+  std::string component;  // scoreShape: the component path(s) it was scored on ("a, b" for relations)
+};
+struct QueryScore { double score = 0.0; std::vector<ConditionScore> explain; };
+// Score of one part's descriptor values (SPEC §5; kRelation conditions score 0 for a lone part).
+QueryScore scoreDescriptors(const LinguisticQuery& query, const std::vector<DescriptorValue>& values);
+
+// One leaf of a stored shape, with its placement resolved (the leaf part's own transform and the
+// leaf transform; references expanded).
+struct ShapeComponent {
+  std::string path;                 // JSON path of the leaf in the shape's document tree
+  FuzzyPart part;                   // parameters and placement (tx, ty, tz, ...)
+  std::vector<DescriptorValue> descriptors;  // describePart(part)
+};
+// Score of a shape: descriptor conditions score the best component (max over components, explain
+// names it); relations score the best ordered pair of distinct components (subject condition,
+// other condition, direction of the offset between their centres, distance).
+QueryScore scoreShape(const LinguisticQuery& query, const std::vector<ShapeComponent>& components);
+
+// The leaves of a parsed CSG tree as components, in pre-order; paths "tree", "tree.children[1]",
+// "tree.children[1].children[0]", ... (positions in the resolved tree: a referenced shape's
+// leaves continue below the leaf that references it).
+std::vector<ShapeComponent> shapeComponents(const CsgTree& tree);
+
+// The fuzzy distance between the centres of two parts (exact alpha-cuts of the norm of the
+// difference of their fuzzy translations).
+FuzzyNumber centreDistance(const FuzzyPart& a, const FuzzyPart& b);
+
+// The parsed query as JSON, for the "parsed" member of POST /query/linguistic:
+// {"subject","aggregation","at_least","condition":{kind, text, descriptor, set, children,
+// direction, distance}}.
+nlohmann::json toJson(const LinguisticQuery& query);
+
+}  // namespace fsdb
