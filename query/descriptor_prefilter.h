@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "query/lquery_contract_tmp.h"
+#include "query/linguistic_query.h"
 
 namespace fsdb {
 

@@ -41,6 +41,13 @@ class Reader {
     return s;
   }
   bool done() const { return at_ == bytes_.size(); }
+  // A count read from the blob, refused when `each` bytes per item cannot follow (so a corrupt
+  // count never allocates).
+  size_t count(size_t each) {
+    const size_t n = get<uint32_t>();
+    if (n > (bytes_.size() - at_) / each) throw Error(errc::kStorage, "a descriptor_values row is corrupt");
+    return n;
+  }
 
  private:
   void need(size_t n) const {
@@ -49,15 +56,6 @@ class Reader {
   const std::string& bytes_;
   size_t at_ = 0;
 };
-
-void collectLeaves(const CsgTree& tree, const std::string& path, std::vector<ShapeComponent>& out) {
-  if (tree.leaf) {
-    out.push_back({path, tree.part, describePart(tree.part)});
-    return;
-  }
-  for (size_t i = 0; i < tree.children.size(); ++i)
-    collectLeaves(*tree.children[i], path + ".children[" + std::to_string(i) + "]", out);
-}
 
 std::vector<DescriptorComponent> rowsOfDocument(const Store& store, const StoredObject& object, size_t maxNodes) {
   if (object.kind == "part") return partDescriptorRows(parsePart(nlohmann::json::parse(object.documentJson), ""));
@@ -84,10 +82,10 @@ std::string encodeDescriptorValues(const std::vector<DescriptorValue>& values) {
 
 std::vector<DescriptorValue> decodeDescriptorValues(const std::string& bytes) {
   Reader in(bytes);
-  std::vector<DescriptorValue> values(in.get<uint32_t>());
+  std::vector<DescriptorValue> values(in.count(sizeof(uint16_t) + sizeof(uint32_t)));
   for (DescriptorValue& v : values) {
     v.descriptor = in.text(in.get<uint16_t>());
-    std::vector<Breakpoint> points(in.get<uint32_t>());
+    std::vector<Breakpoint> points(in.count(2 * sizeof(double)));
     for (Breakpoint& p : points) {
       p.x = in.get<double>();
       p.mu = in.get<double>();
@@ -110,12 +108,6 @@ DescriptorComponent descriptorComponent(int index, const std::vector<DescriptorV
   return component;
 }
 
-std::vector<ShapeComponent> shapeComponents(const CsgTree& tree, const std::string& path) {
-  std::vector<ShapeComponent> out;
-  collectLeaves(tree, path, out);
-  return out;
-}
-
 std::vector<DescriptorComponent> partDescriptorRows(const FuzzyPart& part) {
   return {descriptorComponent(0, describePart(part))};
 }
@@ -131,7 +123,7 @@ std::vector<ShapeComponent> storedShapeComponents(const Store& store, const std:
                                                   size_t maxNodes) {
   const ParsedShape parsed = parseShapeField(nlohmann::json::parse(documentJson), "", maxNodes, storeResolver(store));
   if (!parsed.tree) return {};
-  return shapeComponents(*parsed.tree, parsed.documentTreePath);
+  return shapeComponents(*parsed.tree);
 }
 
 size_t refreshPendingDescriptors(Store& store, size_t maxNodes) {

@@ -16,7 +16,7 @@
 
 #include "db/store.h"
 #include "geometry/boundary_method.h"
-#include "query/lquery_contract_tmp.h"
+#include "query/linguistic_query.h"
 
 namespace fsdb {
 
@@ -27,15 +27,11 @@ std::vector<DescriptorValue> decodeDescriptorValues(const std::string& bytes);
 // The rows of one component from its values.
 DescriptorComponent descriptorComponent(int index, const std::vector<DescriptorValue>& values);
 
-// The leaves of a resolved CSG tree in pre-order, described; path: the leaf's path in the
-// resolved tree ("tree.children[1].children[0]": through a reference, the referenced tree's
-// children continue the path of the reference's leaf).
-std::vector<ShapeComponent> shapeComponents(const CsgTree& tree, const std::string& path);
-
 std::vector<DescriptorComponent> partDescriptorRows(const FuzzyPart& part);
 std::vector<DescriptorComponent> shapeDescriptorRows(const std::vector<ShapeComponent>& components);
 
-// The components of a stored shape document (references resolved against the store).
+// The components of a stored shape document (references resolved against the store), as
+// query/linguistic_query.h shapeComponents gives them.
 std::vector<ShapeComponent> storedShapeComponents(const Store& store, const std::string& documentJson, size_t maxNodes);
 
 // Recomputes the rows of every pending object (one pass over the pending ids, in id order) and

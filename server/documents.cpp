@@ -103,7 +103,7 @@ NewObject prepareDocument(const nlohmann::json& document, const std::string& kin
   } else {
     // Validates everything, references included, and keeps the resolved tree (csg text parsed).
     const ParsedShape parsed = parseShapeField(doc, path, maxNodes, storeResolver(store, pending));
-    if (parsed.tree) out.descriptors = shapeDescriptorRows(shapeComponents(*parsed.tree, parsed.documentTreePath));
+    if (parsed.tree) out.descriptors = shapeDescriptorRows(shapeComponents(*parsed.tree));
     const TreeOutline outline = outlineTree(parsed.documentTree, parsed.documentTreePath);
     for (const DocumentReference& r : outline.references) out.references.push_back(objectReference(r));
     for (size_t i = 0; i < outline.nodes.size(); ++i) {

@@ -6,7 +6,7 @@
 
 #include "geometry/error.h"
 #include "query/descriptor_prefilter.h"
-#include "query/fuzzy_json.h"
+#include "query/vocabulary.h"
 #include "query/json_body.h"
 #include "query/part_json.h"
 #include "server/descriptor_rows.h"
@@ -96,38 +96,13 @@ class Scorer {
   size_t scored_ = 0;
 };
 
-const char* conditionKind(QueryCondition::Kind kind) {
-  switch (kind) {
-    case QueryCondition::Kind::kDescriptor: return "descriptor";
-    case QueryCondition::Kind::kAnd: return "and";
-    case QueryCondition::Kind::kOr: return "or";
-    case QueryCondition::Kind::kNot: return "not";
-    case QueryCondition::Kind::kRelation: return "relation";
-  }
-  return "descriptor";
-}
-
-nlohmann::json conditionJson(const QueryCondition& c) {
-  nlohmann::json out = {{"kind", conditionKind(c.kind)}, {"text", c.text}};
-  if (c.kind == QueryCondition::Kind::kDescriptor) {
-    out["descriptor"] = c.descriptor;
-    out["set"] = toJson(c.set);
-  }
-  if (c.kind == QueryCondition::Kind::kRelation) {
-    out["direction"] = c.direction;
-    if (c.distance) out["distance"] = toJson(*c.distance);
-  }
-  if (!c.children.empty()) {
-    nlohmann::json children = nlohmann::json::array();
-    for (const QueryCondition& child : c.children) children.push_back(conditionJson(child));
-    out["children"] = children;
-  }
-  return out;
-}
-
 nlohmann::json hitJson(const LinguisticHit& hit) {
   nlohmann::json explain = nlohmann::json::array();
-  for (const ConditionScore& c : hit.score.explain) explain.push_back({{"text", c.text}, {"score", c.score}});
+  for (const ConditionScore& c : hit.score.explain) {
+    nlohmann::json e = {{"text", c.text}, {"score", c.score}};
+    if (!c.component.empty()) e["component"] = c.component;
+    explain.push_back(std::move(e));
+  }
   return {{"id", hit.id}, {"kind", hit.kind}, {"name", hit.name}, {"score", hit.score.score}, {"explain", explain}};
 }
 
@@ -156,13 +131,6 @@ std::vector<std::string> searchKinds(const LinguisticQuery& query, const std::st
     if ((query.subject == "any" || query.subject == kind) && (requestKind.empty() || requestKind == kind))
       kinds.push_back(kind);
   return kinds;
-}
-
-nlohmann::json linguisticQueryJson(const LinguisticQuery& query) {
-  return {{"subject", query.subject},
-          {"aggregation", query.aggregation},
-          {"at_least", query.atLeast},
-          {"root", conditionJson(query.root)}};
 }
 
 nlohmann::json linguisticQueryResponse(const Store& store, const nlohmann::json& request,
@@ -199,12 +167,12 @@ nlohmann::json linguisticQueryResponse(const Store& store, const nlohmann::json&
       throw Error(errc::kInvalidDocument, "scan must be a boolean, got " + jsonTypeName(request["scan"]), "scan");
     options.scan = request["scan"].get<bool>();
   }
-  const LinguisticQuery query = parseLinguisticQuery(text, Vocabulary::builtin());
+  const LinguisticQuery query = parseLinguisticQuery(text, activeVocabulary());
   options.kinds = searchKinds(query, kind);
   const LinguisticSearchResult found = searchLinguistic(store, query, options);
   nlohmann::json results = nlohmann::json::array();
   for (const LinguisticHit& hit : found.hits) results.push_back(hitJson(hit));
-  return {{"parsed", linguisticQueryJson(query)},
+  return {{"parsed", toJson(query)},
           {"results", results},
           {"candidates", found.candidates},
           {"scan", options.scan},

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "db/store.h"
-#include "query/lquery_contract_tmp.h"
+#include "query/linguistic_query.h"
 
 namespace fsdb {
 
@@ -52,10 +52,6 @@ LinguisticSearchResult searchLinguistic(const Store& store, const LinguisticQuer
 // ("" for no narrowing).
 std::vector<std::string> searchKinds(const LinguisticQuery& query, const std::string& requestKind);
 
-// The "parsed" member of the answer: {"subject","aggregation","at_least","root":{condition}},
-// a condition {"kind":"descriptor"|"and"|"or"|"not"|"relation","text",...}.
-nlohmann::json linguisticQueryJson(const LinguisticQuery& query);
-
 struct LinguisticRequestLimits {
   size_t maxNodes = 10000;
   double maxQueryMs = 0;
@@ -63,7 +59,8 @@ struct LinguisticRequestLimits {
 
 // The whole request {"text","limit","threshold","kind","scan"} -> {"parsed","results",
 // "candidates","scan","millis"}: validation (invalid_parameter / invalid_document naming the
-// field), parsing with the built-in vocabulary, search. Shared by POST /query/linguistic and
+// field), parsing with the active vocabulary (query/vocabulary.h), search; "parsed" is
+// toJson(query) of query/linguistic_query.h. Shared by POST /query/linguistic and
 // `fsdb query --db`.
 nlohmann::json linguisticQueryResponse(const Store& store, const nlohmann::json& request,
                                        const LinguisticRequestLimits& limits);

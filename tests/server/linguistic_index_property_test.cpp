@@ -10,6 +10,7 @@
 #include <regex>
 
 #include "db/store.h"
+#include "geometry/error.h"
 #include "query/descriptors.h"
 #include "query/linguistic_query.h"
 #include "query/part_json.h"
@@ -132,7 +133,8 @@ QueryCondition randomCondition(std::mt19937& rng, int depth) {
     else if (v < 0.4) c.set = FuzzyNumber::trapezoidal(0, 0, 0.1, 0.3);  // vertical side at 0
     else {
       const double a = uniform(rng, 0, 0.8), b = a + uniform(rng, 0, 0.2);
-      c.set = FuzzyNumber::trapezoidal(a, b, b + uniform(rng, 0, 0.2), std::min(1.0, b + uniform(rng, 0.2, 0.4)));
+      const double top = std::min(1.0, b + uniform(rng, 0, 0.2));
+      c.set = FuzzyNumber::trapezoidal(a, b, top, std::max(top, std::min(1.0, b + uniform(rng, 0.2, 0.4))));
     }
     c.text = (v < 0.2 ? "plain " : "some ") + c.descriptor;
     return c;

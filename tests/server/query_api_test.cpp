@@ -139,7 +139,7 @@ TEST(QueryApi, Errors) {
     EXPECT_EQ(r.json["error"]["path"], path) << body << " -> " << r.body;
     return r.json["error"].value("message", "");
   };
-  expectError("{}", 422, "invalid_document", "");
+  expectError("{}", 422, "invalid_document", "text");
   expectError(R"({"text":3})", 422, "invalid_document", "text");
   expectError(R"({"text":"find a part","limit":0})", 422, "invalid_parameter", "limit");
   expectError(R"({"text":"find a part","limit":1001})", 422, "invalid_parameter", "limit");
