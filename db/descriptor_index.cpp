@@ -80,17 +80,17 @@ double below(double x) { return std::nextafter(x, -std::numeric_limits<double>::
 
 }  // namespace
 
-std::vector<int64_t> descriptorCandidatesIn(sqlite::Connection& connection, const std::string& kind,
-                                            const DescriptorOverlap& test) {
+std::vector<DescriptorCandidate> descriptorCandidatesIn(sqlite::Connection& connection, const std::string& kind,
+                                                        const DescriptorOverlap& test) {
   std::vector<int> classes;
   {
     auto statement = connection.prepare("SELECT width_class FROM descriptor_classes WHERE descriptor = ?1");
     statement->bind(1, test.descriptor);
     while (statement->step()) classes.push_back(static_cast<int>(statement->columnInt(0)));
   }
-  std::vector<int64_t> ids;
+  std::vector<DescriptorCandidate> rows;
   auto scan = connection.prepare(
-      "SELECT object_id FROM descriptor_index WHERE kind = ?1 AND descriptor = ?2 AND width_class = ?3"
+      "SELECT object_id, support_lo, support_hi FROM descriptor_index WHERE kind = ?1 AND descriptor = ?2 AND width_class = ?3"
       " AND support_lo BETWEEN ?4 AND ?5 AND support_hi >= ?6");
   for (int c : classes) {
     double fromLo, toLo, leastHi;  // support_lo BETWEEN fromLo AND toLo AND support_hi >= leastHi
@@ -106,15 +106,16 @@ std::vector<int64_t> descriptorCandidatesIn(sqlite::Connection& connection, cons
     if (fromLo > toLo) continue;
     scan->reset();
     scan->bind(1, kind).bind(2, test.descriptor).bind(3, c).bind(4, fromLo).bind(5, toLo).bind(6, leastHi);
-    while (scan->step()) ids.push_back(scan->columnInt(0));
+    while (scan->step()) rows.push_back({scan->columnInt(0), scan->columnDouble(1), scan->columnDouble(2), false});
   }
   auto pending = connection.prepare(
       "SELECT p.object_id FROM descriptor_pending p JOIN objects o ON o.id = p.object_id WHERE o.kind = ?1");
   pending->bind(1, kind);
-  while (pending->step()) ids.push_back(pending->columnInt(0));
-  std::sort(ids.begin(), ids.end());
-  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-  return ids;
+  while (pending->step()) rows.push_back({pending->columnInt(0), 0, 0, true});
+  std::sort(rows.begin(), rows.end(), [](const DescriptorCandidate& a, const DescriptorCandidate& b) {
+    return a.id < b.id;
+  });
+  return rows;
 }
 
 }  // namespace fsdb

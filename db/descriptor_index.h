@@ -35,7 +35,7 @@ void markDescriptorsPending(sqlite::Connection& connection, int64_t objectId);
 // Clears the mark of `objectId` (its rows were just written from what the write stored).
 void clearDescriptorsPending(sqlite::Connection& connection, int64_t objectId);
 
-std::vector<int64_t> descriptorCandidatesIn(sqlite::Connection& connection, const std::string& kind,
-                                            const DescriptorOverlap& test);
+std::vector<DescriptorCandidate> descriptorCandidatesIn(sqlite::Connection& connection, const std::string& kind,
+                                                        const DescriptorOverlap& test);
 
 }  // namespace fsdb

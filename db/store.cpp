@@ -552,7 +552,8 @@ std::vector<int64_t> Store::dependents(int64_t id) const {
 
 // --- The descriptor index -----------------------------------------------------------------------
 
-std::vector<int64_t> Store::descriptorCandidates(const std::string& kind, const DescriptorOverlap& test) const {
+std::vector<DescriptorCandidate> Store::descriptorCandidates(const std::string& kind,
+                                                            const DescriptorOverlap& test) const {
   Impl::Lease connection(*impl_);
   Transaction transaction(*connection, Transaction::Mode::kDeferred);
   return descriptorCandidatesIn(*connection, kind, test);

@@ -143,6 +143,14 @@ struct DescriptorOverlap {
   bool wideStrict = false;
 };
 
+// A row found by a DescriptorOverlap (its support, from which the search bounds the score), or a
+// pending object (no row to trust).
+struct DescriptorCandidate {
+  int64_t id = 0;
+  double supportLo = 0, supportHi = 0;
+  bool pending = false;
+};
+
 // An object as the linguistic search scores it (Store::indexedObjects): its name and the
 // encoded descriptor values of its components. pending: the rows are missing or may be stale
 // (descriptor_pending), so the caller must describe the document instead of using `components`.
@@ -212,9 +220,10 @@ class Store {
   // that existed before it. Pending objects are candidates of every prefilter, so the index never
   // hides a match; the server recomputes them (pendingDescriptors, replaceDescriptors).
   //
-  // Sorted ids of the objects of `kind` with a component row passing `test` (one index range
-  // scan per width class, db/descriptor_index.h), and of every pending object of `kind`.
-  std::vector<int64_t> descriptorCandidates(const std::string& kind, const DescriptorOverlap& test) const;
+  // The component rows of objects of `kind` passing `test` (one index range scan per width
+  // class, db/descriptor_index.h), and every pending object of `kind` (pending = true), by id
+  // (the rows of one object next to each other).
+  std::vector<DescriptorCandidate> descriptorCandidates(const std::string& kind, const DescriptorOverlap& test) const;
   // Sorted ids of every live object of `kind` (the full scan's candidates).
   std::vector<int64_t> objectIds(const std::string& kind) const;
   // The objects of `kind` among `ids`, in the order given (ids of other kinds or deleted are skipped).

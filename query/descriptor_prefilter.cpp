@@ -39,6 +39,7 @@ PrefilterPlan planOf(const QueryCondition& condition, bool andNeedsAll, bool for
     case QueryCondition::Kind::kDescriptor: {
       PrefilterPlan plan = leaf(Kind::kOverlap);
       plan.test = supportTest(condition.descriptor, condition.set);
+      plan.set = condition.set;
       return plan;
     }
     case QueryCondition::Kind::kAnd:
@@ -56,15 +57,28 @@ PrefilterPlan planOf(const QueryCondition& condition, bool andNeedsAll, bool for
   return leaf(Kind::kAll);
 }
 
-std::vector<int64_t> intersect(const std::vector<int64_t>& a, const std::vector<int64_t>& b) {
-  std::vector<int64_t> out;
-  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
-  return out;
-}
+constexpr double kSlack = 1e-9;  // bounds are raised by this against rounding
 
-std::vector<int64_t> unite(const std::vector<int64_t>& a, const std::vector<int64_t>& b) {
-  std::vector<int64_t> out;
-  std::set_union(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
+double raised(double bound) { return std::min(1.0, bound + kSlack); }
+
+// Children (by id) combined: the intersection with the min of the bounds, or the union with the
+// bounded sum.
+std::vector<Candidate> combineCandidates(const std::vector<Candidate>& a, const std::vector<Candidate>& b, bool all) {
+  std::vector<Candidate> out;
+  size_t i = 0, j = 0;
+  while (i < a.size() || j < b.size()) {
+    if (j == b.size() || (i < a.size() && a[i].id < b[j].id)) {
+      if (!all) out.push_back(a[i]);
+      ++i;
+    } else if (i == a.size() || b[j].id < a[i].id) {
+      if (!all) out.push_back(b[j]);
+      ++j;
+    } else {
+      out.push_back({a[i].id, all ? std::min(a[i].bound, b[j].bound) : std::min(1.0, a[i].bound + b[j].bound)});
+      ++i;
+      ++j;
+    }
+  }
   return out;
 }
 
@@ -91,6 +105,27 @@ bool admits(const SupportTest& test, double slo, double shi) {
   return slo <= test.hi && shi >= test.lo;
 }
 
+double membershipIntegral(const FuzzyNumber& set, double lo, double hi) {
+  const std::vector<Breakpoint>& p = set.breakpoints();
+  double area = 0;
+  for (size_t k = 1; k < p.size(); ++k) {
+    const double x0 = std::max(lo, p[k - 1].x), x1 = std::min(hi, p[k].x);
+    if (!(x1 > x0)) continue;
+    const double slope = (p[k].mu - p[k - 1].mu) / (p[k].x - p[k - 1].x);
+    const double m0 = p[k - 1].mu + slope * (x0 - p[k - 1].x), m1 = p[k - 1].mu + slope * (x1 - p[k - 1].x);
+    area += 0.5 * (m0 + m1) * (x1 - x0);
+  }
+  return area;
+}
+
+double scoreBound(const PrefilterPlan& leaf, const SupportRow& row) {
+  if (row.pending) return 1;
+  if (row.supportLo == row.supportHi) return raised(leaf.set.membership(row.supportLo));
+  const double setArea = leaf.set.cardinality();
+  if (!(setArea > 0)) return 1;
+  return raised(membershipIntegral(leaf.set, row.supportLo, row.supportHi) / setArea * (1 + kSlack));
+}
+
 bool aggregationNeedsAll(const std::string& aggregation) {
   // Every t-norm T has T(0, x) = 0; the names are those of the operator catalogue and the
   // common spellings of the product.
@@ -104,27 +139,35 @@ PrefilterPlan prefilterPlan(const LinguisticQuery& query, const std::string& kin
   return planOf(query.root, aggregationNeedsAll(query.aggregation), kind == "part");
 }
 
-std::vector<int64_t> runPrefilter(const PrefilterPlan& plan, const OverlapSource& overlap, const AllSource& all) {
+std::vector<Candidate> runPrefilter(const PrefilterPlan& plan, const OverlapSource& overlap, const AllSource& all) {
   switch (plan.kind) {
-    case Kind::kAll:
-      return all();
+    case Kind::kAll: {
+      std::vector<Candidate> out;
+      for (int64_t id : all()) out.push_back({id, 1.0});
+      return out;
+    }
     case Kind::kNone:
       return {};
-    case Kind::kOverlap:
-      return overlap(plan.test);
-    case Kind::kAnd: {
-      std::vector<int64_t> ids = runPrefilter(plan.children.front(), overlap, all);
-      for (size_t i = 1; i < plan.children.size() && !ids.empty(); ++i)
-        ids = intersect(ids, runPrefilter(plan.children[i], overlap, all));
-      return ids;
+    case Kind::kOverlap: {
+      // One candidate per object: the largest bound of its rows (a shape's best component).
+      std::vector<Candidate> out;
+      for (const SupportRow& row : overlap(plan.test)) {
+        const double bound = scoreBound(plan, row);
+        if (!out.empty() && out.back().id == row.id) out.back().bound = std::max(out.back().bound, bound);
+        else out.push_back({row.id, bound});
+      }
+      return out;
     }
+    case Kind::kAnd:
     case Kind::kOr: {
-      std::vector<int64_t> ids;
-      for (const PrefilterPlan& child : plan.children) ids = unite(ids, runPrefilter(child, overlap, all));
-      return ids;
+      const bool intersect = plan.kind == Kind::kAnd;
+      std::vector<Candidate> out = runPrefilter(plan.children.front(), overlap, all);
+      for (size_t i = 1; i < plan.children.size() && !(intersect && out.empty()); ++i)
+        out = combineCandidates(out, runPrefilter(plan.children[i], overlap, all), intersect);
+      return out;
     }
   }
-  return all();
+  return {};
 }
 
 nlohmann::json prefilterPlanJson(const PrefilterPlan& plan) {

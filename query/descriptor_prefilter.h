@@ -20,6 +20,14 @@
 // - kNot: no filter (1 − S is 1 where S is 0).
 // - kRelation: for parts, nothing (a lone part scores 0 on a relation, query/linguistic_query.h);
 //   for shapes, no filter.
+// Score bounds: runPrefilter gives each candidate a bound >= its score, from the supports the
+// index returns, so the search can score candidates best bound first and stop once the k-th best
+// exact score beats the next bound (server/linguistic_search.h). For a kDescriptor condition:
+// a crisp value x scores μ_set(x) exactly; a wide value [slo, shi] scores at most
+// |A∩B|/|B| <= ∫_slo^shi μ_set / |set| (any value against a crisp set: 1); a pending object: 1.
+// A shape takes the largest bound of its components. kAnd under a t-norm takes the children's
+// min (T <= min); kOr (max or a t-conorm: <= the bounded sum) and a non-t-norm kAnd (a mean is
+// <= max) take min(1, sum); kAll is 1. Each bound is raised by 1e-9 against rounding.
 // The plan is simplified as it is built: kAll children of a kAnd and kNone children of a kOr
 // drop out, a kNone child of a needs-all kAnd makes it kNone, a kAll child of a kOr makes it kAll.
 #include <cstdint>
@@ -48,8 +56,27 @@ struct PrefilterPlan {
   enum class Kind { kAll, kNone, kOverlap, kAnd, kOr };
   Kind kind = Kind::kAll;
   SupportTest test;                     // kOverlap
+  FuzzyNumber set;                      // kOverlap: the condition's set (for score bounds)
   std::vector<PrefilterPlan> children;  // kAnd, kOr: two or more
 };
+
+// A component row the index found for a kOverlap (its support), or a pending object.
+struct SupportRow {
+  int64_t id = 0;
+  double supportLo = 0, supportHi = 0;
+  bool pending = false;
+};
+
+// A candidate and a bound >= its score.
+struct Candidate {
+  int64_t id = 0;
+  double bound = 1;
+};
+
+// The bound of one kOverlap leaf for one row (see above).
+double scoreBound(const PrefilterPlan& leaf, const SupportRow& row);
+// ∫_lo^hi μ(x) dx, exact for the piecewise-linear membership.
+double membershipIntegral(const FuzzyNumber& set, double lo, double hi);
 
 // Whether kAnd under this aggregation is 0 as soon as one child is (a t-norm).
 bool aggregationNeedsAll(const std::string& aggregation);
@@ -57,11 +84,11 @@ bool aggregationNeedsAll(const std::string& aggregation);
 // The plan for objects of `kind` ("part" or "shape").
 PrefilterPlan prefilterPlan(const LinguisticQuery& query, const std::string& kind);
 
-// Sorted candidate ids of `plan`: kOverlap through `overlap(test)`, kAll through `all()` (both
-// return sorted ids), kAnd as the intersection, kOr as the union.
-using OverlapSource = std::function<std::vector<int64_t>(const SupportTest& test)>;
+// The candidates of `plan` by id, with bounds: kOverlap through `overlap(test)` (rows by id),
+// kAll through `all()` (sorted ids, bound 1), kAnd as the intersection, kOr as the union.
+using OverlapSource = std::function<std::vector<SupportRow>(const SupportTest& test)>;
 using AllSource = std::function<std::vector<int64_t>()>;
-std::vector<int64_t> runPrefilter(const PrefilterPlan& plan, const OverlapSource& overlap, const AllSource& all);
+std::vector<Candidate> runPrefilter(const PrefilterPlan& plan, const OverlapSource& overlap, const AllSource& all);
 
 // {"all":true} | {"none":true} | {"overlap":{"descriptor","lo","hi","lo_included","hi_included",
 // "wide_strict"}} | {"and":[...]} | {"or":[...]}

@@ -33,14 +33,29 @@ bool better(const LinguisticHit& a, const LinguisticHit& b) {
 class Scorer {
  public:
   Scorer(const Store& store, const LinguisticQuery& query, const LinguisticSearchOptions& options)
-      : store_(store), query_(query), options_(options),
+      : store_(store), query_(query), options_(options), limit_(static_cast<size_t>(std::max(1, options.limit))),
         cut_(std::max(options.threshold, query.atLeast)), start_(Clock::now()) {}
 
-  void scoreAll(const std::string& kind, const std::vector<int64_t>& ids) {
-    for (size_t from = 0; from < ids.size(); from += kChunk) {
+  // Scores `candidates` of `kind`; bounded: best bound first, stopping where no bound can win.
+  void score(const std::string& kind, std::vector<Candidate> candidates, bool bounded) {
+    candidates_ += candidates.size();
+    if (bounded)
+      std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+        return a.bound != b.bound ? a.bound > b.bound : a.id < b.id;
+      });
+    const size_t chunkSize = bounded ? kBoundedChunk : kChunk;
+    std::vector<int64_t> chunk;
+    bool stop = false;
+    for (size_t next = 0; next < candidates.size() && !stop;) {
       checkTime();
-      const std::vector<int64_t> chunk(ids.begin() + static_cast<std::ptrdiff_t>(from),
-                                       ids.begin() + static_cast<std::ptrdiff_t>(std::min(ids.size(), from + kChunk)));
+      chunk.clear();
+      for (; next < candidates.size() && chunk.size() < chunkSize; ++next) {
+        if (bounded && !canEnter(candidates[next])) {  // sorted: no later one can either
+          stop = true;
+          break;
+        }
+        chunk.push_back(candidates[next].id);
+      }
       for (const IndexedObject& object : store_.indexedObjects(kind, chunk)) {
         try {
           keep(kind, object, kind == "part" ? scorePart(object) : scoreStoredShape(object));
@@ -49,17 +64,33 @@ class Scorer {
         }
       }
       scored_ += chunk.size();
+      trim();
     }
   }
 
   LinguisticSearchResult result() {
-    const size_t n = std::min(hits_.size(), static_cast<size_t>(std::max(0, options_.limit)));
-    std::partial_sort(hits_.begin(), hits_.begin() + static_cast<std::ptrdiff_t>(n), hits_.end(), better);
-    hits_.resize(n);
-    return {std::move(hits_), scored_};
+    trim();
+    return {std::move(hits_), candidates_, scored_};
   }
 
  private:
+  static constexpr size_t kBoundedChunk = 64;  // small: the bound of the next one may stop it
+
+  // Whether a candidate with this bound could still be among the results.
+  bool canEnter(const Candidate& c) const {
+    if (c.bound < cut_ || !(c.bound > 0)) return false;
+    if (hits_.size() < limit_) return true;
+    const LinguisticHit& kth = hits_.back();
+    return c.bound > kth.score.score || (c.bound == kth.score.score && c.id < kth.id);
+  }
+
+  // Keeps the best `limit` hits, sorted.
+  void trim() {
+    const size_t n = std::min(hits_.size(), limit_);
+    std::partial_sort(hits_.begin(), hits_.begin() + static_cast<std::ptrdiff_t>(n), hits_.end(), better);
+    hits_.resize(n);
+  }
+
   QueryScore scorePart(const IndexedObject& object) {
     if (!object.pending && !object.components.empty())
       return scoreDescriptors(query_, decodeDescriptorValues(object.components.front().second));
@@ -90,10 +121,11 @@ class Scorer {
   const Store& store_;
   const LinguisticQuery& query_;
   const LinguisticSearchOptions& options_;
+  const size_t limit_;
   const double cut_;
   const Clock::time_point start_;
   std::vector<LinguisticHit> hits_;
-  size_t scored_ = 0;
+  size_t candidates_ = 0, scored_ = 0;
 };
 
 nlohmann::json hitJson(const LinguisticHit& hit) {
@@ -112,15 +144,21 @@ LinguisticSearchResult searchLinguistic(const Store& store, const LinguisticQuer
                                         const LinguisticSearchOptions& options) {
   Scorer scorer(store, query, options);
   for (const std::string& kind : options.kinds) {
-    const AllSource all = [&store, &kind] { return store.objectIds(kind); };
     if (options.scan) {
-      scorer.scoreAll(kind, all());
+      std::vector<Candidate> everything;
+      for (int64_t id : store.objectIds(kind)) everything.push_back({id, 1.0});
+      scorer.score(kind, std::move(everything), false);
       continue;
     }
+    const AllSource all = [&store, &kind] { return store.objectIds(kind); };
     const OverlapSource overlap = [&store, &kind](const SupportTest& t) {
-      return store.descriptorCandidates(kind, {t.descriptor, t.lo, t.hi, t.loIncluded, t.hiIncluded, t.wideStrict});
+      std::vector<SupportRow> rows;
+      for (const DescriptorCandidate& c : store.descriptorCandidates(
+               kind, {t.descriptor, t.lo, t.hi, t.loIncluded, t.hiIncluded, t.wideStrict}))
+        rows.push_back({c.id, c.supportLo, c.supportHi, c.pending});
+      return rows;
     };
-    scorer.scoreAll(kind, runPrefilter(prefilterPlan(query, kind), overlap, all));
+    scorer.score(kind, runPrefilter(prefilterPlan(query, kind), overlap, all), true);
   }
   return scorer.result();
 }
@@ -175,6 +213,7 @@ nlohmann::json linguisticQueryResponse(const Store& store, const nlohmann::json&
   return {{"parsed", toJson(query)},
           {"results", results},
           {"candidates", found.candidates},
+          {"scored", found.scored},
           {"scan", options.scan},
           {"millis", millisSince(start)}};
 }

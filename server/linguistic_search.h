@@ -7,9 +7,12 @@
 //   on its components (the leaves of its resolved tree, references expanded). A result has a
 //   score > 0, >= the request's threshold and >= the query's "at least"; results are in
 //   descending score, ties by ascending id; at most `limit`.
-// - Indexed path (default): only the candidates of the prefilter plan
-//   (query/descriptor_prefilter.h) run in the store's descriptor index are scored. Scan path
-//   (`scan`): every object of the kinds is scored. Both give the same results exactly (same ids,
+// - Indexed path (default): the candidates of the prefilter plan (query/descriptor_prefilter.h)
+//   run in the store's descriptor index, each with a bound >= its score from the supports the
+//   index returns, are scored best bound first (ties by id), and scoring stops at the first
+//   candidate whose bound cannot beat the `limit`-th best score so far (nor reach the cut), so a
+//   selective or top-heavy query reads the values of a few objects only. Scan path (`scan`):
+//   every object of the kinds is scored. Both give the same results exactly (same ids,
 //   scores, order): the plan only drops objects that score 0, and both score the same values
 //   (a part's row holds describePart's exact values; pending objects are described from their
 //   documents on both paths).
@@ -42,7 +45,8 @@ struct LinguisticHit {
 
 struct LinguisticSearchResult {
   std::vector<LinguisticHit> hits;
-  size_t candidates = 0;  // objects scored
+  size_t candidates = 0;  // objects the prefilter kept (the scan: all)
+  size_t scored = 0;      // objects scored exactly
 };
 
 LinguisticSearchResult searchLinguistic(const Store& store, const LinguisticQuery& query,
@@ -58,7 +62,7 @@ struct LinguisticRequestLimits {
 };
 
 // The whole request {"text","limit","threshold","kind","scan"} -> {"parsed","results",
-// "candidates","scan","millis"}: validation (invalid_parameter / invalid_document naming the
+// "candidates","scored","scan","millis"}: validation (invalid_parameter / invalid_document naming the
 // field), parsing with the active vocabulary (query/vocabulary.h), search; "parsed" is
 // toJson(query) of query/linguistic_query.h. Shared by POST /query/linguistic and
 // `fsdb query --db`.

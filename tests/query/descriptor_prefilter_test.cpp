@@ -121,11 +121,19 @@ TEST(DescriptorPrefilter, AggregationsThatNeedEveryChild) {
   EXPECT_FALSE(aggregationNeedsAll("something new"));
 }
 
+std::vector<int64_t> idsOf(const std::vector<Candidate>& candidates) {
+  std::vector<int64_t> ids;
+  for (const Candidate& c : candidates) ids.push_back(c.id);
+  return ids;
+}
+
 TEST(DescriptorPrefilter, RunIntersectsAndUnites) {
-  const OverlapSource overlap = [](const SupportTest& t) -> std::vector<int64_t> {
-    const std::string& d = t.descriptor;
-    if (d == "bendness") return {1, 3, 5, 7};
-    if (d == "size") return {3, 4, 5};
+  // bendness rows: crisp values (id 1: 0.5, id 3: 0.25 twice for two components, id 5: 1, id 7:
+  // pending); size rows: wide [0, 1] for 3, 4, 5.
+  const OverlapSource overlap = [](const SupportTest& t) -> std::vector<SupportRow> {
+    if (t.descriptor == "bendness")
+      return {{1, 0.5, 0.5, false}, {3, 0.25, 0.25, false}, {3, 0.75, 0.75, false}, {5, 1, 1, false}, {7, 0, 0, true}};
+    if (t.descriptor == "size") return {{3, 0, 1, false}, {4, 0, 1, false}, {5, 0, 0.5, false}};
     return {};
   };
   int allCalls = 0;
@@ -134,16 +142,54 @@ TEST(DescriptorPrefilter, RunIntersectsAndUnites) {
     return std::vector<int64_t>{1, 2, 3, 4, 5, 6, 7};
   };
   const QueryCondition bent = descriptor("bendness", 0, 0.5, 1), big = descriptor("size", 0, 0.5, 1);
-  EXPECT_EQ(runPrefilter(prefilterPlan(query(node(K::kAnd, {bent, big})), "part"), overlap, all),
-            (std::vector<int64_t>{3, 5}));
-  EXPECT_EQ(runPrefilter(prefilterPlan(query(node(K::kOr, {bent, big})), "part"), overlap, all),
-            (std::vector<int64_t>{1, 3, 4, 5, 7}));
+  const std::vector<Candidate> both = runPrefilter(prefilterPlan(query(node(K::kAnd, {bent, big})), "part"), overlap, all);
+  EXPECT_EQ(idsOf(both), (std::vector<int64_t>{3, 5}));
+  // Bounds: 3 = min(max(μ(0.25), μ(0.75)) = 0.5, ∫_0^1 μ / |B| = 1); 5 = min(μ(1) = 0, 0.5).
+  EXPECT_NEAR(both[0].bound, 0.5, 1e-8);
+  EXPECT_NEAR(both[1].bound, 0.0, 1e-8);
+  const std::vector<Candidate> either = runPrefilter(prefilterPlan(query(node(K::kOr, {bent, big})), "part"), overlap, all);
+  EXPECT_EQ(idsOf(either), (std::vector<int64_t>{1, 3, 4, 5, 7}));
+  EXPECT_NEAR(either[0].bound, 1.0, 1e-8);  // μ(0.5) = 1
+  EXPECT_EQ(either[4].bound, 1.0);          // pending
   EXPECT_EQ(allCalls, 0);
   EXPECT_EQ(runPrefilter(prefilterPlan(query(node(K::kNot, {bent})), "part"), overlap, all).size(), 7u);
   EXPECT_EQ(allCalls, 1);
   EXPECT_TRUE(runPrefilter(prefilterPlan(query(node(K::kAnd, {bent, descriptor("twistness", 0, 0, 1)})), "part"),
                            overlap, all)
                   .empty());
+}
+
+TEST(DescriptorPrefilter, MembershipIntegral) {
+  const FuzzyNumber t = FuzzyNumber::trapezoidal(0, 1, 2, 4);
+  EXPECT_DOUBLE_EQ(membershipIntegral(t, -10, 10), t.cardinality());
+  EXPECT_DOUBLE_EQ(membershipIntegral(t, 0, 1), 0.5);
+  EXPECT_DOUBLE_EQ(membershipIntegral(t, 1.5, 3), 0.5 + 0.75);
+  EXPECT_DOUBLE_EQ(membershipIntegral(t, 5, 6), 0.0);
+  EXPECT_DOUBLE_EQ(membershipIntegral(FuzzyNumber::crisp(1), 0, 2), 0.0);
+}
+
+// Every bound is >= the similarity it bounds, for random values and sets.
+TEST(DescriptorPrefilter, BoundsAreAtLeastTheScores) {
+  std::mt19937 rng(23);
+  int tight = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double u = testing::uniform(rng, 0, 1);
+    const FuzzyNumber value = u < 0.3 ? FuzzyNumber::crisp(testing::uniform(rng, -8, 8))
+                              : u < 0.7 ? testing::randomTriangular(rng, true)
+                                        : testing::randomConvexPoints(rng);
+    const FuzzyNumber set = i % 5 == 0 ? FuzzyNumber::crisp(std::round(testing::uniform(rng, -8, 8)))
+                                       : testing::randomTrapezoidal(rng);
+    const PrefilterPlan leaf = prefilterPlan(query(descriptor("d", 0, 0, 0)), "part");
+    PrefilterPlan plan = leaf;
+    plan.test = supportTest("d", set);
+    plan.set = set;
+    const Interval s = value.support();
+    const double bound = scoreBound(plan, {1, s.lo, s.hi, false});
+    const double score = similarity(value, set);
+    EXPECT_GE(bound, score) << "value [" << s.lo << ", " << s.hi << "]";
+    if (score > 0 && bound < 1) ++tight;
+  }
+  EXPECT_GT(tight, 1000);
 }
 
 }  // namespace

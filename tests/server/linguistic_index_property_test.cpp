@@ -165,16 +165,29 @@ std::vector<std::string> grammarExamples() {
   return out;
 }
 
+void expectSameAnswers(const Store& store, const LinguisticQuery& query, double threshold, int limit,
+                       const std::string& what, size_t* pruned);
+
+// With limit 1000 (everything) and with small limits, where the indexed search stops early on
+// its score bounds.
 void expectSameAnswers(const Store& store, const LinguisticQuery& query, double threshold, const std::string& what,
                        size_t* pruned) {
+  for (int limit : {1000, 1, 3}) {
+    SCOPED_TRACE("limit " + std::to_string(limit));
+    expectSameAnswers(store, query, threshold, limit, what, pruned);
+  }
+}
+
+void expectSameAnswers(const Store& store, const LinguisticQuery& query, double threshold, int limit,
+                       const std::string& what, size_t* pruned) {
   LinguisticSearchOptions options;
-  options.limit = 1000;
+  options.limit = limit;
   options.threshold = threshold;
   options.kinds = searchKinds(query, "");
   const LinguisticSearchResult indexed = searchLinguistic(store, query, options);
   options.scan = true;
   const LinguisticSearchResult scanned = searchLinguistic(store, query, options);
-  if (indexed.candidates < scanned.candidates) ++*pruned;
+  if (indexed.scored < scanned.scored) ++*pruned;
   ASSERT_EQ(indexed.hits.size(), scanned.hits.size()) << what;
   for (size_t i = 0; i < indexed.hits.size(); ++i) {
     const LinguisticHit &a = indexed.hits[i], &b = scanned.hits[i];
