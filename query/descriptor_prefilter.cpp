@@ -118,12 +118,12 @@ double membershipIntegral(const FuzzyNumber& set, double lo, double hi) {
   return area;
 }
 
-double scoreBound(const PrefilterPlan& leaf, const SupportRow& row) {
-  if (row.pending) return 1;
-  if (row.supportLo == row.supportHi) return raised(leaf.set.membership(row.supportLo));
+double scoreBound(const PrefilterPlan& leaf, double supportLo, double supportHi, bool pending) {
+  if (pending) return 1;
+  if (supportLo == supportHi) return raised(leaf.set.membership(supportLo));
   const double setArea = leaf.set.cardinality();
   if (!(setArea > 0)) return 1;
-  return raised(membershipIntegral(leaf.set, row.supportLo, row.supportHi) / setArea * (1 + kSlack));
+  return raised(membershipIntegral(leaf.set, supportLo, supportHi) / setArea * (1 + kSlack));
 }
 
 bool aggregationNeedsAll(const std::string& aggregation) {
@@ -151,10 +151,9 @@ std::vector<Candidate> runPrefilter(const PrefilterPlan& plan, const OverlapSour
     case Kind::kOverlap: {
       // One candidate per object: the largest bound of its rows (a shape's best component).
       std::vector<Candidate> out;
-      for (const SupportRow& row : overlap(plan.test)) {
-        const double bound = scoreBound(plan, row);
-        if (!out.empty() && out.back().id == row.id) out.back().bound = std::max(out.back().bound, bound);
-        else out.push_back({row.id, bound});
+      for (const Candidate& row : overlap(plan)) {
+        if (!out.empty() && out.back().id == row.id) out.back().bound = std::max(out.back().bound, row.bound);
+        else out.push_back(row);
       }
       return out;
     }

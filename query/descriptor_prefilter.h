@@ -60,21 +60,15 @@ struct PrefilterPlan {
   std::vector<PrefilterPlan> children;  // kAnd, kOr: two or more
 };
 
-// A component row the index found for a kOverlap (its support), or a pending object.
-struct SupportRow {
-  int64_t id = 0;
-  double supportLo = 0, supportHi = 0;
-  bool pending = false;
-};
-
 // A candidate and a bound >= its score.
 struct Candidate {
   int64_t id = 0;
   double bound = 1;
 };
 
-// The bound of one kOverlap leaf for one row (see above).
-double scoreBound(const PrefilterPlan& leaf, const SupportRow& row);
+// The bound of one kOverlap leaf for a component row with support [supportLo, supportHi] found
+// by the index, or for a pending object (see above).
+double scoreBound(const PrefilterPlan& leaf, double supportLo, double supportHi, bool pending);
 // ∫_lo^hi μ(x) dx, exact for the piecewise-linear membership.
 double membershipIntegral(const FuzzyNumber& set, double lo, double hi);
 
@@ -84,9 +78,11 @@ bool aggregationNeedsAll(const std::string& aggregation);
 // The plan for objects of `kind` ("part" or "shape").
 PrefilterPlan prefilterPlan(const LinguisticQuery& query, const std::string& kind);
 
-// The candidates of `plan` by id, with bounds: kOverlap through `overlap(test)` (rows by id),
-// kAll through `all()` (sorted ids, bound 1), kAnd as the intersection, kOr as the union.
-using OverlapSource = std::function<std::vector<SupportRow>(const SupportTest& test)>;
+// The candidates of `plan` by id, with bounds: kOverlap through `overlap(leaf)` (one candidate
+// per row the index finds for leaf.test, by id, bounded with scoreBound; the rows of one object
+// merge into its largest bound), kAll through `all()` (sorted ids, bound 1), kAnd as the
+// intersection, kOr as the union.
+using OverlapSource = std::function<std::vector<Candidate>(const PrefilterPlan& leaf)>;
 using AllSource = std::function<std::vector<int64_t>()>;
 std::vector<Candidate> runPrefilter(const PrefilterPlan& plan, const OverlapSource& overlap, const AllSource& all);
 

@@ -151,11 +151,12 @@ LinguisticSearchResult searchLinguistic(const Store& store, const LinguisticQuer
       continue;
     }
     const AllSource all = [&store, &kind] { return store.objectIds(kind); };
-    const OverlapSource overlap = [&store, &kind](const SupportTest& t) {
-      std::vector<SupportRow> rows;
+    const OverlapSource overlap = [&store, &kind](const PrefilterPlan& leaf) {
+      const SupportTest& t = leaf.test;
+      std::vector<Candidate> rows;
       for (const DescriptorCandidate& c : store.descriptorCandidates(
                kind, {t.descriptor, t.lo, t.hi, t.loIncluded, t.hiIncluded, t.wideStrict}))
-        rows.push_back({c.id, c.supportLo, c.supportHi, c.pending});
+        rows.push_back({c.id, scoreBound(leaf, c.supportLo, c.supportHi, c.pending)});
       return rows;
     };
     scorer.score(kind, runPrefilter(prefilterPlan(query, kind), overlap, all), true);

@@ -130,11 +130,19 @@ std::vector<int64_t> idsOf(const std::vector<Candidate>& candidates) {
 TEST(DescriptorPrefilter, RunIntersectsAndUnites) {
   // bendness rows: crisp values (id 1: 0.5, id 3: 0.25 twice for two components, id 5: 1, id 7:
   // pending); size rows: wide [0, 1] for 3, 4, 5.
-  const OverlapSource overlap = [](const SupportTest& t) -> std::vector<SupportRow> {
-    if (t.descriptor == "bendness")
-      return {{1, 0.5, 0.5, false}, {3, 0.25, 0.25, false}, {3, 0.75, 0.75, false}, {5, 1, 1, false}, {7, 0, 0, true}};
-    if (t.descriptor == "size") return {{3, 0, 1, false}, {4, 0, 1, false}, {5, 0, 0.5, false}};
-    return {};
+  struct Row {
+    int64_t id;
+    double lo, hi;
+    bool pending;
+  };
+  const OverlapSource overlap = [](const PrefilterPlan& leaf) {
+    std::vector<Row> rows;
+    if (leaf.test.descriptor == "bendness")
+      rows = {{1, 0.5, 0.5, false}, {3, 0.25, 0.25, false}, {3, 0.75, 0.75, false}, {5, 1, 1, false}, {7, 0, 0, true}};
+    if (leaf.test.descriptor == "size") rows = {{3, 0, 1, false}, {4, 0, 1, false}, {5, 0, 0.5, false}};
+    std::vector<Candidate> out;
+    for (const Row& r : rows) out.push_back({r.id, scoreBound(leaf, r.lo, r.hi, r.pending)});
+    return out;
   };
   int allCalls = 0;
   const AllSource all = [&allCalls] {
@@ -184,7 +192,7 @@ TEST(DescriptorPrefilter, BoundsAreAtLeastTheScores) {
     plan.test = supportTest("d", set);
     plan.set = set;
     const Interval s = value.support();
-    const double bound = scoreBound(plan, {1, s.lo, s.hi, false});
+    const double bound = scoreBound(plan, s.lo, s.hi, false);
     const double score = similarity(value, set);
     EXPECT_GE(bound, score) << "value [" << s.lo << ", " << s.hi << "]";
     if (score > 0 && bound < 1) ++tight;
