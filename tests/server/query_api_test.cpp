@@ -156,6 +156,19 @@ TEST(QueryApi, Errors) {
   EXPECT_EQ(server.get("/query/linguistic").status, 405);
 }
 
+TEST(QueryApi, QueryTimeLimit) {
+  ServerProcess server({"--max-query-ms", "1"});
+  std::string body;
+  for (int i = 0; i < 3000; ++i) body += part("p" + std::to_string(i), 0.001 * (i % 100)).dump() + "\n";
+  ASSERT_EQ(server.post("/parts/bulk", body, "application/x-ndjson").status, 200);
+  // Scoring 3000 parts takes longer than 1 ms: 413 naming the limit, and the server keeps serving.
+  auto r = server.post("/query/linguistic", json{{"text", "find shapes that are not twisted"}, {"scan", true}});
+  EXPECT_EQ(r.status, 413) << r.body;
+  EXPECT_EQ(r.json["error"]["code"], "limit_exceeded");
+  EXPECT_NE(r.json["error"]["message"].get<std::string>().find("max_query_ms=1"), std::string::npos) << r.body;
+  EXPECT_EQ(server.get("/health").status, 200);
+}
+
 TEST(QueryCli, DatabaseFileAndServer) {
   TempDir dir;
   const std::string db = dir.file("cli.sqlite");
