@@ -639,20 +639,25 @@ std::vector<PendingDescriptors> Store::pendingDescriptors(int64_t afterId, int l
   return pending;
 }
 
-bool Store::replaceDescriptors(const PendingDescriptors& pending, const std::vector<DescriptorComponent>& components) {
+size_t Store::replaceDescriptors(
+    const std::vector<std::pair<PendingDescriptors, std::vector<DescriptorComponent>>>& refreshed) {
   Impl::Lease connection(*impl_);
   Transaction transaction(*connection);
-  {
-    auto statement = (*connection).prepare("SELECT generation FROM descriptor_pending WHERE object_id = ?1");
-    statement->bind(1, pending.id);
-    if (!statement->step() || statement->columnInt(0) != pending.generation) return false;
+  size_t replaced = 0;
+  for (const auto& [pending, components] : refreshed) {
+    {
+      auto statement = (*connection).prepare("SELECT generation FROM descriptor_pending WHERE object_id = ?1");
+      statement->bind(1, pending.id);
+      if (!statement->step() || statement->columnInt(0) != pending.generation) continue;
+    }
+    auto row = objectRow(*connection, pending.id);
+    if (!row) continue;
+    writeDescriptorRows(*connection, pending.id, row->kind, components);
+    clearDescriptorsPending(*connection, pending.id);
+    ++replaced;
   }
-  auto row = objectRow(*connection, pending.id);
-  if (!row) return false;
-  writeDescriptorRows(*connection, pending.id, row->kind, components);
-  clearDescriptorsPending(*connection, pending.id);
   transaction.commit();
-  return true;
+  return replaced;
 }
 
 std::optional<CachedEvaluation> Store::cachedEvaluation(const std::string& key) const {

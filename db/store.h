@@ -232,10 +232,12 @@ class Store {
   std::vector<DescriptorComponent> descriptorRows(int64_t id) const;
   // Pending objects with id > afterId, by id, at most `limit`.
   std::vector<PendingDescriptors> pendingDescriptors(int64_t afterId = 0, int limit = 1000) const;
-  // Replaces the rows of `pending.id` and clears its mark, but only when it is still pending with
-  // the same generation (a write since then marked it again or wrote fresh rows): returns whether
-  // it did. The caller computes `components` from documents it read after pendingDescriptors.
-  bool replaceDescriptors(const PendingDescriptors& pending, const std::vector<DescriptorComponent>& components);
+  // For each (pending object, its rows): replaces the rows and clears the mark, but only when the
+  // object is still pending with the same generation (a write since then marked it again or wrote
+  // fresh rows). One transaction for all; returns how many it replaced. The caller computes the
+  // rows from documents it read after pendingDescriptors.
+  size_t replaceDescriptors(
+      const std::vector<std::pair<PendingDescriptors, std::vector<DescriptorComponent>>>& refreshed);
 
   std::optional<CachedEvaluation> cachedEvaluation(const std::string& key) const;
   void storeEvaluation(int64_t objectId, const std::string& key, const CachedEvaluation& value);

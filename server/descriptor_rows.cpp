@@ -134,18 +134,20 @@ size_t refreshPendingDescriptors(Store& store, size_t maxNodes) {
   for (;;) {
     const std::vector<PendingDescriptors> batch = store.pendingDescriptors(after, 500);
     if (batch.empty()) break;
+    std::vector<std::pair<PendingDescriptors, std::vector<DescriptorComponent>>> rows;
     for (const PendingDescriptors& pending : batch) {
       after = pending.id;
       try {
         // Read after pendingDescriptors: a write since then gave a new generation, and
         // replaceDescriptors refuses the rows computed here.
         const StoredObject object = store.get(pending.kind, pending.id);
-        if (store.replaceDescriptors(pending, rowsOfDocument(store, object, maxNodes))) ++refreshed;
+        rows.emplace_back(pending, rowsOfDocument(store, object, maxNodes));
       } catch (const Error& e) {
         if (e.code() == std::string(errc::kNotFound)) continue;  // deleted meanwhile
         spdlog::warn("descriptor index: {} {} stays pending: {}", pending.kind, pending.id, e.what());
       }
     }
+    refreshed += store.replaceDescriptors(rows);  // one transaction per batch
   }
   return refreshed;
 }

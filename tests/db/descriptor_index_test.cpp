@@ -175,11 +175,11 @@ TEST_F(DescriptorIndexTest, ReferencesAndNewVersionsMarkPending) {
   auto pending = store->pendingDescriptors();
   ASSERT_EQ(pending.size(), 1u);
   EXPECT_EQ(pending[0].kind, "shape");
-  EXPECT_TRUE(store->replaceDescriptors(pending[0], {component(0, 0.25, 0.3)}));
+  EXPECT_EQ(store->replaceDescriptors({{pending[0], {component(0, 0.25, 0.3)}}}), 1u);
   EXPECT_TRUE(pendingIds(*store).empty());
   EXPECT_TRUE(ids(*store, "shape", {"bendness", 0.9, 1.0}).empty());
   EXPECT_FALSE(store->indexedObjects("shape", {frame})[0].pending);
-  EXPECT_FALSE(store->replaceDescriptors(pending[0], {}));  // no longer pending
+  EXPECT_EQ(store->replaceDescriptors({{pending[0], {}}}), 0u);  // no longer pending
 
   // A new version of the bolt changes the frame's components: the frame is pending again, the
   // plain part (not reaching the bolt) is not.
@@ -188,10 +188,10 @@ TEST_F(DescriptorIndexTest, ReferencesAndNewVersionsMarkPending) {
   const auto stale = store->pendingDescriptors();
   // Another write in between gives a new generation: the stale recomputation is refused.
   store->put(bolt, part("bolt", 0.9, 1.0, ",\"v\":3"));
-  EXPECT_FALSE(store->replaceDescriptors(stale[0], {component(0, 0.0, 0.1)}));
+  EXPECT_EQ(store->replaceDescriptors({{stale[0], {component(0, 0.0, 0.1)}}}), 0u);
   const auto fresh = store->pendingDescriptors();
   EXPECT_GT(fresh[0].generation, stale[0].generation);
-  EXPECT_TRUE(store->replaceDescriptors(fresh[0], {component(0, 0.9, 1.0)}));
+  EXPECT_EQ(store->replaceDescriptors({{fresh[0], {component(0, 0.9, 1.0)}}}), 1u);
   EXPECT_EQ(ids(*store, "shape", {"bendness", 0.95, 0.95}), std::vector<int64_t>{frame});
 
   // A put that writes the object's own rows without references clears its mark.
