@@ -128,6 +128,16 @@ Interval descriptorRange(int index, const PartBox& box) {
 }
 
 std::vector<DescriptorValue> describePart(const FuzzyPart& part) {
+  const auto& names = descriptorNames();
+  std::vector<DescriptorValue> values;
+  // A crisp part (every value a descriptor reads crisp) has crisp values: one evaluation each.
+  if (part.eps1.isCrisp() && part.eps2.isCrisp() && part.a1.isCrisp() && part.a2.isCrisp() && part.a3.isCrisp() &&
+      part.kx.isCrisp() && part.ky.isCrisp() && part.kv.isCrisp() && part.t.isCrisp() && part.scale.isCrisp()) {
+    const PlacedSuperquadric crisp = part.coreRepresentative();
+    for (size_t i = 0; i < names.size(); ++i)
+      values.push_back({names[i], FuzzyNumber::crisp(descriptorDegree(static_cast<int>(i), crisp))});
+    return values;
+  }
   std::vector<double> levels = part.breakpointLevels();
   for (int k = 0; k <= kDescriptorLevels; ++k) levels.push_back(static_cast<double>(k) / kDescriptorLevels);
   std::sort(levels.begin(), levels.end());
@@ -136,8 +146,6 @@ std::vector<DescriptorValue> describePart(const FuzzyPart& part) {
   boxes.reserve(levels.size());
   for (double a : levels) boxes.push_back(part.boxAt(a));
 
-  std::vector<DescriptorValue> values;
-  const auto& names = descriptorNames();
   for (size_t i = 0; i < names.size(); ++i) {
     std::vector<Interval> cuts;
     cuts.reserve(levels.size());

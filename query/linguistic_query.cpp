@@ -31,10 +31,14 @@ struct Token {
 const std::vector<std::string>& grammarWords() {
   static const std::vector<std::string> words = {
       "find", "show", "search", "for", "get", "list", "a", "an", "the", "any", "some", "all",
-      "that", "which", "is", "are", "and", "or", "not", "to", "of", "with", "score", "at", "least",
+      "that", "which", "is", "are", "has", "have", "and", "or", "not", "to", "of", "with", "score", "at", "least", "most",
+      "using", "min", "product", "mean",
       "exactly", "about", "around", "approximately", "roughly", "between"};
   return words;
 }
+
+// The deepest nesting of parentheses and "not" a query may have.
+constexpr int kMaxNesting = 64;
 
 const std::vector<std::string> kVerbs = {"find", "show", "search", "get", "list"};
 const std::vector<std::string> kArticles = {"a", "an", "the", "any", "some", "all"};
@@ -98,18 +102,37 @@ QueryCondition descriptorCondition(const std::string& descriptor, FuzzyNumber se
   return c;
 }
 
+// The membership restricted to [0, 1] (the degrees a descriptor can take): pieces crossing 0 or
+// 1 are cut there, the ends become vertical sides. The core must meet [0, 1] (checked before).
+FuzzyNumber restrictedToUnit(const FuzzyNumber& set) {
+  const std::vector<Breakpoint>& p = set.breakpoints();
+  std::vector<Breakpoint> out;
+  for (size_t i = 0; i < p.size(); ++i) {
+    if (i > 0)
+      for (double cut : {0.0, 1.0})
+        if ((p[i - 1].x < cut && p[i].x > cut) || (p[i - 1].x > cut && p[i].x < cut)) {
+          const double t = (cut - p[i - 1].x) / (p[i].x - p[i - 1].x);
+          out.push_back({cut, p[i - 1].mu + t * (p[i].mu - p[i - 1].mu)});
+        }
+    if (p[i].x >= 0.0 && p[i].x <= 1.0) out.push_back(p[i]);
+  }
+  return FuzzyNumber::fromPoints(out);
+}
+
 // The set of a low-pole adjective: d -> 1 - d (exact: negation and a crisp shift).
 FuzzyNumber mirrored(const FuzzyNumber& set) { return add(negate(set), FuzzyNumber::crisp(1.0)); }
 
 class Parser {
  public:
   Parser(const std::string& text, const Vocabulary& vocabulary)
-      : text_(text), v_(vocabulary), tokens_(tokenize(text)) {
-    for (const auto* list : {&grammarWords()}) known_.insert(list->begin(), list->end());
-    for (const auto& list : {v_.intensityWords(), v_.adjectiveWords(), v_.nounWords(), v_.directionWords(),
-                             v_.distanceWords()})
-      for (const std::string& phrase : list) splitInto(phrase, &known_);
-  }
+      : text_(text),
+        v_(vocabulary),
+        tokens_(tokenize(text)),
+        intensityWords_(vocabulary.intensityWords()),
+        adjectiveWords_(vocabulary.adjectiveWords()),
+        nounWords_(vocabulary.nounWords()),
+        directionWords_(vocabulary.directionWords()),
+        distanceWords_(vocabulary.distanceWords()) {}
 
   LinguisticQuery parse() {
     LinguisticQuery q;
@@ -134,7 +157,10 @@ class Parser {
     } else {
       q.root = std::move(first);
     }
-    if (acceptWord("with")) expectWord("score");
+    if (acceptWord("with")) {
+      expectWord("score");
+      if (!at("at")) fail({"'at least' NUMBER"});
+    }
     if (at("at")) {
       ++pos_;
       expectWord("least");
@@ -147,11 +173,57 @@ class Parser {
       q.atLeast = threshold;
       ++pos_;
     }
+    // aggregation = "using" ( "min" | "product" | "mean" ): how "and" combines scores
+    if (acceptWord("using")) {
+      if (pos_ >= tokens_.size() || !v_.isAggregation(tokens_[pos_].text))
+        fail({"an aggregation (" + joinList(v_.aggregationNames()) + ")"});
+      q.aggregation = tokens_[pos_++].text;
+    }
     if (pos_ < tokens_.size())
-      fail({"'and'", "'or'", "'that is'", "'at least' NUMBER", "a distance and a direction (" +
-                                                                    joinList(v_.directionWords()) + ")",
-            "the end of the query"});
+      fail({"'and'", "'or'", "'that is'", "'at least' NUMBER", "'using' AGGREGATION",
+            "a distance and a direction (" + joinList(directionWords_) + ")", "the end of the query"});
     return q;
+  }
+
+  // part_description = [ article ] { [ intensity ] adjective [ "," | "and" ] } noun
+  PartDescription partDescription() {
+    PartDescription d;
+    if (tokens_.empty()) fail({"words such as 'a slightly bent cylinder'"});
+    acceptAny(kArticles);
+    std::string word;
+    while (true) {
+      const size_t start = pos_;
+      const FuzzyNumber* intensity = nullptr;
+      if (size_t n = matchPhrase(intensityWords_, &word)) {
+        intensity = v_.intensity(word);
+        pos_ += n;
+      }
+      const size_t n = matchPhrase(adjectiveWords_, &word);
+      if (n == 0) {
+        if (intensity) fail({"an adjective (" + joinList(adjectiveWords_) + ")"});
+        break;
+      }
+      pos_ += n;
+      d.adjectives.push_back({v_.adjective(word), intensity, span(start, pos_)});
+      if (acceptWord(",") || acceptWord("and")) {
+        std::string next;
+        if (!matchPhrase(intensityWords_, &next) && !matchPhrase(adjectiveWords_, &next))
+          fail({"an intensity (" + joinList(intensityWords_) + ")", "an adjective (" + joinList(adjectiveWords_) + ")"});
+      }
+    }
+    const size_t n = matchPhrase(nounWords_, &word);
+    if (n == 0) {
+      std::vector<std::string> expected = {"a noun (" + joinList(nounWords_) + ")"};
+      if (d.adjectives.empty()) {
+        const std::vector<std::string> starts = conditionStarts();  // 'not', '(', intensity, adjective
+        expected.insert(expected.begin(), starts.begin() + 2, starts.begin() + 4);
+      }
+      fail(expected);
+    }
+    pos_ += n;
+    d.noun = v_.noun(word);
+    if (pos_ < tokens_.size()) fail({"the end of the description (a part is adjectives and one noun)"});
+    return d;
   }
 
  private:
@@ -169,16 +241,6 @@ class Parser {
   }
   void expectWord(const std::string& w) {
     if (!acceptWord(w)) fail({"'" + w + "'"});
-  }
-
-  static void splitInto(const std::string& phrase, std::set<std::string>* words) {
-    size_t i = 0;
-    while (i < phrase.size()) {
-      size_t j = phrase.find(' ', i);
-      if (j == std::string::npos) j = phrase.size();
-      if (j > i) words->insert(phrase.substr(i, j - i));
-      i = j + 1;
-    }
   }
 
   // The longest phrase of `phrases` (words separated by one space) starting at the current
@@ -208,6 +270,10 @@ class Parser {
     return text_.substr(tokens_[from].offset, tokens_[to - 1].end - tokens_[from].offset);
   }
 
+  bool knows(const std::string& word) const {
+    return v_.knowsWord(word) || contains(grammarWords(), word) || descriptorIndex(word) >= 0;
+  }
+
   [[noreturn]] void fail(const std::vector<std::string>& expected) const {
     if (pos_ >= tokens_.size())
       throw Error(errc::kInvalidParameter,
@@ -215,11 +281,15 @@ class Parser {
                       "); expected " + joinList(expected),
                   "text");
     const Token& t = tokens_[pos_];
-    if (!t.number && t.text.size() > 1 && std::isalpha(static_cast<unsigned char>(t.text[0])) && !known_.count(t.text))
+    if (!t.number && t.text.size() > 1 && std::isalpha(static_cast<unsigned char>(t.text[0])) && !knows(t.text)) {
+      std::vector<std::string> known(v_.words().begin(), v_.words().end());
+      known.insert(known.end(), grammarWords().begin(), grammarWords().end());
+      known.insert(known.end(), descriptorNames().begin(), descriptorNames().end());
       throw Error(errc::kInvalidParameter,
                   "unknown word '" + t.text + "' at character " + std::to_string(t.offset) + "; closest known words: " +
-                      closestNames(t.text, std::vector<std::string>(known_.begin(), known_.end())),
+                      closestNames(t.text, known),
                   "text");
+    }
     throw Error(errc::kInvalidParameter,
                 "unexpected '" + t.text + "' at character " + std::to_string(t.offset) + "; expected " + joinList(expected),
                 "text");
@@ -228,13 +298,15 @@ class Parser {
   // --- productions ----------------------------------------------------------------------------
   bool startsCondition() const {
     if (at("not") || at("(")) return true;
+    if (pos_ < tokens_.size() && descriptorIndex(tokens_[pos_].text) >= 0) return true;
     std::string m;
-    return matchPhrase(v_.intensityWords(), &m) > 0 || matchPhrase(v_.adjectiveWords(), &m) > 0;
+    return matchPhrase(intensityWords_, &m) > 0 || matchPhrase(adjectiveWords_, &m) > 0;
   }
 
   std::vector<std::string> conditionStarts() const {
-    return {"'not'", "'('", "an intensity (" + joinList(v_.intensityWords()) + ")",
-            "an adjective (" + joinList(v_.adjectiveWords()) + ")"};
+    return {"'not'", "'('", "an intensity (" + joinList(intensityWords_) + ")",
+            "an adjective (" + joinList(adjectiveWords_) + ")",
+            "a descriptor and its degree (" + joinList(descriptorNames()) + ")"};
   }
 
   // noun_phrase = [ article ] [ condition ] noun [ ("that"|"which") ("is"|"are") condition ]
@@ -246,11 +318,11 @@ class Parser {
     if (hasModifiers) parts.push_back(condition());
     std::string word;
     const size_t nounStart = pos_;
-    const size_t n = matchPhrase(v_.nounWords(), &word);
+    const size_t n = matchPhrase(nounWords_, &word);
     if (n == 0) {
       std::vector<std::string> expected;
       if (!hasModifiers) expected = conditionStarts();
-      expected.push_back("a noun (" + joinList(v_.nounWords()) + ")");
+      expected.push_back("a noun (" + joinList(nounWords_) + ")");
       fail(expected);
     }
     pos_ += n;
@@ -273,7 +345,11 @@ class Parser {
       }
     }
     if (acceptWord("that") || acceptWord("which")) {
-      if (!acceptWord("is") && !acceptWord("are")) fail({"'is'", "'are'"});
+      if (!acceptAny({"is", "are", "has", "have"})) fail({"'is'", "'are'", "'has'", "'have'"});
+      if (!startsCondition()) fail(conditionStarts());
+      parts.push_back(condition());
+    } else if (at("with") && !(pos_ + 1 < tokens_.size() && tokens_[pos_ + 1].text == "score")) {
+      ++pos_;
       if (!startsCondition()) fail(conditionStarts());
       parts.push_back(condition());
     }
@@ -323,6 +399,17 @@ class Parser {
 
   // negation = "not" negation | "(" condition ")" | [ intensity ] adjective
   QueryCondition negation() {
+    // Deep nesting ("((((..." or "not not not ...") would exhaust the stack: a limit instead.
+    struct Nesting {
+      int& depth;
+      explicit Nesting(int& d) : depth(++d) {}
+      ~Nesting() { --depth; }
+    } nesting(depth_);
+    if (depth_ > kMaxNesting)
+      throw Error(errc::kLimitExceeded,
+                  "the query nests conditions deeper than " + std::to_string(kMaxNesting) + " levels (at character " +
+                      std::to_string(tokens_[pos_].offset) + ")",
+                  "text");
     const size_t start = pos_;
     if (acceptWord("not")) {
       if (!startsCondition()) fail(conditionStarts());
@@ -338,14 +425,19 @@ class Parser {
       if (!acceptWord(")")) fail({"')'", "'and'", "'or'"});
       return inner;
     }
+    if (pos_ < tokens_.size() && descriptorIndex(tokens_[pos_].text) >= 0) {
+      const std::string descriptor = tokens_[pos_++].text;
+      FuzzyNumber set = degree();
+      return descriptorCondition(descriptor, std::move(set), span(start, pos_));
+    }
     std::string word;
     const FuzzyNumber* intensity = nullptr;
-    if (size_t n = matchPhrase(v_.intensityWords(), &word)) {
+    if (size_t n = matchPhrase(intensityWords_, &word)) {
       intensity = v_.intensity(word);
       pos_ += n;
     }
-    const size_t n = matchPhrase(v_.adjectiveWords(), &word);
-    if (n == 0) fail({"an adjective (" + joinList(v_.adjectiveWords()) + ")"});
+    const size_t n = matchPhrase(adjectiveWords_, &word);
+    if (n == 0) fail({"an adjective (" + joinList(adjectiveWords_) + ")"});
     pos_ += n;
     const Adjective& adjective = *v_.adjective(word);
     FuzzyNumber set = intensity ? *intensity : v_.plain();
@@ -358,16 +450,21 @@ class Parser {
     if (pos_ >= tokens_.size()) return false;
     if (tokens_[pos_].number || contains(kApproximately, tokens_[pos_].text) || at("between") || at("to")) return true;
     std::string m;
-    return matchPhrase(v_.distanceWords(), &m) > 0 || matchPhrase(v_.directionWords(), &m) > 0;
+    return matchPhrase(distanceWords_, &m) > 0 || matchPhrase(directionWords_, &m) > 0;
   }
 
   // distance = number_phrase | distance_word
   std::optional<FuzzyNumber> optionalDistance() {
     std::string word;
-    if (size_t n = matchPhrase(v_.distanceWords(), &word)) {
+    if (size_t n = matchPhrase(distanceWords_, &word)) {
       pos_ += n;
       return *v_.distance(word);
     }
+    return numberPhrase("distance");
+  }
+
+  // number_phrase (query/number_phrases.h): N | ("exactly"|"about"|...) N | "between" N "and" N
+  std::optional<FuzzyNumber> numberPhrase(const char* what) {
     const size_t start = pos_;
     if (at("between")) {
       ++pos_;
@@ -388,9 +485,40 @@ class Parser {
       return parseNumberPhrase(phrase);
     } catch (const Error& e) {
       throw Error(errc::kInvalidParameter,
-                  "bad distance '" + phrase + "' at character " + std::to_string(tokens_[start].offset) + ": " + e.what(),
+                  std::string("bad ") + what + " '" + phrase + "' at character " + std::to_string(tokens_[start].offset) +
+                      ": " + e.what(),
                   "text");
     }
+  }
+
+  // degree = [ "is" ] ( number_phrase | "at" "least" NUMBER | "at" "most" NUMBER ), in [0, 1]:
+  // "bendness at least 0.5" is trap(0.5, 0.5, 1, 1), "roundness about 1" the triangle of about 1
+  // restricted to [0, 1].
+  FuzzyNumber degree() {
+    acceptWord("is");
+    const size_t start = pos_;
+    if (acceptWord("at")) {
+      const bool least = acceptWord("least");
+      if (!least && !acceptWord("most")) fail({"'least'", "'most'"});
+      if (pos_ >= tokens_.size() || !tokens_[pos_].number) fail({"a number in [0, 1]"});
+      const double x = std::strtod(tokens_[pos_].text.c_str(), nullptr);
+      checkDegree(x, start);
+      ++pos_;
+      return least ? FuzzyNumber::trapezoidal(x, x, 1, 1) : FuzzyNumber::trapezoidal(0, 0, x, x);
+    }
+    std::optional<FuzzyNumber> set = numberPhrase("degree");
+    if (!set) fail({"a degree ('about 0.3', '0.5', 'between 0.2 and 0.4', 'at least 0.7', 'at most 0.2')"});
+    checkDegree(set->core().lo, start);
+    checkDegree(set->core().hi, start);
+    return restrictedToUnit(*set);
+  }
+
+  void checkDegree(double x, size_t start) const {
+    if (x < 0.0 || x > 1.0)
+      throw Error(errc::kInvalidParameter,
+                  "a descriptor degree is in [0, 1]; the one at character " + std::to_string(tokens_[start].offset) +
+                      " is not",
+                  "text");
   }
 
   void expectNumber() {
@@ -403,8 +531,8 @@ class Parser {
     const bool to = acceptWord("to");
     if (to) acceptWord("the");
     std::string word;
-    const size_t n = matchPhrase(v_.directionWords(), &word);
-    if (n == 0) fail({"a direction (" + joinList(v_.directionWords()) + ")"});
+    const size_t n = matchPhrase(directionWords_, &word);
+    if (n == 0) fail({"a direction (" + joinList(directionWords_) + ")"});
     pos_ += n;
     const Direction& d = *v_.direction(word);
     if (d.word != word && !to) return d;  // a phrase: "above", "in front of"
@@ -416,7 +544,9 @@ class Parser {
   const Vocabulary& v_;
   std::vector<Token> tokens_;
   size_t pos_ = 0;
-  std::set<std::string> known_;
+  int depth_ = 0;  // nesting of conditions (parentheses, not), bounded by kMaxNesting
+  // The vocabulary's word lists.
+  const std::vector<std::string>&intensityWords_, &adjectiveWords_, &nounWords_, &directionWords_, &distanceWords_;
 };
 
 const char* kindName(Kind k) {
@@ -451,6 +581,10 @@ nlohmann::json conditionJson(const QueryCondition& c) {
 
 LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary) {
   return Parser(text, vocabulary).parse();
+}
+
+PartDescription parsePartDescription(const std::string& text, const Vocabulary& vocabulary) {
+  return Parser(text, vocabulary).partDescription();
 }
 
 nlohmann::json toJson(const LinguisticQuery& query) {

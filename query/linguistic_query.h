@@ -4,16 +4,21 @@
 // §2.2), and scoring a part's descriptor values or a shape's components against it.
 //
 // The grammar is schema/query_grammar.ebnf (a test parses every example listed there). In short:
-//   query       = [ "find" ] phrase [ threshold ]
+//   query       = [ "find" ] phrase [ threshold ] [ "using" ("min"|"product"|"mean") ]
 //   phrase      = noun_phrase [ [ distance ] direction_phrase noun_phrase ]
-//   noun_phrase = [ article ] [ condition ] noun [ ("that"|"which") ("is"|"are") condition ]
+//   noun_phrase = [ article ] [ condition ] noun
+//                 [ ("that"|"which") ("is"|"are"|"has"|"have") condition | "with" condition ]
 //   condition   = conjunct { "or" conjunct };  conjunct = negation { ["and"|","] negation }
-//   negation    = "not" negation | "(" condition ")" | [ intensity ] adjective
+//   negation    = "not" negation | "(" condition ")" | descriptor degree | [ intensity ] adjective
+//   degree      = [ "is" ] ( number_phrase | "at least" number | "at most" number )
 //   threshold   = [ "with" "score" ] "at least" number
 // Words are case-insensitive; nouns, adjectives, intensities, directions and distance words come
 // from the Vocabulary (query/vocabulary.h), so a user's vocabulary file extends the language.
 //
 // Meaning of the tree:
+//   * descriptor degree ("bendness at least 0.5"): a kDescriptor condition with the set
+//     trap(x, x, 1, 1) (at least), trap(0, 0, x, x) (at most) or the number phrase restricted to
+//     [0, 1] ("roundness about 1").
 //   * [intensity] adjective: a kDescriptor condition on the adjective's descriptor with the
 //     intensity's fuzzy set (plain: μ(d) = d), mirrored d → 1 − d for low-pole adjectives.
 //   * a noun: its conditions (a kDescriptor, or a kAnd of them labelled with the noun);
@@ -69,9 +74,26 @@ struct LinguisticQuery {
   double atLeast = 0.0;          // "at least 0.7": results below are dropped
   std::string aggregation = "min";  // how kAnd combines scores (documented choices)
 };
+// The server passes activeVocabulary() (query/vocabulary.h), so `fsdb serve --vocabulary FILE`
+// extends the language.
 // Throws fsdb::Error(errc::kInvalidParameter) with path "text" and a message giving the character
 // position and the expected words; unknown words name the closest known ones.
 LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary);
+
+// The words of a part described by words ("a slightly bent cylinder", "a long, very twisted
+// box"): [ article ] { [ intensity ] adjective [ "," | "and" ] } noun. The pointers point into
+// `vocabulary`. Errors as parseLinguisticQuery (path "text"). query/part_from_words.h turns it
+// into parameters.
+struct AdjectiveUse {
+  const Adjective* adjective;
+  const FuzzyNumber* intensity;  // null: the plain adjective
+  std::string text;              // "slightly bent"
+};
+struct PartDescription {
+  const Noun* noun = nullptr;
+  std::vector<AdjectiveUse> adjectives;
+};
+PartDescription parsePartDescription(const std::string& text, const Vocabulary& vocabulary);
 
 struct ConditionScore {
   std::string text;
@@ -107,5 +129,9 @@ FuzzyNumber centreDistance(const FuzzyPart& a, const FuzzyPart& b);
 // {"subject","aggregation","at_least","condition":{kind, text, descriptor, set, children,
 // direction, distance}}.
 nlohmann::json toJson(const LinguisticQuery& query);
+
+// A score's explain as JSON: [{"text","score","component"}] ("component" only when set), for the
+// "explain" member of a result.
+nlohmann::json explainJson(const QueryScore& score);
 
 }  // namespace fsdb

@@ -54,35 +54,50 @@ Vec3 coreCentre(const FuzzyPart& p) {
 
 double score(const QueryCondition& c, Context& ctx);
 
-// The best ordered pair of distinct components for a relation.
+// The best ordered pair of distinct components for a relation. Each noun phrase is scored once
+// per component; a pair's direction and distance are computed only when its two scores could
+// still beat the best pair so far.
 double relationScore(const QueryCondition& c, Context& ctx) {
   const size_t slot = ctx.explain->size();
   ctx.explain->push_back({c.text, 0.0, ""});
   if (!ctx.components || c.children.size() != 2) return 0.0;
   const Direction* direction = directionOf(c);
   const auto& comps = *ctx.components;
+  struct Scored {
+    double score;
+    std::vector<ConditionScore> explain;
+  };
+  std::vector<Scored> subject, other;
+  for (const ShapeComponent& comp : comps) {
+    for (size_t side = 0; side < 2; ++side) {
+      Scored s;
+      Context one{ctx.query, ctx.components, &comp.descriptors, comp.path, &s.explain};
+      s.score = score(c.children[side], one);
+      (side == 0 ? subject : other).push_back(std::move(s));
+    }
+  }
   double best = 0.0;
-  std::vector<ConditionScore> bestExplain;
-  std::string bestPair;
+  size_t bestI = 0, bestJ = 0;
+  bool found = false;
   for (size_t i = 0; i < comps.size(); ++i) {
     for (size_t j = 0; j < comps.size(); ++j) {
       if (i == j) continue;
-      std::vector<ConditionScore> local;
-      Context subject{ctx.query, ctx.components, &comps[i].descriptors, comps[i].path, &local};
-      double s = score(c.children[0], subject);
-      Context other{ctx.query, ctx.components, &comps[j].descriptors, comps[j].path, &local};
-      s = std::min(s, score(c.children[1], other));
+      double s = std::min(subject[i].score, other[j].score);
+      if (found && s <= best) continue;  // cannot win: the first best pair stays (stable ties)
       s = std::min(s, directionMembership(*direction, coreCentre(comps[i].part) - coreCentre(comps[j].part)));
-      if (c.distance) s = std::min(s, similarity(centreDistance(comps[i].part, comps[j].part), *c.distance));
-      if (s > best || bestPair.empty()) {  // the first pair wins ties (stable)
+      if (c.distance && s > 0.0) s = std::min(s, similarity(centreDistance(comps[i].part, comps[j].part), *c.distance));
+      if (!found || s > best) {
         best = s;
-        bestExplain = std::move(local);
-        bestPair = comps[i].path + ", " + comps[j].path;
+        bestI = i;
+        bestJ = j;
+        found = true;
       }
     }
   }
-  (*ctx.explain)[slot] = {c.text, best, bestPair};
-  ctx.explain->insert(ctx.explain->end(), bestExplain.begin(), bestExplain.end());
+  if (!found) return 0.0;  // fewer than two components
+  (*ctx.explain)[slot] = {c.text, best, comps[bestI].path + ", " + comps[bestJ].path};
+  for (const auto* e : {&subject[bestI].explain, &other[bestJ].explain})
+    ctx.explain->insert(ctx.explain->end(), e->begin(), e->end());
   return best;
 }
 
@@ -161,6 +176,16 @@ QueryScore scoreShape(const LinguisticQuery& query, const std::vector<ShapeCompo
   return best;
 }
 
+nlohmann::json explainJson(const QueryScore& score) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const ConditionScore& c : score.explain) {
+    nlohmann::json e = {{"text", c.text}, {"score", c.score}};
+    if (!c.component.empty()) e["component"] = c.component;
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
 std::vector<ShapeComponent> shapeComponents(const CsgTree& tree) {
   std::vector<ShapeComponent> out;
   collectComponents(tree, "tree", &out);
@@ -168,6 +193,10 @@ std::vector<ShapeComponent> shapeComponents(const CsgTree& tree) {
 }
 
 FuzzyNumber centreDistance(const FuzzyPart& a, const FuzzyPart& b) {
+  if (a.tx.isCrisp() && a.ty.isCrisp() && a.tz.isCrisp() && b.tx.isCrisp() && b.ty.isCrisp() && b.tz.isCrisp()) {
+    const Vec3 d = coreCentre(a) - coreCentre(b);
+    return FuzzyNumber::crisp(std::sqrt(dot(d, d)));
+  }
   std::vector<double> levels = a.breakpointLevels();
   const std::vector<double> more = b.breakpointLevels();
   levels.insert(levels.end(), more.begin(), more.end());

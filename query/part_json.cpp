@@ -5,6 +5,8 @@
 #include "geometry/error.h"
 #include "query/fuzzy_json.h"
 #include "query/json_body.h"
+#include "query/part_from_words.h"
+#include "query/vocabulary.h"
 
 namespace fsdb {
 namespace {
@@ -20,6 +22,11 @@ const NamedParam kParams[] = {{"eps1", &FuzzyPart::eps1}, {"eps2", &FuzzyPart::e
 
 void parseTransform(const nlohmann::json& t, const std::string& path, FuzzyPart* part) {
   requireObject(t, path);
+  if (t.contains("place"))
+    throw Error(errc::kInvalidDocument,
+                "a placement from words places a leaf of a shape against an earlier leaf; a part on its own "
+                "has nothing to be placed against (give \"translate\")",
+                joinPath(path, "place"));
   rejectUnknownKeys(t, path, {"translate", "rotate", "scale"});
   if (t.contains("translate")) {
     const std::string p = joinPath(path, "translate");
@@ -46,21 +53,45 @@ void parseTransform(const nlohmann::json& t, const std::string& path, FuzzyPart*
   if (t.contains("scale")) part->scale = parseFuzzyNumber(t["scale"], joinPath(path, "scale"));
 }
 
+FuzzyPart validated(const FuzzyPart& part, const std::string& path) {
+  try {
+    part.validate();
+  } catch (const Error& e) {
+    throw e.withPathPrefix(path);
+  }
+  return part;
+}
+
 }  // namespace
 
 FuzzyPart parsePart(const nlohmann::json& doc, const std::string& path) {
   requireObject(doc, path);
-  if (doc.contains("text") || doc.contains("place"))
+  if (doc.contains("place"))
     throw Error(errc::kInvalidDocument,
-                "parts described by words need the linguistic vocabulary, which this server does not "
-                "have yet; give \"params\" (and \"transform\") with numbers or fuzzy numbers",
-                joinPath(path, doc.contains("text") ? "text" : "place"));
-  rejectUnknownKeys(doc, path, {"kind", "name", "descriptors", "params", "transform", "meta", "id", "version"});
+                "a placement from words goes in the transform of a leaf of a shape: "
+                "{\"transform\":{\"place\":{\"relative_to\":\"<earlier leaf>\",\"direction\":\"top right\","
+                "\"distance\":\"about 3\"}}}",
+                joinPath(path, "place"));
+  rejectUnknownKeys(doc, path,
+                    {"kind", "name", "descriptors", "params", "text", "transform", "meta", "id", "version"});
   if (doc.contains("kind") && doc["kind"] != "part")
     throw Error(errc::kInvalidDocument, "expected kind \"part\"", joinPath(path, "kind"));
 
   FuzzyPart part;
+  const bool fromWords = doc.contains("text");
+  if (fromWords) {
+    const std::string tp = joinPath(path, "text");
+    try {
+      part = partFromWords(requireString(doc["text"], tp), activeVocabulary());
+    } catch (const Error& e) {
+      throw Error(errc::kInvalidDocument, e.what(), tp);
+    }
+  }
   const std::string pp = joinPath(path, "params");
+  if (fromWords && !doc.contains("params")) {
+    if (doc.contains("transform")) parseTransform(doc["transform"], joinPath(path, "transform"), &part);
+    return validated(part, path);
+  }
   const auto& params = requireObject(requireField(doc, "params", path), pp);
   for (auto it = params.begin(); it != params.end(); ++it) {
     bool known = false;
@@ -70,17 +101,12 @@ FuzzyPart parsePart(const nlohmann::json& doc, const std::string& path) {
                   "unknown parameter '" + it.key() + "'; expected eps1, eps2, a1, a2, a3, kx, ky, kv, t",
                   joinPath(pp, it.key()));
   }
-  if (!params.contains("a1")) throw Error(errc::kInvalidDocument, "missing required parameter 'a1' (size)", joinPath(pp, "a1"));
+  if (!fromWords && !params.contains("a1"))
+    throw Error(errc::kInvalidDocument, "missing required parameter 'a1' (size)", joinPath(pp, "a1"));
   for (const NamedParam& np : kParams)
     if (params.contains(np.name)) part.*np.member = parseFuzzyNumber(params[np.name], joinPath(pp, np.name));
   if (doc.contains("transform")) parseTransform(doc["transform"], joinPath(path, "transform"), &part);
-
-  try {
-    part.validate();
-  } catch (const Error& e) {
-    throw e.withPathPrefix(path);
-  }
-  return part;
+  return validated(part, path);
 }
 
 nlohmann::json partToJson(const FuzzyPart& part) {

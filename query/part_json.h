@@ -13,8 +13,12 @@
 // Errors: fsdb::Error with the JSON path of the bad value ("params.eps2.tri[1]",
 // "transform.rotate.axis"): unknown keys (named), bad fuzzy numbers, supports outside the SPEC
 // ranges (FuzzyPart::validate, e.g. eps in (0, 4], |kv|·C < π), a zero rotation axis.
-// Parts described by words ("text", "place") need the vocabulary of the linguistic issue and
-// are refused with a message that says so.
+// Parts described by words: {"text":"a slightly bent cylinder"} takes its parameters from the
+// active vocabulary (query/part_from_words.h); "params" entries given too override them one by
+// one, and a1 is then optional. Errors in the words are invalid_document at path "text" (the
+// message gives the position, expected words, closest known words). Placements from words
+// ("place", query/placement_words.h) belong in the transform of a leaf of a shape and are
+// refused in a part on its own, with a message that says so.
 #include <nlohmann/json.hpp>
 #include <string>
 

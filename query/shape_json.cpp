@@ -10,6 +10,8 @@
 #include "query/json_body.h"
 #include "query/operator_json.h"
 #include "query/part_json.h"
+#include "query/placement_words.h"
+#include "query/vocabulary.h"
 
 namespace fsdb {
 namespace {
@@ -49,6 +51,7 @@ struct Walker {
   // shapes being expanded (a repeat is a cycle).
   std::map<int64_t, std::pair<std::shared_ptr<const AlphaFieldSource>, std::shared_ptr<const CsgTree>>> built;
   std::vector<int64_t> expanding;
+  std::map<std::string, FuzzyPart> placed;  // leaves by name, in pre-order, for "place"
 
   ResolvedReference resolve(const std::string& kind, const nlohmann::json& key, const std::string& path) {
     checkReferenceKey(key, path);
@@ -72,14 +75,18 @@ struct Walker {
     const std::string pp = joinPath(path, "part");
     const nlohmann::json& partDoc = node["part"];
     nlohmann::json doc = partDoc.is_object() ? partDoc : resolve("part", partDoc, pp).document;
+    std::string transformPath = joinPath(pp, "transform");
     if (node.contains("transform")) {
       if (doc.contains("transform"))
         throw Error(errc::kInvalidDocument,
                     "the part has its own transform; give one transform, on the part or on the leaf",
                     joinPath(path, "transform"));
       doc["transform"] = node["transform"];
+      transformPath = joinPath(path, "transform");
     }
     rejectUnknownKeys(node, path, {"part", "transform"}, " in a leaf");
+    if (doc.contains("transform") && doc["transform"].is_object() && doc["transform"].contains("place"))
+      doc["transform"] = placeFromWords(doc, pp, transformPath);
     FuzzyPart part;
     try {
       part = parsePart(doc, pp);
@@ -91,10 +98,30 @@ struct Walker {
       throw;
     }
     ++out.partCount;
+    // The name later leaves may be placed against (query/placement_words.h).
+    if (partDoc.is_string()) placed[partDoc.get<std::string>()] = part;
+    else if (doc.contains("name") && doc["name"].is_string()) placed[doc["name"].get<std::string>()] = part;
     auto t = std::make_shared<CsgTree>();
     t->part = part;
     *tree = t;
     return std::make_shared<FuzzyPartField>(part);
+  }
+
+  // {"place":{...}} (query/placement_words.h): the translation against an earlier leaf.
+  nlohmann::json placeFromWords(const nlohmann::json& doc, const std::string& partPath, const std::string& transformPath) {
+    const PlacementWords words = parsePlacementWords(doc["transform"], transformPath, activeVocabulary());
+    auto reference = placed.find(words.relativeTo);
+    if (reference == placed.end()) {
+      std::string known;
+      for (const auto& kv : placed) known += (known.empty() ? "" : ", ") + kv.first;
+      throw Error(errc::kInvalidDocument,
+                  "relative_to names no earlier leaf '" + words.relativeTo + "' of this shape (known so far: " +
+                      (known.empty() ? "none" : known) + ")",
+                  transformPath + ".place.relative_to");
+    }
+    nlohmann::json bare = doc;
+    bare.erase("transform");
+    return placedTransform(words, reference->second, parsePart(bare, partPath));
   }
 
   // {"ref": name or id}: a stored shape evaluated in place, built once however often it is named.

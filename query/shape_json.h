@@ -25,6 +25,8 @@
 // and counts once against maxNodes. Unknown references are unknown_reference (422) with the
 // path of the reference; a shape that reaches itself is reference_cycle (422). Without a
 // resolver, references are invalid_document naming the path.
+// A leaf's transform may be a placement from words against an earlier leaf (query/placement_words.h:
+// {"place":{"relative_to":"base","direction":"above","distance":"about 3"}}).
 // Not yet evaluated: a transform on a "ref" leaf (a fuzzy placement of a whole subtree does not
 // reduce to the placements of its parts).
 // Limits: more than maxNodes nodes is limit_exceeded.

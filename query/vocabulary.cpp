@@ -223,6 +223,22 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
     if (name != "min" && name != "product" && name != "mean")
       throw Error(errc::kInvalidDocument, "unknown aggregation '" + name + "'; the code knows min, product, mean",
                   joinPath("aggregations", name));
+
+  v.intensityWords_ = sortedKeys(v.intensities_, v.intensitySynonyms_);
+  v.adjectiveWords_ = keysOf(v.adjectives_);
+  v.nounWords_ = sortedKeys(v.nouns_, v.plurals_);
+  v.directionWords_ = keysOf(v.directions_);
+  v.distanceWords_ = keysOf(v.distances_);
+  for (const auto* list : {&v.intensityWords_, &v.adjectiveWords_, &v.nounWords_, &v.directionWords_, &v.distanceWords_})
+    for (const std::string& phrase : *list) {
+      size_t i = 0;
+      while (i < phrase.size()) {
+        size_t j = phrase.find(' ', i);
+        if (j == std::string::npos) j = phrase.size();
+        if (j > i) v.words_.insert(phrase.substr(i, j - i));
+        i = j + 1;
+      }
+    }
   return v;
 }
 
@@ -278,12 +294,7 @@ bool Vocabulary::isAggregation(const std::string& name) const {
   return std::find(aggregations_.begin(), aggregations_.end(), name) != aggregations_.end();
 }
 
-std::vector<std::string> Vocabulary::intensityWords() const { return sortedKeys(intensities_, intensitySynonyms_); }
-std::vector<std::string> Vocabulary::adjectiveWords() const { return keysOf(adjectives_); }
-std::vector<std::string> Vocabulary::nounWords() const { return sortedKeys(nouns_, plurals_); }
-std::vector<std::string> Vocabulary::directionWords() const { return keysOf(directions_); }
-std::vector<std::string> Vocabulary::distanceWords() const { return keysOf(distances_); }
-std::vector<std::string> Vocabulary::aggregationNames() const { return aggregations_; }
+
 
 namespace {
 std::unique_ptr<Vocabulary>& activeSlot() {
@@ -342,6 +353,10 @@ std::vector<RankedDirection> directionCandidates(const Direction& direction) {
       out.push_back({{std::sin(gr) * std::cos(br), std::cos(gr), std::sin(gr) * std::sin(br)}, std::min(g.mu, b.mu)});
     }
   }
+  // cos(90°) is 6e-17, not 0: snap such rounding so "right" is exactly (1, 0, 0).
+  for (RankedDirection& d : out)
+    for (double* c : {&d.vector.x, &d.vector.y, &d.vector.z})
+      if (std::fabs(*c) < 1e-12) *c = 0.0;
   std::stable_sort(out.begin(), out.end(), [](const RankedDirection& a, const RankedDirection& b) { return a.mu > b.mu; });
   return out;
 }

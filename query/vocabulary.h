@@ -30,6 +30,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -85,13 +86,17 @@ class Vocabulary {
   const std::vector<std::string>& intensityOrder() const { return intensityOrder_; }
   bool isAggregation(const std::string& name) const;
 
-  // Every word and multi-word phrase of each kind, sorted (for messages, tests and the parser).
-  std::vector<std::string> intensityWords() const;
-  std::vector<std::string> adjectiveWords() const;
-  std::vector<std::string> nounWords() const;  // singular and plural
-  std::vector<std::string> directionWords() const;
-  std::vector<std::string> distanceWords() const;
-  std::vector<std::string> aggregationNames() const;
+  // Every word and multi-word phrase of each kind, sorted (for messages, tests and the parser);
+  // listed once, when the vocabulary is loaded.
+  const std::vector<std::string>& intensityWords() const { return intensityWords_; }
+  const std::vector<std::string>& adjectiveWords() const { return adjectiveWords_; }
+  const std::vector<std::string>& nounWords() const { return nounWords_; }  // singular and plural
+  const std::vector<std::string>& directionWords() const { return directionWords_; }
+  const std::vector<std::string>& distanceWords() const { return distanceWords_; }
+  const std::vector<std::string>& aggregationNames() const { return aggregations_; }
+  // Every single word of all those phrases ("double pyramid" gives "double" and "pyramid").
+  bool knowsWord(const std::string& word) const { return words_.count(word) > 0; }
+  const std::set<std::string>& words() const { return words_; }
 
  private:
   nlohmann::json document_;
@@ -105,6 +110,8 @@ class Vocabulary {
   std::map<std::string, Direction> directions_;    // primary, secondary, phrases
   std::map<std::string, FuzzyNumber> distances_;
   std::vector<std::string> aggregations_;
+  std::vector<std::string> intensityWords_, adjectiveWords_, nounWords_, directionWords_, distanceWords_;
+  std::set<std::string> words_;
 };
 
 // The vocabulary the server's parsers use: builtin() unless setActiveVocabulary was called (once,

@@ -12,6 +12,8 @@ class Store;
 void registerServiceRoutes(HttpServer& server, const Store& store);
 // GET /operators, POST /operators/evaluate
 void registerOperatorRoutes(HttpServer& server);
+// GET /vocabulary (query/vocabulary.h: activeVocabulary())
+void registerVocabularyRoutes(HttpServer& server);
 
 // POST /evaluate (references in inline documents resolve against the store), and the stored-shape
 // forms: POST /shapes/{id}/evaluate (cached), GET /shapes/{id}/membership, /mesh, /grid.vdb

@@ -15,6 +15,7 @@
 #include "fsdb_version.h"
 #include "db/store.h"
 #include "geometry/error.h"
+#include "query/vocabulary.h"
 #include "server/api.h"
 #include "server/bulk_import.h"
 #include "server/descriptor_rows.h"
@@ -72,7 +73,18 @@ void backfillDescriptorIndex(fsdb::Store& store, size_t maxNodes) {
   spdlog::info("descriptor index: backfilled {} objects in {:.2f} s", n, seconds);
 }
 
-int runServe(const fsdb::ServerOptions& options, const std::string& dbPath, const std::string& demoDir) {
+int runServe(const fsdb::ServerOptions& options, const std::string& dbPath, const std::string& demoDir,
+             const std::string& vocabularyPath) {
+  // Before the demo is loaded and any request parsed: every parser reads the active vocabulary.
+  if (!vocabularyPath.empty()) {
+    try {
+      fsdb::setActiveVocabulary(fsdb::Vocabulary::fromFile(vocabularyPath));
+      spdlog::info("vocabulary {}", vocabularyPath);
+    } catch (const fsdb::Error& e) {
+      spdlog::error("cannot load the vocabulary: {} (at {})", e.what(), e.path().empty() ? "the top" : e.path());
+      return 1;
+    }
+  }
   sigset_t signals;
   blockShutdownSignals(&signals);  // before any thread exists, so all inherit the mask
 
@@ -133,11 +145,13 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
 
   fsdb::ServerOptions serve;
-  std::string dbPath = "data/fsdb.sqlite", demoDir;
+  std::string dbPath = "data/fsdb.sqlite", demoDir, vocabularyPath;
   if (const char* t = std::getenv("FSDB_TOKEN")) serve.token = t;
   auto* serveCmd = app.add_subcommand("serve", "serve the HTTP API");
   serveCmd->add_option("--db", dbPath, "SQLite database file (created with its directory if missing)")
       ->capture_default_str();
+  serveCmd->add_option("--vocabulary", vocabularyPath,
+                       "a vocabulary file (the format of schema/vocabulary.json) instead of the built-in one");
   serveCmd->add_option("--demo", demoDir, "load DIR/*.jsonl when the database file is created by this start");
   serveCmd->add_option("--token", serve.token, "require 'Authorization: Bearer TOKEN' for writes (or FSDB_TOKEN)");
   serveCmd->add_option("--host", serve.host, "address to bind")->capture_default_str();
@@ -206,7 +220,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   spdlog::set_level(spdlog::level::from_str(logLevel));
 
-  if (serveCmd->parsed()) return runServe(serve, dbPath, demoDir);
+  if (serveCmd->parsed()) return runServe(serve, dbPath, demoDir, vocabularyPath);
   if (evalCmd->parsed()) return fsdb::runEval(evalFile, eval);
   if (importCmd->parsed()) return fsdb::runImport(import);
   if (queryCmd->parsed()) return fsdb::runQuery(query);

@@ -34,6 +34,7 @@ void registerServiceRoutes(HttpServer& server, const Store& store) {
 void registerAllRoutes(HttpServer& server, Store& store) {
   registerServiceRoutes(server, store);
   registerOperatorRoutes(server);
+  registerVocabularyRoutes(server);
   registerObjectRoutes(server, store);
   registerEvaluationRoutes(server, store);
   registerQueryRoutes(server, store);

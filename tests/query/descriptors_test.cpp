@@ -96,6 +96,16 @@ TEST(Descriptors, CrispPartHasCrispValues) {
   }
 }
 
+// The general path (levels and boxes) agrees with the crisp fast path: a fuzzy translation is
+// read by no descriptor.
+TEST(Descriptors, FuzzyPlacementOnlyGivesTheCrispValues) {
+  FuzzyPart crisp = FuzzyPart::fromCrisp(crispPart(0.5, 1.5, 2, 1, 3));
+  FuzzyPart moved = crisp;
+  moved.tx = FuzzyNumber::triangular(-1, 0, 1);
+  const auto a = describePart(crisp), b = describePart(moved);
+  for (size_t d = 0; d < a.size(); ++d) EXPECT_EQ(a[d].value, b[d].value) << a[d].descriptor;
+}
+
 // The alpha-cut of a descriptor value is the image of P(α): it holds the degree of every crisp
 // part sampled in the box, and its ends are reached (by the corners and critical values).
 TEST(Descriptors, FuzzyValuesAreTheImageOfTheParameterBox) {

@@ -114,11 +114,44 @@ TEST(LinguisticQuery, NotAndOrPrecedence) {
   EXPECT_EQ(parse("find a not not bent shape").root.children[0].kind, Kind::kNot);
 }
 
+TEST(LinguisticQuery, DescriptorDegrees) {
+  expectLeaf(parse("find shapes with bendness at least 0.5").root, "bendness", FuzzyNumber::trapezoidal(0.5, 0.5, 1, 1),
+             "bendness at least 0.5");
+  expectLeaf(parse("find shapes that have twistness at most 0.1").root, "twistness",
+             FuzzyNumber::trapezoidal(0, 0, 0.1, 0.1), "twistness at most 0.1");
+  // A number phrase restricted to [0, 1]: "about 1" keeps its left half, cut at 1.
+  expectLeaf(parse("find shapes which have roundness about 1").root, "roundness",
+             FuzzyNumber::fromPoints({{0.9, 0}, {1, 1}}), "roundness about 1");
+  expectLeaf(parse("find shapes with size is between 0.2 and 0.4").root, "size", FuzzyNumber::trapezoidal(0.2, 0.2, 0.4, 0.4),
+             "size is between 0.2 and 0.4");
+  // "at least" after a degree is the threshold; "with score" is never a condition.
+  const LinguisticQuery q = parse("find a cylinder with taperness 0.3 at least 0.5");
+  EXPECT_DOUBLE_EQ(q.atLeast, 0.5);
+  EXPECT_EQ(q.root.children[1].set, FuzzyNumber::crisp(0.3));
+  EXPECT_DOUBLE_EQ(parse("find a bent cylinder with score at least 0.25").atLeast, 0.25);
+  EXPECT_NE(errorOf("find shapes with bendness at least 1.5").find("degree is in [0, 1]"), std::string::npos);
+  EXPECT_NE(errorOf("find shapes with bendness about 2").find("degree is in [0, 1]"), std::string::npos);
+  EXPECT_NE(errorOf("find shapes with bendness very").find("a degree ("), std::string::npos);
+  EXPECT_NE(errorOf("find shapes with bendness at 0.5").find("expected 'least', 'most'"), std::string::npos);
+  EXPECT_NE(errorOf("find shapes with bendnes at least 0.5").find("closest known words: bendness"), std::string::npos);
+}
+
 TEST(LinguisticQuery, Threshold) {
   EXPECT_DOUBLE_EQ(parse("find a very bent shape at least 0.7").atLeast, 0.7);
   EXPECT_DOUBLE_EQ(parse("find a very bent shape with score at least 0.25").atLeast, 0.25);
   EXPECT_NE(errorOf("find a bent shape at least 1.5").find("[0, 1]"), std::string::npos);
   EXPECT_NE(errorOf("find a bent shape at least").find("a number in [0, 1]"), std::string::npos);
+  EXPECT_NE(errorOf("find a bent shape with score").find("'at least' NUMBER"), std::string::npos);
+}
+
+TEST(LinguisticQuery, Aggregation) {
+  EXPECT_EQ(parse("find a very bent cylinder").aggregation, "min");
+  EXPECT_EQ(parse("find a very bent cylinder using product").aggregation, "product");
+  const LinguisticQuery q = parse("find a very bent cylinder at least 0.3 using mean");
+  EXPECT_EQ(q.aggregation, "mean");
+  EXPECT_DOUBLE_EQ(q.atLeast, 0.3);
+  EXPECT_NE(errorOf("find a very bent cylinder using least").find("an aggregation (mean, min, product)"), std::string::npos);
+  EXPECT_NE(errorOf("find a very bent cylinder using max").find("unknown word 'max'"), std::string::npos);
 }
 
 TEST(LinguisticQuery, Relations) {
@@ -196,6 +229,27 @@ TEST(LinguisticQuery, ParseErrorsGivePositionAndExpectedWords) {
   EXPECT_NE(e.find("ends too early"), std::string::npos) << e;
   e = errorOf("find a sphere about above a box");
   EXPECT_NE(e.find("expected a number"), std::string::npos) << e;
+}
+
+// Deep nesting is a limit, not a stack overflow.
+TEST(LinguisticQuery, NestingLimit) {
+  auto nested = [](int n) {
+    std::string open, close;
+    for (int i = 0; i < n; ++i) open += "(", close += ")";
+    return "find shapes that are " + open + "bent" + close;
+  };
+  EXPECT_NO_THROW(parse(nested(60)));
+  std::string nots = "find shapes that are";
+  for (int i = 0; i < 100000; ++i) nots += " not";
+  for (const std::string& text : {nested(100000), nots + " bent"}) {
+    try {
+      parse(text);
+      ADD_FAILURE();
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), errc::kLimitExceeded);
+      EXPECT_EQ(e.path(), "text");
+    }
+  }
 }
 
 // Every example of schema/query_grammar.ebnf (lines "(* example: ... *)") parses.

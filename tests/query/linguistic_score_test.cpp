@@ -67,6 +67,14 @@ TEST(LinguisticScore, BentRanksByDegree) {
   for (const auto& r : rank("find an extremely bent shape at least 0.5", {bentCatalogue()[0]})) EXPECT_EQ(r.second, 0.0);
 }
 
+TEST(LinguisticScore, DescriptorDegrees) {
+  const auto ranked = rank("find shapes with bendness at least 0.5", bentCatalogue());
+  EXPECT_EQ(names(ranked), (std::vector<std::string>{"very bent", "moderately bent", "straight", "slightly bent"}));
+  EXPECT_DOUBLE_EQ(ranked[1].second, 1.0);
+  EXPECT_DOUBLE_EQ(ranked[2].second, 0.0);
+  EXPECT_EQ(rank("find shapes with bendness about 0.15", bentCatalogue())[0].first, "slightly bent");
+}
+
 TEST(LinguisticScore, VeryRoundPicksExponentsNearOne) {
   std::vector<Item> catalogue;
   for (double e : {0.1, 0.5, 1.6, 0.7, 1.0, 2.5})
@@ -218,6 +226,10 @@ TEST(LinguisticScore, CylinderLeftOfACube) {
   EXPECT_EQ(left.explain[0].component, "tree.children[1], tree.children[0]");
   EXPECT_EQ(left.explain[1].text, "cylinder");
   EXPECT_EQ(left.explain[1].component, "tree.children[1]");
+  const nlohmann::json j = explainJson(left);
+  EXPECT_EQ(j[0], nlohmann::json({{"text", "a cylinder to the left of a cube"}, {"score", 1.0},
+                                  {"component", "tree.children[1], tree.children[0]"}}));
+  EXPECT_EQ(explainJson(scoreDescriptors(q, {}))[0].count("component"), 0u);
   // One component cannot be in a relation with itself.
   EXPECT_EQ(scoreShape(q, componentsOf(leaf("cylinder", 0, 0, 0))).score, 0.0);
 }

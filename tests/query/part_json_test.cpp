@@ -57,9 +57,33 @@ TEST(PartJson, ErrorsNameTheJsonPath) {
             "part.transform.rotate.axis");
   EXPECT_EQ(errorPath(json{{"params", {{"a1", 1}}}, {"transform", {{"shear", 1}}}}), "part.transform.shear");
   EXPECT_EQ(errorPath(json{{"params", {{"a1", 1}}}, {"transform", {{"scale", -1}}}}), "part.transform.scale");
-  EXPECT_EQ(errorPath(json{{"text", "a slightly bent cylinder"}}), "part.text");
+  EXPECT_EQ(errorPath(json{{"text", "a slightly bnet cylinder"}}), "part.text");
+  EXPECT_EQ(errorPath(json{{"text", 3}}), "part.text");
+  EXPECT_EQ(errorPath(json{{"place", {{"relative_to", "a"}, {"direction", "top"}}}, {"params", {{"a1", 1}}}}), "part.place");
   EXPECT_EQ(errorPath(json{{"kind", "shape"}, {"params", {{"a1", 1}}}}), "part.kind");
   EXPECT_EQ(errorPath(json{{"params", {{"a1", 1}}}, {"colour", "red"}}), "part.colour");
+}
+
+// Parts from words (query/part_from_words.h): "text" gives the parameters, "params" entries
+// override them, "transform" places the part.
+TEST(PartJson, TextGivesTheParameters) {
+  const FuzzyPart p = parsePart(json{{"kind", "part"}, {"name", "p"}, {"text", "a slightly bent cylinder"}}, "");
+  EXPECT_EQ(p.eps1, FuzzyNumber::crisp(0.1));
+  EXPECT_EQ(p.a3, FuzzyNumber::crisp(2));
+  EXPECT_FALSE(p.kv.isCrisp());
+  const FuzzyPart q = parsePart(json{{"text", "a slightly bent cylinder"}, {"params", {{"a1", 2}}},
+                                     {"transform", {{"translate", {"about 3", 0, 0}}}}},
+                                "");
+  EXPECT_EQ(q.a1, FuzzyNumber::crisp(2));
+  EXPECT_EQ(q.kv, p.kv);  // the words' bend stays; a1 alone is overridden
+  EXPECT_EQ(q.tx, FuzzyNumber::triangular(2.7, 3, 3.3));
+  try {
+    parsePart(json{{"text", "a slightly bnet cylinder"}}, "part");
+    ADD_FAILURE();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), errc::kInvalidDocument);
+    EXPECT_NE(std::string(e.what()).find("closest known words: bent"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
