@@ -39,17 +39,16 @@ class Scorer {
   // Scores `candidates` of `kind`; bounded: best bound first, stopping where no bound can win.
   void score(const std::string& kind, std::vector<Candidate> candidates, bool bounded) {
     candidates_ += candidates.size();
-    if (bounded)
-      std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-        return a.bound != b.bound ? a.bound > b.bound : a.id < b.id;
-      });
     const size_t chunkSize = bounded ? kBoundedChunk : kChunk;
     std::vector<int64_t> chunk;
     bool stop = false;
+    size_t ordered = 0;  // bounded: candidates[0, ordered) are the best, in order
     for (size_t next = 0; next < candidates.size() && !stop;) {
       checkTime();
+      if (bounded && next == ordered) ordered = orderNext(candidates, ordered);
       chunk.clear();
-      for (; next < candidates.size() && chunk.size() < chunkSize; ++next) {
+      const size_t end = bounded ? ordered : candidates.size();
+      for (; next < end && chunk.size() < chunkSize; ++next) {
         if (bounded && !canEnter(candidates[next])) {  // sorted: no later one can either
           stop = true;
           break;
@@ -75,6 +74,21 @@ class Scorer {
 
  private:
   static constexpr size_t kBoundedChunk = 64;  // small: the bound of the next one may stop it
+
+  // Puts the best of candidates[from, end) in order at its front (a block that grows fourfold,
+  // so a search that stops early selects instead of sorting them all); returns the block's end.
+  size_t orderNext(std::vector<Candidate>& candidates, size_t from) {
+    const auto first = [](const Candidate& a, const Candidate& b) {
+      return a.bound != b.bound ? a.bound > b.bound : a.id < b.id;
+    };
+    block_ = block_ == 0 ? 4 * (limit_ + kBoundedChunk) : 4 * block_;
+    const size_t end = std::min(candidates.size(), from + block_);
+    const auto begin = candidates.begin() + static_cast<std::ptrdiff_t>(from);
+    const auto middle = candidates.begin() + static_cast<std::ptrdiff_t>(end);
+    std::nth_element(begin, middle - (end < candidates.size() ? 0 : 1), candidates.end(), first);
+    std::sort(begin, middle, first);
+    return end;
+  }
 
   // Whether a candidate with this bound could still be among the results.
   bool canEnter(const Candidate& c) const {
@@ -126,6 +140,7 @@ class Scorer {
   const Clock::time_point start_;
   std::vector<LinguisticHit> hits_;
   size_t candidates_ = 0, scored_ = 0;
+  size_t block_ = 0;
 };
 
 nlohmann::json hitJson(const LinguisticHit& hit) {
