@@ -144,13 +144,8 @@ class Scorer {
 };
 
 nlohmann::json hitJson(const LinguisticHit& hit) {
-  nlohmann::json explain = nlohmann::json::array();
-  for (const ConditionScore& c : hit.score.explain) {
-    nlohmann::json e = {{"text", c.text}, {"score", c.score}};
-    if (!c.component.empty()) e["component"] = c.component;
-    explain.push_back(std::move(e));
-  }
-  return {{"id", hit.id}, {"kind", hit.kind}, {"name", hit.name}, {"score", hit.score.score}, {"explain", explain}};
+  return {{"id", hit.id}, {"kind", hit.kind}, {"name", hit.name}, {"score", hit.score.score},
+          {"explain", explainJson(hit.score)}};
 }
 
 }  // namespace
