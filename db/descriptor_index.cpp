@@ -112,9 +112,6 @@ std::vector<DescriptorCandidate> descriptorCandidatesIn(sqlite::Connection& conn
       "SELECT p.object_id FROM descriptor_pending p JOIN objects o ON o.id = p.object_id WHERE o.kind = ?1");
   pending->bind(1, kind);
   while (pending->step()) rows.push_back({pending->columnInt(0), 0, 0, true});
-  std::sort(rows.begin(), rows.end(), [](const DescriptorCandidate& a, const DescriptorCandidate& b) {
-    return a.id < b.id;
-  });
   return rows;
 }
 

@@ -221,8 +221,8 @@ class Store {
   // hides a match; the server recomputes them (pendingDescriptors, replaceDescriptors).
   //
   // The component rows of objects of `kind` passing `test` (one index range scan per width
-  // class, db/descriptor_index.h), and every pending object of `kind` (pending = true), by id
-  // (the rows of one object next to each other).
+  // class, db/descriptor_index.h), and every pending object of `kind` (pending = true), in index
+  // order (not by id: sorting is the caller's choice; a shape's rows may be apart).
   std::vector<DescriptorCandidate> descriptorCandidates(const std::string& kind, const DescriptorOverlap& test) const;
   // Sorted ids of every live object of `kind` (the full scan's candidates).
   std::vector<int64_t> objectIds(const std::string& kind) const;

@@ -139,7 +139,8 @@ PrefilterPlan prefilterPlan(const LinguisticQuery& query, const std::string& kin
   return planOf(query.root, aggregationNeedsAll(query.aggregation), kind == "part");
 }
 
-std::vector<Candidate> runPrefilter(const PrefilterPlan& plan, const OverlapSource& overlap, const AllSource& all) {
+std::vector<Candidate> runPrefilter(const PrefilterPlan& plan, const OverlapSource& overlap, const AllSource& all,
+                                    bool oneRowPerObject) {
   switch (plan.kind) {
     case Kind::kAll: {
       std::vector<Candidate> out;
@@ -149,13 +150,15 @@ std::vector<Candidate> runPrefilter(const PrefilterPlan& plan, const OverlapSour
     case Kind::kNone:
       return {};
     case Kind::kOverlap: {
-      // One candidate per object: the largest bound of its rows (a shape's best component).
-      std::vector<Candidate> out;
-      for (const Candidate& row : overlap(plan)) {
-        if (!out.empty() && out.back().id == row.id) out.back().bound = std::max(out.back().bound, row.bound);
-        else out.push_back(row);
-      }
-      return out;
+      std::vector<Candidate> rows = overlap(plan);
+      if (oneRowPerObject) return rows;
+      // By id, one candidate per object: the largest bound of its rows (a shape's best component).
+      std::sort(rows.begin(), rows.end(), [](const Candidate& a, const Candidate& b) {
+        return a.id != b.id ? a.id < b.id : a.bound > b.bound;
+      });
+      rows.erase(std::unique(rows.begin(), rows.end(), [](const Candidate& a, const Candidate& b) { return a.id == b.id; }),
+                 rows.end());
+      return rows;
     }
     case Kind::kAnd:
     case Kind::kOr: {

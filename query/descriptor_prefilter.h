@@ -79,12 +79,14 @@ bool aggregationNeedsAll(const std::string& aggregation);
 PrefilterPlan prefilterPlan(const LinguisticQuery& query, const std::string& kind);
 
 // The candidates of `plan` by id, with bounds: kOverlap through `overlap(leaf)` (one candidate
-// per row the index finds for leaf.test, by id, bounded with scoreBound; the rows of one object
-// merge into its largest bound), kAll through `all()` (sorted ids, bound 1), kAnd as the
-// intersection, kOr as the union.
+// per row the index finds for leaf.test, in any order, bounded with scoreBound; the rows of one
+// object merge into its largest bound), kAll through `all()` (sorted ids, bound 1), kAnd as the
+// intersection, kOr as the union. oneRowPerObject (parts: one component): a plan that is one
+// kOverlap returns the source's rows as they come, unsorted (the search orders by bound anyway).
 using OverlapSource = std::function<std::vector<Candidate>(const PrefilterPlan& leaf)>;
 using AllSource = std::function<std::vector<int64_t>()>;
-std::vector<Candidate> runPrefilter(const PrefilterPlan& plan, const OverlapSource& overlap, const AllSource& all);
+std::vector<Candidate> runPrefilter(const PrefilterPlan& plan, const OverlapSource& overlap, const AllSource& all,
+                                    bool oneRowPerObject = false);
 
 // {"all":true} | {"none":true} | {"overlap":{"descriptor","lo","hi","lo_included","hi_included",
 // "wide_strict"}} | {"and":[...]} | {"or":[...]}

@@ -169,7 +169,7 @@ LinguisticSearchResult searchLinguistic(const Store& store, const LinguisticQuer
         rows.push_back({c.id, scoreBound(leaf, c.supportLo, c.supportHi, c.pending)});
       return rows;
     };
-    scorer.score(kind, runPrefilter(prefilterPlan(query, kind), overlap, all), true);
+    scorer.score(kind, runPrefilter(prefilterPlan(query, kind), overlap, all, kind == "part"), true);
   }
   return scorer.result();
 }

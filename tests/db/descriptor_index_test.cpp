@@ -50,11 +50,12 @@ NewObject shapeOf(const std::string& name, const std::vector<std::string>& parts
   return object;
 }
 
-// The distinct ids descriptorCandidates finds.
+// The distinct ids descriptorCandidates finds, sorted.
 std::vector<int64_t> ids(const Store& store, const std::string& kind, const DescriptorOverlap& test) {
   std::vector<int64_t> out;
-  for (const DescriptorCandidate& c : store.descriptorCandidates(kind, test))
-    if (out.empty() || out.back() != c.id) out.push_back(c.id);
+  for (const DescriptorCandidate& c : store.descriptorCandidates(kind, test)) out.push_back(c.id);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 

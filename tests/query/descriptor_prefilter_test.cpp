@@ -160,6 +160,12 @@ TEST(DescriptorPrefilter, RunIntersectsAndUnites) {
   EXPECT_NEAR(either[0].bound, 1.0, 1e-8);  // μ(0.5) = 1
   EXPECT_EQ(either[4].bound, 1.0);          // pending
   EXPECT_EQ(allCalls, 0);
+  // One row per object: a lone overlap comes back as the source gives it (here, 3 twice).
+  EXPECT_EQ(idsOf(runPrefilter(prefilterPlan(query(bent), "part"), overlap, all, true)),
+            (std::vector<int64_t>{1, 3, 3, 5, 7}));
+  const std::vector<Candidate> merged = runPrefilter(prefilterPlan(query(bent), "part"), overlap, all);
+  EXPECT_EQ(idsOf(merged), (std::vector<int64_t>{1, 3, 5, 7}));
+  EXPECT_NEAR(merged[1].bound, 0.5, 1e-8);  // the better of 3's two rows
   EXPECT_EQ(runPrefilter(prefilterPlan(query(node(K::kNot, {bent})), "part"), overlap, all).size(), 7u);
   EXPECT_EQ(allCalls, 1);
   EXPECT_TRUE(runPrefilter(prefilterPlan(query(node(K::kAnd, {bent, descriptor("twistness", 0, 0, 1)})), "part"),
