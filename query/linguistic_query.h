@@ -77,7 +77,8 @@ struct LinguisticQuery {
 // The server passes activeVocabulary() (query/vocabulary.h), so `fsdb serve --vocabulary FILE`
 // extends the language.
 // Throws fsdb::Error(errc::kInvalidParameter) with path "text" and a message giving the character
-// position and the expected words; unknown words name the closest known ones.
+// position and the expected words; unknown words name the closest known ones. Conditions nested
+// deeper than 64 levels (parentheses, "not") are errc::kLimitExceeded, path "text".
 LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary);
 
 // The words of a part described by words ("a slightly bent cylinder", "a long, very twisted

@@ -250,3 +250,31 @@ TEST(Vocabulary, ActiveVocabularyDefaultsToBuiltin) { EXPECT_EQ(&activeVocabular
 
 }  // namespace
 }  // namespace fsdb
+
+namespace fsdb {
+namespace {
+
+// The demo catalogue's parts carry descriptor words ("slightly bent", "very sharp"): each is a
+// query the part itself satisfies, so the vocabulary and the demo agree.
+TEST(Vocabulary, DemoDescriptorsDescribeTheirParts) {
+  std::ifstream in(std::string(FSDB_SOURCE_DIR) + "/schema/demo/01-parts.jsonl");
+  ASSERT_TRUE(in.good());
+  std::string line;
+  int checked = 0;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    const nlohmann::json doc = nlohmann::json::parse(line);
+    if (!doc.contains("descriptors")) continue;
+    const auto values = describePart(parsePart(doc, ""));
+    for (const auto& words : doc["descriptors"]) {
+      const LinguisticQuery q = parseLinguisticQuery("find a " + words.get<std::string>() + " shape", v());
+      // Fuzzy values score by area (S of SPEC §5), so a narrow value inside a wide set stays below 1.
+      EXPECT_GT(scoreDescriptors(q, values).score, 0.1) << doc["name"] << ": " << words;
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 15);
+}
+
+}  // namespace
+}  // namespace fsdb
