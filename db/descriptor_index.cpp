@@ -109,7 +109,8 @@ std::vector<DescriptorCandidate> descriptorCandidatesIn(sqlite::Connection& conn
     while (scan->step()) rows.push_back({scan->columnInt(0), scan->columnDouble(1), scan->columnDouble(2), false});
   }
   auto pending = connection.prepare(
-      "SELECT p.object_id FROM descriptor_pending p JOIN objects o ON o.id = p.object_id WHERE o.kind = ?1");
+      // CROSS JOIN: driven by the (usually empty) pending table, not by every object of the kind.
+      "SELECT p.object_id FROM descriptor_pending p CROSS JOIN objects o ON o.id = p.object_id WHERE o.kind = ?1");
   pending->bind(1, kind);
   while (pending->step()) rows.push_back({pending->columnInt(0), 0, 0, true});
   return rows;
