@@ -1,10 +1,13 @@
 # Writes OUT, a C++ file defining fsdb::embeddedMigrations() (db/migrations.h) from FILES, the
 # schema/migrations/NNN_name.sql files: each becomes {NNN, "<its text>"} as a raw string literal.
-# Run by the fsdb_db target: cmake -DOUT=<file.cpp> "-DFILES=<a.sql;b.sql>" -P migrations_embed.cmake
+# Run by the fsdb_db target: cmake -DOUT=<file.cpp> -DDIR=<schema/migrations> -P migrations_embed.cmake
+# (FILES are DIR/*.sql: a ';' list would not survive the build tool's command line as one argument).
 cmake_minimum_required(VERSION 3.18)  # -P scripts start with no policies set (IN_LIST)
 if(NOT OUT)
   message(FATAL_ERROR "migrations_embed.cmake: OUT is not set")
 endif()
+file(GLOB FILES "${DIR}/*.sql")
+list(SORT FILES)
 set(delimiter "fsdb_sql")
 set(entries "")
 set(seen_versions "")

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <mutex>
 
+#include "db/descriptor_index.h"
 #include "db/migrations.h"
 #include "db/sqlite.h"
 #include "geometry/error.h"
@@ -179,12 +180,19 @@ void writeVersion(Connection& connection, const ObjectRow& row, int version, con
     statement->bind(1, row.id);
     statement->run();
   }
-  auto statement = connection.prepare("INSERT OR IGNORE INTO refs (parent_id, child_id) VALUES (?1, ?2)");
-  for (int64_t child : children) {
-    statement->reset();
-    statement->bind(1, row.id).bind(2, child);
-    statement->run();
+  {
+    auto statement = connection.prepare("INSERT OR IGNORE INTO refs (parent_id, child_id) VALUES (?1, ?2)");
+    for (int64_t child : children) {
+      statement->reset();
+      statement->bind(1, row.id).bind(2, child);
+      statement->run();
+    }
   }
+  writeDescriptorRows(connection, row.id, row.kind, object.descriptors);
+  // Rows computed from referenced documents the caller read before this transaction may already
+  // be stale: the server recomputes them after the commit (db/store.h, the descriptor index).
+  if (object.references.empty()) clearDescriptorsPending(connection, row.id);
+  else markDescriptorsPending(connection, row.id);
 }
 
 void checkKind(const std::string& kind) {
@@ -240,6 +248,8 @@ StoredObject putIn(Connection& connection, int64_t id, const NewObject& object) 
   // The objects that reach this one are its ancestors in refs, which this write does not change
   // (it replaces only the object's own outgoing edges), so the order against writeVersion is free.
   invalidateCache(connection, id);
+  // The components of every object reaching this one change with it.
+  for (int64_t dependent : dependentsOf(connection, id)) markDescriptorsPending(connection, dependent);
   std::string now = isoNow();
   int version = row->latestVersion + 1;
   {
@@ -538,6 +548,116 @@ std::map<std::string, int64_t> Store::counts() const {
 std::vector<int64_t> Store::dependents(int64_t id) const {
   Impl::Lease connection(*impl_);
   return dependentsOf(*connection, id);
+}
+
+// --- The descriptor index -----------------------------------------------------------------------
+
+std::vector<DescriptorCandidate> Store::descriptorCandidates(const std::string& kind,
+                                                            const DescriptorOverlap& test) const {
+  Impl::Lease connection(*impl_);
+  Transaction transaction(*connection, Transaction::Mode::kDeferred);
+  return descriptorCandidatesIn(*connection, kind, test);
+}
+
+std::vector<int64_t> Store::objectIds(const std::string& kind) const {
+  Impl::Lease connection(*impl_);
+  auto statement = (*connection).prepare("SELECT id FROM objects WHERE kind = ?1 ORDER BY id");
+  statement->bind(1, kind);
+  std::vector<int64_t> ids;
+  while (statement->step()) ids.push_back(statement->columnInt(0));
+  return ids;
+}
+
+std::vector<IndexedObject> Store::indexedObjects(const std::string& kind, const std::vector<int64_t>& ids) const {
+  Impl::Lease connection(*impl_);
+  Transaction transaction(*connection, Transaction::Mode::kDeferred);
+  auto statement = (*connection).prepare(
+      "SELECT o.name, p.object_id IS NOT NULL, v.component, v.descriptor_values FROM objects o"
+      " LEFT JOIN descriptor_pending p ON p.object_id = o.id LEFT JOIN descriptor_values v ON v.object_id = o.id"
+      " WHERE o.id = ?1 AND o.kind = ?2 ORDER BY v.component");
+  std::vector<IndexedObject> objects;
+  objects.reserve(ids.size());
+  for (int64_t id : ids) {
+    statement->reset();
+    statement->bind(1, id).bind(2, kind);
+    IndexedObject object;
+    object.id = id;
+    bool found = false;
+    while (statement->step()) {
+      if (!found) {
+        object.name = statement->columnText(0);
+        object.pending = statement->columnInt(1) != 0;
+        found = true;
+      }
+      if (!statement->isNull(2))
+        object.components.emplace_back(static_cast<int>(statement->columnInt(2)), statement->columnBlob(3));
+    }
+    if (found) objects.push_back(std::move(object));
+  }
+  return objects;
+}
+
+std::vector<DescriptorComponent> Store::descriptorRows(int64_t id) const {
+  Impl::Lease connection(*impl_);
+  Transaction transaction(*connection, Transaction::Mode::kDeferred);
+  std::vector<DescriptorComponent> components;
+  {
+    auto statement = (*connection).prepare(
+        "SELECT component, descriptor_values FROM descriptor_values WHERE object_id = ?1 ORDER BY component");
+    statement->bind(1, id);
+    while (statement->step()) {
+      DescriptorComponent component;
+      component.component = static_cast<int>(statement->columnInt(0));
+      component.values = statement->columnBlob(1);
+      components.push_back(std::move(component));
+    }
+  }
+  auto statement = (*connection).prepare(
+      "SELECT component, descriptor, support_lo, core_lo, core_hi, support_hi FROM descriptor_index"
+      " WHERE object_id = ?1 ORDER BY component, descriptor");
+  statement->bind(1, id);
+  while (statement->step()) {
+    const int c = static_cast<int>(statement->columnInt(0));
+    auto it = std::find_if(components.begin(), components.end(),
+                           [c](const DescriptorComponent& d) { return d.component == c; });
+    if (it == components.end()) it = components.insert(components.end(), DescriptorComponent{c, {}, {}});
+    it->spans.push_back({statement->columnText(1), statement->columnDouble(2), statement->columnDouble(3),
+                         statement->columnDouble(4), statement->columnDouble(5)});
+  }
+  return components;
+}
+
+std::vector<PendingDescriptors> Store::pendingDescriptors(int64_t afterId, int limit) const {
+  Impl::Lease connection(*impl_);
+  auto statement = (*connection).prepare(
+      "SELECT p.object_id, o.kind, p.generation FROM descriptor_pending p JOIN objects o ON o.id = p.object_id"
+      " WHERE p.object_id > ?1 ORDER BY p.object_id LIMIT ?2");
+  statement->bind(1, afterId).bind(2, std::max(0, limit));
+  std::vector<PendingDescriptors> pending;
+  while (statement->step())
+    pending.push_back({statement->columnInt(0), statement->columnText(1), statement->columnInt(2)});
+  return pending;
+}
+
+size_t Store::replaceDescriptors(
+    const std::vector<std::pair<PendingDescriptors, std::vector<DescriptorComponent>>>& refreshed) {
+  Impl::Lease connection(*impl_);
+  Transaction transaction(*connection);
+  size_t replaced = 0;
+  for (const auto& [pending, components] : refreshed) {
+    {
+      auto statement = (*connection).prepare("SELECT generation FROM descriptor_pending WHERE object_id = ?1");
+      statement->bind(1, pending.id);
+      if (!statement->step() || statement->columnInt(0) != pending.generation) continue;
+    }
+    auto row = objectRow(*connection, pending.id);
+    if (!row) continue;
+    writeDescriptorRows(*connection, pending.id, row->kind, components);
+    clearDescriptorsPending(*connection, pending.id);
+    ++replaced;
+  }
+  transaction.commit();
+  return replaced;
 }
 
 std::optional<CachedEvaluation> Store::cachedEvaluation(const std::string& key) const {

@@ -66,6 +66,22 @@ struct CsgNodeRow {
   std::string transformJson;   // the leaf's transform document, "" when none
 };
 
+// One descriptor of one component in normalised form: the support [supportLo, supportHi] and
+// core [coreLo, coreHi] of the component's fuzzy degree (migration 002, descriptor index).
+struct DescriptorSpan {
+  std::string descriptor;  // "squariness", ... (query/descriptors.h descriptorNames())
+  double supportLo = 0, coreLo = 0, coreHi = 0, supportHi = 0;
+};
+
+// The descriptor rows of one component of an object: a part has one (component 0), a shape one
+// per leaf of its resolved tree. `values` holds the exact values in the caller's encoding
+// (server/descriptor_rows.h); the store keeps it as given.
+struct DescriptorComponent {
+  int component = 0;
+  std::vector<DescriptorSpan> spans;
+  std::string values;
+};
+
 // What a create or put writes.
 struct NewObject {
   std::string kind;
@@ -75,6 +91,7 @@ struct NewObject {
   std::vector<ObjectReference> references;
   std::vector<ParameterSpan> parameters;
   std::vector<CsgNodeRow> nodes;
+  std::vector<DescriptorComponent> descriptors;  // the descriptor index rows of this version
 };
 
 struct StoredObject {
@@ -113,6 +130,42 @@ struct StoreOptions {
   int busyTimeoutMs = 5000;
   bool synchronousFull = false;  // NORMAL (default) survives process crashes; FULL survives power loss
   int poolSize = 8;
+};
+
+// A support test of the descriptor index: which rows of `descriptor` a prefilter wants (the
+// store's side of query/descriptor_prefilter.h SupportTest). A crisp row (support_lo ==
+// support_hi = x) passes when x is in [lo, hi], each end only when included; a wide row when
+// support_lo <= hi and support_hi >= lo, both strict when wideStrict.
+struct DescriptorOverlap {
+  std::string descriptor;
+  double lo = 0, hi = 0;
+  bool loIncluded = true, hiIncluded = true;
+  bool wideStrict = false;
+};
+
+// A row found by a DescriptorOverlap (its support, from which the search bounds the score), or a
+// pending object (no row to trust).
+struct DescriptorCandidate {
+  int64_t id = 0;
+  double supportLo = 0, supportHi = 0;
+  bool pending = false;
+};
+
+// An object as the linguistic search scores it (Store::indexedObjects): its name and the
+// encoded descriptor values of its components. pending: the rows are missing or may be stale
+// (descriptor_pending), so the caller must describe the document instead of using `components`.
+struct IndexedObject {
+  int64_t id = 0;
+  std::string name;
+  bool pending = false;
+  std::vector<std::pair<int, std::string>> components;  // (component, values), by component
+};
+
+// An object whose descriptor rows the server must (re)compute; see replaceDescriptors.
+struct PendingDescriptors {
+  int64_t id = 0;
+  std::string kind;
+  int64_t generation = 0;
 };
 
 struct CachedEvaluation {
@@ -157,6 +210,34 @@ class Store {
   std::map<std::string, int64_t> counts() const;
   // Ids of the objects whose latest version reaches `id` through references (not `id` itself).
   std::vector<int64_t> dependents(int64_t id) const;
+
+  // --- The descriptor index (migration 002; issue 5) ---
+  // Writes keep it in step: create and put replace the object's rows with NewObject::descriptors
+  // in the write transaction (delete removes them by cascade). Rows may be stale where the store
+  // cannot know them: a put of X marks every object reaching X pending (its components changed),
+  // a create or put with references marks the object itself pending (the caller described the
+  // referenced documents before the write transaction), and migration 002 marks every object
+  // that existed before it. Pending objects are candidates of every prefilter, so the index never
+  // hides a match; the server recomputes them (pendingDescriptors, replaceDescriptors).
+  //
+  // The component rows of objects of `kind` passing `test` (one index range scan per width
+  // class, db/descriptor_index.h), and every pending object of `kind` (pending = true), in index
+  // order (not by id: sorting is the caller's choice; a shape's rows may be apart).
+  std::vector<DescriptorCandidate> descriptorCandidates(const std::string& kind, const DescriptorOverlap& test) const;
+  // Sorted ids of every live object of `kind` (the full scan's candidates).
+  std::vector<int64_t> objectIds(const std::string& kind) const;
+  // The objects of `kind` among `ids`, in the order given (ids of other kinds or deleted are skipped).
+  std::vector<IndexedObject> indexedObjects(const std::string& kind, const std::vector<int64_t>& ids) const;
+  // The rows of the latest version of `id`, by component (tests, diagnostics).
+  std::vector<DescriptorComponent> descriptorRows(int64_t id) const;
+  // Pending objects with id > afterId, by id, at most `limit`.
+  std::vector<PendingDescriptors> pendingDescriptors(int64_t afterId = 0, int limit = 1000) const;
+  // For each (pending object, its rows): replaces the rows and clears the mark, but only when the
+  // object is still pending with the same generation (a write since then marked it again or wrote
+  // fresh rows). One transaction for all; returns how many it replaced. The caller computes the
+  // rows from documents it read after pendingDescriptors.
+  size_t replaceDescriptors(
+      const std::vector<std::pair<PendingDescriptors, std::vector<DescriptorComponent>>>& refreshed);
 
   std::optional<CachedEvaluation> cachedEvaluation(const std::string& key) const;
   void storeEvaluation(int64_t objectId, const std::string& key, const CachedEvaluation& value);

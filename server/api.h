@@ -22,6 +22,9 @@ void registerEvaluationRoutes(HttpServer& server, Store& store);
 // POST/GET /parts, GET/PUT/DELETE /parts/{id}, POST /parts/bulk, and the same for /shapes
 void registerObjectRoutes(HttpServer& server, Store& store);
 
+// POST /query/linguistic (server/linguistic_search.h)
+void registerQueryRoutes(HttpServer& server, const Store& store);
+
 // A positive integer from a path segment or query parameter (digits only, at most `max`);
 // 422 invalid_parameter naming `what` otherwise. Every {id} of every route goes through it.
 int64_t positiveInteger(const std::string& text, const std::string& what, int64_t max = INT64_MAX);

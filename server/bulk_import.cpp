@@ -4,6 +4,7 @@
 
 #include "geometry/error.h"
 #include "query/json_body.h"
+#include "server/descriptor_rows.h"
 #include "server/documents.h"
 #include "server/http_errors.h"
 
@@ -99,6 +100,7 @@ BulkReport importDocuments(Store& store, const std::vector<BulkLine>& lines, con
           report.addFailure(itemLines[k], errorObject(results[k].errorCode, results[k].errorMessage, results[k].errorPath));
         }
       }
+      refreshPendingDescriptors(store, options.maxNodes);  // shapes with references, upserted versions
     }
     if (options.progress) options.progress(end, lines.size());
   }

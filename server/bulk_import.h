@@ -12,6 +12,8 @@
 // commits. A crash or kill loses at most the batch being written, never part of one: every batch
 // acknowledged through `progress` (and every line counted in `imported`) is durable.
 // References may name documents of earlier lines of the same batch or of earlier batches.
+// After each batch the descriptor rows the batch left pending are recomputed
+// (server/descriptor_rows.h refreshPendingDescriptors).
 #include <cstdint>
 #include <functional>
 #include <nlohmann/json.hpp>

@@ -7,6 +7,7 @@
 #include "geometry/fuzzy_part.h"
 #include "query/json_body.h"
 #include "query/part_json.h"
+#include "server/descriptor_rows.h"
 
 namespace fsdb {
 namespace {
@@ -96,10 +97,13 @@ NewObject prepareDocument(const nlohmann::json& document, const std::string& kin
   out.kind = kind;
   out.name = doc["name"].get<std::string>();
   if (kind == "part") {
-    out.parameters = parameterSpans(parsePart(doc, path));
+    const FuzzyPart part = parsePart(doc, path);
+    out.parameters = parameterSpans(part);
+    out.descriptors = partDescriptorRows(part);
   } else {
     // Validates everything, references included, and keeps the resolved tree (csg text parsed).
     const ParsedShape parsed = parseShapeField(doc, path, maxNodes, storeResolver(store, pending));
+    if (parsed.tree) out.descriptors = shapeDescriptorRows(shapeComponents(*parsed.tree));
     const TreeOutline outline = outlineTree(parsed.documentTree, parsed.documentTreePath);
     for (const DocumentReference& r : outline.references) out.references.push_back(objectReference(r));
     for (size_t i = 0; i < outline.nodes.size(); ++i) {

@@ -10,6 +10,8 @@
 // - A part document may omit "kind" (it is the route's); a document of the other kind is
 //   invalid_document naming "kind". "name" is required: a non-empty string of at most 200
 //   characters without control characters.
+// - The descriptor index rows (server/descriptor_rows.h) go with the object: a part's one
+//   component, a shape's leaves (references expanded).
 // - The stored text is the document as given, re-serialised compactly (key order kept as
 //   parsed by nlohmann::json: sorted), with "kind" filled in.
 #include <map>

@@ -31,6 +31,7 @@ struct ServerLimits {
   size_t maxPoints = 1000000;       // --max-points: POST /operators/evaluate points per request
   int maxResolution = 512;          // --max-resolution: voxels along a shape's longest side
   size_t maxNodes = 10000;          // --max-nodes: CSG nodes per shape
+  int maxQueryMs = 10000;           // --max-query-ms: longest linguistic search (413 beyond); 0: none
 };
 
 struct ServerOptions {

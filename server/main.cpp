@@ -1,8 +1,9 @@
-// The fsdb executable: `fsdb serve`, `fsdb import`, `fsdb eval` (SPEC §1).
+// The fsdb executable: `fsdb serve`, `fsdb import`, `fsdb eval`, `fsdb query` (SPEC §1).
 #include <CLI/CLI.hpp>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include <chrono>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
@@ -17,10 +18,12 @@
 #include "query/vocabulary.h"
 #include "server/api.h"
 #include "server/bulk_import.h"
+#include "server/descriptor_rows.h"
 #include "server/eval_command.h"
 #include "server/file_io.h"
 #include "server/http_server.h"
 #include "server/import_command.h"
+#include "server/query_command.h"
 
 namespace {
 
@@ -60,6 +63,16 @@ void loadDemo(fsdb::Store& store, const std::string& dir, size_t maxNodes) {
   }
 }
 
+// Objects without fresh descriptor rows (a database older than migration 002, or a process that
+// stopped between a write and its refresh) are searched from their documents until this runs.
+void backfillDescriptorIndex(fsdb::Store& store, size_t maxNodes) {
+  const auto start = std::chrono::steady_clock::now();
+  const size_t n = fsdb::refreshPendingDescriptors(store, maxNodes);
+  if (n == 0) return;
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  spdlog::info("descriptor index: backfilled {} objects in {:.2f} s", n, seconds);
+}
+
 int runServe(const fsdb::ServerOptions& options, const std::string& dbPath, const std::string& demoDir,
              const std::string& vocabularyPath) {
   // Before the demo is loaded and any request parsed: every parser reads the active vocabulary.
@@ -81,6 +94,7 @@ int runServe(const fsdb::ServerOptions& options, const std::string& dbPath, cons
     store = fsdb::Store::open(dbPath);
     spdlog::info("database {} (schema version {})", dbPath, store->schemaVersion());
     if (fresh && !demoDir.empty()) loadDemo(*store, demoDir, options.limits.maxNodes);
+    backfillDescriptorIndex(*store, options.limits.maxNodes);
   } catch (const fsdb::Error& e) {
     spdlog::error("cannot open the database: {}", e.what());
     return 1;
@@ -156,6 +170,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(2, 4096))->capture_default_str();
   serveCmd->add_option("--max-nodes", serve.limits.maxNodes, "most CSG nodes in one shape")
       ->check(CLI::PositiveNumber)->capture_default_str();
+  serveCmd->add_option("--max-query-ms", serve.limits.maxQueryMs,
+                       "longest POST /query/linguistic search in milliseconds (413 beyond); 0: no limit")
+      ->check(CLI::Range(0, 86400000))->capture_default_str();
 
   std::string evalFile;
   fsdb::EvalOptions eval;
@@ -188,11 +205,24 @@ int main(int argc, char** argv) {
   importCmd->add_option("--batch", import.batchSize, "lines per transaction")->check(CLI::Range(1, 10000))
       ->capture_default_str();
 
+  fsdb::QueryCommandOptions query;
+  query.dbPath = dbPath;
+  auto* queryCmd = app.add_subcommand("query", "linguistic search: \"find a slightly bent shape\" (exit 0 ran, 1 refused, 2 no database or server)");
+  queryCmd->add_option("TEXT", query.text, "the query in words (GET /vocabulary lists them)")->required();
+  auto* queryDb = queryCmd->add_option("--db", query.dbPath, "database file")->capture_default_str();
+  queryCmd->add_option("--server", query.serverUrl, "ask a running server, e.g. http://127.0.0.1:8080")->excludes(queryDb);
+  queryCmd->add_option("--limit", query.limit, "most results")->check(CLI::Range(1, 1000))->capture_default_str();
+  queryCmd->add_option("--threshold", query.threshold, "least score")->check(CLI::Range(0.0, 1.0))->capture_default_str();
+  queryCmd->add_option("--kind", query.kind, "only parts or only shapes")->check(CLI::IsMember({"part", "shape"}));
+  queryCmd->add_flag("--scan", query.scan, "score every object instead of the index's candidates (same results)");
+  queryCmd->add_flag("--json", query.json, "print the JSON answer of POST /query/linguistic");
+
   CLI11_PARSE(app, argc, argv);
   spdlog::set_level(spdlog::level::from_str(logLevel));
 
   if (serveCmd->parsed()) return runServe(serve, dbPath, demoDir, vocabularyPath);
   if (evalCmd->parsed()) return fsdb::runEval(evalFile, eval);
   if (importCmd->parsed()) return fsdb::runImport(import);
+  if (queryCmd->parsed()) return fsdb::runQuery(query);
   return 2;
 }

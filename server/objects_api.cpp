@@ -5,6 +5,7 @@
 #include "geometry/error.h"
 #include "server/api.h"
 #include "server/bulk_import.h"
+#include "server/descriptor_rows.h"
 #include "server/documents.h"
 #include "server/http_server.h"
 
@@ -51,6 +52,7 @@ void registerKind(HttpServer& server, Store& store, const std::string& kind) {
 
   server.addRoute("POST", base, [&store, kind, maxNodes, base](const ApiRequest& req) {
     const StoredObject created = store.create(prepareDocument(req.body, kind, store, maxNodes, ""));
+    refreshPendingDescriptors(store, maxNodes);  // a shape with references is written pending
     ApiResponse out{201, storedObjectJson(created)};
     out.headers.emplace_back("Location", base + "/" + std::to_string(created.id));
     return out;
@@ -90,7 +92,9 @@ void registerKind(HttpServer& server, Store& store, const std::string& kind) {
     nlohmann::json doc = req.body;
     // The name may be left out: a new version keeps the object's name.
     if (doc.is_object() && !doc.contains("name")) doc["name"] = store.get(kind, id).name;
-    return ApiResponse{200, storedObjectJson(store.put(id, prepareDocument(doc, kind, store, maxNodes, "")))};
+    const StoredObject stored = store.put(id, prepareDocument(doc, kind, store, maxNodes, ""));
+    refreshPendingDescriptors(store, maxNodes);  // the objects reaching this one are pending
+    return ApiResponse{200, storedObjectJson(stored)};
   }, write);
 
   server.addRoute("DELETE", base + "/{id}", [&store, kind](const ApiRequest& req) {

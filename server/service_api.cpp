@@ -37,6 +37,7 @@ void registerAllRoutes(HttpServer& server, Store& store) {
   registerVocabularyRoutes(server);
   registerObjectRoutes(server, store);
   registerEvaluationRoutes(server, store);
+  registerQueryRoutes(server, store);
 }
 
 }  // namespace fsdb

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "db/content_hash.h"
+#include "db/migrations.h"
 #include "db/sqlite.h"
 #include "geometry/error.h"
 #include "tests/db/expect_error.h"
@@ -17,7 +18,7 @@ namespace fsdb {
 namespace {
 
 NewObject part(const std::string& name, const std::string& document = "{\"eps1\":1}") {
-  NewObject object{"part", name, document, contentHash(document), {}, {}, {}};
+  NewObject object{"part", name, document, contentHash(document), {}, {}, {}, {}};
   object.parameters.push_back({"eps1", 0.5, 0.9, 1.1, 1.5});
   object.parameters.push_back({"t", 0, 0, 0, 0});
   return object;
@@ -27,7 +28,7 @@ NewObject part(const std::string& name, const std::string& document = "{\"eps1\"
 NewObject shape(const std::string& name, const std::vector<ObjectReference>& children,
                 const std::string& salt = "") {
   std::string document = "{\"union\":" + std::to_string(children.size()) + salt + "}";
-  NewObject object{"shape", name, document, contentHash(document), children, {}, {}};
+  NewObject object{"shape", name, document, contentHash(document), children, {}, {}, {}};
   object.nodes.push_back({0, -1, 0, "union", "", -1, ""});
   for (size_t i = 0; i < children.size(); ++i)
     object.nodes.push_back({static_cast<int>(i + 1), 0, static_cast<int>(i), "ref", "", static_cast<int>(i), "{\"translate\":[1,0,0]}"});
@@ -61,7 +62,7 @@ class StoreTest : public testing::Test {
 TEST_F(StoreTest, OpenCreatesParentDirectoriesAndMigrates) {
   EXPECT_TRUE(std::filesystem::exists(path));
   EXPECT_EQ(store->path(), path);
-  EXPECT_EQ(store->schemaVersion(), 1);
+  EXPECT_EQ(store->schemaVersion(), embeddedMigrations().back().first);
   EXPECT_EQ(store->integrityCheck(), "ok");
 }
 
@@ -354,7 +355,7 @@ TEST(StoreReopen, DataPersists) {
     EXPECT_EQ(std::filesystem::file_size(path + "-wal"), 0u);
   }
   auto store = Store::open(path, StoreOptions{1000, true, 2});
-  EXPECT_EQ(store->schemaVersion(), 1);
+  EXPECT_EQ(store->schemaVersion(), embeddedMigrations().back().first);
   EXPECT_EQ(store->get("part", id).version, 2);
   EXPECT_EQ(store->get("part", id, 1).documentJson, "{\"eps1\":1}");
   EXPECT_EQ(store->create(part("nut")).id, id + 1);

@@ -1,0 +1,188 @@
+// Linguistic search speed (issue 5): POST /query/linguistic's search (server/linguistic_search.h)
+// on catalogues of N random parts, the descriptor index's candidates against the full scan, in
+// one run. Goals: p50 < 50 ms at 1M parts, indexed >= 10x faster than the scan.
+//
+// Usage: bench_linguistic [--sizes 100000,1000000] [--dir DIR] [--reps R] [--scan-reps S]
+//                         [--benchmark_out=FILE.json] (other --benchmark_* flags are ignored, so
+//                         scripts/run-benchmarks can run it; it then measures 100000 parts)
+// A catalogue is built once per size into DIR/parts-N.sqlite (default build/bench-data) and
+// reused by later runs: random parts (seeded) go through the same code as POST /parts/bulk
+// (prepareDocument: validation, parameter spans, describePart, descriptor rows) and are written
+// with Store::createBatch in transactions of 10000, so the database is what an import makes.
+// Every query runs R times indexed and S times as a scan; both answers must be equal.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "db/store.h"
+#include "geometry/error.h"
+#include "query/linguistic_query.h"
+#include "query/part_json.h"
+#include "query/vocabulary.h"
+#include "server/documents.h"
+#include "server/linguistic_search.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+// Mostly crisp deformations (a catalogue of plain parts with some bent, tapered, twisted ones),
+// about a third of the values fuzzy.
+fsdb::FuzzyNumber value(std::mt19937& rng, double lo, double hi, double fuzzyShare) {
+  std::uniform_real_distribution<double> u(0, 1);
+  const double m = lo + (hi - lo) * u(rng);
+  if (u(rng) >= fuzzyShare) return fsdb::FuzzyNumber::crisp(m);
+  const double s = (hi - lo) * (0.02 + 0.08 * u(rng));
+  return fsdb::FuzzyNumber::triangular(std::max(lo, m - s), m, std::min(hi, m + s));
+}
+
+fsdb::FuzzyPart randomPart(std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(0, 1);
+  fsdb::FuzzyPart p;
+  p.eps1 = value(rng, 0.1, 2.5, 0.3);
+  p.eps2 = value(rng, 0.1, 2.5, 0.3);
+  p.a1 = value(rng, 0.3, 3.0, 0.3);
+  p.a2 = value(rng, 0.3, 2.0, 0.2);
+  p.a3 = value(rng, 0.3, 3.0, 0.2);
+  // a fifth of the parts bent, a tenth tapered, a tenth twisted
+  if (u(rng) < 0.2) p.kv = value(rng, 0.0, 0.4 / (p.a1.support().hi * p.a3.support().hi), 0.5);
+  if (u(rng) < 0.1) p.kx = value(rng, 0.0, 0.9, 0.5);
+  if (u(rng) < 0.1) p.t = value(rng, 0.0, 3.0, 0.5);
+  p.tx = value(rng, -10, 10, 0.2);
+  p.ty = value(rng, -10, 10, 0.2);
+  return p;
+}
+
+void build(const std::string& path, size_t n) {
+  const std::string tmp = path + ".building";
+  std::filesystem::remove(tmp);
+  auto store = fsdb::Store::open(tmp);
+  std::mt19937 rng(42);
+  const auto start = Clock::now();
+  const size_t batch = 10000;
+  for (size_t done = 0; done < n;) {
+    std::vector<fsdb::NewObject> items;
+    for (size_t i = 0; i < batch && done < n; ++i, ++done) {
+      nlohmann::json doc = fsdb::partToJson(randomPart(rng));
+      doc["kind"] = "part";
+      char name[32];
+      std::snprintf(name, sizeof name, "part-%07zu", done + 1);
+      doc["name"] = name;
+      items.push_back(fsdb::prepareDocument(doc, "part", *store, 10000, ""));
+    }
+    store->createBatch(items, fsdb::BulkMode::kCreate);
+    if (done % 100000 == 0 || done == n)
+      std::fprintf(stderr, "  %zu parts, %.0f s\n", done, msSince(start) / 1000);
+  }
+  store->checkpoint();
+  store.reset();
+  std::filesystem::rename(tmp, path);
+  std::fprintf(stderr, "built %s: %zu parts in %.1f s\n", path.c_str(), n, msSince(start) / 1000);
+}
+
+double percentile(std::vector<double> v, double q) {
+  std::sort(v.begin(), v.end());
+  return v[static_cast<size_t>(q * (v.size() - 1) + 0.5)];
+}
+
+bool sameResults(const fsdb::LinguisticSearchResult& a, const fsdb::LinguisticSearchResult& b) {
+  if (a.hits.size() != b.hits.size()) return false;
+  for (size_t i = 0; i < a.hits.size(); ++i)
+    if (a.hits[i].id != b.hits[i].id || a.hits[i].score.score != b.hits[i].score.score) return false;
+  return true;
+}
+
+const std::vector<std::string> kQueries = {
+    "find a very twisted part",                   // selective: a tenth twisted, few very
+    "find a slightly bent part",                  // a fifth bent
+    "find a very tapered and slightly bent part", // and of two selective conditions
+    "find a very round part",                     // broad: exponents near 1
+    "find a big part",                            // broad: most parts have some size
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<size_t> sizes;
+  std::string dir = "build/bench-data", out;
+  int reps = 21, scanReps = 3;
+  bool underRunner = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto next = [&]() -> std::string { return i + 1 < argc ? argv[++i] : ""; };
+    if (a == "--sizes") {
+      std::stringstream ss(next());
+      for (std::string s; std::getline(ss, s, ',');) sizes.push_back(std::stoul(s));
+    } else if (a == "--dir") dir = next();
+    else if (a == "--reps") reps = std::stoi(next());
+    else if (a == "--scan-reps") scanReps = std::stoi(next());
+    else if (a.rfind("--benchmark_out=", 0) == 0) out = a.substr(16), underRunner = true;
+    else if (a.rfind("--benchmark_", 0) == 0) underRunner = true;
+    else {
+      std::cerr << "unknown argument " << a << "\n";
+      return 2;
+    }
+  }
+  if (sizes.empty()) sizes = {100000};
+  (void)underRunner;
+  std::filesystem::create_directories(dir);
+  nlohmann::json report = nlohmann::json::array();
+  try {
+    for (size_t n : sizes) {
+      const std::string path = dir + "/parts-" + std::to_string(n) + ".sqlite";
+      if (!std::filesystem::exists(path)) build(path, n);
+      auto store = fsdb::Store::open(path);
+      std::printf("== %zu parts (%s, %.0f MB)\n", n, path.c_str(),
+                  std::filesystem::file_size(path) / 1e6);
+      std::printf("%-45s %9s %9s %9s %10s %7s %9s %6s\n", "query", "hits", "cands", "p50 ms", "p95 ms",
+                  "scan ms", "ratio", "equal");
+      for (const std::string& text : kQueries) {
+        const fsdb::LinguisticQuery q = fsdb::parseLinguisticQuery(text, fsdb::Vocabulary::builtin());
+        fsdb::LinguisticSearchOptions options;
+        options.kinds = fsdb::searchKinds(q, "");
+        options.limit = 10;
+        std::vector<double> indexed, scanned;
+        fsdb::LinguisticSearchResult a, b;
+        for (int r = 0; r < reps; ++r) {
+          const auto t = Clock::now();
+          a = fsdb::searchLinguistic(*store, q, options);
+          indexed.push_back(msSince(t));
+        }
+        options.scan = true;
+        for (int r = 0; r < scanReps; ++r) {
+          const auto t = Clock::now();
+          b = fsdb::searchLinguistic(*store, q, options);
+          scanned.push_back(msSince(t));
+        }
+        const double p50 = percentile(indexed, 0.5), p95 = percentile(indexed, 0.95);
+        const double scan = scanned.empty() ? 0.0 : percentile(scanned, 0.5);
+        const bool equal = scanned.empty() || sameResults(a, b);  // --scan-reps 0: index only (profiling)
+        std::printf("%-45s %9zu %9zu %9.2f %10.2f %7.0f %8.1fx %6s\n", ("\"" + text + "\"").c_str(), a.hits.size(),
+                    a.candidates, p50, p95, scan, scan / p50, equal ? "yes" : "NO");
+        std::fflush(stdout);
+        report.push_back({{"parts", n}, {"query", text}, {"candidates", a.candidates}, {"scanned", b.candidates},
+                          {"p50_ms", p50}, {"p95_ms", p95}, {"scan_p50_ms", scan}, {"ratio", scan / p50},
+                          {"equal", equal}, {"reps", reps}, {"scan_reps", scanReps}});
+        if (!equal) {
+          std::cerr << "indexed and scan answers differ for \"" << text << "\"\n";
+          return 1;
+        }
+      }
+    }
+  } catch (const fsdb::Error& e) {
+    std::cerr << "bench_linguistic: " << e.code() << ": " << e.what() << " (" << e.path() << ")\n";
+    return 1;
+  }
+  if (!out.empty()) std::ofstream(out) << report.dump(2) << "\n";
+  return 0;
+}

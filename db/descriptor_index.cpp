@@ -1,0 +1,119 @@
+// See db/descriptor_index.h.
+#include "db/descriptor_index.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "db/sqlite.h"
+
+namespace fsdb {
+
+int widthClass(double width) {
+  if (!(width > 0)) return kCrispWidthClass;
+  int exponent = 0;
+  std::frexp(width, &exponent);  // width = m * 2^exponent, m in [0.5, 1): width < 2^exponent
+  return exponent;
+}
+
+double lowestSupportLo(double lo, int widthClass) {
+  if (widthClass == kCrispWidthClass) return lo;
+  return std::nextafter(lo - std::ldexp(1.0, widthClass), -std::numeric_limits<double>::infinity());
+}
+
+void writeDescriptorRows(sqlite::Connection& connection, int64_t objectId, const std::string& kind,
+                         const std::vector<DescriptorComponent>& components) {
+  for (const char* sql : {"DELETE FROM descriptor_index WHERE object_id = ?1",
+                          "DELETE FROM descriptor_values WHERE object_id = ?1"}) {
+    auto statement = connection.prepare(sql);
+    statement->bind(1, objectId);
+    statement->run();
+  }
+  auto row = connection.prepare(
+      "INSERT INTO descriptor_index (object_id, kind, component, descriptor, width_class, support_lo,"
+      " core_lo, core_hi, support_hi) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9)");
+  auto seenClass = connection.prepare(
+      "INSERT OR IGNORE INTO descriptor_classes (descriptor, width_class) VALUES (?1, ?2)");
+  auto values = connection.prepare(
+      "INSERT INTO descriptor_values (object_id, component, descriptor_values) VALUES (?1, ?2, ?3)");
+  for (const DescriptorComponent& component : components) {
+    for (const DescriptorSpan& span : component.spans) {
+      const int c = widthClass(span.supportHi - span.supportLo);
+      row->reset();
+      row->bind(1, objectId).bind(2, kind).bind(3, component.component).bind(4, span.descriptor).bind(5, c);
+      row->bind(6, span.supportLo).bind(7, span.coreLo).bind(8, span.coreHi).bind(9, span.supportHi);
+      row->run();
+      seenClass->reset();
+      seenClass->bind(1, span.descriptor).bind(2, c);
+      seenClass->run();
+    }
+    values->reset();
+    values->bind(1, objectId).bind(2, component.component).bindBlob(3, component.values);
+    values->run();
+  }
+}
+
+void markDescriptorsPending(sqlite::Connection& connection, int64_t objectId) {
+  int64_t generation = 0;
+  {
+    auto clock = connection.prepare(
+        "UPDATE descriptor_clock SET generation = generation + 1 WHERE id = 1 RETURNING generation");
+    if (clock->step()) generation = clock->columnInt(0);
+  }
+  auto statement = connection.prepare(
+      "INSERT INTO descriptor_pending (object_id, generation) VALUES (?1, ?2)"
+      " ON CONFLICT (object_id) DO UPDATE SET generation = excluded.generation");
+  statement->bind(1, objectId).bind(2, generation);
+  statement->run();
+}
+
+void clearDescriptorsPending(sqlite::Connection& connection, int64_t objectId) {
+  auto statement = connection.prepare("DELETE FROM descriptor_pending WHERE object_id = ?1");
+  statement->bind(1, objectId);
+  statement->run();
+}
+
+namespace {
+
+double above(double x) { return std::nextafter(x, std::numeric_limits<double>::infinity()); }
+double below(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
+
+}  // namespace
+
+std::vector<DescriptorCandidate> descriptorCandidatesIn(sqlite::Connection& connection, const std::string& kind,
+                                                        const DescriptorOverlap& test) {
+  std::vector<int> classes;
+  {
+    auto statement = connection.prepare("SELECT width_class FROM descriptor_classes WHERE descriptor = ?1");
+    statement->bind(1, test.descriptor);
+    while (statement->step()) classes.push_back(static_cast<int>(statement->columnInt(0)));
+  }
+  std::vector<DescriptorCandidate> rows;
+  auto scan = connection.prepare(
+      "SELECT object_id, support_lo, support_hi FROM descriptor_index WHERE kind = ?1 AND descriptor = ?2 AND width_class = ?3"
+      " AND support_lo BETWEEN ?4 AND ?5 AND support_hi >= ?6");
+  for (int c : classes) {
+    double fromLo, toLo, leastHi;  // support_lo BETWEEN fromLo AND toLo AND support_hi >= leastHi
+    if (c == kCrispWidthClass) {
+      fromLo = test.loIncluded ? test.lo : above(test.lo);
+      toLo = test.hiIncluded ? test.hi : below(test.hi);
+      leastHi = fromLo;
+    } else {
+      fromLo = lowestSupportLo(test.lo, c);
+      toLo = test.wideStrict ? below(test.hi) : test.hi;
+      leastHi = test.wideStrict ? above(test.lo) : test.lo;
+    }
+    if (fromLo > toLo) continue;
+    scan->reset();
+    scan->bind(1, kind).bind(2, test.descriptor).bind(3, c).bind(4, fromLo).bind(5, toLo).bind(6, leastHi);
+    while (scan->step()) rows.push_back({scan->columnInt(0), scan->columnDouble(1), scan->columnDouble(2), false});
+  }
+  auto pending = connection.prepare(
+      // CROSS JOIN: driven by the (usually empty) pending table, not by every object of the kind.
+      "SELECT p.object_id FROM descriptor_pending p CROSS JOIN objects o ON o.id = p.object_id WHERE o.kind = ?1");
+  pending->bind(1, kind);
+  while (pending->step()) rows.push_back({pending->columnInt(0), 0, 0, true});
+  return rows;
+}
+
+}  // namespace fsdb

@@ -1,0 +1,41 @@
+#pragma once
+// The descriptor index of migration 002 at the level of one SQLite connection: what the store's
+// write path and its descriptor methods (db/store.h) run inside their transactions.
+//
+// Width classes: a row's class c bounds its support width w = support_hi - support_lo by
+// w <= 2^c (crisp rows: kCrispWidthClass, w = 0). A support that meets [lo, hi] then has
+// support_lo in [lo - 2^c, hi], so one range scan per class on descriptor_index_overlap finds
+// every overlap (checking support_hi >= lo in the index) without reading the rows below lo - 2^c.
+// Strict and excluded ends become inclusive bounds one double further in (x > lo is
+// x >= nextafter(lo, +inf)), so every test is BETWEEN on the index.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "db/store.h"
+
+namespace fsdb {
+
+namespace sqlite {
+class Connection;
+}
+
+constexpr int kCrispWidthClass = -1100;  // below the exponent of any positive double
+
+// The class of a support width (>= 0): kCrispWidthClass for 0, else the least c with w < 2^c.
+int widthClass(double width);
+// The least support_lo a row of class c can have and still meet [lo, ...]: lo - 2^c rounded down.
+double lowestSupportLo(double lo, int widthClass);
+
+// Replaces the rows of `objectId` (of `kind`) with `components`.
+void writeDescriptorRows(sqlite::Connection& connection, int64_t objectId, const std::string& kind,
+                         const std::vector<DescriptorComponent>& components);
+// Marks `objectId` pending with a new generation (higher than any before).
+void markDescriptorsPending(sqlite::Connection& connection, int64_t objectId);
+// Clears the mark of `objectId` (its rows were just written from what the write stored).
+void clearDescriptorsPending(sqlite::Connection& connection, int64_t objectId);
+
+std::vector<DescriptorCandidate> descriptorCandidatesIn(sqlite::Connection& connection, const std::string& kind,
+                                                        const DescriptorOverlap& test);
+
+}  // namespace fsdb

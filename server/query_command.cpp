@@ -1,0 +1,85 @@
+// See server/query_command.h.
+#include "server/query_command.h"
+
+#include <httplib.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "db/store.h"
+#include "geometry/error.h"
+#include "server/http_errors.h"
+#include "server/linguistic_search.h"
+
+namespace fsdb {
+namespace {
+
+// The error of an answer or a thrown Error, as the table prints it.
+void printError(const nlohmann::json& error) {
+  std::cerr << "fsdb query: " << error.value("code", "error") << ": " << error.value("message", "");
+  const std::string path = error.value("path", "");
+  if (!path.empty()) std::cerr << " (" << path << ")";
+  std::cerr << "\n";
+}
+
+void printTable(const nlohmann::json& answer) {
+  const nlohmann::json& results = answer["results"];
+  if (results.empty()) {
+    std::cout << "no results\n";
+    return;
+  }
+  std::printf("%4s  %-6s  %-5s  %8s  %s\n", "rank", "score", "kind", "id", "name");
+  int rank = 0;
+  for (const nlohmann::json& r : results)
+    std::printf("%4d  %.4f  %-5s  %8lld  %s\n", ++rank, r["score"].get<double>(),
+                r["kind"].get<std::string>().c_str(), static_cast<long long>(r["id"].get<int64_t>()),
+                r["name"].get<std::string>().c_str());
+  std::fflush(stdout);
+}
+
+// 1 for refusals of the query itself (4xx), 2 for storage and transport trouble.
+int exitFor(const std::string& code) { return httpStatusFor(code) >= 500 ? 2 : 1; }
+
+}  // namespace
+
+int runQuery(const QueryCommandOptions& options) {
+  nlohmann::json request = {{"text", options.text}, {"limit", options.limit}, {"threshold", options.threshold},
+                            {"scan", options.scan}};
+  if (!options.kind.empty()) request["kind"] = options.kind;
+  nlohmann::json answer;
+  if (!options.serverUrl.empty()) {
+    httplib::Client client(options.serverUrl);
+    client.set_read_timeout(600, 0);
+    auto res = client.Post("/query/linguistic", request.dump(), "application/json");
+    if (!res) {
+      std::cerr << "fsdb query: cannot reach " << options.serverUrl << ": " << httplib::to_string(res.error()) << "\n";
+      return 2;
+    }
+    answer = nlohmann::json::parse(res->body, nullptr, false);
+    if (res->status != 200 || !answer.is_object() || !answer.contains("results")) {
+      if (answer.is_object() && answer.contains("error")) {
+        printError(answer["error"]);
+        return res->status >= 500 ? 2 : 1;
+      }
+      std::cerr << "fsdb query: the server answered " << res->status << ": " << res->body << "\n";
+      return 2;
+    }
+  } else {
+    try {
+      if (!std::filesystem::exists(options.dbPath))
+        throw Error(errc::kStorage, "no database at '" + options.dbPath + "'", "--db");
+      std::unique_ptr<Store> store = Store::open(options.dbPath);
+      answer = linguisticQueryResponse(*store, request, LinguisticRequestLimits{options.maxNodes, 0});
+    } catch (const Error& e) {
+      printError(errorObject(e.code(), e.what(), e.path()));
+      return exitFor(e.code());
+    }
+  }
+  if (options.json) std::cout << answer.dump(2) << std::endl;
+  else printTable(answer);
+  return 0;
+}
+
+}  // namespace fsdb

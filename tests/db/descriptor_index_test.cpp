@@ -1,0 +1,267 @@
+// The descriptor index of the store (db/store.h, migration 002): rows written with the object,
+// replaced by put, removed by delete, written by createBatch; pending marks; the width-class
+// overlap scan against a brute-force overlap; migration of a database made before 002.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "db/content_hash.h"
+#include "db/descriptor_index.h"
+#include "db/migrations.h"
+#include "db/sqlite.h"
+#include "db/store.h"
+#include "tests/db/temp_dir.h"
+
+namespace fsdb {
+namespace {
+
+DescriptorComponent component(int index, double lo, double hi, const std::string& values = "v") {
+  DescriptorComponent c;
+  c.component = index;
+  c.spans.push_back({"bendness", lo, (lo + hi) / 2, (lo + hi) / 2, hi});
+  c.spans.push_back({"size", 0.5, 0.5, 0.5, 0.5});
+  c.values = values;
+  return c;
+}
+
+NewObject part(const std::string& name, double lo, double hi, const std::string& salt = "") {
+  const std::string document = "{\"name\":\"" + name + "\"" + salt + "}";
+  NewObject object;
+  object.kind = "part";
+  object.name = name;
+  object.documentJson = document;
+  object.contentHash = contentHash(document);
+  object.descriptors.push_back(component(0, lo, hi, "values of " + name + salt));
+  return object;
+}
+
+NewObject shapeOf(const std::string& name, const std::vector<std::string>& parts, double lo, double hi) {
+  const std::string document = "{\"shape\":\"" + name + "\"}";
+  NewObject object;
+  object.kind = "shape";
+  object.name = name;
+  object.documentJson = document;
+  object.contentHash = contentHash(document);
+  for (size_t i = 0; i < parts.size(); ++i) {
+    object.references.push_back({"part", std::nullopt, parts[i], "tree.children[" + std::to_string(i) + "].part"});
+    object.descriptors.push_back(component(static_cast<int>(i), lo, hi));
+  }
+  return object;
+}
+
+// The distinct ids descriptorCandidates finds, sorted.
+std::vector<int64_t> ids(const Store& store, const std::string& kind, const DescriptorOverlap& test) {
+  std::vector<int64_t> out;
+  for (const DescriptorCandidate& c : store.descriptorCandidates(kind, test)) out.push_back(c.id);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+std::vector<int64_t> pendingIds(const Store& store) {
+  std::vector<int64_t> ids;
+  for (const PendingDescriptors& p : store.pendingDescriptors()) ids.push_back(p.id);
+  return ids;
+}
+
+class DescriptorIndexTest : public testing::Test {
+ protected:
+  TempDir dir;
+  std::string path = dir.file("fsdb.db");
+  std::unique_ptr<Store> store = Store::open(path);
+};
+
+TEST(WidthClass, BoundsTheWidth) {
+  EXPECT_EQ(widthClass(0), kCrispWidthClass);
+  std::mt19937 rng(5);
+  for (int i = 0; i < 10000; ++i) {
+    const double w = std::ldexp(std::uniform_real_distribution<double>(0.5, 1.0)(rng),
+                                std::uniform_int_distribution<int>(-40, 10)(rng));
+    const int c = widthClass(w);
+    EXPECT_LT(w, std::ldexp(1.0, c));
+    EXPECT_GE(w, std::ldexp(1.0, c - 1));
+    const double lo = std::uniform_real_distribution<double>(-5, 5)(rng);
+    // A row of width w meeting [lo, ...] has support_lo >= lo - w >= lowestSupportLo.
+    EXPECT_LE(lowestSupportLo(lo, c), lo - w);
+  }
+  EXPECT_EQ(lowestSupportLo(0.25, kCrispWidthClass), 0.25);
+}
+
+TEST_F(DescriptorIndexTest, CreateWritesRowsAndCandidatesOverlap) {
+  const int64_t id = store->create(part("bent", 0.2, 0.4)).id;
+  const auto rows = store->descriptorRows(id);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].component, 0);
+  EXPECT_EQ(rows[0].values, "values of bent");
+  ASSERT_EQ(rows[0].spans.size(), 2u);
+  EXPECT_EQ(rows[0].spans[0].descriptor, "bendness");
+  EXPECT_EQ(rows[0].spans[0].supportLo, 0.2);
+  EXPECT_EQ(rows[0].spans[0].coreLo, 0.30000000000000004);
+  EXPECT_EQ(rows[0].spans[0].supportHi, 0.4);
+  EXPECT_TRUE(pendingIds(*store).empty());
+  const auto found = store->descriptorCandidates("part", {"bendness", 0.3, 0.35});
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].supportLo, 0.2);
+  EXPECT_EQ(found[0].supportHi, 0.4);
+  EXPECT_FALSE(found[0].pending);
+
+  EXPECT_EQ(ids(*store, "part", {"bendness", 0.3, 0.35}), std::vector<int64_t>{id});
+  EXPECT_EQ(ids(*store, "part", {"bendness", 0.4, 0.9}), std::vector<int64_t>{id});  // touching
+  EXPECT_EQ(ids(*store, "part", {"bendness", 0.0, 0.2}), std::vector<int64_t>{id});
+  EXPECT_TRUE(ids(*store, "part", {"bendness", 0.41, 0.9}).empty());
+  EXPECT_TRUE(ids(*store, "part", {"bendness", 0.0, 0.19}).empty());
+  EXPECT_TRUE(ids(*store, "shape", {"bendness", 0.0, 1.0}).empty());
+  EXPECT_EQ(ids(*store, "part", {"size", 0.5, 0.5}), std::vector<int64_t>{id});  // crisp
+  // Excluded ends and strict overlaps: a crisp 0.5 is not in (0.5, 1]; [0.2, 0.4] does not meet
+  // (0.4, 0.9) strictly.
+  EXPECT_TRUE(ids(*store, "part", {"size", 0.5, 1.0, false, true}).empty());
+  EXPECT_TRUE(ids(*store, "part", {"size", 0.0, 0.5, true, false}).empty());
+  EXPECT_EQ(ids(*store, "part", {"size", 0.0, 0.5, false, true}), std::vector<int64_t>{id});
+  EXPECT_TRUE(ids(*store, "part", {"bendness", 0.4, 0.9, true, true, true}).empty());
+  EXPECT_EQ(ids(*store, "part", {"bendness", 0.39, 0.9, true, true, true}), std::vector<int64_t>{id});
+  EXPECT_TRUE(ids(*store, "part", {"twistness", 0.0, 1.0}).empty());
+
+  const auto objects = store->indexedObjects("part", {id, id + 100});
+  ASSERT_EQ(objects.size(), 1u);
+  EXPECT_EQ(objects[0].name, "bent");
+  EXPECT_FALSE(objects[0].pending);
+  ASSERT_EQ(objects[0].components.size(), 1u);
+  EXPECT_EQ(objects[0].components[0].second, "values of bent");
+  EXPECT_TRUE(store->indexedObjects("shape", {id}).empty());
+  EXPECT_EQ(store->objectIds("part"), std::vector<int64_t>{id});
+}
+
+TEST_F(DescriptorIndexTest, PutReplacesAndDeleteRemoves) {
+  const int64_t id = store->create(part("p", 0.2, 0.4)).id;
+  store->put(id, part("p", 0.7, 0.8, ",\"v\":2"));
+  EXPECT_TRUE(ids(*store, "part", {"bendness", 0.2, 0.4}).empty());
+  EXPECT_EQ(ids(*store, "part", {"bendness", 0.75, 0.75}), std::vector<int64_t>{id});
+  const auto rows = store->descriptorRows(id);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].values, "values of p,\"v\":2");
+  EXPECT_EQ(rows[0].spans.size(), 2u);
+
+  store->remove("part", id, false);
+  EXPECT_TRUE(store->descriptorRows(id).empty());
+  EXPECT_TRUE(ids(*store, "part", {"bendness", 0, 1}).empty());
+  sqlite::Connection db(path);
+  for (const char* table : {"descriptor_index", "descriptor_values", "descriptor_pending"}) {
+    auto statement = db.prepare(std::string("SELECT COUNT(*) FROM ") + table);
+    ASSERT_TRUE(statement->step());
+    EXPECT_EQ(statement->columnInt(0), 0) << table;
+  }
+}
+
+TEST_F(DescriptorIndexTest, CreateBatchWritesRowsOfEveryItemThatCommits) {
+  store->create(part("taken", 0.1, 0.2));
+  const auto results =
+      store->createBatch({part("a", 0.5, 0.6), part("taken", 0.5, 0.6), part("b", 0.55, 0.9)}, BulkMode::kCreate);
+  ASSERT_TRUE(results[0].id && results[2].id);
+  EXPECT_FALSE(results[1].id);
+  EXPECT_EQ(ids(*store, "part", {"bendness", 0.58, 0.59}),
+            (std::vector<int64_t>{*results[0].id, *results[2].id}));
+}
+
+TEST_F(DescriptorIndexTest, ReferencesAndNewVersionsMarkPending) {
+  const int64_t bolt = store->create(part("bolt", 0.2, 0.4)).id;
+  const int64_t plain = store->create(part("plain", 0.2, 0.4)).id;
+  // A shape written with references: its rows came from documents read before the write.
+  const int64_t frame = store->create(shapeOf("frame", {"bolt"}, 0.2, 0.4)).id;
+  EXPECT_EQ(pendingIds(*store), std::vector<int64_t>{frame});
+  // Pending objects are candidates of every overlap of their kind.
+  EXPECT_EQ(ids(*store, "shape", {"bendness", 0.9, 1.0}), std::vector<int64_t>{frame});
+  EXPECT_TRUE(store->indexedObjects("shape", {frame})[0].pending);
+
+  auto pending = store->pendingDescriptors();
+  ASSERT_EQ(pending.size(), 1u);
+  EXPECT_EQ(pending[0].kind, "shape");
+  EXPECT_EQ(store->replaceDescriptors({{pending[0], {component(0, 0.25, 0.3)}}}), 1u);
+  EXPECT_TRUE(pendingIds(*store).empty());
+  EXPECT_TRUE(ids(*store, "shape", {"bendness", 0.9, 1.0}).empty());
+  EXPECT_FALSE(store->indexedObjects("shape", {frame})[0].pending);
+  EXPECT_EQ(store->replaceDescriptors({{pending[0], {}}}), 0u);  // no longer pending
+
+  // A new version of the bolt changes the frame's components: the frame is pending again, the
+  // plain part (not reaching the bolt) is not.
+  store->put(bolt, part("bolt", 0.9, 1.0, ",\"v\":2"));
+  EXPECT_EQ(pendingIds(*store), std::vector<int64_t>{frame});
+  const auto stale = store->pendingDescriptors();
+  // Another write in between gives a new generation: the stale recomputation is refused.
+  store->put(bolt, part("bolt", 0.9, 1.0, ",\"v\":3"));
+  EXPECT_EQ(store->replaceDescriptors({{stale[0], {component(0, 0.0, 0.1)}}}), 0u);
+  const auto fresh = store->pendingDescriptors();
+  EXPECT_GT(fresh[0].generation, stale[0].generation);
+  EXPECT_EQ(store->replaceDescriptors({{fresh[0], {component(0, 0.9, 1.0)}}}), 1u);
+  EXPECT_EQ(ids(*store, "shape", {"bendness", 0.95, 0.95}), std::vector<int64_t>{frame});
+
+  // A put that writes the object's own rows without references clears its mark.
+  NewObject frame2 = shapeOf("frame", {}, 0.1, 0.2);
+  frame2.descriptors.push_back(component(0, 0.1, 0.2));
+  store->put(frame, frame2);
+  EXPECT_TRUE(pendingIds(*store).empty());
+  (void)plain;
+}
+
+TEST_F(DescriptorIndexTest, OverlapScanEqualsBruteForce) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::vector<std::pair<double, double>> supports;
+  std::vector<NewObject> items;
+  for (int i = 0; i < 400; ++i) {
+    const double lo = unit(rng);
+    const double r = unit(rng);
+    // crisp, narrow and wide supports, so several width classes hold rows
+    const double width = r < 0.3 ? 0.0 : r < 0.8 ? std::pow(10.0, -1 - 4 * unit(rng)) : unit(rng);
+    supports.emplace_back(lo, lo + width);
+    items.push_back(part("p" + std::to_string(i), lo, lo + width));
+  }
+  const auto results = store->createBatch(items, BulkMode::kCreate);
+  for (int q = 0; q < 600; ++q) {
+    DescriptorOverlap test{"bendness", unit(rng) * 1.2 - 0.1, 0};
+    test.hi = test.lo + (unit(rng) < 0.3 ? 0.0 : unit(rng) * 0.3);
+    if (q % 10 == 0) test.lo = supports[q].first;   // exactly on a support end
+    if (q % 10 == 1) test.hi = supports[q].second;
+    if (test.hi < test.lo) test.hi = test.lo;
+    test.loIncluded = q % 3 != 0;
+    test.hiIncluded = q % 5 != 0;
+    test.wideStrict = q % 2 == 0;
+    std::vector<int64_t> expected;
+    for (size_t i = 0; i < supports.size(); ++i) {
+      const double slo = supports[i].first, shi = supports[i].second;
+      bool pass;
+      if (slo == shi)
+        pass = (slo > test.lo || (slo == test.lo && test.loIncluded)) && (slo < test.hi || (slo == test.hi && test.hiIncluded));
+      else if (test.wideStrict)
+        pass = slo < test.hi && shi > test.lo;
+      else
+        pass = slo <= test.hi && shi >= test.lo;
+      if (pass) expected.push_back(*results[i].id);
+    }
+    EXPECT_EQ(ids(*store, "part", test), expected) << test.lo << " " << test.hi << " " << q;
+  }
+}
+
+TEST(DescriptorIndexMigration, ObjectsOfAnOlderDatabaseArePending) {
+  TempDir dir;
+  const std::string path = dir.file("old.db");
+  {
+    sqlite::Connection db(path);
+    ASSERT_EQ(applyMigrations(db, {embeddedMigrations().front()}), 1);
+    db.exec("INSERT INTO objects (kind, name, latest_version) VALUES ('part', 'old', 1), ('shape', 'older', 1)");
+    db.exec("INSERT INTO versions VALUES (1, 1, '{}', 'h', '2026-01-01T00:00:00.000Z'),"
+            " (2, 1, '{}', 'h', '2026-01-01T00:00:00.000Z')");
+  }
+  auto store = Store::open(path);
+  EXPECT_EQ(store->schemaVersion(), embeddedMigrations().back().first);
+  EXPECT_EQ(pendingIds(*store), (std::vector<int64_t>{1, 2}));
+  EXPECT_EQ(ids(*store, "part", {"bendness", 0, 1}), std::vector<int64_t>{1});
+  EXPECT_EQ(ids(*store, "shape", {"size", 0, 1}), std::vector<int64_t>{2});
+  // The next generation is above the migration's.
+  const int64_t id = store->create(part("new", 0.1, 0.2)).id;
+  store->put(id, part("new", 0.1, 0.2, ",\"v\":2"));
+  EXPECT_EQ(pendingIds(*store), (std::vector<int64_t>{1, 2}));
+}
+
+}  // namespace
+}  // namespace fsdb
