@@ -177,7 +177,9 @@ PlacedSuperquadric thetaAt(const PartBox& b, const double (&v)[kSlots]) {
 // of the box has F <= 1 only if one with that value at its low end has (moving it down never
 // raises F), and some θ has F > 1 only if one with it at its high end has. So if the box with
 // every signed value collapsed to that end (slopes: superquadric_slopes.h) is excluded by its
-// enclosure, which is tighter than the whole box's, no θ of the whole box qualifies. (Only
+// enclosure, which is tighter than the whole box's, no θ of the whole box qualifies. Before each
+// collapse the box itself is tried with the mean value form about Baumann's centre (which already
+// holds the collapse: a signed value's centre is its F-lowering or F-raising end). (Only
 // exclusion rests on it: a witness in the collapsed box says nothing about the best m(θ) of the
 // rest.) The collapsed box is also bounded by the mean value form with those slopes. Each
 // slope enclosure and each enclosure counts as an evaluation.
@@ -193,6 +195,10 @@ bool FuzzyPartField::collapsedExcludes(const PartBox& box, const Vec3& p, bool i
     Interval d[kSlots];
     ++*evaluations;
     if (!insideOutsideSlopes(c, px, py, pz, open, n, d)) return false;
+    // The mean value form about Baumann's centre (superquadric_slopes.h), one crisp evaluation:
+    // where it excludes the box no θ of it qualifies. (No outward rounding: boundsOver's margin.)
+    const double end = meanValueEnd(c, p, inside, open, n, d);
+    if (inside ? end > 1.0 + kMargin : end <= 1.0 - kMargin) return true;
     bool collapsed = false;
     for (int j = 0; j < n; ++j) {
       const int sign = d[j].lo >= 0.0 ? 1 : d[j].hi <= 0.0 ? -1 : 0;

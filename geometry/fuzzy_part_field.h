@@ -35,7 +35,9 @@
 // sound exclusions: a box whose placement cannot bring p into the local box that holds every
 // S(θ) of it (missesDeformedHull) has no θ with F <= 1, and a box is dropped when the box with
 // its monotone values collapsed to their F-lowering (u) or F-raising (l) ends is excluded by its
-// enclosure or mean value form (a θ qualifies in the box only if one does in the collapsed box).
+// enclosure or mean value form (a θ qualifies in the box only if one does in the collapsed box);
+// before each collapse the box is also tried with the mean value form about Baumann's centre
+// (meanValueEnd, superquadric_slopes.h), from the same slopes and one crisp evaluation.
 //  * u: the incumbent, rounded down and checked: its witness lies in P(u) (so u = 1 only when p ∈
 //    upper(1) was shown). u lies in [u_true − τ, u_true] unless the budget ran out; then u is the
 //    largest bound still open (an upper bound of u_true: upper grows).
