@@ -267,6 +267,13 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
   double base = inside ? 0.0 : -1.0;
   PartBox cut;  // P(base + τ) once there is a base
   if (base >= 0.0) cut = cutAt(tau);
+  double weight[kSlots], slope[kSlots];
+  bool haveWeights = false, haveSlopes = false;
+  // Where the guessing slopes are taken: the core midpoint, then the latest incumbent's witness
+  // (F's slopes near the best θ so far point to better corners of the cut boxes than those at the
+  // core). Only the guesses depend on it: every witness is checked by a crisp evaluation.
+  double slopeAt[kSlots];
+  for (int i = 0; i < kSlots; ++i) slopeAt[i] = mid(slot(core_, i));
   const auto improve = [&](double m, const PlacedSuperquadric& theta) {
     if (m <= s.incumbent) return;
     if (diving) {
@@ -275,20 +282,23 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
     }
     s.incumbent = m;
     s.witness = theta;
+    const SuperquadricParams& q = theta.params;
+    const Placement& pl = theta.placement;
+    const double v[kSlots] = {q.eps1, q.eps2, q.a1, q.a2, q.a3, q.kx, q.ky, q.kv, q.t,
+                              pl.translate.x, pl.translate.y, pl.translate.z, pl.deg, pl.scale};
+    std::copy(v, v + kSlots, slopeAt);  // partFromSlots' order
+    haveSlopes = false;
     if (m <= base) return;
     base = m;
     if (m + tau <= 1.0) cut = cutAt(m + tau);
   };
-  // Split weights: how much F at p moves when a value runs across its support, from central
-  // differences at the core midpoint (once per search, only when a box needs splitting), floored
-  // so that no value is starved. Splitting where F is sensitive shrinks the enclosure fastest.
-  double weight[kSlots], slope[kSlots];
-  bool haveWeights = false, haveSlopes = false;
+  // Guessing slopes: central differences of F at slopeAt (recomputed when a guess needs them
+  // after the incumbent moved); their signs pick the corner of a box tried as a witness.
   int evaluations = 0;
   const auto computeSlopes = [&] {
     haveSlopes = true;
     double theta[kSlots];
-    for (int i = 0; i < kSlots; ++i) theta[i] = mid(slot(core_, i));
+    for (int i = 0; i < kSlots; ++i) theta[i] = slopeAt[i];
     for (int i = 0; i < kSlots; ++i) {
       slope[i] = 0.0;
       if (supportWidth_[i] <= 0.0) continue;
@@ -395,7 +405,7 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
       if (s.incumbent >= 1.0) break;
       continue;
     }
-    // A second guess: the corner that F's slopes at the core say is most favourable (least F for
+    // A second guess: the corner that F's guessing slopes say is most favourable (least F for
     // a witness inside, largest outside). From a witness, walk towards the peak (m grows along
     // the segment, each value nearing its core) and keep the last witness: bisection on the
     // segment until m is resolved well below τ.

@@ -27,7 +27,8 @@
 // beat the incumbent (the best crisp witness) by more than τ; once there is an incumbent every
 // box is cut to P(incumbent + τ) before its enclosure is taken (the levels reuse one another's
 // work). Witnesses come from the box's peak (each value clamped to its core: a witness there
-// settles the box), the corner that F's slopes at the core favour, or the centre, then a regula
+// settles the box), the corner that F's slopes favour (central differences at the core midpoint,
+// and after each new incumbent at its witness), or the centre, then a regula
 // falsi walk towards the peak; boxes are split where fixing a value to its midpoint moved the
 // enclosure most (measured once per search). Until the first witness the search dives (the box
 // whose centre is nearest a witness first). For u the search starts cut to P(τ): u = 0 is a correct
