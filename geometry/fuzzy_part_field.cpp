@@ -177,7 +177,9 @@ PlacedSuperquadric thetaAt(const PartBox& b, const double (&v)[kSlots]) {
 // of the box has F <= 1 only if one with that value at its low end has (moving it down never
 // raises F), and some θ has F > 1 only if one with it at its high end has. So if the box with
 // every signed value collapsed to that end (slopes: superquadric_slopes.h) is excluded by its
-// enclosure, which is tighter than the whole box's, no θ of the whole box qualifies. (Only
+// enclosure, which is tighter than the whole box's, no θ of the whole box qualifies. Before each
+// collapse the box itself is tried with the mean value form about Baumann's centre (which already
+// holds the collapse: a signed value's centre is its F-lowering or F-raising end). (Only
 // exclusion rests on it: a witness in the collapsed box says nothing about the best m(θ) of the
 // rest.) The collapsed box is also bounded by the mean value form with those slopes. Each
 // slope enclosure and each enclosure counts as an evaluation.
@@ -193,6 +195,10 @@ bool FuzzyPartField::collapsedExcludes(const PartBox& box, const Vec3& p, bool i
     Interval d[kSlots];
     ++*evaluations;
     if (!insideOutsideSlopes(c, px, py, pz, open, n, d)) return false;
+    // The mean value form about Baumann's centre (superquadric_slopes.h), one crisp evaluation:
+    // where it excludes the box no θ of it qualifies. (No outward rounding: boundsOver's margin.)
+    const double end = meanValueEnd(c, p, inside, open, n, d);
+    if (inside ? end > 1.0 + kMargin : end <= 1.0 - kMargin) return true;
     bool collapsed = false;
     for (int j = 0; j < n; ++j) {
       const int sign = d[j].lo >= 0.0 ? 1 : d[j].hi <= 0.0 ? -1 : 0;
@@ -261,6 +267,13 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
   double base = inside ? 0.0 : -1.0;
   PartBox cut;  // P(base + τ) once there is a base
   if (base >= 0.0) cut = cutAt(tau);
+  double weight[kSlots], slope[kSlots];
+  bool haveWeights = false, haveSlopes = false;
+  // Where the guessing slopes are taken: the core midpoint, then the latest incumbent's witness
+  // (F's slopes near the best θ so far point to better corners of the cut boxes than those at the
+  // core). Only the guesses depend on it: every witness is checked by a crisp evaluation.
+  double slopeAt[kSlots];
+  for (int i = 0; i < kSlots; ++i) slopeAt[i] = mid(slot(core_, i));
   const auto improve = [&](double m, const PlacedSuperquadric& theta) {
     if (m <= s.incumbent) return;
     if (diving) {
@@ -269,20 +282,23 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
     }
     s.incumbent = m;
     s.witness = theta;
+    const SuperquadricParams& q = theta.params;
+    const Placement& pl = theta.placement;
+    const double v[kSlots] = {q.eps1, q.eps2, q.a1, q.a2, q.a3, q.kx, q.ky, q.kv, q.t,
+                              pl.translate.x, pl.translate.y, pl.translate.z, pl.deg, pl.scale};
+    std::copy(v, v + kSlots, slopeAt);  // partFromSlots' order
+    haveSlopes = false;
     if (m <= base) return;
     base = m;
     if (m + tau <= 1.0) cut = cutAt(m + tau);
   };
-  // Split weights: how much F at p moves when a value runs across its support, from central
-  // differences at the core midpoint (once per search, only when a box needs splitting), floored
-  // so that no value is starved. Splitting where F is sensitive shrinks the enclosure fastest.
-  double weight[kSlots], slope[kSlots];
-  bool haveWeights = false, haveSlopes = false;
+  // Guessing slopes: central differences of F at slopeAt (recomputed when a guess needs them
+  // after the incumbent moved); their signs pick the corner of a box tried as a witness.
   int evaluations = 0;
   const auto computeSlopes = [&] {
     haveSlopes = true;
     double theta[kSlots];
-    for (int i = 0; i < kSlots; ++i) theta[i] = mid(slot(core_, i));
+    for (int i = 0; i < kSlots; ++i) theta[i] = slopeAt[i];
     for (int i = 0; i < kSlots; ++i) {
       slope[i] = 0.0;
       if (supportWidth_[i] <= 0.0) continue;
@@ -389,7 +405,7 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
       if (s.incumbent >= 1.0) break;
       continue;
     }
-    // A second guess: the corner that F's slopes at the core say is most favourable (least F for
+    // A second guess: the corner that F's guessing slopes say is most favourable (least F for
     // a witness inside, largest outside). From a witness, walk towards the peak (m grows along
     // the segment, each value nearing its core) and keep the last witness: bisection on the
     // segment until m is resolved well below τ.

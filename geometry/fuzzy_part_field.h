@@ -27,7 +27,8 @@
 // beat the incumbent (the best crisp witness) by more than τ; once there is an incumbent every
 // box is cut to P(incumbent + τ) before its enclosure is taken (the levels reuse one another's
 // work). Witnesses come from the box's peak (each value clamped to its core: a witness there
-// settles the box), the corner that F's slopes at the core favour, or the centre, then a regula
+// settles the box), the corner that F's slopes favour (central differences at the core midpoint,
+// and after each new incumbent at its witness), or the centre, then a regula
 // falsi walk towards the peak; boxes are split where fixing a value to its midpoint moved the
 // enclosure most (measured once per search). Until the first witness the search dives (the box
 // whose centre is nearest a witness first). For u the search starts cut to P(τ): u = 0 is a correct
@@ -35,7 +36,9 @@
 // sound exclusions: a box whose placement cannot bring p into the local box that holds every
 // S(θ) of it (missesDeformedHull) has no θ with F <= 1, and a box is dropped when the box with
 // its monotone values collapsed to their F-lowering (u) or F-raising (l) ends is excluded by its
-// enclosure or mean value form (a θ qualifies in the box only if one does in the collapsed box).
+// enclosure or mean value form (a θ qualifies in the box only if one does in the collapsed box);
+// before each collapse the box is also tried with the mean value form about Baumann's centre
+// (meanValueEnd, superquadric_slopes.h), from the same slopes and one crisp evaluation.
 //  * u: the incumbent, rounded down and checked: its witness lies in P(u) (so u = 1 only when p ∈
 //    upper(1) was shown). u lies in [u_true − τ, u_true] unless the budget ran out; then u is the
 //    largest bound still open (an upper bound of u_true: upper grows).

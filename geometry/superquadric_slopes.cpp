@@ -1,6 +1,8 @@
 #include "geometry/superquadric_slopes.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "geometry/interval_functions.h"
 #include "geometry/transform.h"
@@ -252,6 +254,49 @@ bool insideOutsideSlopes(const PartBox& part, const Interval& x, const Interval&
   if (!D.ok()) return false;
   for (int j = 0; j < count; ++j) out[j] = F.d[j];
   return true;
+}
+
+// With any centre c of the box, the mean value theorem along the segment from c to θ (it stays in
+// the box, which is convex, and F is Lipschitz along it, the slopes holding its one-sided
+// derivatives at kinks) gives F(θ) ∈ F(c) + Σ_j D_j·(θ_j − c_j) for every θ of the box; the
+// unlisted values are equal in θ and c. Every c is sound; the bound depends on c. For the lower
+// end the term D_j·[a − c, b − c] (D_j = [dl, dh], θ_j ∈ [a, b]) has lower end
+// min(dl·(b − c), dh·(a − c)) when dl < 0 < dh, largest where the two meet,
+// c = (dh·a − dl·b)/(dh − dl); c = a where dl >= 0 and c = b where dh <= 0 (the term is then >= 0:
+// the monotone corner). The upper end is the mirror image, c = (dh·b − dl·a)/(dh − dl). The
+// midpoint centre is up to twice as wide in each value whose slope straddles 0.
+double meanValueEnd(const PartBox& part, const Vec3& p, bool lower, const int* slots, int count,
+                    const Interval* d) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const double trivial = lower ? -kInf : kInf;
+  double c[kPartSlots];
+  bool listed[kPartSlots] = {};
+  for (int j = 0; j < count; ++j) listed[slots[j]] = true;
+  for (int i = 0; i < kPartSlots; ++i) {
+    const Interval& v = partSlot(part, i);
+    if (!listed[i] && v.lo != v.hi) return trivial;
+    c[i] = v.lo;
+  }
+  for (int j = 0; j < count; ++j) {
+    const Interval& v = partSlot(part, slots[j]);
+    const double dl = d[j].lo, dh = d[j].hi;
+    double centre;
+    if (dl >= 0.0)
+      centre = lower ? v.lo : v.hi;
+    else if (dh <= 0.0)
+      centre = lower ? v.hi : v.lo;
+    else
+      centre = lower ? (dh * v.lo - dl * v.hi) / (dh - dl) : (dh * v.hi - dl * v.lo) / (dh - dl);
+    c[slots[j]] = std::isfinite(centre) ? std::min(std::max(centre, v.lo), v.hi) : mid(v);
+  }
+  double end = partFromSlots(part.placement.axis, c).insideOutside(p);
+  for (int j = 0; j < count; ++j) {
+    const Interval& v = partSlot(part, slots[j]);
+    const double cj = c[slots[j]];
+    const Interval term = mul(d[j], Interval{v.lo - cj, v.hi - cj});
+    end += lower ? term.lo : term.hi;
+  }
+  return std::isfinite(end) ? end : trivial;
 }
 
 }  // namespace fsdb

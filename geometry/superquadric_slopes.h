@@ -59,4 +59,13 @@ PlacedSuperquadric partFromSlots(const Vec3& axis, const double (&v)[kPartSlots]
 bool insideOutsideSlopes(const PartBox& part, const Interval& x, const Interval& y,
                          const Interval& z, const int* slots, int count, Interval* out);
 
+// The mean value form of F(p; θ) over the box about Baumann's optimal centre (E. Baumann, "Optimal
+// centered forms", BIT 28, 1988): its lower end when `lower`, else its upper end, for d[j] ⊇
+// {∂F/∂θ_{slots[j]}} over the box at p (as insideOutsideSlopes gives them). Every value of the box
+// not listed must be a single value; otherwise, and where F at the centre or the sum is not finite,
+// the answer is the trivial −∞ (lower) or +∞. One crisp evaluation of F. Rounding as above (no
+// outward rounding: a few ulps).
+double meanValueEnd(const PartBox& part, const Vec3& p, bool lower, const int* slots, int count,
+                    const Interval* d);
+
 }  // namespace fsdb
