@@ -80,39 +80,54 @@ double below(double x) { return std::nextafter(x, -std::numeric_limits<double>::
 
 }  // namespace
 
-std::vector<DescriptorCandidate> descriptorCandidatesIn(sqlite::Connection& connection, const std::string& kind,
-                                                        const DescriptorOverlap& test) {
-  std::vector<int> classes;
-  {
-    auto statement = connection.prepare("SELECT width_class FROM descriptor_classes WHERE descriptor = ?1");
-    statement->bind(1, test.descriptor);
-    while (statement->step()) classes.push_back(static_cast<int>(statement->columnInt(0)));
+std::vector<DescriptorRange> descriptorRangesIn(sqlite::Connection& connection, const DescriptorOverlap& test) {
+  std::vector<DescriptorRange> ranges;
+  auto statement = connection.prepare("SELECT width_class FROM descriptor_classes WHERE descriptor = ?1");
+  statement->bind(1, test.descriptor);
+  while (statement->step()) {
+    const int c = static_cast<int>(statement->columnInt(0));
+    DescriptorRange r;  // support_lo BETWEEN fromLo AND toLo AND support_hi >= leastHi
+    r.descriptor = test.descriptor;
+    r.widthClass = c;
+    if (c == kCrispWidthClass) {
+      r.fromLo = test.loIncluded ? test.lo : above(test.lo);
+      r.toLo = test.hiIncluded ? test.hi : below(test.hi);
+      r.leastHi = r.fromLo;
+    } else {
+      r.fromLo = lowestSupportLo(test.lo, c);
+      r.toLo = test.wideStrict ? below(test.hi) : test.hi;
+      r.leastHi = test.wideStrict ? above(test.lo) : test.lo;
+    }
+    if (r.fromLo <= r.toLo) ranges.push_back(r);
   }
-  std::vector<DescriptorCandidate> rows;
+  return ranges;
+}
+
+void descriptorRangeRowsIn(sqlite::Connection& connection, const std::string& kind, const DescriptorRange& range,
+                           std::vector<DescriptorCandidate>& rows) {
   auto scan = connection.prepare(
       "SELECT object_id, support_lo, support_hi FROM descriptor_index WHERE kind = ?1 AND descriptor = ?2 AND width_class = ?3"
       " AND support_lo BETWEEN ?4 AND ?5 AND support_hi >= ?6");
-  for (int c : classes) {
-    double fromLo, toLo, leastHi;  // support_lo BETWEEN fromLo AND toLo AND support_hi >= leastHi
-    if (c == kCrispWidthClass) {
-      fromLo = test.loIncluded ? test.lo : above(test.lo);
-      toLo = test.hiIncluded ? test.hi : below(test.hi);
-      leastHi = fromLo;
-    } else {
-      fromLo = lowestSupportLo(test.lo, c);
-      toLo = test.wideStrict ? below(test.hi) : test.hi;
-      leastHi = test.wideStrict ? above(test.lo) : test.lo;
-    }
-    if (fromLo > toLo) continue;
-    scan->reset();
-    scan->bind(1, kind).bind(2, test.descriptor).bind(3, c).bind(4, fromLo).bind(5, toLo).bind(6, leastHi);
-    while (scan->step()) rows.push_back({scan->columnInt(0), scan->columnDouble(1), scan->columnDouble(2), false});
-  }
+  scan->bind(1, kind).bind(2, range.descriptor).bind(3, range.widthClass).bind(4, range.fromLo).bind(5, range.toLo);
+  scan->bind(6, range.leastHi);
+  while (scan->step()) rows.push_back({scan->columnInt(0), scan->columnDouble(1), scan->columnDouble(2), false});
+}
+
+std::vector<int64_t> pendingDescriptorIdsIn(sqlite::Connection& connection, const std::string& kind) {
   auto pending = connection.prepare(
       // CROSS JOIN: driven by the (usually empty) pending table, not by every object of the kind.
       "SELECT p.object_id FROM descriptor_pending p CROSS JOIN objects o ON o.id = p.object_id WHERE o.kind = ?1");
   pending->bind(1, kind);
-  while (pending->step()) rows.push_back({pending->columnInt(0), 0, 0, true});
+  std::vector<int64_t> ids;
+  while (pending->step()) ids.push_back(pending->columnInt(0));
+  return ids;
+}
+
+std::vector<DescriptorCandidate> descriptorCandidatesIn(sqlite::Connection& connection, const std::string& kind,
+                                                        const DescriptorOverlap& test) {
+  std::vector<DescriptorCandidate> rows;
+  for (const DescriptorRange& range : descriptorRangesIn(connection, test)) descriptorRangeRowsIn(connection, kind, range, rows);
+  for (int64_t id : pendingDescriptorIdsIn(connection, kind)) rows.push_back({id, 0, 0, true});
   return rows;
 }
 

@@ -35,6 +35,13 @@ void markDescriptorsPending(sqlite::Connection& connection, int64_t objectId);
 // Clears the mark of `objectId` (its rows were just written from what the write stored).
 void clearDescriptorsPending(sqlite::Connection& connection, int64_t objectId);
 
+// The parts of Store::descriptorCandidates (db/store.h): ranges per class, rows of one range
+// (appended to `rows`), pending ids.
+std::vector<DescriptorRange> descriptorRangesIn(sqlite::Connection& connection, const DescriptorOverlap& test);
+void descriptorRangeRowsIn(sqlite::Connection& connection, const std::string& kind, const DescriptorRange& range,
+                           std::vector<DescriptorCandidate>& rows);
+std::vector<int64_t> pendingDescriptorIdsIn(sqlite::Connection& connection, const std::string& kind);
+
 std::vector<DescriptorCandidate> descriptorCandidatesIn(sqlite::Connection& connection, const std::string& kind,
                                                         const DescriptorOverlap& test);
 

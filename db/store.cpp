@@ -559,6 +559,23 @@ std::vector<DescriptorCandidate> Store::descriptorCandidates(const std::string& 
   return descriptorCandidatesIn(*connection, kind, test);
 }
 
+std::vector<DescriptorRange> Store::descriptorRanges(const DescriptorOverlap& test) const {
+  Impl::Lease connection(*impl_);
+  return descriptorRangesIn(*connection, test);
+}
+
+std::vector<DescriptorCandidate> Store::descriptorRangeRows(const std::string& kind, const DescriptorRange& range) const {
+  Impl::Lease connection(*impl_);
+  std::vector<DescriptorCandidate> rows;
+  descriptorRangeRowsIn(*connection, kind, range, rows);
+  return rows;
+}
+
+std::vector<int64_t> Store::pendingDescriptorIds(const std::string& kind) const {
+  Impl::Lease connection(*impl_);
+  return pendingDescriptorIdsIn(*connection, kind);
+}
+
 std::vector<int64_t> Store::objectIds(const std::string& kind) const {
   Impl::Lease connection(*impl_);
   auto statement = (*connection).prepare("SELECT id FROM objects WHERE kind = ?1 ORDER BY id");

@@ -151,6 +151,16 @@ struct DescriptorCandidate {
   bool pending = false;
 };
 
+// One range scan of the descriptor index (db/descriptor_index.h): the rows of one descriptor and
+// width class with support_lo in [fromLo, toLo] and support_hi >= leastHi. A DescriptorOverlap is
+// the union of one such range per width class (Store::descriptorRanges); the level scan of the
+// linguistic search reads pieces of them, best bound first (server/linguistic_search.h).
+struct DescriptorRange {
+  std::string descriptor;
+  int widthClass = 0;
+  double fromLo = 0, toLo = 0, leastHi = 0;
+};
+
 // An object as the linguistic search scores it (Store::indexedObjects): its name and the
 // encoded descriptor values of its components. pending: the rows are missing or may be stale
 // (descriptor_pending), so the caller must describe the document instead of using `components`.
@@ -224,6 +234,11 @@ class Store {
   // class, db/descriptor_index.h), and every pending object of `kind` (pending = true), in index
   // order (not by id: sorting is the caller's choice; a shape's rows may be apart).
   std::vector<DescriptorCandidate> descriptorCandidates(const std::string& kind, const DescriptorOverlap& test) const;
+  // The same rows in parts: the range per width class present (empty ranges left out), the rows
+  // of one range (pending = false), and the ids of the pending objects of `kind`.
+  std::vector<DescriptorRange> descriptorRanges(const DescriptorOverlap& test) const;
+  std::vector<DescriptorCandidate> descriptorRangeRows(const std::string& kind, const DescriptorRange& range) const;
+  std::vector<int64_t> pendingDescriptorIds(const std::string& kind) const;
   // Sorted ids of every live object of `kind` (the full scan's candidates).
   std::vector<int64_t> objectIds(const std::string& kind) const;
   // The objects of `kind` among `ids`, in the order given (ids of other kinds or deleted are skipped).

@@ -2,7 +2,9 @@
 #include "query/descriptor_prefilter.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
+#include <limits>
 
 namespace fsdb {
 namespace {
@@ -124,6 +126,53 @@ double scoreBound(const PrefilterPlan& leaf, double supportLo, double supportHi,
   const double setArea = leaf.set.cardinality();
   if (!(setArea > 0)) return 1;
   return raised(membershipIntegral(leaf.set, supportLo, supportHi) / setArea * (1 + kSlack));
+}
+
+namespace {
+
+double maxMembership(const FuzzyNumber& set, double lo, double hi) {
+  double m = std::max(set.membership(lo), set.membership(hi));
+  for (const Breakpoint& p : set.breakpoints())
+    if (p.x >= lo && p.x <= hi) m = std::max(m, p.mu);
+  return m;
+}
+
+}  // namespace
+
+std::vector<LevelPiece> levelPieces(const PrefilterPlan& leaf, double maxWidth, double fromLo, double toLo) {
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> cuts;  // each piece starts at fromLo or at a cut in (fromLo, toLo]
+  for (double level : {1.0, 0.9, 0.75, 0.5, 0.25, 0.1}) {
+    const Interval cut = leaf.set.alphaCut(level);
+    for (double end : {cut.lo, std::nextafter(cut.hi, inf)}) {
+      cuts.push_back(end);
+      if (maxWidth > 0) cuts.push_back(end - maxWidth);
+    }
+  }
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  std::vector<LevelPiece> pieces;
+  const double setArea = leaf.set.cardinality();
+  double start = fromLo;
+  auto close = [&](double end) {  // the piece [start, end]
+    LevelPiece piece{start, end, 1};
+    if (maxWidth == 0) {
+      piece.bound = raised(maxMembership(leaf.set, start, end));
+    } else if (setArea > 0) {
+      // The widest support the piece holds ends at end + maxWidth; one ulp more against rounding
+      // of support_hi - support_lo (widthClass).
+      const double reach = std::nextafter(end + maxWidth * (1 + 1e-12), inf);
+      piece.bound = raised(membershipIntegral(leaf.set, start, reach) / setArea * (1 + kSlack));
+    }
+    pieces.push_back(piece);
+  };
+  for (double cut : cuts) {
+    if (!(cut > start) || cut > toLo) continue;
+    close(std::nextafter(cut, -inf));
+    start = cut;
+  }
+  close(toLo);
+  return pieces;
 }
 
 bool aggregationNeedsAll(const std::string& aggregation) {

@@ -72,6 +72,22 @@ double scoreBound(const PrefilterPlan& leaf, double supportLo, double supportHi,
 // ∫_lo^hi μ(x) dx, exact for the piecewise-linear membership.
 double membershipIntegral(const FuzzyNumber& set, double lo, double hi);
 
+// The level scan (server/linguistic_search.h): the rows of one index range of a kOverlap leaf,
+// support_lo in [fromLo, toLo] and widths <= maxWidth (0: crisp rows), cut into pieces at the
+// ends of the alpha-cuts of leaf.set (levels 1, 0.9, 0.75, 0.5, 0.25, 0.1; for wide rows also
+// those ends minus maxWidth), each with a bound >= the score of every row in it, so the search
+// can read the best pieces first and stop before the rest. The pieces cover [fromLo, toLo]
+// exactly (adjacent, disjoint, in order). Bounds (the rules above, over all the rows a piece can
+// hold): a crisp x in [s0, s1] scores μ_set(x) <= max of μ_set over [s0, s1] (at s0, s1 or a
+// breakpoint between: μ_set is piecewise linear); a wide value has support in
+// [s0, s1 + maxWidth], so S <= |A∩B|/|B| <= ∫_s0^(s1+maxWidth) μ_set / |set| (1 for a crisp set).
+// Raised like scoreBound, and never below scoreBound of a row the piece holds.
+struct LevelPiece {
+  double fromLo = 0, toLo = 0;
+  double bound = 1;
+};
+std::vector<LevelPiece> levelPieces(const PrefilterPlan& leaf, double maxWidth, double fromLo, double toLo);
+
 // Whether kAnd under this aggregation is 0 as soon as one child is (a t-norm).
 bool aggregationNeedsAll(const std::string& aggregation);
 

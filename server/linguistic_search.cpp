@@ -3,7 +3,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
+#include <unordered_set>
 
+#include "db/descriptor_index.h"
 #include "geometry/error.h"
 #include "query/descriptor_prefilter.h"
 #include "query/vocabulary.h"
@@ -55,15 +59,71 @@ class Scorer {
         }
         chunk.push_back(candidates[next].id);
       }
-      for (const IndexedObject& object : store_.indexedObjects(kind, chunk)) {
-        try {
-          keep(kind, object, kind == "part" ? scorePart(object) : scoreStoredShape(object));
-        } catch (const Error& e) {
-          if (e.code() != std::string(errc::kNotFound)) throw;  // deleted meanwhile
+      scoreChunk(kind, chunk);
+    }
+  }
+
+  // The level scan of one kOverlap leaf `driver` for parts (one row per object), the plan being
+  // `driver` itself or a kAnd (a t-norm) of which it is a child; see levelPieces
+  // (query/descriptor_prefilter.h). Why it returns what scoring every candidate returns:
+  // - every object of the plan's candidates is in exactly one piece or pending (the pieces cut
+  //   the store's ranges of driver.test, whose union is the driver's candidates; a kAnd's
+  //   candidates are a subset), and every other object scores 0 (the prefilter's rules);
+  // - a pending object's bound is 1; a row's is scoreBound of driver, <= its piece's bound; under
+  //   a t-norm T(a, b) <= min(a, b) <= the driver's score, so both bound the plan's score;
+  // - a candidate is scored only when its bound is > the largest bound of the pieces not yet
+  //   read (so no unread object can be better than it, even tied with a smaller id), and the
+  //   scan ends when the best unscored candidate cannot enter (canEnter: its bound is below the
+  //   cut, or the limit-th score beats it or ties with a smaller id) with that bound > every
+  //   unread piece's, or when no unread piece can enter (bound < the limit-th score, strictly, or
+  //   below the cut): then no unscored object can be among the results.
+  void scoreLevels(const Store& store, const std::string& kind, const PrefilterPlan& driver) {
+    struct Piece {
+      DescriptorRange range;
+      double bound;
+    };
+    std::vector<Piece> pieces;
+    const SupportTest& t = driver.test;
+    for (const DescriptorRange& r : store.descriptorRanges({t.descriptor, t.lo, t.hi, t.loIncluded, t.hiIncluded, t.wideStrict})) {
+      const double maxWidth = r.widthClass == kCrispWidthClass ? 0 : std::ldexp(1.0, r.widthClass);
+      for (const LevelPiece& p : levelPieces(driver, maxWidth, r.fromLo, r.toLo))
+        pieces.push_back({{r.descriptor, r.widthClass, p.fromLo, p.toLo, r.leastHi}, p.bound});
+    }
+    std::stable_sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) { return a.bound > b.bound; });
+    const auto worse = [](const Candidate& a, const Candidate& b) {  // heap order: best on top
+      return a.bound != b.bound ? a.bound < b.bound : a.id > b.id;
+    };
+    std::vector<Candidate> pool;
+    const std::vector<int64_t> pendingIds = store.pendingDescriptorIds(kind);
+    const std::unordered_set<int64_t> pending(pendingIds.begin(), pendingIds.end());
+    for (int64_t id : pendingIds) pool.push_back({id, 1.0});
+    std::make_heap(pool.begin(), pool.end(), worse);
+    candidates_ += pool.size();
+    std::vector<int64_t> chunk;
+    for (size_t next = 0;;) {
+      checkTime();
+      const double unread = next < pieces.size() ? pieces[next].bound : 0;
+      chunk.clear();
+      bool done = false;  // the best unscored candidate cannot enter, nor can any after it
+      while (!pool.empty() && pool.front().bound > unread && chunk.size() < kBoundedChunk) {
+        if (!canEnter(pool.front())) {
+          done = true;
+          break;
         }
+        chunk.push_back(pool.front().id);
+        std::pop_heap(pool.begin(), pool.end(), worse);
+        pool.pop_back();
       }
-      scored_ += chunk.size();
-      trim();
+      if (!chunk.empty()) scoreChunk(kind, chunk);
+      if (done) return;
+      if (!chunk.empty()) continue;
+      if (next == pieces.size() || !canEnter({std::numeric_limits<int64_t>::min(), unread})) return;
+      for (const DescriptorCandidate& row : store.descriptorRangeRows(kind, pieces[next++].range)) {
+        if (pending.count(row.id) != 0) continue;
+        pool.push_back({row.id, scoreBound(driver, row.supportLo, row.supportHi, false)});
+        std::push_heap(pool.begin(), pool.end(), worse);
+        ++candidates_;
+      }
     }
   }
 
@@ -73,6 +133,18 @@ class Scorer {
   }
 
  private:
+  void scoreChunk(const std::string& kind, const std::vector<int64_t>& chunk) {
+    for (const IndexedObject& object : store_.indexedObjects(kind, chunk)) {
+      try {
+        keep(kind, object, kind == "part" ? scorePart(object) : scoreStoredShape(object));
+      } catch (const Error& e) {
+        if (e.code() != std::string(errc::kNotFound)) throw;  // deleted meanwhile
+      }
+    }
+    scored_ += chunk.size();
+    trim();
+  }
+
   static constexpr size_t kBoundedChunk = 64;  // small: the bound of the next one may stop it
 
   // Puts the best of candidates[from, end) in order at its front (a block that grows fourfold,
@@ -148,6 +220,17 @@ nlohmann::json hitJson(const LinguisticHit& hit) {
           {"explain", explainJson(hit.score)}};
 }
 
+// The leaf that drives a level scan of `plan` (Scorer::scoreLevels): the plan itself when it is
+// one kOverlap, the first kOverlap child of a kAnd (a t-norm: prefilterPlan makes kAnd only
+// then), else none (kOr, kAll: today's path).
+const PrefilterPlan* levelDriver(const PrefilterPlan& plan) {
+  if (plan.kind == PrefilterPlan::Kind::kOverlap) return &plan;
+  if (plan.kind != PrefilterPlan::Kind::kAnd) return nullptr;
+  for (const PrefilterPlan& child : plan.children)
+    if (child.kind == PrefilterPlan::Kind::kOverlap) return &child;
+  return nullptr;
+}
+
 }  // namespace
 
 LinguisticSearchResult searchLinguistic(const Store& store, const LinguisticQuery& query,
@@ -169,7 +252,12 @@ LinguisticSearchResult searchLinguistic(const Store& store, const LinguisticQuer
         rows.push_back({c.id, scoreBound(leaf, c.supportLo, c.supportHi, c.pending)});
       return rows;
     };
-    scorer.score(kind, runPrefilter(prefilterPlan(query, kind), overlap, all, kind == "part"), true);
+    const PrefilterPlan plan = prefilterPlan(query, kind);
+    if (const PrefilterPlan* driver = kind == "part" ? levelDriver(plan) : nullptr) {
+      scorer.scoreLevels(store, kind, *driver);
+      continue;
+    }
+    scorer.score(kind, runPrefilter(plan, overlap, all, kind == "part"), true);
   }
   return scorer.result();
 }

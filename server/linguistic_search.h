@@ -11,7 +11,13 @@
 //   run in the store's descriptor index, each with a bound >= its score from the supports the
 //   index returns, are scored best bound first (ties by id), and scoring stops at the first
 //   candidate whose bound cannot beat the `limit`-th best score so far (nor reach the cut), so a
-//   selective or top-heavy query reads the values of a few objects only. Scan path (`scan`):
+//   selective or top-heavy query reads the values of a few objects only. Level scan (parts,
+//   when the plan is one descriptor condition or an "and" under a t-norm, driven by its first
+//   descriptor child): the index rows are not all read first; the driver's ranges are cut into
+//   pieces at the ends of its set's alpha-cuts (levelPieces, query/descriptor_prefilter.h), read
+//   best piece bound first, and a candidate is scored only once its bound beats every unread
+//   piece's, so a broad query ("big": every part) reads the rows of its first levels only.
+//   Scan path (`scan`):
 //   every object of the kinds is scored. Both give the same results exactly (same ids,
 //   scores, order): the plan only drops objects that score 0, and both score the same values
 //   (a part's row holds describePart's exact values; pending objects are described from their
@@ -45,7 +51,7 @@ struct LinguisticHit {
 
 struct LinguisticSearchResult {
   std::vector<LinguisticHit> hits;
-  size_t candidates = 0;  // objects the prefilter kept (the scan: all)
+  size_t candidates = 0;  // objects the prefilter kept (the level scan: the rows it read; the scan: all)
   size_t scored = 0;      // objects scored exactly
 };
 

@@ -239,7 +239,38 @@ TEST_F(DescriptorIndexTest, OverlapScanEqualsBruteForce) {
       if (pass) expected.push_back(*results[i].id);
     }
     EXPECT_EQ(ids(*store, "part", test), expected) << test.lo << " " << test.hi << " " << q;
+    // The same rows in parts: one range per class present, each row in exactly one range.
+    std::vector<int64_t> parts;
+    std::vector<int> classes;
+    for (const DescriptorRange& range : store->descriptorRanges(test)) {
+      EXPECT_EQ(range.descriptor, "bendness");
+      EXPECT_LE(range.fromLo, range.toLo);
+      classes.push_back(range.widthClass);
+      for (const DescriptorCandidate& c : store->descriptorRangeRows("part", range)) {
+        EXPECT_EQ(widthClass(c.supportHi - c.supportLo), range.widthClass);
+        EXPECT_FALSE(c.pending);
+        parts.push_back(c.id);
+      }
+    }
+    std::sort(parts.begin(), parts.end());
+    EXPECT_EQ(parts, expected) << q;
+    std::sort(classes.begin(), classes.end());
+    EXPECT_TRUE(std::adjacent_find(classes.begin(), classes.end()) == classes.end());
   }
+  EXPECT_TRUE(store->pendingDescriptorIds("part").empty());
+}
+
+TEST_F(DescriptorIndexTest, PendingIdsAreThePendingObjectsOfTheKind) {
+  const int64_t a = store->create(part("a", 0.1, 0.2)).id;
+  const int64_t s = store->create(shapeOf("s", {"a"}, 0.1, 0.2)).id;  // references: pending
+  EXPECT_TRUE(store->pendingDescriptorIds("part").empty());
+  EXPECT_EQ(store->pendingDescriptorIds("shape"), std::vector<int64_t>{s});
+  // Pending objects are also descriptorCandidates' pending rows.
+  std::vector<int64_t> pending;
+  for (const DescriptorCandidate& c : store->descriptorCandidates("shape", {"bendness", 0.9, 1.0}))
+    if (c.pending) pending.push_back(c.id);
+  EXPECT_EQ(pending, std::vector<int64_t>{s});
+  EXPECT_NE(a, s);
 }
 
 TEST(DescriptorIndexMigration, ObjectsOfAnOlderDatabaseArePending) {

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "geometry/fuzzy_similarity.h"
@@ -204,6 +206,48 @@ TEST(DescriptorPrefilter, BoundsAreAtLeastTheScores) {
     if (score > 0 && bound < 1) ++tight;
   }
   EXPECT_GT(tight, 1000);
+}
+
+// levelPieces: the pieces cover the range exactly, in order, and bound the score of every value
+// whose support starts in them (crisp values: width 0; wide values: width <= maxWidth); the
+// pieces in the set's core and outside it are told apart (bounds below 1 exist).
+TEST(DescriptorPrefilter, LevelPiecesCoverTheRangeAndBoundTheirValues) {
+  std::mt19937 rng(31);
+  int below1 = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const FuzzyNumber set = i % 7 == 0 ? FuzzyNumber::crisp(std::round(testing::uniform(rng, -4, 4)))
+                            : i % 7 == 1 ? FuzzyNumber::trapezoidal(0, 0, 0.1, 0.3)
+                                         : testing::randomTrapezoidal(rng);
+    PrefilterPlan leaf = prefilterPlan(query(descriptor("d", 0, 0, 0)), "part");
+    leaf.test = supportTest("d", set);
+    leaf.set = set;
+    const bool crisp = i % 2 == 0;
+    const double maxWidth = crisp ? 0 : std::ldexp(1.0, std::uniform_int_distribution<int>(-8, 2)(rng));
+    const Interval support = set.support();
+    const double fromLo = support.lo - maxWidth, toLo = support.hi;
+    const std::vector<LevelPiece> pieces = levelPieces(leaf, maxWidth, fromLo, toLo);
+    ASSERT_FALSE(pieces.empty());
+    EXPECT_EQ(pieces.front().fromLo, fromLo);
+    EXPECT_EQ(pieces.back().toLo, toLo);
+    for (size_t k = 0; k < pieces.size(); ++k) {
+      EXPECT_LE(pieces[k].fromLo, pieces[k].toLo);
+      if (k > 0) EXPECT_EQ(pieces[k].fromLo, std::nextafter(pieces[k - 1].toLo, 1e300));
+      if (pieces[k].bound < 1) ++below1;
+    }
+    for (int v = 0; v < 20; ++v) {
+      const double lo = testing::uniform(rng, fromLo, toLo);
+      const double width = crisp ? 0 : maxWidth * testing::uniform(rng, 0.01, 0.999);
+      const FuzzyNumber value = crisp ? FuzzyNumber::crisp(lo)
+                                      : FuzzyNumber::triangular(lo, lo + width * testing::uniform(rng, 0, 1), lo + width);
+      const Interval s = value.support();
+      const auto in = std::find_if(pieces.begin(), pieces.end(),
+                                   [&](const LevelPiece& p) { return s.lo >= p.fromLo && s.lo <= p.toLo; });
+      ASSERT_NE(in, pieces.end());
+      EXPECT_GE(in->bound, similarity(value, set)) << "value [" << s.lo << ", " << s.hi << "]";
+      EXPECT_GE(in->bound, scoreBound(leaf, s.lo, s.hi, false));
+    }
+  }
+  EXPECT_GT(below1, 3000);
 }
 
 }  // namespace

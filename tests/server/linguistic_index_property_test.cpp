@@ -11,6 +11,7 @@
 
 #include "db/store.h"
 #include "geometry/error.h"
+#include "query/descriptor_prefilter.h"
 #include "query/descriptors.h"
 #include "query/linguistic_query.h"
 #include "query/part_json.h"
@@ -241,6 +242,69 @@ TEST(LinguisticIndexProperty, IndexedEqualsFullScan) {
   // The index prunes most queries, and the queries find things.
   EXPECT_GT(pruned, queries / 2);
   EXPECT_GT(hits, queries);
+}
+
+// The level scan (parts, a query that is one descriptor condition or an "and" under a t-norm,
+// server/linguistic_search.h): broad queries whose candidates are most parts, many tied scores
+// (crisp values at the ends of their ranges, copies of one part), limits 1, 3 and 10.
+TEST(LinguisticIndexProperty, LevelScanEqualsFullScan) {
+  const std::vector<std::string> texts = {
+      "find a big part", "find a very round part", "find a slightly bent part", "find a round part",
+      "find a very tapered and slightly bent part", "find a big and round part", "find a small part",
+      "find a round part at least 0.5", "find a part with size at least 0.6", "find a very square and big part"};
+  size_t pruned = 0;
+  for (uint32_t seed = 21; seed <= 23; ++seed) {
+    Catalogue catalogue(seed);
+    catalogue.build(150, 0);
+    Store& store = catalogue.store();
+    std::mt19937& rng = catalogue.rng();
+    // Copies of one crisp part: tied scores on every condition.
+    FuzzyPart tied;
+    tied.eps1 = tied.eps2 = FuzzyNumber::crisp(1.0);
+    for (int i = 0; i < 12; ++i)
+      store.create(prepareDocument(partDocument(tied, "tied" + std::to_string(i), true), "part", store, 10000, ""));
+    std::vector<LinguisticQuery> queries;
+    for (const std::string& text : texts) queries.push_back(parseLinguisticQuery(text, Vocabulary::builtin()));
+    for (int q = 0; q < 30; ++q) {
+      LinguisticQuery query;
+      query.subject = "part";
+      query.root = randomCondition(rng, q % 2);  // one descriptor, or an and / or / not of them
+      query.aggregation = q % 4 == 3 ? "product" : "min";
+      queries.push_back(query);
+    }
+    for (size_t q = 0; q < queries.size(); ++q)
+      for (int limit : {1, 3, 10}) {
+        SCOPED_TRACE("limit " + std::to_string(limit));
+        expectSameAnswers(store, queries[q], q % 3 == 0 ? 0.2 : 0.0, limit,
+                          "level query " + std::to_string(q) + " seed " + std::to_string(seed), &pruned);
+      }
+  }
+  EXPECT_GT(pruned, 0u);
+}
+
+// The level scan reads fewer index rows than the plan's candidates on a broad query: "big" has
+// most parts as candidates, and the best 10 lie in the first levels. `candidates` counts the rows
+// it read (a counter, not a timing).
+TEST(LinguisticIndexProperty, LevelScanReadsFewerRowsThanTheCandidates) {
+  Catalogue catalogue(5);
+  catalogue.build(400, 0);
+  const Store& store = catalogue.store();
+  const LinguisticQuery query = parseLinguisticQuery("find a big part", Vocabulary::builtin());
+  const PrefilterPlan plan = prefilterPlan(query, "part");
+  ASSERT_EQ(plan.kind, PrefilterPlan::Kind::kOverlap);
+  const SupportTest& t = plan.test;
+  const size_t all = store.descriptorCandidates("part", {t.descriptor, t.lo, t.hi, t.loIncluded, t.hiIncluded,
+                                                         t.wideStrict}).size();
+  LinguisticSearchOptions options;
+  options.limit = 10;
+  options.kinds = {"part"};
+  const LinguisticSearchResult indexed = searchLinguistic(store, query, options);
+  ASSERT_EQ(indexed.hits.size(), 10u);
+  EXPECT_GT(all, 200u);
+  EXPECT_LT(indexed.candidates, all / 2) << "read " << indexed.candidates << " of " << all;
+  EXPECT_LE(indexed.scored, indexed.candidates);
+  size_t pruned = 0;
+  expectSameAnswers(store, query, 0.0, 10, "big", &pruned);
 }
 
 TEST(LinguisticIndexProperty, RefreshedRowsAreTheRowsOfTheCurrentDocuments) {
