@@ -73,18 +73,24 @@ void backfillDescriptorIndex(fsdb::Store& store, size_t maxNodes) {
   spdlog::info("descriptor index: backfilled {} objects in {:.2f} s", n, seconds);
 }
 
+// --vocabulary FILE of serve, eval and query: makes the file the active vocabulary (every parser
+// reads it) before anything is parsed. False, with the message on the log, when the file is bad.
+bool useVocabulary(const std::string& vocabularyPath) {
+  if (vocabularyPath.empty()) return true;
+  try {
+    fsdb::setActiveVocabulary(fsdb::Vocabulary::fromFile(vocabularyPath));
+    spdlog::info("vocabulary {}", vocabularyPath);
+    return true;
+  } catch (const fsdb::Error& e) {
+    spdlog::error("cannot load the vocabulary: {} (at {})", e.what(), e.path().empty() ? "the top" : e.path());
+    return false;
+  }
+}
+
 int runServe(const fsdb::ServerOptions& options, const std::string& dbPath, const std::string& demoDir,
              const std::string& vocabularyPath) {
   // Before the demo is loaded and any request parsed: every parser reads the active vocabulary.
-  if (!vocabularyPath.empty()) {
-    try {
-      fsdb::setActiveVocabulary(fsdb::Vocabulary::fromFile(vocabularyPath));
-      spdlog::info("vocabulary {}", vocabularyPath);
-    } catch (const fsdb::Error& e) {
-      spdlog::error("cannot load the vocabulary: {} (at {})", e.what(), e.path().empty() ? "the top" : e.path());
-      return 1;
-    }
-  }
+  if (!useVocabulary(vocabularyPath)) return 1;
   sigset_t signals;
   blockShutdownSignals(&signals);  // before any thread exists, so all inherit the mask
 
@@ -190,6 +196,8 @@ int main(int argc, char** argv) {
   evalCmd->add_option("--vdb", eval.vdbPath, "write both grids (upper, lower) to OUT.vdb");
 
   evalCmd->add_option("--db", eval.dbPath, "database for SHAPE-ID and for references in FILE");
+  std::string evalVocabulary;
+  evalCmd->add_option("--vocabulary", evalVocabulary, "a vocabulary file for parts described by words (as for serve)");
 
   fsdb::ImportOptions import;
   import.dbPath = dbPath;
@@ -216,13 +224,16 @@ int main(int argc, char** argv) {
   queryCmd->add_option("--kind", query.kind, "only parts or only shapes")->check(CLI::IsMember({"part", "shape"}));
   queryCmd->add_flag("--scan", query.scan, "score every object instead of the index's candidates (same results)");
   queryCmd->add_flag("--json", query.json, "print the JSON answer of POST /query/linguistic");
+  std::string queryVocabulary;
+  queryCmd->add_option("--vocabulary", queryVocabulary, "with --db: a vocabulary file instead of the built-in one (as for serve)")
+      ->excludes("--server");
 
   CLI11_PARSE(app, argc, argv);
   spdlog::set_level(spdlog::level::from_str(logLevel));
 
   if (serveCmd->parsed()) return runServe(serve, dbPath, demoDir, vocabularyPath);
-  if (evalCmd->parsed()) return fsdb::runEval(evalFile, eval);
+  if (evalCmd->parsed()) return useVocabulary(evalVocabulary) ? fsdb::runEval(evalFile, eval) : 1;
   if (importCmd->parsed()) return fsdb::runImport(import);
-  if (queryCmd->parsed()) return fsdb::runQuery(query);
+  if (queryCmd->parsed()) return useVocabulary(queryVocabulary) ? fsdb::runQuery(query) : 1;
   return 2;
 }

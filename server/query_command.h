@@ -1,7 +1,8 @@
 #pragma once
 // `fsdb query "TEXT" [--db PATH | --server URL] [--limit K] [--threshold T] [--kind part|shape]
 //  [--scan] [--json]` (SPEC §1, issue 5): the linguistic search of POST /query/linguistic on a
-// database file (the same code, server/linguistic_search.h) or through a running server.
+// database file (the same code, server/linguistic_search.h) or through a running server. With
+// --db, `--vocabulary FILE` (server/main.cpp, as for serve) makes a user's vocabulary the active one.
 //
 // Output on stdout: a table, one line per result (rank, score, kind, id, name), "no results"
 // when nothing satisfies the query; with --json the answer of POST /query/linguistic as is.

@@ -60,12 +60,18 @@ TEST(VocabularyApi, LeavesPlacedByWords) {
   EXPECT_EQ(r.json["error"]["path"], "tree.children[1].transform.place.relative_to") << r.body;
 }
 
-TEST(VocabularyApi, ExtendedVocabularyFile) {
-  fsdb::TempDir dir;
+// The built-in vocabulary with one more noun, "egg", written by a user.
+json eggVocabulary() {
   json doc = schemaVocabulary();
   doc["nouns"]["egg"] = {{"plural", "eggs"},
                          {"conditions", {{"roundness", {{"trap", {0.7, 0.9, 1, 1}}}}}},
                          {"params", {{"eps1", 1}, {"eps2", 1}, {"a1", 1}, {"a3", 1.3}}}};
+  return doc;
+}
+
+TEST(VocabularyApi, ExtendedVocabularyFile) {
+  fsdb::TempDir dir;
+  const json doc = eggVocabulary();
   const std::string file = dir.file("my-vocabulary.json");
   std::ofstream(file) << doc.dump();
   ServerProcess server({"--vocabulary", file});
@@ -77,6 +83,30 @@ TEST(VocabularyApi, ExtendedVocabularyFile) {
   // The built-in server does not know the word.
   ServerProcess plain;
   EXPECT_EQ(plain.post("/parts", json{{"kind", "part"}, {"name", "e"}, {"text", "an egg"}}).status, 422);
+}
+
+// `fsdb query --db` and `fsdb eval` parse words too, so they take the same --vocabulary FILE.
+TEST(VocabularyApi, QueryAndEvalTakeTheVocabularyFile) {
+  fsdb::TempDir dir;
+  const json doc = eggVocabulary();
+  const std::string file = dir.file("eggs.json"), db = dir.file("db.sqlite");
+  std::ofstream(file) << doc.dump();
+  {
+    ServerProcess server({"--vocabulary", file, "--db", db});
+    ASSERT_EQ(server.post("/parts", json{{"kind", "part"}, {"name", "e"}, {"text", "an egg"}}).status, 201);
+  }
+  const auto found = fsdb::test::runFsdb({"query", "find an egg", "--db", db, "--vocabulary", file, "--json"});
+  ASSERT_EQ(found.exitCode, 0) << found.out;
+  const json answer = json::parse(found.out);
+  ASSERT_EQ(answer["results"].size(), 1u) << found.out;
+  EXPECT_EQ(answer["results"][0]["name"], "e");
+  EXPECT_EQ(fsdb::test::runFsdb({"query", "find an egg", "--db", db}, true).exitCode, 1);  // built-in: unknown word
+
+  const std::string part = dir.file("egg.json");
+  std::ofstream(part) << json{{"kind", "part"}, {"name", "e"}, {"text", "a slightly bent egg"}}.dump();
+  EXPECT_EQ(fsdb::test::runFsdb({"eval", part, "--resolution", "16", "--vocabulary", file}).exitCode, 0);
+  EXPECT_NE(fsdb::test::runFsdb({"eval", part, "--resolution", "16"}, true).exitCode, 0);
+  EXPECT_EQ(fsdb::test::runFsdb({"eval", part, "--vocabulary", dir.file("missing.json")}, true).exitCode, 1);
 }
 
 TEST(VocabularyApi, BadVocabularyFileStopsTheStart) {
