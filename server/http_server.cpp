@@ -42,6 +42,45 @@ bool bearerMatches(const std::string& header, const std::string& token) {
   return diff == 0;
 }
 
+// Reads a POST or PUT body through httplib's ContentReader into *body (see addRoute for why).
+// Multipart bodies are drained and refused (415); a body over maxBody, which httplib checks only
+// against Content-Length and not for chunked transfers, is 413 and closes the connection.
+void readBody(const httplib::Request& req, const httplib::ContentReader& content, size_t maxBody,
+              std::string* body, httplib::Response& res) {
+  if (req.is_multipart_form_data()) {
+    content([](const httplib::MultipartFormData&) { return true; }, [](const char*, size_t) { return true; });
+    throw Error("unsupported_media_type",
+                "multipart/form-data bodies are not accepted; send the document itself "
+                "(Content-Type: application/json, or JSON Lines for bulk imports)",
+                "body");
+  }
+  bool tooLarge = false;
+  size_t discarded = 0;
+  const bool read = content([&](const char* data, size_t n) {
+    if (!tooLarge && body->size() + n <= maxBody) {
+      body->append(data, n);
+      return true;
+    }
+    // Over the limit: drop what was kept and read on without keeping, so that a client still
+    // sending sees the 413 instead of a reset connection; up to 4 × max_body_bytes, then stop
+    // reading (the connection closes).
+    tooLarge = true;
+    std::string().swap(*body);
+    discarded += n;
+    return discarded <= 4 * maxBody;
+  });
+  // httplib sets 413 when the Content-Length is over its payload limit (max_body_bytes too).
+  if (tooLarge || (!read && res.status == 413)) {
+    res.set_header("Connection", "close");
+    throw Error(errc::kLimitExceeded, "request body larger than max_body_bytes=" + std::to_string(maxBody), "body");
+  }
+  if (!read) {
+    res.set_header("Connection", "close");
+    throw Error(errc::kMalformedJson, "the request body ended before its announced length (or its chunks were malformed)",
+                "body");
+  }
+}
+
 void sendError(httplib::Response& res, const Error& e) {
   sendJson(res, httpStatusFor(e.code()), errorBody(e.code(), e.what(), e.path()));
 }
@@ -53,7 +92,6 @@ std::string ApiRequest::queryParam(const std::string& name) const {
 }
 
 bool ApiRequest::hasQueryParam(const std::string& name) const { return raw.has_param(name.c_str()); }
-const std::string& ApiRequest::rawBody() const { return raw.body; }
 
 HttpServer::HttpServer(ServerOptions options)
     : options_(std::move(options)), server_(std::make_unique<httplib::Server>()) {
@@ -67,20 +105,28 @@ void HttpServer::addRoute(const std::string& method, const std::string& openapiP
   routes_.push_back({method, openapiPath});
   routePatterns_.emplace_back(routeRegex(openapiPath));
   const int maxDepth = options_.limits.maxJsonDepth;
+  const size_t maxBody = options_.limits.maxBodyBytes;
   const std::string token = routeOptions.write ? options_.token : std::string();
-  auto wrapped = [handler = std::move(handler), maxDepth, token, routeOptions](const httplib::Request& req,
-                                                                              httplib::Response& res) {
+  // POST and PUT bodies are read here through httplib's ContentReader, not by httplib itself:
+  // httplib parses a body sent as application/x-www-form-urlencoded (curl -d's default) as a
+  // form and answers 413 when it is over 8 KiB, so every JSON document over 8 KiB sent with
+  // `curl -d` was refused as "larger than max_body_bytes". It also does not bound chunked bodies;
+  // readBody does. (httplib still refuses a Content-Length over max_body_bytes first.)
+  auto wrapped = [handler = std::move(handler), maxDepth, maxBody, token, routeOptions](
+                     const httplib::Request& req, httplib::Response& res, const httplib::ContentReader* content) {
+    ApiRequest api{req, nullptr, {}, {}};
     try {
+      // The whole body first, as httplib did before any handler ran, so that an early error
+      // never leaves unread bytes on a keep-alive connection.
+      if (content) readBody(req, *content, maxBody, &api.bodyBytes, res);
       if (!token.empty() && !bearerMatches(req.get_header_value("Authorization"), token)) {
         res.set_header("WWW-Authenticate", "Bearer");
         throw Error(errc::kUnauthorized,
                     "this server requires \"Authorization: Bearer <token>\" for writes (fsdb serve --token)",
                     "");
       }
-      ApiRequest api{req, nullptr, {}};
       for (size_t i = 1; i < req.matches.size(); ++i) api.pathParams.push_back(req.matches[i].str());
-      if ((req.method == "POST" || req.method == "PUT") && !routeOptions.rawBody)
-        api.body = parseJsonBody(req.body, maxDepth);
+      if (content && !routeOptions.rawBody) api.body = parseJsonBody(api.bodyBytes, maxDepth);
       ApiResponse out = handler(api);
       for (const auto& [name, value] : out.headers) res.set_header(name, value);
       if (out.contentType.empty()) {
@@ -95,10 +141,13 @@ void HttpServer::addRoute(const std::string& method, const std::string& openapiP
     // Anything else propagates to the exception handler: a 500 with a JSON body.
   };
   const std::string pattern = routeRegex(openapiPath);
-  if (method == "GET") server_->Get(pattern, wrapped);
-  else if (method == "POST") server_->Post(pattern, wrapped);
-  else if (method == "PUT") server_->Put(pattern, wrapped);
-  else if (method == "DELETE") server_->Delete(pattern, wrapped);
+  auto withoutBody = [wrapped](const httplib::Request& req, httplib::Response& res) { wrapped(req, res, nullptr); };
+  auto withBody = [wrapped](const httplib::Request& req, httplib::Response& res,
+                            const httplib::ContentReader& content) { wrapped(req, res, &content); };
+  if (method == "GET") server_->Get(pattern, withoutBody);
+  else if (method == "POST") server_->Post(pattern, withBody);
+  else if (method == "PUT") server_->Put(pattern, withBody);
+  else if (method == "DELETE") server_->Delete(pattern, withoutBody);
   else throw std::logic_error("unsupported method " + method);
 }
 

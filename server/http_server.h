@@ -45,14 +45,15 @@ struct ServerOptions {
 };
 
 // What a handler gets: the parsed JSON body (null for GET and raw-body routes), the raw request
-// for query strings and raw bodies.
+// for query strings, and the body bytes as received.
 struct ApiRequest {
   const httplib::Request& raw;
   nlohmann::json body;
   std::vector<std::string> pathParams;  // values of the route's {name} segments, in order
+  std::string bodyBytes;  // POST and PUT: the body (read by the server, never by httplib: see addRoute)
   std::string queryParam(const std::string& name) const;  // "" when absent
   bool hasQueryParam(const std::string& name) const;
-  const std::string& rawBody() const;  // the body as received (raw-body routes read it)
+  const std::string& rawBody() const { return bodyBytes; }  // raw-body routes read it
 };
 
 // What a handler returns: status + JSON, or (for exports) a body with its own media type.

@@ -93,6 +93,8 @@ int runServe(const fsdb::ServerOptions& options, const std::string& dbPath, cons
   if (!useVocabulary(vocabularyPath)) return 1;
   sigset_t signals;
   blockShutdownSignals(&signals);  // before any thread exists, so all inherit the mask
+  // A client that hangs up while its answer is written must cost that request, not the server.
+  std::signal(SIGPIPE, SIG_IGN);
 
   std::unique_ptr<fsdb::Store> store;
   try {

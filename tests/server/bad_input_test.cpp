@@ -1,6 +1,7 @@
 // Bad requests against the real `fsdb serve --db FILE`: each gets a 4xx with the JSON error body
 // {"error":{"code","message","path"}}, and the server keeps serving (GET /health is 200 after
 // every one). Also the bearer token for writes.
+#include <csignal>
 #include <gtest/gtest.h>
 
 #include "tests/server/server_process.h"
@@ -268,6 +269,65 @@ TEST(BadInputToken, WritesNeedTheTokenReadsDoNot) {
                         json{{"resolution", 16}})
                 .status,
             200);
+}
+
+// Bodies as curl sends them. `curl -d` labels a JSON body application/x-www-form-urlencoded;
+// httplib, left to read it, parsed it as a form and answered 413 "larger than max_body_bytes"
+// for anything over 8 KiB, whatever the limit. Chunked bodies are held to the limit too, and
+// a refused body leaves the keep-alive connection usable.
+TEST(BadInputBodies, FormLabelledJsonOver8KiBChunkedAndMultipartBodies) {
+  // The client below keeps writing bodies the server has refused and closed: like curl, it must
+  // see the error on the socket, not die of SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
+  TempDir dir;
+  ServerProcess server({"--db", dir.file("bodies.sqlite"), "--max-body-bytes", "100000"});
+  json big = part("form-labelled");
+  big["meta"] = {{"notes", std::string(20000, 'n')}};
+  auto r = server.post("/parts", big.dump(), "application/x-www-form-urlencoded");
+  EXPECT_EQ(r.status, 201) << r.body;
+  std::string lines;
+  for (int i = 0; i < 200; ++i) lines += part("bulk-form-" + std::to_string(i)).dump() + "\n";
+  ASSERT_GT(lines.size(), 8192u);
+  r = server.post("/parts/bulk", lines, "application/x-www-form-urlencoded");
+  ASSERT_EQ(r.status, 200) << r.body;
+  EXPECT_EQ(r.json["imported"], 200);
+  EXPECT_EQ(server.get("/parts?name=bulk-form-199").json["items"].size(), 1u);
+
+  // Over the limit with a Content-Length, and chunked (httplib checks only Content-Length).
+  big["meta"]["notes"] = std::string(150000, 'n');
+  expectError(server, server.post("/parts", big.dump()), 413, "limit_exceeded", "body", "max_body_bytes=100000");
+  httplib::Client c = server.client();
+  const std::string chunked = big.dump();
+  auto res = c.Post("/parts", chunked.size(),
+                    [&](size_t offset, size_t length, httplib::DataSink& sink) {
+                      sink.write(chunked.data() + offset, std::min<size_t>(length, 4096));
+                      return true;
+                    },
+                    "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 413) << res->body;
+  res = c.Post("/parts", [&](size_t offset, httplib::DataSink& sink) {
+                 if (offset < chunked.size()) sink.write(chunked.data() + offset, std::min<size_t>(4096, chunked.size() - offset));
+                 else sink.done();
+                 return true;
+               },
+               "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 413) << res->body;
+  EXPECT_NE(res->body.find("max_body_bytes=100000"), std::string::npos) << res->body;
+
+  // Multipart (curl -F) is refused, and the same connection still serves the next request.
+  httplib::Client keep = server.client();
+  keep.set_keep_alive(true);
+  httplib::MultipartFormDataItems items = {{"doc", part("multi").dump(), "doc.json", "application/json"}};
+  res = keep.Post("/parts", items);
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 415) << res->body;
+  EXPECT_EQ(json::parse(res->body)["error"]["code"], "unsupported_media_type");
+  res = keep.Post("/parts", part("after-multipart").dump(), "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 201) << res->body;
+  EXPECT_EQ(server.get("/health").status, 200);
 }
 
 }  // namespace
