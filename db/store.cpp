@@ -122,12 +122,19 @@ void checkCycles(Connection& connection, const ObjectRow& object,
   }
 }
 
-// Drops the cached evaluations of `id` and of every object that reaches it.
-void invalidateCache(Connection& connection, int64_t id) {
-  auto statement =
-      connection.prepare("DELETE FROM eval_cache WHERE object_id = ?1 OR object_id IN (" FSDB_REACHING_SQL ")");
+// What a new version of `id` changes in everything that reaches it (`dependents`, from
+// dependentsOf): their cached evaluations are dropped and their descriptor components marked
+// pending, as are `id`'s own cached evaluations. One reaching walk serves both.
+void invalidateDependents(Connection& connection, int64_t id, const std::vector<int64_t>& dependents) {
+  auto statement = connection.prepare("DELETE FROM eval_cache WHERE object_id = ?1");
   statement->bind(1, id);
   statement->run();
+  for (int64_t dependent : dependents) {
+    statement->reset();
+    statement->bind(1, dependent);
+    statement->run();
+    markDescriptorsPending(connection, dependent);
+  }
 }
 
 // Writes version `version` of object `row` (whose objects row exists) with its normalised rows,
@@ -247,9 +254,7 @@ StoredObject putIn(Connection& connection, int64_t id, const NewObject& object) 
   checkCycles(connection, *row, object.references, children);
   // The objects that reach this one are its ancestors in refs, which this write does not change
   // (it replaces only the object's own outgoing edges), so the order against writeVersion is free.
-  invalidateCache(connection, id);
-  // The components of every object reaching this one change with it.
-  for (int64_t dependent : dependentsOf(connection, id)) markDescriptorsPending(connection, dependent);
+  invalidateDependents(connection, id, dependentsOf(connection, id));
   std::string now = isoNow();
   int version = row->latestVersion + 1;
   {

@@ -44,13 +44,7 @@ const Direction* directionOf(const QueryCondition& c) {
   return d;
 }
 
-Vec3 coreCentre(const FuzzyPart& p) {
-  auto mid = [](const FuzzyNumber& x) {
-    const Interval c = x.core();
-    return (c.lo + c.hi) / 2.0;
-  };
-  return {mid(p.tx), mid(p.ty), mid(p.tz)};
-}
+Vec3 coreCentre(const FuzzyPart& p) { return p.coreRepresentative().placement.translate; }
 
 double score(const QueryCondition& c, Context& ctx);
 
@@ -76,6 +70,8 @@ double relationScore(const QueryCondition& c, Context& ctx) {
       (side == 0 ? subject : other).push_back(std::move(s));
     }
   }
+  std::vector<Vec3> centres;  // once per component, not once per pair
+  for (const ShapeComponent& comp : comps) centres.push_back(coreCentre(comp.part));
   double best = 0.0;
   size_t bestI = 0, bestJ = 0;
   bool found = false;
@@ -84,7 +80,7 @@ double relationScore(const QueryCondition& c, Context& ctx) {
       if (i == j) continue;
       double s = std::min(subject[i].score, other[j].score);
       if (found && s <= best) continue;  // cannot win: the first best pair stays (stable ties)
-      s = std::min(s, directionMembership(*direction, coreCentre(comps[i].part) - coreCentre(comps[j].part)));
+      s = std::min(s, directionMembership(*direction, centres[i] - centres[j]));
       if (c.distance && s > 0.0) s = std::min(s, similarity(centreDistance(comps[i].part, comps[j].part), *c.distance));
       if (!found || s > best) {
         best = s;

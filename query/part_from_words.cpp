@@ -19,11 +19,6 @@ constexpr double kPi = 3.14159265358979323846;
 const std::vector<std::string> kOrder = {"squariness", "roundness", "bevelness", "pinchness", "elongation",
                                          "bendness",   "taperness", "twistness", "size"};
 
-double coreMid(const FuzzyNumber& x) {
-  const Interval c = x.core();
-  return (c.lo + c.hi) / 2.0;
-}
-
 FuzzyNumber affine(const FuzzyNumber& d, double slope, double offset) {
   return add(scale(d, slope), FuzzyNumber::crisp(offset));
 }
@@ -48,11 +43,12 @@ void realize(const std::string& descriptor, const FuzzyNumber& d, FuzzyPart* par
       return x < 0.5 ? 2.0 * x : 1.0 / (2.0 - 2.0 * x);
     });
   }
-  if (descriptor == "bendness") part->kv = scale(d, kPi / (2.0 * coreMid(part->a1) * coreMid(part->a3)));
+  const SuperquadricParams core = part->coreRepresentative().params;  // the size so far
+  if (descriptor == "bendness") part->kv = scale(d, kPi / (2.0 * core.a1 * core.a3));
   if (descriptor == "taperness") part->kx = part->ky = negate(d);
   if (descriptor == "twistness") part->t = scale(d, kPi);
   if (descriptor == "size") {
-    const double l = coreMid(part->a1) * std::cbrt(coreMid(part->a2) * coreMid(part->a3));
+    const double l = core.a1 * std::cbrt(core.a2 * core.a3);
     part->scale = mapIncreasing(d, [l](double x) {
       x = std::min(0.95, std::max(0.05, x));
       return x / (1.0 - x) / l;

@@ -15,12 +15,8 @@ namespace {
 // The largest half-length times the scale (core midpoints): the radius of a bounding sphere of
 // the undeformed part.
 double boundingRadius(const FuzzyPart& p) {
-  auto mid = [](const FuzzyNumber& x) {
-    const Interval c = x.core();
-    return (c.lo + c.hi) / 2.0;
-  };
-  const double a1 = mid(p.a1);
-  return mid(p.scale) * a1 * std::max({1.0, mid(p.a2), mid(p.a3)});
+  const PlacedSuperquadric core = p.coreRepresentative();
+  return core.placement.scale * core.params.a1 * std::max({1.0, core.params.a2, core.params.a3});
 }
 
 }  // namespace

@@ -34,6 +34,9 @@ bool better(const LinguisticHit& a, const LinguisticHit& b) {
   return a.id < b.id;
 }
 
+// The same order for candidates: highest bound first, ties by id (the order hits take).
+bool boundFirst(const Candidate& a, const Candidate& b) { return a.bound != b.bound ? a.bound > b.bound : a.id < b.id; }
+
 class Scorer {
  public:
   Scorer(const Store& store, const LinguisticQuery& query, const LinguisticSearchOptions& options)
@@ -90,9 +93,7 @@ class Scorer {
         pieces.push_back({{r.descriptor, r.widthClass, p.fromLo, p.toLo, r.leastHi}, p.bound});
     }
     std::stable_sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) { return a.bound > b.bound; });
-    const auto worse = [](const Candidate& a, const Candidate& b) {  // heap order: best on top
-      return a.bound != b.bound ? a.bound < b.bound : a.id > b.id;
-    };
+    const auto worse = [](const Candidate& a, const Candidate& b) { return boundFirst(b, a); };  // heap: best on top
     std::vector<Candidate> pool;
     const std::vector<int64_t> pendingIds = store.pendingDescriptorIds(kind);
     const std::unordered_set<int64_t> pending(pendingIds.begin(), pendingIds.end());
@@ -150,15 +151,12 @@ class Scorer {
   // Puts the best of candidates[from, end) in order at its front (a block that grows fourfold,
   // so a search that stops early selects instead of sorting them all); returns the block's end.
   size_t orderNext(std::vector<Candidate>& candidates, size_t from) {
-    const auto first = [](const Candidate& a, const Candidate& b) {
-      return a.bound != b.bound ? a.bound > b.bound : a.id < b.id;
-    };
     block_ = block_ == 0 ? 4 * (limit_ + kBoundedChunk) : 4 * block_;
     const size_t end = std::min(candidates.size(), from + block_);
     const auto begin = candidates.begin() + static_cast<std::ptrdiff_t>(from);
     const auto middle = candidates.begin() + static_cast<std::ptrdiff_t>(end);
-    std::nth_element(begin, middle - (end < candidates.size() ? 0 : 1), candidates.end(), first);
-    std::sort(begin, middle, first);
+    std::nth_element(begin, middle - (end < candidates.size() ? 0 : 1), candidates.end(), boundFirst);
+    std::sort(begin, middle, boundFirst);
     return end;
   }
 

@@ -87,10 +87,7 @@ bool useVocabulary(const std::string& vocabularyPath) {
   }
 }
 
-int runServe(const fsdb::ServerOptions& options, const std::string& dbPath, const std::string& demoDir,
-             const std::string& vocabularyPath) {
-  // Before the demo is loaded and any request parsed: every parser reads the active vocabulary.
-  if (!useVocabulary(vocabularyPath)) return 1;
+int runServe(const fsdb::ServerOptions& options, const std::string& dbPath, const std::string& demoDir) {
   sigset_t signals;
   blockShutdownSignals(&signals);  // before any thread exists, so all inherit the mask
   // A client that hangs up while its answer is written must cost that request, not the server.
@@ -153,7 +150,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
 
   fsdb::ServerOptions serve;
-  std::string dbPath = "data/fsdb.sqlite", demoDir, vocabularyPath;
+  std::string dbPath = "data/fsdb.sqlite", demoDir;
+  std::string vocabularyPath;  // --vocabulary of serve, eval and query (one subcommand runs)
   if (const char* t = std::getenv("FSDB_TOKEN")) serve.token = t;
   auto* serveCmd = app.add_subcommand("serve", "serve the HTTP API");
   serveCmd->add_option("--db", dbPath, "SQLite database file (created with its directory if missing)")
@@ -198,8 +196,7 @@ int main(int argc, char** argv) {
   evalCmd->add_option("--vdb", eval.vdbPath, "write both grids (upper, lower) to OUT.vdb");
 
   evalCmd->add_option("--db", eval.dbPath, "database for SHAPE-ID and for references in FILE");
-  std::string evalVocabulary;
-  evalCmd->add_option("--vocabulary", evalVocabulary, "a vocabulary file for parts described by words (as for serve)");
+  evalCmd->add_option("--vocabulary", vocabularyPath, "a vocabulary file for parts described by words (as for serve)");
 
   fsdb::ImportOptions import;
   import.dbPath = dbPath;
@@ -226,16 +223,17 @@ int main(int argc, char** argv) {
   queryCmd->add_option("--kind", query.kind, "only parts or only shapes")->check(CLI::IsMember({"part", "shape"}));
   queryCmd->add_flag("--scan", query.scan, "score every object instead of the index's candidates (same results)");
   queryCmd->add_flag("--json", query.json, "print the JSON answer of POST /query/linguistic");
-  std::string queryVocabulary;
-  queryCmd->add_option("--vocabulary", queryVocabulary, "with --db: a vocabulary file instead of the built-in one (as for serve)")
+  queryCmd->add_option("--vocabulary", vocabularyPath, "with --db: a vocabulary file instead of the built-in one (as for serve)")
       ->excludes("--server");
 
   CLI11_PARSE(app, argc, argv);
   spdlog::set_level(spdlog::level::from_str(logLevel));
 
-  if (serveCmd->parsed()) return runServe(serve, dbPath, demoDir, vocabularyPath);
-  if (evalCmd->parsed()) return useVocabulary(evalVocabulary) ? fsdb::runEval(evalFile, eval) : 1;
+  // Before the demo is loaded and anything parsed: every parser reads the active vocabulary.
+  if (!useVocabulary(vocabularyPath)) return 1;
+  if (serveCmd->parsed()) return runServe(serve, dbPath, demoDir);
+  if (evalCmd->parsed()) return fsdb::runEval(evalFile, eval);
   if (importCmd->parsed()) return fsdb::runImport(import);
-  if (queryCmd->parsed()) return useVocabulary(queryVocabulary) ? fsdb::runQuery(query) : 1;
+  if (queryCmd->parsed()) return fsdb::runQuery(query);
   return 2;
 }

@@ -40,7 +40,7 @@ void printTable(const nlohmann::json& answer) {
 }
 
 // 1 for refusals of the query itself (4xx), 2 for storage and transport trouble.
-int exitFor(const std::string& code) { return httpStatusFor(code) >= 500 ? 2 : 1; }
+int exitFor(int httpStatus) { return httpStatus >= 500 ? 2 : 1; }
 
 }  // namespace
 
@@ -61,7 +61,7 @@ int runQuery(const QueryCommandOptions& options) {
     if (res->status != 200 || !answer.is_object() || !answer.contains("results")) {
       if (answer.is_object() && answer.contains("error")) {
         printError(answer["error"]);
-        return res->status >= 500 ? 2 : 1;
+        return exitFor(res->status);
       }
       std::cerr << "fsdb query: the server answered " << res->status << ": " << res->body << "\n";
       return 2;
@@ -74,7 +74,7 @@ int runQuery(const QueryCommandOptions& options) {
       answer = linguisticQueryResponse(*store, request, LinguisticRequestLimits{options.maxNodes, 0});
     } catch (const Error& e) {
       printError(errorObject(e.code(), e.what(), e.path()));
-      return exitFor(e.code());
+      return exitFor(httpStatusFor(e.code()));
     }
   }
   if (options.json) std::cout << answer.dump(2) << std::endl;
