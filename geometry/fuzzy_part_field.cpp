@@ -282,11 +282,8 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
     }
     s.incumbent = m;
     s.witness = theta;
-    const SuperquadricParams& q = theta.params;
-    const Placement& pl = theta.placement;
-    const double v[kSlots] = {q.eps1, q.eps2, q.a1, q.a2, q.a3, q.kx, q.ky, q.kv, q.t,
-                              pl.translate.x, pl.translate.y, pl.translate.z, pl.deg, pl.scale};
-    std::copy(v, v + kSlots, slopeAt);  // partFromSlots' order
+    const PartBox at = crispPartBox(theta);  // single values, addressed by slot
+    for (int i = 0; i < kSlots; ++i) slopeAt[i] = slot(at, i).lo;
     haveSlopes = false;
     if (m <= base) return;
     base = m;
