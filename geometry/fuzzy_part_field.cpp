@@ -17,7 +17,7 @@ namespace fsdb {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kSlots = 14;
+constexpr int kSlots = kPartSlots;  // superquadric_slopes.h's slot order
 // The enclosure is not rounded outwards (superquadric_bounds.h: a few ulps); block decisions that
 // levelsAt must reproduce keep this relative distance from the threshold 1.
 constexpr double kMargin = 1e-12;
@@ -189,8 +189,8 @@ bool FuzzyPartField::collapsedExcludes(const PartBox& box, const Vec3& p, bool i
   PartBox c = box;
   for (int round = 0; round < 3 && *evaluations < options_.evaluationBudget; ++round) {
     int open[kSlots], n = 0;
-    for (int i = 0; i < kSlots; ++i)
-      if (supportWidth_[i] > 0.0 && width(slot(c, i)) > 0.0) open[n++] = i;
+    for (int j = 0; j < fuzzyCount_; ++j)
+      if (width(slot(c, fuzzySlots_[j])) > 0.0) open[n++] = fuzzySlots_[j];
     if (n == 0) return false;
     Interval d[kSlots];
     ++*evaluations;
@@ -282,11 +282,8 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
     }
     s.incumbent = m;
     s.witness = theta;
-    const SuperquadricParams& q = theta.params;
-    const Placement& pl = theta.placement;
-    const double v[kSlots] = {q.eps1, q.eps2, q.a1, q.a2, q.a3, q.kx, q.ky, q.kv, q.t,
-                              pl.translate.x, pl.translate.y, pl.translate.z, pl.deg, pl.scale};
-    std::copy(v, v + kSlots, slopeAt);  // partFromSlots' order
+    const PartBox at = crispPartBox(theta);  // single values, addressed by slot
+    for (int i = 0; i < kSlots; ++i) slopeAt[i] = slot(at, i).lo;
     haveSlopes = false;
     if (m <= base) return;
     base = m;

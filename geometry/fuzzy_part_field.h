@@ -75,6 +75,7 @@
 #include "geometry/fuzzy_part.h"
 #include "geometry/placed_superquadric.h"
 #include "geometry/superquadric_bounds.h"
+#include "geometry/superquadric_slopes.h"
 #include "geometry/transform.h"
 
 namespace fsdb {
@@ -146,7 +147,7 @@ class FuzzyPartField : public AlphaFieldSource {
   // Signs of monotoneSigns over a whole block, computed when first needed.
   struct BlockSigns {
     int state = 0;  // 0 not computed, 1 monotone over the block, 2 not
-    signed char sign[14];
+    signed char sign[kPartSlots];
   };
   // sampleBlock over the sub-block of `size`³ voxels at (i, j, k) of the block.
   void sampleSubBlock(const BlockLattice& b, int i, int j, int k, int size, BlockSigns* signs,
@@ -156,9 +157,9 @@ class FuzzyPartField : public AlphaFieldSource {
   FuzzyPartFieldOptions options_;
   PartBox support_;          // P(0)
   PartBox core_;             // P(1)
-  double supportWidth_[14];  // widths of P(0), the yardstick for choosing a split
-  const FuzzyNumber* values_[14];  // the part's values, in slot order
-  int fuzzySlots_[14];             // the slots of the fuzzy values, fuzzyCount_ of them
+  double supportWidth_[kPartSlots];  // widths of P(0), the yardstick for choosing a split
+  const FuzzyNumber* values_[kPartSlots];  // the part's values, in slot order
+  int fuzzySlots_[kPartSlots];            // the slots of the fuzzy values, fuzzyCount_ of them
   int fuzzyCount_ = 0;
   bool crispAngle_ = false;        // deg crisp: one rotation for every θ
   Rotation rotation_;
