@@ -276,7 +276,7 @@ TreeOutline outlineTree(const nlohmann::json& tree, const std::string& path) {
 ParsedShape parseShapeField(const nlohmann::json& doc, const std::string& path, size_t maxNodes,
                             const ReferenceResolver& resolver) {
   requireObject(doc, path);
-  Walker w{maxNodes, remembering(resolver), {}, {}, {}};
+  Walker w{maxNodes, remembering(resolver), {}, {}, {}, {}};
   const std::string kind = doc.contains("kind") ? requireString(doc["kind"], joinPath(path, "kind")) : "shape";
   if (kind == "part") {
     w.count(path);
