@@ -1,0 +1,63 @@
+#include "geometry/fair_candidates.h"
+
+#include <algorithm>
+#include <string>
+
+#include "geometry/error.h"
+#include "geometry/fair_curve.h"
+#include "geometry/tnorms.h"
+
+namespace fsdb {
+namespace {
+
+double gradeAt(const std::vector<Vec2>& points, const std::vector<double>& angles, bool closed, size_t j,
+               const FairCandidateOptions& o) {
+  return fairMembership(fairDangerZones(points, angles, closed, j, o.behavior), angles[j], o.deltaTheta);
+}
+
+}  // namespace
+
+std::vector<double> pointFairness(const std::vector<Vec2>& points, const std::vector<double>& anglesDeg, bool closed,
+                                  FairBehavior behavior, double deltaTheta) {
+  FairCandidateOptions o;
+  o.behavior = behavior;
+  o.deltaTheta = deltaTheta;
+  std::vector<double> g(points.size());
+  for (size_t j = 0; j < points.size(); ++j) g[j] = gradeAt(points, anglesDeg, closed, j, o);
+  return g;
+}
+
+std::vector<FairCandidate> fairCandidates(const std::vector<Vec2>& points, bool closed, const FairCandidateOptions& o) {
+  if (o.maxCandidates == 0)
+    throw Error(errc::kInvalidParameter, "max_candidates must be at least 1", "max_candidates");
+  const std::vector<double> base = firstEstimationAngles(points, closed);  // seed 002 Figure 7
+  const std::vector<double> baseGrades = pointFairness(points, base, closed, o.behavior, o.deltaTheta);
+  const size_t n = points.size();
+  std::vector<FairCandidate> out;
+  for (size_t i = 0; i < n; ++i) {
+    const FairDangerZones zones = fairDangerZones(points, base, closed, i, o.behavior);
+    // seed 002 §5 (local maxima), §7 (R_alpha).
+    for (const RankedValue& m : fairAngleMaxima(zones, o.angleSamples, o.alphaThreshold, o.deltaTheta)) {
+      FairCandidate c{0, i, m.mu, base};
+      c.anglesDeg[i] = m.x;
+      // The AND over all points; only P_i and its neighbours see the new angle.
+      double score = 1.0;
+      for (size_t j = 0; j < n; ++j) {
+        const bool near = j == i || j + 1 == i || i + 1 == j || (closed && ((j + 1) % n == i || (i + 1) % n == j));
+        score = zadehTNorm(score, near ? gradeAt(points, c.anglesDeg, closed, j, o) : baseGrades[j]);
+      }
+      c.score = score;
+      out.push_back(std::move(c));
+    }
+  }
+  std::sort(out.begin(), out.end(), [](const FairCandidate& a, const FairCandidate& b) {
+    if (a.score != b.score) return a.score > b.score;
+    if (a.membership != b.membership) return a.membership > b.membership;
+    if (a.point != b.point) return a.point < b.point;
+    return a.anglesDeg[a.point] < b.anglesDeg[b.point];
+  });
+  if (out.size() > o.maxCandidates) out.resize(o.maxCandidates);
+  return out;
+}
+
+}  // namespace fsdb

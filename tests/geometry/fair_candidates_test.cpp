@@ -1,0 +1,96 @@
+// Ranked candidate fair curves (seed 002 §5-§7; geometry/fair_candidates.h).
+#include "geometry/fair_candidates.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "geometry/fair_curve.h"
+#include "tests/geometry/expect_error.h"
+
+namespace fsdb {
+namespace {
+
+// Seed 002 Figure 7: "a first estimation of an interpolatory closed curve" from four points.
+// The text gives no coordinates; this convex quadrilateral (found by a search over small integer
+// quadrilaterals for the one whose F_4 at P1 comes closest to the paper's maxima) stands in for it.
+const std::vector<Vec2> kFigure7 = {{0, 0}, {-5, -1}, {-3, -4}, {1, -1}};
+
+TEST(FairCandidates, Figure7P1HasTheFourMaximaOfThePaper) {
+  const auto angles = firstEstimationAngles(kFigure7, true);
+  const auto m = fairAngleMaxima(fairDangerZones(kFigure7, angles, true, 0, FairBehavior::kUndulant), 180, 0);
+  // seed 002 §5: M1 = (4; 0.10), M2 = (73; 0.67), M3 = (146; 0.13), M4 = (166; 0.09).
+  const double paperX[] = {73, 146, 166, 4}, paperMu[] = {0.67, 0.13, 0.09, 0.10};
+  ASSERT_EQ(m.size(), 4u);
+  for (size_t k = 0; k < 4; ++k) {
+    EXPECT_NEAR(directionDistance(m[k].x, paperX[k]), 0, 1.0) << k << ": " << m[k].x;
+    EXPECT_NEAR(m[k].mu, paperMu[k], 0.02) << k << ": " << m[k].mu;
+  }
+  // F_4 is the min of four Figure 3 ramps, so its maxima's grades sum to 1 (the paper's: 0.99).
+  double sum = 0;
+  for (const auto& r : m) sum += r.mu;
+  EXPECT_NEAR(sum, 1.0, 1e-9);
+}
+
+TEST(FairCandidates, Figure7YieldsSeveralDistinctRankedCandidates) {
+  FairCandidateOptions o;
+  o.behavior = FairBehavior::kUndulant;
+  o.maxCandidates = 100;
+  const auto c = fairCandidates(kFigure7, true, o);
+  ASSERT_GE(c.size(), 8u);
+  std::set<std::vector<double>> distinct;
+  for (size_t k = 0; k < c.size(); ++k) {
+    distinct.insert(c[k].anglesDeg);
+    if (k > 0) {
+      EXPECT_GE(c[k - 1].score, c[k].score) << k;
+    }
+    EXPECT_LE(c[k].score, c[k].membership + 1e-12) << k;  // the AND includes the point's own grade
+    const auto grades = pointFairness(kFigure7, c[k].anglesDeg, true, o.behavior);
+    EXPECT_NEAR(c[k].score, *std::min_element(grades.begin(), grades.end()), 1e-12) << k;
+    EXPECT_NEAR(grades[c[k].point], c[k].membership, 1e-9) << k;
+  }
+  EXPECT_EQ(distinct.size(), c.size());
+  // Every candidate curve interpolates the points.
+  const auto r = radiusMagnitudes(kFigure7, {}, true);
+  for (const auto& cand : c) {
+    const FairCurve curve = buildFairCurve(kFigure7, cand.anglesDeg, r, true);
+    for (size_t k = 0; k < 4; ++k) EXPECT_LT(length(fairCurvePoint(curve, k, 0) - kFigure7[k]), 1e-9);
+  }
+}
+
+TEST(FairCandidates, ThresholdAndLimitCutTheList) {
+  FairCandidateOptions o;
+  o.behavior = FairBehavior::kUndulant;
+  o.maxCandidates = 100;
+  const auto all = fairCandidates(kFigure7, true, o);
+  o.alphaThreshold = 0.3;
+  const auto high = fairCandidates(kFigure7, true, o);
+  EXPECT_LT(high.size(), all.size());
+  for (const auto& c : high) EXPECT_GE(c.membership, 0.3);
+  size_t expected = 0;
+  for (const auto& c : all) expected += c.membership >= 0.3;
+  EXPECT_EQ(high.size(), expected);
+  o.alphaThreshold = 0;
+  o.maxCandidates = 3;
+  const auto three = fairCandidates(kFigure7, true, o);
+  ASSERT_EQ(three.size(), 3u);
+  for (size_t k = 0; k < 3; ++k) EXPECT_EQ(three[k].anglesDeg, all[k].anglesDeg);
+  o.maxCandidates = 0;
+  expectInvalidParameter([&] { fairCandidates(kFigure7, true, o); }, "max_candidates");
+}
+
+TEST(FairCandidates, BehavioursChangeTheSets) {
+  const std::vector<Vec2> zigzag = {{0, 0}, {1, 1}, {2, 0}, {3, 1}, {4, 0}, {5, 1}};
+  FairCandidateOptions o;
+  o.maxCandidates = 1000;
+  for (FairBehavior b : {FairBehavior::kUndulant, FairBehavior::kNoInflection, FairBehavior::kInflection}) {
+    o.behavior = b;
+    const auto c = fairCandidates(zigzag, false, o);
+    EXPECT_FALSE(c.empty());
+    for (const auto& cand : c) EXPECT_GT(cand.membership, 0);
+  }
+}
+
+}  // namespace
+}  // namespace fsdb
