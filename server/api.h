@@ -25,6 +25,9 @@ void registerObjectRoutes(HttpServer& server, Store& store);
 // POST /query/linguistic (server/linguistic_search.h)
 void registerQueryRoutes(HttpServer& server, const Store& store);
 
+// POST /curves/fair (seed 002 fair curves; server/fair_curve_api.cpp)
+void registerFairCurveRoutes(HttpServer& server);
+
 // A positive integer from a path segment or query parameter (digits only, at most `max`);
 // 422 invalid_parameter naming `what` otherwise. Every {id} of every route goes through it.
 int64_t positiveInteger(const std::string& text, const std::string& what, int64_t max = INT64_MAX);

@@ -38,6 +38,7 @@ void registerAllRoutes(HttpServer& server, Store& store) {
   registerObjectRoutes(server, store);
   registerEvaluationRoutes(server, store);
   registerQueryRoutes(server, store);
+  registerFairCurveRoutes(server);
 }
 
 }  // namespace fsdb
