@@ -1,6 +1,7 @@
 #include "geometry/fair_candidates.h"
 
 #include <algorithm>
+#include <set>
 #include <string>
 
 #include "geometry/error.h"
@@ -9,6 +10,9 @@
 
 namespace fsdb {
 namespace {
+
+// Angles closer than this (degrees) are one angle.
+constexpr double kSameAngleDeg = 1e-6;
 
 double gradeAt(const std::vector<Vec2>& points, const std::vector<double>& angles, bool closed, size_t j,
                const FairCandidateOptions& o) {
@@ -39,7 +43,8 @@ std::vector<FairCandidate> fairCandidates(const std::vector<Vec2>& points, bool 
     // seed 002 §5 (local maxima), §7 (R_alpha).
     for (const RankedValue& m : fairAngleMaxima(zones, o.angleSamples, o.alphaThreshold, o.deltaTheta)) {
       FairCandidate c{0, i, m.mu, base};
-      c.anglesDeg[i] = m.x;
+      // A maximum at the first estimation itself (within rounding) is the first-estimation curve.
+      c.anglesDeg[i] = directionDistance(m.x, base[i]) < kSameAngleDeg ? base[i] : m.x;
       // The AND over all points; only P_i and its neighbours see the new angle.
       double score = 1.0;
       for (size_t j = 0; j < n; ++j) {
@@ -56,8 +61,14 @@ std::vector<FairCandidate> fairCandidates(const std::vector<Vec2>& points, bool 
     if (a.point != b.point) return a.point < b.point;
     return a.anglesDeg[a.point] < b.anglesDeg[b.point];
   });
-  if (out.size() > o.maxCandidates) out.resize(o.maxCandidates);
-  return out;
+  // One candidate per distinct curve: the best-ranked copy stays.
+  std::set<std::vector<double>> seen;
+  std::vector<FairCandidate> distinct;
+  for (FairCandidate& c : out) {
+    if (distinct.size() == o.maxCandidates) break;
+    if (seen.insert(c.anglesDeg).second) distinct.push_back(std::move(c));
+  }
+  return distinct;
 }
 
 }  // namespace fsdb

@@ -7,6 +7,8 @@
 // of the whole curve: the AND (min, §3) over every point of its grade at the candidate's angles
 // (the neighbours' grades change with the replaced angle through G2 and G3). Order: score
 // descending, then the maximum's own grade, then point index, then angle; at most maxCandidates.
+// A maximum within 1e-6° of the first estimation is the first-estimation curve itself, so
+// several points can give that one curve: each distinct curve is listed once (its best copy).
 // Maxima below R_alpha (alphaThreshold, §7) never become candidates.
 // Errors: as fair_fuzzification.h and fair_curve.h; maxCandidates 0 is invalid_parameter
 // ("max_candidates").
