@@ -14,8 +14,8 @@
 //    every step's sign (so every relation holds) unless all relations are equal (then no
 //    magnitudes can satisfy them: invalid_parameter, path "relations"). No relations: all equal.
 //  - Orientation (the side of the centre of curvature): at an inner point R_i points to the
-//    concave side of the polygon (dot(R_i, P_{i-1} + P_{i+1} - 2 P_i) > 0); where that is 0 it
-//    keeps the side of R_{i-1}; the ends of an open curve take the side of their neighbour.
+//    concave side of the polygon (dot(R_i, P_{i-1} + P_{i+1} - 2 P_i) > 0; at an open end, the
+//    side of its chord); where that is 0 it keeps the side of a neighbour's R.
 //  - First estimation (Figure 7 is "a first estimation"): the bisector of the angle at P_i
 //    (direction of unit(P_{i-1} - P_i) + unit(P_{i+1} - P_i)); at an open end, the normal of the
 //    end chord; straight through (no bisector), the normal of the next chord.
@@ -28,7 +28,9 @@
 //    short of X and Q2 beyond it (10% margins; d0 = d1 alpha_4/alpha_3, d3 = d2 + (alpha_1 -
 //    alpha_2)|R|): the PE wraps round X and the piece of points on a circle is nearly circular;
 //  - any other piece (an inflection, diverging lines) takes Table 1's depths, each end's pair
-//    in the order under which the evolvent advances at both ends (see tablePolygon).
+//    in the order under which the evolvent advances at both ends (see tablePolygon); when no
+//    order does, Table 1's order as printed (the tangent may then reverse at a point: such
+//    angles lie in danger zones; no candidate curve of the tests reaches this case).
 // The signed string lengths s0, s1 (P = Q - s T at the ends, T the unit PE tangent) may differ
 // in sign on an inflection piece: the curve then crosses its PE there, transversally.
 // The evolvent (§2: "directions of the interpolated radii-vectors are given by the PE tangents,

@@ -14,8 +14,8 @@
 //    line P_i + t u(theta), t_j = cross(P_j - P_i, R_j) / cross(u, R_j), so the sign of
 //    t_{i-1} t_i changes only at the angles of R_{i-1} and R_{i+1}: each zone is one of the two
 //    arcs between those angles (our reading of "crosses the convex hull of S"; the text is vague).
-//    A point without both neighbours (the ends of an open curve), or whose neighbour lies on its
-//    own radius line (t = 0 for every angle), has no G3 zone (grade 1).
+//    A point without both neighbours (the ends of an open curve), or lying on a neighbour's
+//    radius line (then t = 0 for every angle), has no G3 zone (grade 1).
 // The behaviours (§4): kUndulant is the set F_4 = G1(i-1) AND G1(i+1) AND G2(i-1) AND G2(i+1)
 // (Figures 5, 6); kNoInflection is F_4 AND G31; kInflection is F_4 AND G32 (F_2, Figure 4).
 // AND is min (§3, zadehTNorm). Defuzzification (§5) by local maxima (geometry/defuzzify.h

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <set>
 
 #include "geometry/fair_curve.h"
@@ -98,6 +99,37 @@ TEST(FairCandidates, BehavioursChangeTheSets) {
     EXPECT_FALSE(c.empty());
     for (const auto& cand : c) EXPECT_GT(cand.membership, 0);
   }
+}
+
+// Every candidate curve (not only the first estimation) passes through the points and keeps its
+// tangent's direction across every point: random closed loops and open zigzags, all behaviours.
+TEST(FairCandidates, EveryCandidateCurveIsG1AtEveryPoint) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int joints = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const int n = 4 + trial % 8;
+    const bool closed = trial % 2;
+    std::vector<Vec2> p;
+    for (int i = 0; i < n; ++i) {
+      const double a = 2 * M_PI * i / n, r = 3 + u(rng);
+      p.push_back(closed ? Vec2{r * std::cos(a), r * std::sin(a)} : Vec2{double(i), 2 * u(rng)});
+    }
+    FairCandidateOptions o;
+    o.maxCandidates = 100;
+    o.behavior = static_cast<FairBehavior>(trial % 3);
+    const auto r = radiusMagnitudes(p, {}, closed);
+    for (const auto& c : fairCandidates(p, closed, o)) {
+      const FairCurve curve = buildFairCurve(p, c.anglesDeg, r, closed);
+      const size_t pieces = pieceCount(curve);
+      for (size_t k = 0; k < pieces; ++k)
+        ASSERT_LT(length(fairCurvePoint(curve, k, 0) - p[k]), 1e-9) << trial;
+      for (size_t k = 0; k + 1 < pieces || (closed && k < pieces); ++k, ++joints)
+        ASSERT_GT(dot(fairCurveDerivative(curve, k, 1), fairCurveDerivative(curve, (k + 1) % pieces, 0)), 0)
+            << "trial " << trial << " point " << (k + 1) % n;
+    }
+  }
+  EXPECT_GT(joints, 1000);
 }
 
 }  // namespace
