@@ -81,8 +81,9 @@ FuzzyBezierPoint evaluateRational(const FuzzyBezierCurve& curve, double u, doubl
   for (std::size_t c = 0; c < dim; ++c) out.crisp.push_back(h[c] / h[dim]);  // the projection Π
 
   std::vector<double> wlo(n), whi(n), xlo(n), xhi(n);
+  const std::vector<double> basis = bernsteinBasis(n - 1, u);
   for (std::size_t k = 0; k < n; ++k) {
-    const double b = bernstein(n - 1, k, u);
+    const double b = basis[k];
     const Interval w = curve.weights[k].alphaCut(alpha);
     wlo[k] = b * w.lo;
     whi[k] = b * w.hi;
@@ -182,6 +183,14 @@ double bernstein(std::size_t r, std::size_t k, double u) {
   return binomial * std::pow(u, static_cast<double>(k)) * std::pow(1.0 - u, static_cast<double>(r - k));
 }
 
+std::vector<double> bernsteinBasis(std::size_t r, double u) {
+  std::vector<double> b(r + 1, 0.0);
+  b[0] = 1.0;
+  for (std::size_t j = 1; j <= r; ++j)
+    for (std::size_t k = j + 1; k-- > 0;) b[k] = (1.0 - u) * b[k] + (k > 0 ? u * b[k - 1] : 0.0);
+  return b;
+}
+
 CrispPoint deCasteljau(const std::vector<CrispPoint>& points, double u) {
   std::vector<CrispPoint> b = points;
   // seed 003 Algorithm 1: b_k^j = (1 − u) b_k^{j−1} + u b_{k+1}^{j−1}.
@@ -220,12 +229,13 @@ FuzzyBezierCurve isoCurveU(const FuzzyBezierSurface& surface, double v) {
   checkUnit(v, "v");
   const auto& grid = surface.controlGrid;
   const std::size_t q = grid[0].size() - 1;
+  const std::vector<double> basis = bernsteinBasis(q, v);
   FuzzyBezierCurve out;
   for (const auto& row : grid) {
     FuzzyPoint p;
     for (std::size_t c = 0; c < row[0].size(); ++c) {
-      FuzzyNumber sum = scale(row[0][c], bernstein(q, 0, v));
-      for (std::size_t j = 1; j <= q; ++j) sum = add(sum, scale(row[j][c], bernstein(q, j, v)));
+      FuzzyNumber sum = scale(row[0][c], basis[0]);
+      for (std::size_t j = 1; j <= q; ++j) sum = add(sum, scale(row[j][c], basis[j]));
       p.push_back(sum);
     }
     out.controlPoints.push_back(std::move(p));

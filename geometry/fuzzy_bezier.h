@@ -87,8 +87,12 @@ enum class Defuzzifier { kCentroid, kBisector, kMeanOfMaxima, kSmallestOfMaxima,
 void validateCurve(const FuzzyBezierCurve& curve);
 void validateSurface(const FuzzyBezierSurface& surface);
 
-// B_k^r(u) = C(r, k) u^k (1 − u)^(r − k) (seed 003 Def. 4), the closed form.
+// B_k^r(u) = C(r, k) u^k (1 − u)^(r − k) (seed 003 Def. 4), the closed form (C(r, k)
+// overflows beyond r ≈ 1000; the evaluators use bernsteinBasis).
 double bernstein(std::size_t r, std::size_t k, double u);
+// B_0^r(u) .. B_r^r(u) by the recurrence B_k^j = (1 − u) B_k^{j−1} + u B_{k−1}^{j−1}: no
+// binomials, so no overflow at any degree.
+std::vector<double> bernsteinBasis(std::size_t r, double u);
 // Crisp de Casteljau (seed 003 Algorithm 1 on one end): repeated linear interpolation.
 CrispPoint deCasteljau(const std::vector<CrispPoint>& points, double u);
 

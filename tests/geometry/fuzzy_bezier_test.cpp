@@ -125,6 +125,17 @@ TEST(FuzzyBezier, BernsteinBasisIsAPartitionOfUnity) {
       EXPECT_NEAR(sum, 1.0, 1e-12);
     }
   EXPECT_EQ(bernstein(3, 4, 0.5), 0.0);
+  for (std::size_t r : {0u, 1u, 5u, 17u})
+    for (double u : {0.0, 0.3, 1.0}) {
+      const std::vector<double> basis = bernsteinBasis(r, u);
+      ASSERT_EQ(basis.size(), r + 1);
+      for (std::size_t k = 0; k <= r; ++k) EXPECT_NEAR(basis[k], bernstein(r, k, u), 1e-14) << r << " " << k;
+    }
+  // Degree 2000: the closed form's binomial overflows, the recurrence does not.
+  const std::vector<double> high = bernsteinBasis(2000, 0.5);
+  double sum = 0;
+  for (double b : high) sum += b;
+  EXPECT_NEAR(sum, 1.0, 1e-9);
 }
 
 TEST(FuzzyBezier, LiesInTheConvexHullOfTheCuts) {
