@@ -34,19 +34,24 @@ double coreMidpoint(const FuzzyNumber& a) {
   return 0.5 * (c.lo + c.hi);
 }
 
-enum class End { kLower, kCrisp, kUpper };
-
-double endOf(const FuzzyNumber& a, double alpha, End end) {
-  if (end == End::kCrisp) return coreMidpoint(a);
-  const Interval cut = a.alphaCut(alpha);
-  return end == End::kLower ? cut.lo : cut.hi;
+// Per control point: the lower ends of the coordinates' cuts, then the core midpoints, then the
+// upper ends (3 × dimension values). De Casteljau interpolates componentwise, so one run on
+// these packed points evaluates the three curves at once.
+CrispPoint packedEnds(const FuzzyPoint& p, double alpha) {
+  const std::size_t d = p.size();
+  CrispPoint out(3 * d);
+  for (std::size_t c = 0; c < d; ++c) {
+    const Interval cut = p[c].alphaCut(alpha);
+    out[c] = cut.lo;
+    out[d + c] = coreMidpoint(p[c]);
+    out[2 * d + c] = cut.hi;
+  }
+  return out;
 }
 
-std::vector<CrispPoint> endPolygon(const std::vector<FuzzyPoint>& points, double alpha, End end) {
-  std::vector<CrispPoint> out(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    for (const FuzzyNumber& c : points[i]) out[i].push_back(endOf(c, alpha, end));
-  return out;
+FuzzyBezierPoint unpack(const CrispPoint& packed, std::size_t d) {
+  return {CrispPoint(packed.begin(), packed.begin() + d), CrispPoint(packed.begin() + d, packed.begin() + 2 * d),
+          CrispPoint(packed.begin() + 2 * d, packed.end())};
 }
 
 // min over w_k in [lo_k, hi_k] of Σ w_k x_k / Σ w_k (all lo_k ≥ 0, Σ lo_k > 0): the minimiser
@@ -68,12 +73,12 @@ double minWeightedMean(const std::vector<double>& x, const std::vector<double>& 
 
 // The rational point at u: crisp by the homogeneous de Casteljau and the projection Π, lower /
 // upper as the hull over the cuts (header).
-FuzzyBezierPoint evaluateRational(const FuzzyBezierCurve& curve, double u, double alpha) {
-  const std::size_t n = curve.controlPoints.size(), dim = curve.controlPoints[0].size();
+FuzzyBezierPoint evaluateRational(const BezierCurveCut& cut, double u) {
+  const std::size_t n = cut.ends.size(), dim = cut.dimension;
   std::vector<CrispPoint> homogeneous(n);
   for (std::size_t k = 0; k < n; ++k) {
-    const double w = coreMidpoint(curve.weights[k]);
-    for (const FuzzyNumber& c : curve.controlPoints[k]) homogeneous[k].push_back(w * coreMidpoint(c));
+    const double w = cut.crispWeights[k];
+    for (std::size_t c = 0; c < dim; ++c) homogeneous[k].push_back(w * cut.ends[k][dim + c]);
     homogeneous[k].push_back(w);
   }
   const CrispPoint h = deCasteljau(homogeneous, u);  // seed 003 §2: de Casteljau on (wP, w)
@@ -83,16 +88,13 @@ FuzzyBezierPoint evaluateRational(const FuzzyBezierCurve& curve, double u, doubl
   std::vector<double> wlo(n), whi(n), xlo(n), xhi(n);
   const std::vector<double> basis = bernsteinBasis(n - 1, u);
   for (std::size_t k = 0; k < n; ++k) {
-    const double b = basis[k];
-    const Interval w = curve.weights[k].alphaCut(alpha);
-    wlo[k] = b * w.lo;
-    whi[k] = b * w.hi;
+    wlo[k] = basis[k] * cut.weights[k].lo;
+    whi[k] = basis[k] * cut.weights[k].hi;
   }
   for (std::size_t c = 0; c < dim; ++c) {
     for (std::size_t k = 0; k < n; ++k) {
-      const Interval cut = curve.controlPoints[k][c].alphaCut(alpha);
-      xlo[k] = cut.lo;
-      xhi[k] = -cut.hi;  // max of the mean = −min of the mean of the negated values
+      xlo[k] = cut.ends[k][c];
+      xhi[k] = -cut.ends[k][2 * dim + c];  // max of the mean = −min of the mean of the negated values
     }
     out.lower.push_back(minWeightedMean(xlo, wlo, whi));
     out.upper.push_back(-minWeightedMean(xhi, wlo, whi));
@@ -200,28 +202,52 @@ CrispPoint deCasteljau(const std::vector<CrispPoint>& points, double u) {
   return b.empty() ? CrispPoint{} : b[0];
 }
 
-FuzzyBezierPoint evaluateCurve(const FuzzyBezierCurve& curve, double u, double alpha) {
+BezierCurveCut cutCurve(const FuzzyBezierCurve& curve, double alpha) {
   validateCurve(curve);
-  checkUnit(u, "u");
   checkUnit(alpha, "alpha");
-  if (curve.isRational()) return evaluateRational(curve, u, alpha);
-  return {deCasteljau(endPolygon(curve.controlPoints, alpha, End::kLower), u),
-          deCasteljau(endPolygon(curve.controlPoints, alpha, End::kCrisp), u),
-          deCasteljau(endPolygon(curve.controlPoints, alpha, End::kUpper), u)};
+  BezierCurveCut cut;
+  cut.dimension = curve.controlPoints[0].size();
+  for (const FuzzyPoint& p : curve.controlPoints) cut.ends.push_back(packedEnds(p, alpha));  // seed 003 eq. 3
+  for (const FuzzyNumber& w : curve.weights) {
+    cut.weights.push_back(w.alphaCut(alpha));
+    cut.crispWeights.push_back(coreMidpoint(w));
+  }
+  return cut;
+}
+
+FuzzyBezierPoint evaluateCut(const BezierCurveCut& cut, double u) {
+  checkUnit(u, "u");
+  if (!cut.weights.empty()) return evaluateRational(cut, u);
+  return unpack(deCasteljau(cut.ends, u), cut.dimension);
+}
+
+FuzzyBezierPoint evaluateCurve(const FuzzyBezierCurve& curve, double u, double alpha) {
+  return evaluateCut(cutCurve(curve, alpha), u);
+}
+
+BezierSurfaceCut cutSurface(const FuzzyBezierSurface& surface, double alpha) {
+  validateSurface(surface);
+  checkUnit(alpha, "alpha");
+  BezierSurfaceCut cut;
+  cut.dimension = surface.controlGrid[0][0].size();
+  for (const auto& row : surface.controlGrid) {
+    cut.ends.emplace_back();
+    for (const FuzzyPoint& p : row) cut.ends.back().push_back(packedEnds(p, alpha));
+  }
+  return cut;
+}
+
+FuzzyBezierPoint evaluateCut(const BezierSurfaceCut& cut, double u, double v) {
+  checkUnit(u, "u");
+  checkUnit(v, "v");
+  // seed 003 Algorithm 2: de Casteljau along each row at v, then along the column at u.
+  std::vector<CrispPoint> column;
+  for (const auto& row : cut.ends) column.push_back(deCasteljau(row, v));
+  return unpack(deCasteljau(column, u), cut.dimension);
 }
 
 FuzzyBezierPoint evaluateSurface(const FuzzyBezierSurface& surface, double u, double v, double alpha) {
-  validateSurface(surface);
-  checkUnit(u, "u");
-  checkUnit(v, "v");
-  checkUnit(alpha, "alpha");
-  // seed 003 Algorithm 2: de Casteljau along each row at v, then along the column at u.
-  auto at = [&](End end) {
-    std::vector<CrispPoint> column;
-    for (const auto& row : surface.controlGrid) column.push_back(deCasteljau(endPolygon(row, alpha, end), v));
-    return deCasteljau(column, u);
-  };
-  return {at(End::kLower), at(End::kCrisp), at(End::kUpper)};
+  return evaluateCut(cutSurface(surface, alpha), u, v);
 }
 
 FuzzyBezierCurve isoCurveU(const FuzzyBezierSurface& surface, double v) {

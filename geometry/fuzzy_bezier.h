@@ -99,6 +99,23 @@ CrispPoint deCasteljau(const std::vector<CrispPoint>& points, double u);
 FuzzyBezierPoint evaluateCurve(const FuzzyBezierCurve& curve, double u, double alpha);
 FuzzyBezierPoint evaluateSurface(const FuzzyBezierSurface& surface, double u, double v, double alpha);
 
+// The same in two steps, for many parameters at one level: the cut ends of every control point
+// (and weight) are computed once. evaluateCurve(c, u, a) == evaluateCut(cutCurve(c, a), u).
+struct BezierCurveCut {
+  std::size_t dimension = 0;
+  std::vector<CrispPoint> ends;      // per control point: lower ends, core midpoints, upper ends
+  std::vector<Interval> weights;     // rational only: the weights' cuts
+  std::vector<double> crispWeights;  // and their core midpoints
+};
+struct BezierSurfaceCut {
+  std::size_t dimension = 0;
+  std::vector<std::vector<CrispPoint>> ends;  // as BezierCurveCut::ends, per grid point
+};
+BezierCurveCut cutCurve(const FuzzyBezierCurve& curve, double alpha);
+BezierSurfaceCut cutSurface(const FuzzyBezierSurface& surface, double alpha);
+FuzzyBezierPoint evaluateCut(const BezierCurveCut& cut, double u);
+FuzzyBezierPoint evaluateCut(const BezierSurfaceCut& cut, double u, double v);
+
 // The u iso-parametric curve S(·, v) and the v iso-parametric curve S(u, ·) as fuzzy Bézier
 // curves (seed 003 §2: control points Σ_j B_j(v) P_ij, fuzzy convex combinations).
 FuzzyBezierCurve isoCurveU(const FuzzyBezierSurface& surface, double v);

@@ -48,9 +48,10 @@ ApiResponse evaluateCurveRoute(const ApiRequest& req, const BezierJsonLimits& li
   const FuzzyBezierCurve curve = parseBezierCurve(body, "", limits);
   const std::vector<double> us = parseParameterList(requireField(body, "u", ""), "u", limits);
   const double alpha = alphaOf(body);
+  const BezierCurveCut cut = cutCurve(curve, alpha);
   json points = json::array();
   for (double u : us) {
-    json p = pointJson(evaluateCurve(curve, u, alpha));
+    json p = pointJson(evaluateCut(cut, u));
     p["u"] = u;
     points.push_back(std::move(p));
   }
@@ -106,9 +107,10 @@ ApiResponse evaluateSurfaceRoute(const ApiRequest& req, const BezierJsonLimits& 
   const FuzzyBezierSurface surface = parseBezierSurface(body, "", limits);
   const std::vector<std::array<double, 2>> uvs = parseUvList(requireField(body, "uv", ""), "uv", limits);
   const double alpha = alphaOf(body);
+  const BezierSurfaceCut cut = cutSurface(surface, alpha);
   json points = json::array();
   for (const auto& uv : uvs) {
-    json p = pointJson(evaluateSurface(surface, uv[0], uv[1], alpha));
+    json p = pointJson(evaluateCut(cut, uv[0], uv[1]));
     p["u"] = uv[0];
     p["v"] = uv[1];
     points.push_back(std::move(p));
@@ -149,9 +151,10 @@ std::array<double, 2> project(const CrispPoint& p, double u) {
 std::string svgOfCurve(const FuzzyBezierCurve& curve, double alpha, int samples) {
   std::vector<std::array<double, 2>> lines[3];  // lower, crisp, upper
   double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+  const BezierCurveCut cut = cutCurve(curve, alpha);
   for (int i = 0; i < samples; ++i) {
-    const double u = samples == 1 ? 0.0 : static_cast<double>(i) / (samples - 1);
-    const FuzzyBezierPoint p = evaluateCurve(curve, u, alpha);
+    const double u = static_cast<double>(i) / (samples - 1);  // samples >= 2
+    const FuzzyBezierPoint p = evaluateCut(cut, u);
     const CrispPoint* ends[3] = {&p.lower, &p.crisp, &p.upper};
     for (int b = 0; b < 3; ++b) {
       const auto q = project(*ends[b], u);
@@ -182,9 +185,10 @@ std::string svgOfCurve(const FuzzyBezierCurve& curve, double alpha, int samples)
 
 TriangleMesh meshOfSurface(const FuzzyBezierSurface& surface, double alpha, const std::string& bound, int n) {
   TriangleMesh mesh;
+  const BezierSurfaceCut cut = cutSurface(surface, alpha);
   for (int i = 0; i <= n; ++i)
     for (int j = 0; j <= n; ++j) {
-      const FuzzyBezierPoint p = evaluateSurface(surface, static_cast<double>(i) / n, static_cast<double>(j) / n, alpha);
+      const FuzzyBezierPoint p = evaluateCut(cut, static_cast<double>(i) / n, static_cast<double>(j) / n);
       const CrispPoint& q = bound == "lower" ? p.lower : bound == "upper" ? p.upper : p.crisp;
       mesh.vertices.push_back({q[0], q.size() > 1 ? q[1] : 0.0, q.size() > 2 ? q[2] : 0.0});
     }

@@ -407,6 +407,23 @@ TEST(FuzzyBezier, DefuzzifiesTrianglesToTheirCentroid) {
   EXPECT_NEAR(defuzzifySurface(s, Defuzzifier::kLargestOfMaxima)[0][1][0], 3.0, 1e-12);
 }
 
+TEST(FuzzyBezier, CutsOnceEvaluatesAlike) {
+  std::mt19937 rng(17);
+  FuzzyBezierCurve c = randomCurve(rng, 5, 3, true);
+  const FuzzyBezierSurface s = randomSurface(rng, 3, 2);
+  const BezierCurveCut cut = cutCurve(c, 0.4);
+  const BezierSurfaceCut surfaceCut = cutSurface(s, 0.4);
+  for (double u : {0.0, 0.3, 1.0}) {
+    expectSamePoint(evaluateCut(cut, u), evaluateCurve(c, u, 0.4), 0, "curve cut");
+    expectSamePoint(evaluateCut(surfaceCut, u, 1 - u), evaluateSurface(s, u, 1 - u, 0.4), 0, "surface cut");
+  }
+  for (std::size_t k = 0; k < c.controlPoints.size(); ++k) c.weights.push_back(randomWeight(rng));
+  expectSamePoint(evaluateCut(cutCurve(c, 0.7), 0.6), evaluateCurve(c, 0.6, 0.7), 0, "rational cut");
+  expectInvalidParameter([&] { evaluateCut(cut, 1.01); }, "u");
+  expectInvalidParameter([&] { evaluateCut(surfaceCut, 0.5, -0.5); }, "v");
+  expectInvalidParameter([&] { cutCurve(c, 1.5); }, "alpha");
+}
+
 TEST(FuzzyBezier, RejectsMalformedInput) {
   auto expectDocumentError = [](auto f, const std::string& path) { expectError(f, errc::kInvalidDocument, path); };
   const FuzzyNumber one = FuzzyNumber::crisp(1);
