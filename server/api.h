@@ -25,8 +25,8 @@ void registerEvaluationRoutes(HttpServer& server, Store& store);
 // /curves and /surfaces
 void registerObjectRoutes(HttpServer& server, Store& store);
 
-// POST /curves/bezier/evaluate, /elevate, /defuzzify, POST /surfaces/bezier/evaluate, and the
-// exports of stored curves and surfaces: GET /curves/{id}/svg, GET /surfaces/{id}/mesh
+// POST /curves/bezier/evaluate, /elevate, /defuzzify, POST /surfaces/bezier/evaluate, /elevate,
+// /iso, and the exports of stored curves and surfaces: GET /curves/{id}/svg, /surfaces/{id}/mesh
 void registerBezierRoutes(HttpServer& server, const Store& store);
 
 // POST /query/linguistic (server/linguistic_search.h)

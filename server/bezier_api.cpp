@@ -3,6 +3,8 @@
 //   POST /curves/bezier/elevate      degree-elevated fuzzy control points (the same curve)
 //   POST /curves/bezier/defuzzify    crisp control points (or a crisp control grid)
 //   POST /surfaces/bezier/evaluate   points of the lower, crisp and upper surfaces
+//   POST /surfaces/bezier/elevate    degree elevation in u and v (the same surface)
+//   POST /surfaces/bezier/iso        an iso-parametric curve's fuzzy control points
 //   GET  /curves/{id}/svg            a stored curve's three polylines at level alpha
 //   GET  /surfaces/{id}/mesh         a stored surface's lower / crisp / upper uv grid as OBJ or STL
 // The /curves/bezier/... routes have one more segment than /curves/{id} and another method than
@@ -119,6 +121,44 @@ ApiResponse evaluateSurfaceRoute(const ApiRequest& req, const BezierJsonLimits& 
                            {"points", std::move(points)}}};
 }
 
+json gridToJson(const FuzzyBezierSurface& surface) {
+  json rows = json::array();
+  for (const auto& row : surface.controlGrid) rows.push_back(controlPointsToJson(row));
+  return rows;
+}
+
+ApiResponse elevateSurfaceRoute(const ApiRequest& req, const BezierJsonLimits& limits) {
+  const json& body = requireObject(req.body, "");
+  rejectUnknownKeys(body, "", {"control_grid", "times_u", "times_v"});
+  const FuzzyBezierSurface surface = parseBezierSurface(body, "", limits);
+  const int timesU = integerField(body, "times_u", 1), timesV = integerField(body, "times_v", 1);
+  const std::size_t rows = surface.controlGrid.size() + timesU, columns = surface.controlGrid[0].size() + timesV;
+  if (rows * columns > limits.maxControlPoints)
+    throw Error(errc::kLimitExceeded,
+                "the elevated grid would have " + std::to_string(rows * columns) + " control points, over " +
+                    limits.controlPointsLimitName + "=" + std::to_string(limits.maxControlPoints),
+                "times_u");
+  const FuzzyBezierSurface elevated = elevateSurface(surface, timesU, timesV);
+  return ApiResponse{200, {{"control_grid", gridToJson(elevated)}, {"degree", {rows - 1, columns - 1}}}};
+}
+
+// {"control_grid", "u": a} gives the v-curve S(a, ·); {"control_grid", "v": b} the u-curve S(·, b).
+ApiResponse isoCurveRoute(const ApiRequest& req, const BezierJsonLimits& limits) {
+  const json& body = requireObject(req.body, "");
+  rejectUnknownKeys(body, "", {"control_grid", "u", "v"});
+  const FuzzyBezierSurface surface = parseBezierSurface(body, "", limits);
+  if (body.contains("u") == body.contains("v"))
+    throw Error(errc::kInvalidDocument, "give exactly one of u (a v-curve S(u, ·)) and v (a u-curve S(·, v))",
+                body.contains("u") ? "v" : "u");
+  const bool fixU = body.contains("u");
+  const double at = parseUnitNumber(body[fixU ? "u" : "v"], fixU ? "u" : "v");
+  const FuzzyBezierCurve iso = fixU ? isoCurveV(surface, at) : isoCurveU(surface, at);
+  json out = curveToJson(iso);
+  out["degree"] = iso.degree();
+  out["fixed"] = {{fixU ? "u" : "v", at}};
+  return ApiResponse{200, std::move(out)};
+}
+
 // An integer query parameter in [minimum, max] (max is a server limit: 413 beyond it).
 int countParam(const ApiRequest& req, const std::string& name, double fallback, int minimum, std::size_t max,
                const std::string& limitName) {
@@ -223,6 +263,12 @@ void registerBezierRoutes(HttpServer& server, const Store& store) {
   });
   server.addRoute("POST", "/surfaces/bezier/evaluate", [limits](const ApiRequest& req) {
     return evaluateSurfaceRoute(req, limits);
+  });
+  server.addRoute("POST", "/surfaces/bezier/elevate", [limits](const ApiRequest& req) {
+    return elevateSurfaceRoute(req, limits);
+  });
+  server.addRoute("POST", "/surfaces/bezier/iso", [limits](const ApiRequest& req) {
+    return isoCurveRoute(req, limits);
   });
 
   server.addRoute("GET", "/curves/{id}/svg", [limits, &store](const ApiRequest& req) {

@@ -143,6 +143,44 @@ TEST_F(BezierApi, EvaluatesSurfaces) {
   EXPECT_EQ(r.json["points"][1]["crisp"], json({1.0, 0.0, 1.0}));
 }
 
+TEST_F(BezierApi, ElevatesSurfacesAndGivesIsoCurves) {
+  auto e = server->post("/surfaces/bezier/elevate", json{{"control_grid", patchGrid()}, {"times_u", 1}, {"times_v", 0}});
+  ASSERT_EQ(e.status, 200) << e.body;
+  EXPECT_EQ(e.json["degree"], json({2, 1}));
+  ASSERT_EQ(e.json["control_grid"].size(), 3u);
+  const json uv = {{0.3, 0.6}, {1, 0}};
+  auto a = server->post("/surfaces/bezier/evaluate", json{{"control_grid", patchGrid()}, {"uv", uv}, {"alpha", 0.25}});
+  auto b = server->post("/surfaces/bezier/evaluate", json{{"control_grid", e.json["control_grid"]}, {"uv", uv}, {"alpha", 0.25}});
+  ASSERT_EQ(b.status, 200) << b.body;
+  for (size_t i = 0; i < uv.size(); ++i)
+    for (const char* bound : {"lower", "crisp", "upper"})
+      for (size_t c = 0; c < 3; ++c)
+        EXPECT_NEAR(a.json["points"][i][bound][c].get<double>(), b.json["points"][i][bound][c].get<double>(), 1e-12);
+  // Default 1 and 1: 3 x 3 = 9 control points are over max_control_points = 8 here.
+  expectError(server->post("/surfaces/bezier/elevate", json{{"control_grid", patchGrid()}}), 413, "limit_exceeded",
+              "times_u");
+
+  // The u-curve at v = 0.6, evaluated at u = 0.3, is the surface point (0.3, 0.6).
+  auto iso = server->post("/surfaces/bezier/iso", json{{"control_grid", patchGrid()}, {"v", 0.6}});
+  ASSERT_EQ(iso.status, 200) << iso.body;
+  EXPECT_EQ(iso.json["degree"], 1);
+  EXPECT_EQ(iso.json["fixed"], json({{"v", 0.6}}));
+  auto onIso = server->post("/curves/bezier/evaluate",
+                            json{{"control_points", iso.json["control_points"]}, {"u", {0.3}}, {"alpha", 0.25}});
+  ASSERT_EQ(onIso.status, 200) << onIso.body;
+  for (const char* bound : {"lower", "crisp", "upper"})
+    for (size_t c = 0; c < 3; ++c)
+      EXPECT_NEAR(onIso.json["points"][0][bound][c].get<double>(), a.json["points"][0][bound][c].get<double>(), 1e-12);
+  auto isoV = server->post("/surfaces/bezier/iso", json{{"control_grid", patchGrid()}, {"u", 0}});
+  ASSERT_EQ(isoV.status, 200) << isoV.body;
+  EXPECT_EQ(isoV.json["control_points"], patchGrid()[0]);  // u = 0: the first row
+  expectError(server->post("/surfaces/bezier/iso", json{{"control_grid", patchGrid()}}), 422, "invalid_document", "u");
+  expectError(server->post("/surfaces/bezier/iso", json{{"control_grid", patchGrid()}, {"u", 0}, {"v", 1}}), 422,
+              "invalid_document", "v");
+  expectError(server->post("/surfaces/bezier/iso", json{{"control_grid", patchGrid()}, {"v", 3}}), 422,
+              "invalid_parameter", "v");
+}
+
 TEST_F(BezierApi, ErrorsNameTheJsonPath) {
   expectError(server->post("/curves/bezier/evaluate",
                            json{{"control_points", json::parse(R"([[0,0],[1,{"tri":[2,1,3]}]])")}, {"u", {0}}}),
