@@ -2,11 +2,13 @@
 // Registration of fsdb's endpoints on an HttpServer, one function per resource family.
 // Each endpoint registered here must appear in schema/openapi.json (tests/server/openapi_test).
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace fsdb {
 class HttpServer;
 class Store;
+struct ApiRequest;
 
 // GET /health (with the store's counts), GET /openapi.json
 void registerServiceRoutes(HttpServer& server, const Store& store);
@@ -19,8 +21,13 @@ void registerVocabularyRoutes(HttpServer& server);
 // forms: POST /shapes/{id}/evaluate (cached), GET /shapes/{id}/membership, /mesh, /grid.vdb
 void registerEvaluationRoutes(HttpServer& server, Store& store);
 
-// POST/GET /parts, GET/PUT/DELETE /parts/{id}, POST /parts/bulk, and the same for /shapes
+// POST/GET /parts, GET/PUT/DELETE /parts/{id}, POST /parts/bulk, and the same for /shapes,
+// /curves and /surfaces
 void registerObjectRoutes(HttpServer& server, Store& store);
+
+// POST /curves/bezier/evaluate, /elevate, /defuzzify, POST /surfaces/bezier/evaluate, /elevate,
+// /iso, and the exports of stored curves and surfaces: GET /curves/{id}/svg, /surfaces/{id}/mesh
+void registerBezierRoutes(HttpServer& server, const Store& store);
 
 // POST /query/linguistic (server/linguistic_search.h)
 void registerQueryRoutes(HttpServer& server, const Store& store);
@@ -31,6 +38,9 @@ void registerFairCurveRoutes(HttpServer& server);
 // A positive integer from a path segment or query parameter (digits only, at most `max`);
 // 422 invalid_parameter naming `what` otherwise. Every {id} of every route goes through it.
 int64_t positiveInteger(const std::string& text, const std::string& what, int64_t max = INT64_MAX);
+// A finite number from query parameter `name`, `fallback` when absent (required when none);
+// 422 invalid_parameter naming it otherwise.
+double numberParam(const ApiRequest& req, const std::string& name, std::optional<double> fallback);
 
 // Every route family above, in order.
 void registerAllRoutes(HttpServer& server, Store& store);

@@ -16,10 +16,11 @@ std::string lineKind(const nlohmann::json& doc, const std::string& routeKind) {
   if (!routeKind.empty()) return routeKind;
   if (doc.is_object() && doc.contains("kind") && doc["kind"].is_string()) {
     const std::string k = doc["kind"].get<std::string>();
-    if (k == "part" || k == "shape") return k;
-    throw Error(errc::kInvalidDocument, "kind must be \"part\" or \"shape\", got \"" + k + "\"", "kind");
+    if (k == "part" || k == "shape" || k == "curve" || k == "surface") return k;
+    throw Error(errc::kInvalidDocument, "kind must be \"part\", \"shape\", \"curve\" or \"surface\", got \"" + k + "\"",
+                "kind");
   }
-  throw Error(errc::kInvalidDocument, "each line needs \"kind\": \"part\" or \"shape\"", "kind");
+  throw Error(errc::kInvalidDocument, "each line needs \"kind\": \"part\", \"shape\", \"curve\" or \"surface\"", "kind");
 }
 
 }  // namespace

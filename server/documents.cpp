@@ -5,6 +5,7 @@
 #include "db/content_hash.h"
 #include "geometry/error.h"
 #include "geometry/fuzzy_part.h"
+#include "query/bezier_json.h"
 #include "query/json_body.h"
 #include "query/part_json.h"
 #include "server/descriptor_rows.h"
@@ -96,7 +97,13 @@ NewObject prepareDocument(const nlohmann::json& document, const std::string& kin
   NewObject out;
   out.kind = kind;
   out.name = doc["name"].get<std::string>();
-  if (kind == "part") {
+  if (kind == "curve" || kind == "surface") {
+    // A stored curve or surface holds at most max_nodes control points, the limit on the size
+    // of any stored document; evaluation and exports apply max_control_points on top.
+    const BezierJsonLimits limits{maxNodes, "max_nodes"};
+    if (kind == "curve") parseCurveDocument(doc, path, limits);
+    else parseSurfaceDocument(doc, path, limits);
+  } else if (kind == "part") {
     const FuzzyPart part = parsePart(doc, path);
     out.parameters = parameterSpans(part);
     out.descriptors = partDescriptorRows(part);

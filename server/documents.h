@@ -3,6 +3,8 @@
 // resolved against the store, and the normalised columns the store keeps (db/store.h).
 //
 // Contract:
+// - Curves and surfaces (query/bezier_json.h) are validated with at most maxNodes control points
+//   and keep no normalised columns.
 // - prepareDocument validates a part or shape document exactly as evaluation would (every
 //   fuzzy number, range, reference and limit), so nothing the store holds fails to evaluate
 //   for a reason visible at write time. Errors are fsdb::Error with the JSON path inside the

@@ -21,11 +21,6 @@
 #include "server/mesh_format.h"
 
 namespace fsdb {
-namespace {
-
-constexpr int kDefaultExportResolution = 64;
-
-int64_t shapeId(const ApiRequest& req) { return positiveInteger(req.pathParams[0], "id"); }
 
 double numberParam(const ApiRequest& req, const std::string& name, std::optional<double> fallback) {
   if (!req.hasQueryParam(name)) {
@@ -39,6 +34,13 @@ double numberParam(const ApiRequest& req, const std::string& name, std::optional
     throw Error(errc::kInvalidParameter, name + " must be a finite number, got \"" + text + "\"", name);
   return v;
 }
+
+namespace {
+
+constexpr int kDefaultExportResolution = 64;
+
+int64_t shapeId(const ApiRequest& req) { return positiveInteger(req.pathParams[0], "id"); }
+
 
 // The stored shape, parsed once (the same parse serves the cache key and, on a miss, the
 // evaluation), and a fingerprint of everything it is made of: its document and each referenced

@@ -30,8 +30,10 @@ struct ServerLimits {
   int maxJsonDepth = 64;            // --max-json-depth: deeper nesting gets 413
   size_t maxPoints = 1000000;       // --max-points: POST /operators/evaluate points per request
   int maxResolution = 512;          // --max-resolution: voxels along a shape's longest side
-  size_t maxNodes = 10000;          // --max-nodes: CSG nodes per shape
+  size_t maxNodes = 10000;          // --max-nodes: CSG nodes per shape, control points per stored curve or surface
   int maxQueryMs = 10000;           // --max-query-ms: longest linguistic search (413 beyond); 0: none
+  size_t maxControlPoints = 256;    // --max-control-points: of one Bézier curve or surface grid (requests, exports)
+  size_t maxCurvePoints = 10000;    // --max-curve-points: u values, uv pairs, export samples per request
 };
 
 struct ServerOptions {

@@ -174,7 +174,14 @@ int main(int argc, char** argv) {
 
   serveCmd->add_option("--max-resolution", serve.limits.maxResolution, "largest grid resolution of POST /evaluate")
       ->check(CLI::Range(2, 4096))->capture_default_str();
-  serveCmd->add_option("--max-nodes", serve.limits.maxNodes, "most CSG nodes in one shape")
+  serveCmd->add_option("--max-nodes", serve.limits.maxNodes,
+                       "most CSG nodes in one shape (and control points in a stored curve or surface)")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+  serveCmd->add_option("--max-control-points", serve.limits.maxControlPoints,
+                       "most control points of a Bezier curve or surface grid in a request or export")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+  serveCmd->add_option("--max-curve-points", serve.limits.maxCurvePoints,
+                       "most evaluation points (u values, uv pairs, export samples) per Bezier request")
       ->check(CLI::PositiveNumber)->capture_default_str();
   serveCmd->add_option("--max-query-ms", serve.limits.maxQueryMs,
                        "longest POST /query/linguistic search in milliseconds (413 beyond); 0: no limit")

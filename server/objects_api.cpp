@@ -1,5 +1,5 @@
-// Parts and shapes (SPEC §4): create, read (any version), list, new versions, delete, bulk.
-// One set of handlers serves both kinds; the route's kind is checked against the document's.
+// Parts, shapes, curves and surfaces (SPEC §4, §6): create, read (any version), list, new
+// versions, delete, bulk. One set of handlers serves every kind; the route's kind is checked against the document's.
 #include <algorithm>
 
 #include "geometry/error.h"
@@ -126,6 +126,8 @@ void registerKind(HttpServer& server, Store& store, const std::string& kind) {
 void registerObjectRoutes(HttpServer& server, Store& store) {
   registerKind(server, store, "part");
   registerKind(server, store, "shape");
+  registerKind(server, store, "curve");
+  registerKind(server, store, "surface");
 }
 
 }  // namespace fsdb

@@ -24,6 +24,8 @@ void registerServiceRoutes(HttpServer& server, const Store& store) {
                         {"uptime_s", uptime},
                         {"parts", count("part")},
                         {"shapes", count("shape")},
+                        {"curves", count("curve")},
+                        {"surfaces", count("surface")},
                         {"schema_version", store.schemaVersion()}}};
   });
   // Parsed once: the document is constant for the life of the binary.
@@ -37,6 +39,7 @@ void registerAllRoutes(HttpServer& server, Store& store) {
   registerVocabularyRoutes(server);
   registerObjectRoutes(server, store);
   registerEvaluationRoutes(server, store);
+  registerBezierRoutes(server, store);
   registerQueryRoutes(server, store);
   registerFairCurveRoutes(server);
 }

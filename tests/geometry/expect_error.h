@@ -9,15 +9,21 @@
 
 namespace fsdb {
 
+// expectError(f, code, path): the same for any error code.
 template <class F>
-void expectInvalidParameter(F f, const std::string& path) {
+void expectError(F f, const std::string& code, const std::string& path) {
   try {
     f();
-    ADD_FAILURE() << "no error thrown; expected invalid_parameter at " << path;
+    ADD_FAILURE() << "no error thrown; expected " << code << " at " << path;
   } catch (const Error& e) {
-    EXPECT_EQ(e.code(), errc::kInvalidParameter) << e.what();
+    EXPECT_EQ(e.code(), code) << e.what();
     EXPECT_EQ(e.path(), path) << e.what();
   }
+}
+
+template <class F>
+void expectInvalidParameter(F f, const std::string& path) {
+  expectError(f, errc::kInvalidParameter, path);
 }
 
 }  // namespace fsdb

@@ -73,6 +73,22 @@ TEST(ImportCli, IntoADatabaseFile) {
   EXPECT_TRUE(server.get("/shapes?name=bad").json["items"].empty());
 }
 
+TEST(ImportCli, MixedFilesTakeCurvesAndSurfaces) {
+  TempDir dir;
+  const std::string file = dir.file("curves.jsonl"), db = dir.file("curves.sqlite");
+  std::string s = json{{"kind", "part"}, {"name", "A"}, {"params", {{"a1", 1}}}}.dump() + "\n";
+  s += json{{"kind", "curve"}, {"name", "arc"}, {"bezier", {{"control_points", {{0, 0}, {{{"tri", {0, 1, 2}}}, 1}}}}}}.dump() + "\n";
+  s += json{{"kind", "surface"}, {"name", "patch"}, {"bezier", {{"control_grid", {{{0, 0, 0}}}}}}}.dump() + "\n";
+  s += json{{"kind", "volume"}, {"name", "x"}}.dump() + "\n";
+  writeFile(file, s);
+  auto r = runFsdb({"import", file, "--db", db});
+  EXPECT_EQ(lastLine(r.out), "imported 3, failed 1") << r.out;
+  ServerProcess server({"--db", db});
+  EXPECT_EQ(server.get("/health").json["curves"], 1);
+  EXPECT_EQ(server.get("/curves?name=arc").json["items"].size(), 1u);
+  EXPECT_EQ(server.get("/surfaces?name=patch").json["items"].size(), 1u);
+}
+
 TEST(ImportCli, ThroughARunningServerGivesTheSameCounts) {
   TempDir dir;
   const std::string file = dir.file("catalogue.jsonl");

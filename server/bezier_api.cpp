@@ -1,0 +1,305 @@
+// Fuzzy Bézier curves and surfaces over HTTP (SPEC §6; seed 003; geometry/fuzzy_bezier.h):
+//   POST /curves/bezier/evaluate     points of the lower, crisp and upper curves at level alpha
+//   POST /curves/bezier/elevate      degree-elevated fuzzy control points (the same curve)
+//   POST /curves/bezier/defuzzify    crisp control points (or a crisp control grid)
+//   POST /surfaces/bezier/evaluate   points of the lower, crisp and upper surfaces
+//   POST /surfaces/bezier/elevate    degree elevation in u and v (the same surface)
+//   POST /surfaces/bezier/iso        an iso-parametric curve's fuzzy control points
+//   GET  /curves/{id}/svg            a stored curve's three polylines at level alpha
+//   GET  /surfaces/{id}/mesh         a stored surface's lower / crisp / upper uv grid as OBJ or STL
+// The /curves/bezier/... routes have one more segment than /curves/{id} and another method than
+// /curves/{id}/svg, so the two families never match the same request.
+// Limits: control points per curve or grid (max_control_points) and evaluation points per
+// request or export (max_curve_points), 413 naming the limit.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "db/store.h"
+#include "geometry/error.h"
+#include "geometry/fuzzy_bezier.h"
+#include "geometry/number_format.h"
+#include "query/bezier_json.h"
+#include "query/json_body.h"
+#include "server/api.h"
+#include "server/http_server.h"
+#include "server/mesh_format.h"
+
+namespace fsdb {
+namespace {
+
+using nlohmann::json;
+
+constexpr int kDefaultSvgSamples = 101;
+constexpr int kDefaultMeshResolution = 32;
+
+BezierJsonLimits bezierLimits(const ServerLimits& limits) {
+  BezierJsonLimits out;
+  out.maxControlPoints = limits.maxControlPoints;
+  out.maxPoints = limits.maxCurvePoints;
+  return out;
+}
+
+double alphaOf(const json& body) { return body.contains("alpha") ? parseUnitNumber(body["alpha"], "alpha") : 0.0; }
+
+json pointJson(const FuzzyBezierPoint& p) { return {{"lower", p.lower}, {"crisp", p.crisp}, {"upper", p.upper}}; }
+
+ApiResponse evaluateCurveRoute(const ApiRequest& req, const BezierJsonLimits& limits) {
+  const json& body = requireObject(req.body, "");
+  rejectUnknownKeys(body, "", {"control_points", "weights", "u", "alpha"});
+  const FuzzyBezierCurve curve = parseBezierCurve(body, "", limits);
+  const std::vector<double> us = parseParameterList(requireField(body, "u", ""), "u", limits);
+  const double alpha = alphaOf(body);
+  const BezierCurveCut cut = cutCurve(curve, alpha);
+  json points = json::array();
+  for (double u : us) {
+    json p = pointJson(evaluateCut(cut, u));
+    p["u"] = u;
+    points.push_back(std::move(p));
+  }
+  return ApiResponse{200, {{"alpha", alpha}, {"degree", curve.degree()}, {"rational", curve.isRational()},
+                           {"points", std::move(points)}}};
+}
+
+int integerField(const json& body, const char* key, int fallback) {
+  if (!body.contains(key)) return fallback;
+  const double x = requireNumber(body[key], key);
+  if (x != std::floor(x) || x < 0 || x > 1e6)
+    throw Error(errc::kInvalidParameter, std::string(key) + " must be a non-negative integer", key);
+  return static_cast<int>(x);
+}
+
+ApiResponse elevateCurveRoute(const ApiRequest& req, const BezierJsonLimits& limits) {
+  const json& body = requireObject(req.body, "");
+  rejectUnknownKeys(body, "", {"control_points", "weights", "times"});
+  const FuzzyBezierCurve curve = parseBezierCurve(body, "", limits);
+  const int times = integerField(body, "times", 1);
+  if (curve.controlPoints.size() + static_cast<std::size_t>(times) > limits.maxControlPoints)
+    throw Error(errc::kLimitExceeded,
+                "the elevated curve would have " + std::to_string(curve.controlPoints.size() + times) +
+                    " control points, over max_control_points=" + std::to_string(limits.maxControlPoints),
+                "times");
+  const FuzzyBezierCurve elevated = elevateCurve(curve, times);
+  json out = curveToJson(elevated);
+  out["degree"] = elevated.degree();
+  return ApiResponse{200, std::move(out)};
+}
+
+ApiResponse defuzzifyRoute(const ApiRequest& req, const BezierJsonLimits& limits) {
+  const json& body = requireObject(req.body, "");
+  rejectUnknownKeys(body, "", {"control_points", "weights", "control_grid", "method"});
+  const Defuzzifier method = body.contains("method") ? parseDefuzzifier(body["method"], "method") : Defuzzifier::kCentroid;
+  json out = {{"method", body.contains("method") ? body["method"] : json("centroid")}};
+  if (body.contains("control_grid")) {
+    if (body.contains("control_points") || body.contains("weights"))
+      throw Error(errc::kInvalidDocument, "give control_points (a curve) or control_grid (a surface), not both",
+                  "control_grid");
+    out["control_grid"] = defuzzifySurface(parseBezierSurface(body, "", limits), method);
+  } else {
+    const CrispBezierCurve crisp = defuzzifyCurve(parseBezierCurve(body, "", limits), method);
+    out["control_points"] = crisp.controlPoints;
+    if (!crisp.weights.empty()) out["weights"] = crisp.weights;
+  }
+  return ApiResponse{200, std::move(out)};
+}
+
+ApiResponse evaluateSurfaceRoute(const ApiRequest& req, const BezierJsonLimits& limits) {
+  const json& body = requireObject(req.body, "");
+  rejectUnknownKeys(body, "", {"control_grid", "uv", "alpha"});
+  const FuzzyBezierSurface surface = parseBezierSurface(body, "", limits);
+  const std::vector<std::array<double, 2>> uvs = parseUvList(requireField(body, "uv", ""), "uv", limits);
+  const double alpha = alphaOf(body);
+  const BezierSurfaceCut cut = cutSurface(surface, alpha);
+  json points = json::array();
+  for (const auto& uv : uvs) {
+    json p = pointJson(evaluateCut(cut, uv[0], uv[1]));
+    p["u"] = uv[0];
+    p["v"] = uv[1];
+    points.push_back(std::move(p));
+  }
+  return ApiResponse{200, {{"alpha", alpha}, {"degree", {surface.controlGrid.size() - 1, surface.controlGrid[0].size() - 1}},
+                           {"points", std::move(points)}}};
+}
+
+json gridToJson(const FuzzyBezierSurface& surface) {
+  json rows = json::array();
+  for (const auto& row : surface.controlGrid) rows.push_back(controlPointsToJson(row));
+  return rows;
+}
+
+ApiResponse elevateSurfaceRoute(const ApiRequest& req, const BezierJsonLimits& limits) {
+  const json& body = requireObject(req.body, "");
+  rejectUnknownKeys(body, "", {"control_grid", "times_u", "times_v"});
+  const FuzzyBezierSurface surface = parseBezierSurface(body, "", limits);
+  const int timesU = integerField(body, "times_u", 1), timesV = integerField(body, "times_v", 1);
+  const std::size_t rows = surface.controlGrid.size() + timesU, columns = surface.controlGrid[0].size() + timesV;
+  if (rows * columns > limits.maxControlPoints)
+    throw Error(errc::kLimitExceeded,
+                "the elevated grid would have " + std::to_string(rows * columns) + " control points, over " +
+                    limits.controlPointsLimitName + "=" + std::to_string(limits.maxControlPoints),
+                "times_u");
+  const FuzzyBezierSurface elevated = elevateSurface(surface, timesU, timesV);
+  return ApiResponse{200, {{"control_grid", gridToJson(elevated)}, {"degree", {rows - 1, columns - 1}}}};
+}
+
+// {"control_grid", "u": a} gives the v-curve S(a, ·); {"control_grid", "v": b} the u-curve S(·, b).
+ApiResponse isoCurveRoute(const ApiRequest& req, const BezierJsonLimits& limits) {
+  const json& body = requireObject(req.body, "");
+  rejectUnknownKeys(body, "", {"control_grid", "u", "v"});
+  const FuzzyBezierSurface surface = parseBezierSurface(body, "", limits);
+  if (body.contains("u") == body.contains("v"))
+    throw Error(errc::kInvalidDocument, "give exactly one of u (a v-curve S(u, ·)) and v (a u-curve S(·, v))",
+                body.contains("u") ? "v" : "u");
+  const bool fixU = body.contains("u");
+  const double at = parseUnitNumber(body[fixU ? "u" : "v"], fixU ? "u" : "v");
+  const FuzzyBezierCurve iso = fixU ? isoCurveV(surface, at) : isoCurveU(surface, at);
+  json out = curveToJson(iso);
+  out["degree"] = iso.degree();
+  out["fixed"] = {{fixU ? "u" : "v", at}};
+  return ApiResponse{200, std::move(out)};
+}
+
+// An integer query parameter in [minimum, max] (max is a server limit: 413 beyond it).
+int countParam(const ApiRequest& req, const std::string& name, double fallback, int minimum, std::size_t max,
+               const std::string& limitName) {
+  const double x = numberParam(req, name, fallback);
+  if (x != std::floor(x) || x < minimum)
+    throw Error(errc::kInvalidParameter, name + " must be an integer of at least " + std::to_string(minimum), name);
+  if (x > static_cast<double>(max))
+    throw Error(errc::kLimitExceeded, name + " " + std::to_string(static_cast<long long>(x)) + " exceeds " + limitName +
+                                          "=" + std::to_string(max),
+                name);
+  return static_cast<int>(x);
+}
+
+double alphaParam(const ApiRequest& req) {
+  const double alpha = numberParam(req, "alpha", 0.0);
+  if (alpha < 0.0 || alpha > 1.0) throw Error(errc::kInvalidParameter, "alpha lies in [0, 1]", "alpha");
+  return alpha;
+}
+
+std::optional<int> versionParam(const ApiRequest& req) {
+  if (!req.hasQueryParam("version")) return std::nullopt;
+  return static_cast<int>(positiveInteger(req.queryParam("version"), "version", INT32_MAX));
+}
+
+// The 2-D picture of a curve point: (x, y); a curve of one coordinate is drawn as (u, x).
+std::array<double, 2> project(const CrispPoint& p, double u) {
+  return p.size() == 1 ? std::array<double, 2>{u, p[0]} : std::array<double, 2>{p[0], p[1]};
+}
+
+std::string svgOfCurve(const FuzzyBezierCurve& curve, double alpha, int samples) {
+  std::vector<std::array<double, 2>> lines[3];  // lower, crisp, upper
+  double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+  const BezierCurveCut cut = cutCurve(curve, alpha);
+  for (int i = 0; i < samples; ++i) {
+    const double u = static_cast<double>(i) / (samples - 1);  // samples >= 2
+    const FuzzyBezierPoint p = evaluateCut(cut, u);
+    const CrispPoint* ends[3] = {&p.lower, &p.crisp, &p.upper};
+    for (int b = 0; b < 3; ++b) {
+      const auto q = project(*ends[b], u);
+      lines[b].push_back(q);
+      x0 = std::min(x0, q[0]), x1 = std::max(x1, q[0]), y0 = std::min(y0, q[1]), y1 = std::max(y1, q[1]);
+    }
+  }
+  const double margin = 0.05 * std::max({x1 - x0, y1 - y0, 1e-9});
+  x0 -= margin, y0 -= margin, x1 += margin, y1 += margin;
+  std::ostringstream s;
+  // y grows upwards in the curve and downwards in SVG: the group flips it.
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << formatNumber(x0) << " " << formatNumber(-y1) << " "
+    << formatNumber(x1 - x0) << " " << formatNumber(y1 - y0) << "\">\n"
+    << "<title>" << "fuzzy Bezier curve at alpha " << formatNumber(alpha) << "</title>\n"
+    << "<g transform=\"scale(1,-1)\" fill=\"none\" stroke-width=\"" << formatNumber(margin / 5)
+    << "\">\n";
+  const char* ids[3] = {"lower", "crisp", "upper"};
+  const char* colours[3] = {"#1f77b4", "#000000", "#d62728"};
+  for (int b = 0; b < 3; ++b) {
+    s << "<polyline id=\"" << ids[b] << "\" stroke=\"" << colours[b] << "\" points=\"";
+    for (std::size_t i = 0; i < lines[b].size(); ++i)
+      s << (i ? " " : "") << formatNumber(lines[b][i][0]) << "," << formatNumber(lines[b][i][1]);
+    s << "\"/>\n";
+  }
+  s << "</g>\n</svg>\n";
+  return s.str();
+}
+
+TriangleMesh meshOfSurface(const FuzzyBezierSurface& surface, double alpha, const std::string& bound, int n) {
+  TriangleMesh mesh;
+  const BezierSurfaceCut cut = cutSurface(surface, alpha);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      const FuzzyBezierPoint p = evaluateCut(cut, static_cast<double>(i) / n, static_cast<double>(j) / n);
+      const CrispPoint& q = bound == "lower" ? p.lower : bound == "upper" ? p.upper : p.crisp;
+      mesh.vertices.push_back({q[0], q.size() > 1 ? q[1] : 0.0, q.size() > 2 ? q[2] : 0.0});
+    }
+  auto at = [n](int i, int j) { return static_cast<std::uint32_t>(i * (n + 1) + j); };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return mesh;
+}
+
+ApiResponse download(std::string bytes, const std::string& contentType, const std::string& filename) {
+  ApiResponse out{200, nullptr, std::move(bytes), contentType};
+  out.headers.emplace_back("Content-Disposition", "attachment; filename=\"" + filename + "\"");
+  return out;
+}
+
+}  // namespace
+
+void registerBezierRoutes(HttpServer& server, const Store& store) {
+  const BezierJsonLimits limits = bezierLimits(server.options().limits);
+
+  server.addRoute("POST", "/curves/bezier/evaluate", [limits](const ApiRequest& req) {
+    return evaluateCurveRoute(req, limits);
+  });
+  server.addRoute("POST", "/curves/bezier/elevate", [limits](const ApiRequest& req) {
+    return elevateCurveRoute(req, limits);
+  });
+  server.addRoute("POST", "/curves/bezier/defuzzify", [limits](const ApiRequest& req) {
+    return defuzzifyRoute(req, limits);
+  });
+  server.addRoute("POST", "/surfaces/bezier/evaluate", [limits](const ApiRequest& req) {
+    return evaluateSurfaceRoute(req, limits);
+  });
+  server.addRoute("POST", "/surfaces/bezier/elevate", [limits](const ApiRequest& req) {
+    return elevateSurfaceRoute(req, limits);
+  });
+  server.addRoute("POST", "/surfaces/bezier/iso", [limits](const ApiRequest& req) {
+    return isoCurveRoute(req, limits);
+  });
+
+  server.addRoute("GET", "/curves/{id}/svg", [limits, &store](const ApiRequest& req) {
+    const double alpha = alphaParam(req);
+    const int samples = countParam(req, "samples", std::min<double>(kDefaultSvgSamples, limits.maxPoints), 2,
+                                   limits.maxPoints, limits.pointsLimitName);
+    const StoredObject object = store.get("curve", positiveInteger(req.pathParams[0], "id"), versionParam(req));
+    const FuzzyBezierCurve curve = parseCurveDocument(json::parse(object.documentJson), "", limits);
+    return download(svgOfCurve(curve, alpha, samples), "image/svg+xml",
+                    object.name + "-" + formatNumber(alpha) + ".svg");
+  });
+
+  server.addRoute("GET", "/surfaces/{id}/mesh", [limits, &store](const ApiRequest& req) {
+    const double alpha = alphaParam(req);
+    const std::string bound = req.hasQueryParam("bound") ? req.queryParam("bound") : "crisp";
+    if (bound != "lower" && bound != "crisp" && bound != "upper")
+      throw Error(errc::kInvalidParameter, "bound must be lower, crisp or upper, got \"" + bound + "\"", "bound");
+    const std::string format = req.hasQueryParam("format") ? req.queryParam("format") : "obj";
+    if (format != "obj" && format != "stl")
+      throw Error(errc::kInvalidParameter, "format must be obj or stl, got \"" + format + "\"", "format");
+    // (resolution + 1)^2 surface points: the square root of max_curve_points bounds it.
+    const auto maxResolution = static_cast<std::size_t>(std::sqrt(static_cast<double>(limits.maxPoints))) - 1;
+    const int resolution = countParam(req, "resolution", std::max<double>(1, std::min<double>(kDefaultMeshResolution, maxResolution)), 1,
+                                      maxResolution,
+                                      "floor(sqrt(" + limits.pointsLimitName + ")) - 1");
+    const StoredObject object = store.get("surface", positiveInteger(req.pathParams[0], "id"), versionParam(req));
+    const FuzzyBezierSurface surface = parseSurfaceDocument(json::parse(object.documentJson), "", limits);
+    const TriangleMesh mesh = meshOfSurface(surface, alpha, bound, resolution);
+    return download(format == "obj" ? toObj(mesh) : toBinaryStl(mesh), format == "obj" ? "model/obj" : "model/stl",
+                    object.name + "-" + bound + "-" + formatNumber(alpha) + "." + format);
+  });
+}
+
+}  // namespace fsdb
