@@ -6,34 +6,17 @@
 
 #include "geometry/error.h"
 #include "query/shape_json.h"
+#include "tests/testing/toy_store.h"
 
 namespace fsdb {
 namespace {
 
 using nlohmann::json;
+using testing::ToyStore;
 
 json ballPart(double r, double x) {
   return {{"kind", "part"}, {"params", {{"a1", r}}}, {"transform", {{"translate", {x, 0, 0}}}}};
 }
-
-// A toy database: name -> (id, document) per kind, and a count of lookups.
-struct ToyStore {
-  std::map<std::string, std::map<std::string, ResolvedReference>> byName;
-  mutable int lookups = 0;
-  void add(const std::string& kind, const std::string& name, int64_t id, json doc) {
-    byName[kind][name] = {id, std::move(doc)};
-  }
-  ReferenceResolver resolver() const {
-    return [this](const std::string& kind, const json& key) -> std::optional<ResolvedReference> {
-      ++lookups;
-      auto k = byName.find(kind);
-      if (k == byName.end()) return std::nullopt;
-      for (const auto& [name, r] : k->second)
-        if ((key.is_string() && key == name) || (key.is_number_integer() && key.get<int64_t>() == r.id)) return r;
-      return std::nullopt;
-    };
-  }
-};
 
 Error errorOf(const json& doc, const ReferenceResolver& resolver) {
   try {
