@@ -39,7 +39,10 @@ CsgScore scoreCommonSubgraph(const CsgGraph& query, const CsgGraph& stored, cons
   out.score = (weights.components * out.components + weights.transforms * out.transforms +
                weights.structure * out.structure) /
               total;
-  out.score = std::min(1.0, std::max(0.0, out.score));
+  // 1 exactly when every weighted term is 1, whatever the rounding of the weighted sum.
+  const bool exact = (weights.components == 0 || out.components == 1) && (weights.transforms == 0 || out.transforms == 1) &&
+                     (weights.structure == 0 || out.structure == 1);
+  out.score = exact ? 1.0 : std::min(std::nextafter(1.0, 0.0), std::max(0.0, out.score));
   return out;
 }
 
