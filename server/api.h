@@ -22,7 +22,7 @@ void registerEvaluationRoutes(HttpServer& server, Store& store);
 // POST/GET /parts, GET/PUT/DELETE /parts/{id}, POST /parts/bulk, and the same for /shapes
 void registerObjectRoutes(HttpServer& server, Store& store);
 
-// POST /query/linguistic (server/linguistic_search.h)
+// POST /query/linguistic (server/linguistic_search.h), POST /query/csg (server/csg_search.h)
 void registerQueryRoutes(HttpServer& server, const Store& store);
 
 // A positive integer from a path segment or query parameter (digits only, at most `max`);
