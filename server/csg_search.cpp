@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <unordered_map>
 
 #include "geometry/error.h"
 #include "query/csg_bound.h"
@@ -71,15 +72,13 @@ class Search {
     const int rows = query_.graph.leafCount, cols = stored.shape.graph.leafCount;
     LeafSimilarityMatrix leaf{rows, cols, std::vector<double>(size_t(rows) * size_t(cols))};
     LeafSimilarityMatrix transform{rows, cols, std::vector<double>(size_t(rows) * size_t(cols))};
-    for (int q = 0; q < rows; ++q)
-      for (int s = 0; s < cols; ++s) {
-        const CsgQueryLeaf& ql = query_.leaves[q];
-        const FuzzyPart& sp = stored.shape.leaves[s].part;
-        const size_t at = size_t(q) * cols + s;
-        leaf.values[at] = ql.condition ? scoreDescriptors(*ql.condition, stored.leafDescriptors[s]).score
-                                       : partSimilarity(ql.part, sp);
-        transform.values[at] = ql.condition ? 1.0 : transformSimilarity(ql.part, sp);
+    for (int s = 0; s < cols; ++s) {
+      const LeafColumn& c = column(stored, s);
+      for (int q = 0; q < rows; ++q) {
+        leaf.values[size_t(q) * cols + s] = c.leaf[size_t(q)];
+        transform.values[size_t(q) * cols + s] = c.transform[size_t(q)];
       }
+    }
     if (options_.prune && !canEnter(matrixBound(signature_, stored.signature, leaf, transform, options_.leafThreshold,
                                                 options_.weights),
                                     stored.id))
@@ -95,6 +94,27 @@ class Search {
     auto& hits = result_.hits;
     hits.insert(std::upper_bound(hits.begin(), hits.end(), hit, better), std::move(hit));
     if (hits.size() > limit_) hits.pop_back();
+  }
+
+  // The similarities of every query leaf to stored leaf s, computed once per distinct part in a
+  // search (trees share stored parts, and parts from the same words are equal).
+  struct LeafColumn {
+    const FuzzyPart* part;  // in a StoredGraph that `candidates` keeps alive during the search
+    std::vector<double> leaf, transform;
+  };
+  const LeafColumn& column(const StoredGraph& stored, int s) {
+    const FuzzyPart& sp = stored.shape.leaves[size_t(s)].part;
+    std::vector<LeafColumn>& bucket = memo_[stored.leafKeys[size_t(s)]];
+    for (const LeafColumn& c : bucket)
+      if (samePart(*c.part, sp)) return c;
+    LeafColumn c{&sp, {}, {}};
+    for (const CsgQueryLeaf& ql : query_.leaves) {
+      c.leaf.push_back(ql.condition ? scoreDescriptors(*ql.condition, stored.leafDescriptors[size_t(s)]).score
+                                    : partSimilarity(ql.part, sp));
+      c.transform.push_back(ql.condition ? 1.0 : transformSimilarity(ql.part, sp));
+    }
+    bucket.push_back(std::move(c));
+    return bucket.back();
   }
 
   // Whether a candidate with this score bound could still be among the results.
@@ -121,6 +141,7 @@ class Search {
   const size_t limit_;
   const Clock::time_point start_;
   CsgSearchResult result_;
+  std::unordered_map<uint64_t, std::vector<LeafColumn>> memo_;
 };
 
 nlohmann::json mappingJson(const CsgQuery& query, const CsgHit& hit) {

@@ -1,6 +1,8 @@
 // See server/stored_graphs.h.
 #include "server/stored_graphs.h"
 
+#include <cstring>
+
 #include "server/documents.h"
 
 namespace fsdb {
@@ -15,7 +17,37 @@ bool current(const StoredGraph& g, const ObjectVersion& shape, const StoreVersio
   return true;
 }
 
+// Every fuzzy value of a part, in one order.
+std::vector<const FuzzyNumber*> values(const FuzzyPart& p) {
+  return {&p.eps1, &p.eps2, &p.a1, &p.a2, &p.a3, &p.kx, &p.ky, &p.kv, &p.t, &p.tx, &p.ty, &p.tz, &p.deg, &p.scale};
+}
+
 }  // namespace
+
+uint64_t partKey(const FuzzyPart& part) {
+  uint64_t h = 1469598103934665603ull;  // FNV-1a over the bytes of every breakpoint and the axis
+  const auto mix = [&h](double x) {
+    uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    for (int i = 0; i < 8; ++i) h = (h ^ ((bits >> (8 * i)) & 0xff)) * 1099511628211ull;
+  };
+  for (const FuzzyNumber* v : values(part)) {
+    for (const Breakpoint& b : v->breakpoints()) {
+      mix(b.x);
+      mix(b.mu);
+    }
+    mix(-1.0);  // separates the values
+  }
+  for (double a : {part.axis.x, part.axis.y, part.axis.z}) mix(a);
+  return h;
+}
+
+bool samePart(const FuzzyPart& a, const FuzzyPart& b) {
+  const std::vector<const FuzzyNumber*> va = values(a), vb = values(b);
+  for (size_t i = 0; i < va.size(); ++i)
+    if (!(*va[i] == *vb[i])) return false;
+  return a.axis.x == b.axis.x && a.axis.y == b.axis.y && a.axis.z == b.axis.z;
+}
 
 StoreVersions StoreVersions::read(const Store& store) {
   StoreVersions out;
@@ -43,7 +75,10 @@ std::shared_ptr<const StoredGraph> buildStoredGraph(const Store& store, int64_t 
     return r;
   };
   out->shape = shapeGraph(nlohmann::json::parse(object.documentJson), "", maxNodes, recording);
-  for (const CsgGraphLeaf& leaf : out->shape.leaves) out->leafDescriptors.push_back(describePart(leaf.part));
+  for (const CsgGraphLeaf& leaf : out->shape.leaves) {
+    out->leafDescriptors.push_back(describePart(leaf.part));
+    out->leafKeys.push_back(partKey(leaf.part));
+  }
   out->signature = csgSignature(out->shape.graph);
   return out;
 }

@@ -34,9 +34,16 @@ struct StoredGraph {
   std::string name;
   ShapeGraph shape;
   std::vector<std::vector<DescriptorValue>> leafDescriptors;  // by leaf index
+  std::vector<uint64_t> leafKeys;  // by leaf index: partKey of the leaf's part
   CsgSignature signature;
   std::vector<std::pair<int64_t, int>> reached;  // (object id, version) its tree used
 };
+
+// A hash of every parameter and transform value of a part (breakpoints, rotation axis): equal parts
+// have equal keys, so a search computes the similarities of a part used by many trees once
+// (samePart confirms a key match).
+uint64_t partKey(const FuzzyPart& part);
+bool samePart(const FuzzyPart& a, const FuzzyPart& b);
 
 // Latest versions of every live part and shape, by id (ids are shared by all kinds).
 struct StoreVersions {
