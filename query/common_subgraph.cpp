@@ -152,18 +152,26 @@ uint64_t edgeCode(const CsgGraph& g, int a, int b) {
   return minuend | (subtrahend << 8) | (plain << 16);
 }
 
-std::vector<uint64_t> relations(const CsgGraph& g) {
-  const size_t n = g.size();
-  std::vector<uint64_t> r(n * n);
-  for (size_t a = 0; a < n; ++a)
-    for (size_t b = 0; b < n; ++b) r[a * n + b] = edgeCode(g, int(a), int(b)) | (edgeCode(g, int(b), int(a)) << 24);
+// Per node, its neighbours with the relation code (nodes not listed relate by 0): sparse, so a
+// stored DAG of thousands of nodes costs memory in its edges, not its node pairs.
+std::vector<std::vector<std::pair<int, uint64_t>>> relations(const CsgGraph& g) {
+  std::vector<std::vector<std::pair<int, uint64_t>>> r(g.size());
+  const std::vector<std::vector<int>> parents = g.parents();
+  for (size_t a = 0; a < g.size(); ++a) {
+    std::vector<int> neighbours = g.nodes[a].children;
+    neighbours.insert(neighbours.end(), parents[a].begin(), parents[a].end());
+    std::sort(neighbours.begin(), neighbours.end());
+    neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+    for (int b : neighbours) r[a].push_back({b, edgeCode(g, int(a), b) | (edgeCode(g, b, int(a)) << 24)});
+  }
   return r;
 }
 
 class BranchAndBound {
  public:
   BranchAndBound(const CsgGraph& q, const CsgGraph& s, const LeafSimilarityMatrix& sim, const CommonSubgraphOptions& o)
-      : q_(q), s_(s), sim_(sim), o_(o), relQ_(relations(q)), relS_(relations(s)),
+      : q_(q), s_(s), sim_(sim), o_(o), relQ_(relations(q)), relS_(relations(s)), codeQ_(q.size(), 0),
+        codeS_(s.size(), 0),
         deadline_(std::chrono::steady_clock::now() +
                   std::chrono::microseconds(int64_t(std::max(0.0, std::min(o.timeBudgetMs, 1e12)) * 1000))) {}
 
@@ -261,15 +269,17 @@ class BranchAndBound {
 
   // The classes after matching u -> v: each split by relation to u (query side) and to v (stored
   // side); parts with an empty side can never be matched and are dropped.
-  std::vector<Class> refine(const std::vector<Class>& classes, int u, int v) const {
+  std::vector<Class> refine(const std::vector<Class>& classes, int u, int v) {
     std::vector<Class> out;
-    const size_t nq = q_.size(), ns = s_.size();
+    // codeQ_[x] / codeS_[y]: the relation of x to u / of y to v, set for the neighbours only.
+    for (const auto& [x, code] : relQ_[size_t(u)]) codeQ_[size_t(x)] = code;
+    for (const auto& [y, code] : relS_[size_t(v)]) codeS_[size_t(y)] = code;
     for (const Class& c : classes) {
       std::vector<std::pair<uint64_t, int>> qs, ss;
       for (int x : c.qs)
-        if (x != u) qs.push_back({relQ_[size_t(x) * nq + size_t(u)], x});
+        if (x != u) qs.push_back({codeQ_[size_t(x)], x});
       for (int y : c.ss)
-        if (y != v) ss.push_back({relS_[size_t(y) * ns + size_t(v)], y});
+        if (y != v) ss.push_back({codeS_[size_t(y)], y});
       std::stable_sort(qs.begin(), qs.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
       std::stable_sort(ss.begin(), ss.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
       size_t i = 0, j = 0;
@@ -285,6 +295,8 @@ class BranchAndBound {
         out.push_back(std::move(d));
       }
     }
+    for (const auto& n : relQ_[size_t(u)]) codeQ_[size_t(n.first)] = 0;
+    for (const auto& n : relS_[size_t(v)]) codeS_[size_t(n.first)] = 0;
     return out;
   }
 
@@ -292,7 +304,8 @@ class BranchAndBound {
   const CsgGraph& s_;
   const LeafSimilarityMatrix& sim_;
   const CommonSubgraphOptions& o_;
-  std::vector<uint64_t> relQ_, relS_;
+  std::vector<std::vector<std::pair<int, uint64_t>>> relQ_, relS_;
+  std::vector<uint64_t> codeQ_, codeS_;
   std::chrono::steady_clock::time_point deadline_;
   std::vector<NodeMatch> matches_, best_;
   double bestWeight_ = 0;
