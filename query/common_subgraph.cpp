@@ -138,8 +138,9 @@ class TreeMatcher {
 
 // ---- General graphs: McSplit-style branch and bound (McCreesh, Prosser, Trimble 2017) ----
 
-// The edges from a to b as counts by role (minuend, subtrahend, plain), packed; and the relation of
-// a to b in both directions. Two unmatched vertices can join matched ones only with equal relations.
+// The edges from a to b as counts by role (minuend, subtrahend, plain), packed 20 bits each (more than
+// any node limit); the relation of a to b is that code in both directions. Two unmatched vertices can
+// join matched ones only with equal relations.
 uint64_t edgeCode(const CsgGraph& g, int a, int b) {
   const CsgGraphNode& n = g.nodes[size_t(a)];
   uint64_t minuend = 0, subtrahend = 0, plain = 0;
@@ -149,20 +150,21 @@ uint64_t edgeCode(const CsgGraph& g, int a, int b) {
     else if (i == 0) ++minuend;
     else ++subtrahend;
   }
-  return minuend | (subtrahend << 8) | (plain << 16);
+  return minuend | (subtrahend << 20) | (plain << 40);
 }
 
 // Per node, its neighbours with the relation code (nodes not listed relate by 0): sparse, so a
 // stored DAG of thousands of nodes costs memory in its edges, not its node pairs.
-std::vector<std::vector<std::pair<int, uint64_t>>> relations(const CsgGraph& g) {
-  std::vector<std::vector<std::pair<int, uint64_t>>> r(g.size());
+using Relation = std::pair<uint64_t, uint64_t>;  // (edges a -> b, edges b -> a)
+std::vector<std::vector<std::pair<int, Relation>>> relations(const CsgGraph& g) {
+  std::vector<std::vector<std::pair<int, Relation>>> r(g.size());
   const std::vector<std::vector<int>> parents = g.parents();
   for (size_t a = 0; a < g.size(); ++a) {
     std::vector<int> neighbours = g.nodes[a].children;
     neighbours.insert(neighbours.end(), parents[a].begin(), parents[a].end());
     std::sort(neighbours.begin(), neighbours.end());
     neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
-    for (int b : neighbours) r[a].push_back({b, edgeCode(g, int(a), b) | (edgeCode(g, b, int(a)) << 24)});
+    for (int b : neighbours) r[a].push_back({b, {edgeCode(g, int(a), b), edgeCode(g, b, int(a))}});
   }
   return r;
 }
@@ -170,8 +172,8 @@ std::vector<std::vector<std::pair<int, uint64_t>>> relations(const CsgGraph& g) 
 class BranchAndBound {
  public:
   BranchAndBound(const CsgGraph& q, const CsgGraph& s, const LeafSimilarityMatrix& sim, const CommonSubgraphOptions& o)
-      : q_(q), s_(s), sim_(sim), o_(o), relQ_(relations(q)), relS_(relations(s)), codeQ_(q.size(), 0),
-        codeS_(s.size(), 0),
+      : q_(q), s_(s), sim_(sim), o_(o), relQ_(relations(q)), relS_(relations(s)), codeQ_(q.size()),
+        codeS_(s.size()),
         deadline_(std::chrono::steady_clock::now() +
                   std::chrono::microseconds(int64_t(std::max(0.0, std::min(o.timeBudgetMs, 1e12)) * 1000))) {}
 
@@ -275,7 +277,7 @@ class BranchAndBound {
     for (const auto& [x, code] : relQ_[size_t(u)]) codeQ_[size_t(x)] = code;
     for (const auto& [y, code] : relS_[size_t(v)]) codeS_[size_t(y)] = code;
     for (const Class& c : classes) {
-      std::vector<std::pair<uint64_t, int>> qs, ss;
+      std::vector<std::pair<Relation, int>> qs, ss;
       for (int x : c.qs)
         if (x != u) qs.push_back({codeQ_[size_t(x)], x});
       for (int y : c.ss)
@@ -286,17 +288,17 @@ class BranchAndBound {
       while (i < qs.size() && j < ss.size()) {
         if (qs[i].first < ss[j].first) { ++i; continue; }
         if (ss[j].first < qs[i].first) { ++j; continue; }
-        const uint64_t key = qs[i].first;
+        const Relation key = qs[i].first;
         Class d;
         d.op = c.op;
-        d.adjacent = c.adjacent || key != 0;
+        d.adjacent = c.adjacent || key != Relation{};
         for (; i < qs.size() && qs[i].first == key; ++i) d.qs.push_back(qs[i].second);
         for (; j < ss.size() && ss[j].first == key; ++j) d.ss.push_back(ss[j].second);
         out.push_back(std::move(d));
       }
     }
-    for (const auto& n : relQ_[size_t(u)]) codeQ_[size_t(n.first)] = 0;
-    for (const auto& n : relS_[size_t(v)]) codeS_[size_t(n.first)] = 0;
+    for (const auto& n : relQ_[size_t(u)]) codeQ_[size_t(n.first)] = {};
+    for (const auto& n : relS_[size_t(v)]) codeS_[size_t(n.first)] = {};
     return out;
   }
 
@@ -304,8 +306,8 @@ class BranchAndBound {
   const CsgGraph& s_;
   const LeafSimilarityMatrix& sim_;
   const CommonSubgraphOptions& o_;
-  std::vector<std::vector<std::pair<int, uint64_t>>> relQ_, relS_;
-  std::vector<uint64_t> codeQ_, codeS_;
+  std::vector<std::vector<std::pair<int, Relation>>> relQ_, relS_;
+  std::vector<Relation> codeQ_, codeS_;
   std::chrono::steady_clock::time_point deadline_;
   std::vector<NodeMatch> matches_, best_;
   double bestWeight_ = 0;
