@@ -238,6 +238,51 @@ TEST(CommonSubgraph, AGraphMatchesItselfCompletely) {
   }
 }
 
+// Reordering union / intersection children and subtrahends changes nothing (they are unordered).
+TEST(CommonSubgraph, ReorderingUnorderedChildrenKeepsTheWeight) {
+  std::mt19937 rng(6007);
+  for (int trial = 0; trial < 1000; ++trial) {
+    const bool dag = trial % 2 == 1;
+    const CsgGraph q = dag ? randomDag(rng, 8, 2) : randomTree(rng, 12);
+    const CsgGraph s = dag ? randomDag(rng, 8, 2) : randomTree(rng, 12);
+    CsgGraph shuffled = s;
+    for (CsgGraphNode& n : shuffled.nodes) {
+      const size_t from = n.op == CsgGraphOp::Difference ? 1 : 0;
+      if (n.children.size() > from) std::shuffle(n.children.begin() + long(from), n.children.end(), rng);
+    }
+    const LeafSimilarityMatrix m = randomLeafSimilarity(rng, q.leafCount, s.leafCount);
+    ASSERT_NEAR(largestCommonSubgraph(q, s, m, {0, 10000}).weight, largestCommonSubgraph(q, shuffled, m, {0, 10000}).weight,
+                1e-9)
+        << "trial " << trial;
+  }
+}
+
+// Swapping a difference's minuend with a subtrahend breaks the complete self match. (Trees, and
+// each leaf like itself only: siblings have disjoint leaves, so no other map can repair the swap.)
+TEST(CommonSubgraph, SwappingAMinuendBreaksTheCompleteMatch) {
+  std::mt19937 rng(6008);
+  int tested = 0;
+  for (int trial = 0; trial < 500; ++trial) {
+    const CsgGraph g = randomTree(rng, std::uniform_int_distribution<int>(3, 14)(rng));
+    CsgGraph swapped = g;
+    bool changed = false;
+    for (CsgGraphNode& n : swapped.nodes)
+      if (!changed && n.op == CsgGraphOp::Difference && n.children[0] != n.children[1]) {
+        std::swap(n.children[0], n.children[1]);
+        changed = true;
+      }
+    if (!changed) continue;
+    ++tested;
+    LeafSimilarityMatrix m{g.leafCount, g.leafCount, std::vector<double>(size_t(g.leafCount) * g.leafCount, 0.0)};
+    for (int i = 0; i < g.leafCount; ++i) m.values[size_t(i) * g.leafCount + i] = 1;
+    for (const CommonSubgraph& r : {largestCommonSubgraph(g, swapped, m), largestCommonSubgraphSearch(g, swapped, m, {0, 10000})}) {
+      EXPECT_LT(r.matchedNodes, int(g.size())) << "trial " << trial;
+      EXPECT_LT(r.weight, double(g.size()));
+    }
+  }
+  EXPECT_GT(tested, 200);
+}
+
 // (A ∪ B) against (B ∪ A): union children are unordered.
 TEST(CommonSubgraph, SwappedUnionChildrenMatchFully) {
   const CsgGraph q = graph({op(CsgGraphOp::Union, {1, 2}), leaf(0), leaf(1)});
