@@ -166,6 +166,19 @@ CsgGraph graph(std::vector<CsgGraphNode> nodes) {
   return g;
 }
 
+struct RandomPair {
+  CsgGraph query, stored;
+  LeafSimilarityMatrix leaves;
+};
+// Two random DAGs of dagNodes (two extra edges each) or two random trees of treeNodes.
+RandomPair randomPair(std::mt19937& rng, bool dag, int dagNodes, int treeNodes) {
+  RandomPair p;
+  p.query = dag ? randomDag(rng, dagNodes, 2) : randomTree(rng, treeNodes);
+  p.stored = dag ? randomDag(rng, dagNodes, 2) : randomTree(rng, treeNodes);
+  p.leaves = randomLeafSimilarity(rng, p.query.leafCount, p.stored.leafCount);
+  return p;
+}
+
 TEST(CommonSubgraph, TreeDynamicProgrammeEqualsBruteForceOnRandomTrees) {
   std::mt19937 rng(6001);
   for (int trial = 0; trial < 3000; ++trial) {
@@ -215,10 +228,7 @@ TEST(CommonSubgraph, TreeDynamicProgrammeEqualsBranchAndBoundOnTrees) {
 TEST(CommonSubgraph, SymmetricInQueryAndStored) {
   std::mt19937 rng(6004);
   for (int trial = 0; trial < 1000; ++trial) {
-    const bool dag = trial % 2 == 1;
-    const CsgGraph q = dag ? randomDag(rng, 7, 2) : randomTree(rng, 9);
-    const CsgGraph s = dag ? randomDag(rng, 7, 2) : randomTree(rng, 9);
-    const LeafSimilarityMatrix m = randomLeafSimilarity(rng, q.leafCount, s.leafCount);
+    const auto [q, s, m] = randomPair(rng, trial % 2 == 1, 7, 9);
     const CommonSubgraph a = largestCommonSubgraph(q, s, m, {0, 10000});
     const CommonSubgraph b = largestCommonSubgraph(s, q, transpose(m), {0, 10000});
     ASSERT_NEAR(a.weight, b.weight, 1e-9) << "trial " << trial;
@@ -242,15 +252,12 @@ TEST(CommonSubgraph, AGraphMatchesItselfCompletely) {
 TEST(CommonSubgraph, ReorderingUnorderedChildrenKeepsTheWeight) {
   std::mt19937 rng(6007);
   for (int trial = 0; trial < 1000; ++trial) {
-    const bool dag = trial % 2 == 1;
-    const CsgGraph q = dag ? randomDag(rng, 8, 2) : randomTree(rng, 12);
-    const CsgGraph s = dag ? randomDag(rng, 8, 2) : randomTree(rng, 12);
+    const auto [q, s, m] = randomPair(rng, trial % 2 == 1, 8, 12);
     CsgGraph shuffled = s;
     for (CsgGraphNode& n : shuffled.nodes) {
       const size_t from = n.op == CsgGraphOp::Difference ? 1 : 0;
       if (n.children.size() > from) std::shuffle(n.children.begin() + long(from), n.children.end(), rng);
     }
-    const LeafSimilarityMatrix m = randomLeafSimilarity(rng, q.leafCount, s.leafCount);
     ASSERT_NEAR(largestCommonSubgraph(q, s, m, {0, 10000}).weight, largestCommonSubgraph(q, shuffled, m, {0, 10000}).weight,
                 1e-9)
         << "trial " << trial;
