@@ -34,9 +34,13 @@ void checkInputs(const CsgGraph& q, const CsgGraph& s, const LeafSimilarityMatri
                     " x " + std::to_string(s.leafCount) + ")",
                 "leafSimilarity");
   for (const CsgGraph* g : {&q, &s})
-    for (const CsgGraphNode& n : g->nodes)
+    for (const CsgGraphNode& n : g->nodes) {
       if (n.op == CsgGraphOp::Leaf && (n.leaf < 0 || n.leaf >= g->leafCount))
         throw Error(errc::kInvalidParameter, "a leaf node's payload index is outside 0..leafCount-1", "leafSimilarity");
+      for (int c : n.children)
+        if (c < 0 || size_t(c) >= g->size())
+          throw Error(errc::kInvalidParameter, "a child index is outside the graph's nodes", "graph");
+    }
 }
 
 CommonSubgraph finish(std::vector<NodeMatch> matches, const CsgGraph& q, bool complete) {

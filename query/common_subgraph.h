@@ -64,7 +64,8 @@ struct CommonSubgraph {
 };
 
 // The maximum-weight common connected subgraph as defined above. leafSimilarity must be
-// query.leafCount x stored.leafCount (invalid_parameter otherwise).
+// query.leafCount x stored.leafCount, every leaf's payload index below leafCount and every child
+// index a node of its graph (invalid_parameter, path "leafSimilarity" or "graph", otherwise).
 CommonSubgraph largestCommonSubgraph(const CsgGraph& query, const CsgGraph& stored,
                                      const LeafSimilarityMatrix& leafSimilarity,
                                      const CommonSubgraphOptions& options = {});

@@ -384,6 +384,17 @@ TEST(CommonSubgraph, RejectsAMatrixOfTheWrongSize) {
   }
 }
 
+TEST(CommonSubgraph, RejectsAChildOutsideTheGraph) {
+  const CsgGraph bad = graph({op(CsgGraphOp::Union, {1, 5}), leaf(0)});
+  try {
+    largestCommonSubgraph(bad, bad, ones(1, 1));
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), errc::kInvalidParameter);
+    EXPECT_EQ(e.path(), "graph");
+  }
+}
+
 TEST(CommonSubgraph, NothingInCommonIsTheEmptyMap) {
   const CsgGraph q = graph({op(CsgGraphOp::Union, {1, 2}), leaf(0), leaf(1)});
   const CsgGraph s = graph({leaf(0)});
