@@ -182,6 +182,7 @@ class BranchAndBound {
                   std::chrono::microseconds(int64_t(std::max(0.0, std::min(o.timeBudgetMs, 1e12)) * 1000))) {}
 
   CommonSubgraph run() {
+    clockInterval_ = untilClock_ = int(std::max<size_t>(1, 4096 / (q_.size() + s_.size() + 1)));
     // Initial label classes: one per operation, one for all leaves (leaf pairs are admissible by
     // the matrix, checked when a pair is chosen and in the bound).
     std::vector<Class> classes;
@@ -229,7 +230,11 @@ class BranchAndBound {
 
   bool outOfTime() {
     if (timedOut_) return true;
-    if ((++steps_ & 255) == 0 && std::chrono::steady_clock::now() > deadline_) timedOut_ = true;
+    // A search node costs O(|Q| + |S|) or more: the clock is read about every 4096 such units of
+    // work, so small graphs do not pay for it and large ones do not overrun the budget.
+    if (--untilClock_ > 0) return false;
+    untilClock_ = clockInterval_;
+    if (std::chrono::steady_clock::now() > deadline_) timedOut_ = true;
     return timedOut_;
   }
 
@@ -316,7 +321,7 @@ class BranchAndBound {
   std::vector<NodeMatch> matches_, best_;
   double bestWeight_ = 0;
   bool timedOut_ = false;
-  uint64_t steps_ = 0;
+  int clockInterval_ = 1, untilClock_ = 1;
 };
 
 }  // namespace
