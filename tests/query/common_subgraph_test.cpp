@@ -182,8 +182,8 @@ RandomPair randomPair(std::mt19937& rng, bool dag, int dagNodes, int treeNodes) 
 TEST(CommonSubgraph, TreeDynamicProgrammeEqualsBruteForceOnRandomTrees) {
   std::mt19937 rng(6001);
   for (int trial = 0; trial < 3000; ++trial) {
-    const CsgGraph q = randomTree(rng, std::uniform_int_distribution<int>(1, 7)(rng));
-    const CsgGraph s = randomTree(rng, std::uniform_int_distribution<int>(1, 7)(rng));
+    const CsgGraph q = randomTree(rng, std::uniform_int_distribution<int>(1, 8)(rng));
+    const CsgGraph s = randomTree(rng, std::uniform_int_distribution<int>(1, 8)(rng));
     const LeafSimilarityMatrix m = randomLeafSimilarity(rng, q.leafCount, s.leafCount);
     const double threshold = trial % 4 == 0 ? 0.5 : 0.0;
     ASSERT_TRUE(q.isTree() && s.isTree());
@@ -198,8 +198,8 @@ TEST(CommonSubgraph, BranchAndBoundEqualsBruteForceOnRandomDags) {
   std::mt19937 rng(6002);
   int dags = 0;
   for (int trial = 0; trial < 3000; ++trial) {
-    const CsgGraph q = randomDag(rng, std::uniform_int_distribution<int>(1, 7)(rng), trial % 3);
-    const CsgGraph s = randomDag(rng, std::uniform_int_distribution<int>(1, 7)(rng), (trial / 3) % 3);
+    const CsgGraph q = randomDag(rng, std::uniform_int_distribution<int>(1, 8)(rng), trial % 3);
+    const CsgGraph s = randomDag(rng, std::uniform_int_distribution<int>(1, 8)(rng), (trial / 3) % 3);
     if (!q.isTree() || !s.isTree()) ++dags;
     const LeafSimilarityMatrix m = randomLeafSimilarity(rng, q.leafCount, s.leafCount);
     const double threshold = trial % 5 == 0 ? 0.5 : 0.0;
