@@ -78,4 +78,16 @@ void BM_DagCopy(benchmark::State& state) {
 }
 BENCHMARK(BM_DagCopy)->Arg(8)->Arg(12)->Arg(16)->Arg(24)->Unit(benchmark::kMicrosecond);
 
+// A small DAG query against one large stored DAG (a shape with many shared subtrees): the search
+// stays within its budget (complete < 1 means the 100 ms budget cut it short).
+void BM_DagLargeStored(benchmark::State& state) {
+  std::mt19937 rng(99);
+  Pair p;
+  p.query = testing::randomDag(rng, 12, 3);
+  p.stored = testing::randomDag(rng, int(state.range(0)), int(state.range(0)) / 4);
+  p.leaves = testing::randomLeafSimilarity(rng, p.query.leafCount, p.stored.leafCount);
+  run(state, {p});
+}
+BENCHMARK(BM_DagLargeStored)->Arg(200)->Arg(2000)->Unit(benchmark::kMillisecond);
+
 }  // namespace

@@ -34,9 +34,13 @@ void checkInputs(const CsgGraph& q, const CsgGraph& s, const LeafSimilarityMatri
                     " x " + std::to_string(s.leafCount) + ")",
                 "leafSimilarity");
   for (const CsgGraph* g : {&q, &s})
-    for (const CsgGraphNode& n : g->nodes)
+    for (const CsgGraphNode& n : g->nodes) {
       if (n.op == CsgGraphOp::Leaf && (n.leaf < 0 || n.leaf >= g->leafCount))
         throw Error(errc::kInvalidParameter, "a leaf node's payload index is outside 0..leafCount-1", "leafSimilarity");
+      for (int c : n.children)
+        if (c < 0 || size_t(c) >= g->size())
+          throw Error(errc::kInvalidParameter, "a child index is outside the graph's nodes", "graph");
+    }
 }
 
 CommonSubgraph finish(std::vector<NodeMatch> matches, const CsgGraph& q, bool complete) {
@@ -138,8 +142,9 @@ class TreeMatcher {
 
 // ---- General graphs: McSplit-style branch and bound (McCreesh, Prosser, Trimble 2017) ----
 
-// The edges from a to b as counts by role (minuend, subtrahend, plain), packed; and the relation of
-// a to b in both directions. Two unmatched vertices can join matched ones only with equal relations.
+// The edges from a to b as counts by role (minuend, subtrahend, plain), packed 20 bits each (more than
+// any node limit); the relation of a to b is that code in both directions. Two unmatched vertices can
+// join matched ones only with equal relations.
 uint64_t edgeCode(const CsgGraph& g, int a, int b) {
   const CsgGraphNode& n = g.nodes[size_t(a)];
   uint64_t minuend = 0, subtrahend = 0, plain = 0;
@@ -149,25 +154,35 @@ uint64_t edgeCode(const CsgGraph& g, int a, int b) {
     else if (i == 0) ++minuend;
     else ++subtrahend;
   }
-  return minuend | (subtrahend << 8) | (plain << 16);
+  return minuend | (subtrahend << 20) | (plain << 40);
 }
 
-std::vector<uint64_t> relations(const CsgGraph& g) {
-  const size_t n = g.size();
-  std::vector<uint64_t> r(n * n);
-  for (size_t a = 0; a < n; ++a)
-    for (size_t b = 0; b < n; ++b) r[a * n + b] = edgeCode(g, int(a), int(b)) | (edgeCode(g, int(b), int(a)) << 24);
+// Per node, its neighbours with the relation code (nodes not listed relate by 0): sparse, so a
+// stored DAG of thousands of nodes costs memory in its edges, not its node pairs.
+using Relation = std::pair<uint64_t, uint64_t>;  // (edges a -> b, edges b -> a)
+std::vector<std::vector<std::pair<int, Relation>>> relations(const CsgGraph& g) {
+  std::vector<std::vector<std::pair<int, Relation>>> r(g.size());
+  const std::vector<std::vector<int>> parents = g.parents();
+  for (size_t a = 0; a < g.size(); ++a) {
+    std::vector<int> neighbours = g.nodes[a].children;
+    neighbours.insert(neighbours.end(), parents[a].begin(), parents[a].end());
+    std::sort(neighbours.begin(), neighbours.end());
+    neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+    for (int b : neighbours) r[a].push_back({b, {edgeCode(g, int(a), b), edgeCode(g, b, int(a))}});
+  }
   return r;
 }
 
 class BranchAndBound {
  public:
   BranchAndBound(const CsgGraph& q, const CsgGraph& s, const LeafSimilarityMatrix& sim, const CommonSubgraphOptions& o)
-      : q_(q), s_(s), sim_(sim), o_(o), relQ_(relations(q)), relS_(relations(s)),
+      : q_(q), s_(s), sim_(sim), o_(o), relQ_(relations(q)), relS_(relations(s)), codeQ_(q.size()),
+        codeS_(s.size()),
         deadline_(std::chrono::steady_clock::now() +
                   std::chrono::microseconds(int64_t(std::max(0.0, std::min(o.timeBudgetMs, 1e12)) * 1000))) {}
 
   CommonSubgraph run() {
+    clockInterval_ = untilClock_ = int(std::max<size_t>(1, 4096 / (q_.size() + s_.size() + 1)));
     // Initial label classes: one per operation, one for all leaves (leaf pairs are admissible by
     // the matrix, checked when a pair is chosen and in the bound).
     std::vector<Class> classes;
@@ -215,7 +230,11 @@ class BranchAndBound {
 
   bool outOfTime() {
     if (timedOut_) return true;
-    if ((++steps_ & 255) == 0 && std::chrono::steady_clock::now() > deadline_) timedOut_ = true;
+    // A search node costs O(|Q| + |S|) or more: the clock is read about every 4096 such units of
+    // work, so small graphs do not pay for it and large ones do not overrun the budget.
+    if (--untilClock_ > 0) return false;
+    untilClock_ = clockInterval_;
+    if (std::chrono::steady_clock::now() > deadline_) timedOut_ = true;
     return timedOut_;
   }
 
@@ -261,30 +280,34 @@ class BranchAndBound {
 
   // The classes after matching u -> v: each split by relation to u (query side) and to v (stored
   // side); parts with an empty side can never be matched and are dropped.
-  std::vector<Class> refine(const std::vector<Class>& classes, int u, int v) const {
+  std::vector<Class> refine(const std::vector<Class>& classes, int u, int v) {
     std::vector<Class> out;
-    const size_t nq = q_.size(), ns = s_.size();
+    // codeQ_[x] / codeS_[y]: the relation of x to u / of y to v, set for the neighbours only.
+    for (const auto& [x, code] : relQ_[size_t(u)]) codeQ_[size_t(x)] = code;
+    for (const auto& [y, code] : relS_[size_t(v)]) codeS_[size_t(y)] = code;
     for (const Class& c : classes) {
-      std::vector<std::pair<uint64_t, int>> qs, ss;
+      std::vector<std::pair<Relation, int>> qs, ss;
       for (int x : c.qs)
-        if (x != u) qs.push_back({relQ_[size_t(x) * nq + size_t(u)], x});
+        if (x != u) qs.push_back({codeQ_[size_t(x)], x});
       for (int y : c.ss)
-        if (y != v) ss.push_back({relS_[size_t(y) * ns + size_t(v)], y});
+        if (y != v) ss.push_back({codeS_[size_t(y)], y});
       std::stable_sort(qs.begin(), qs.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
       std::stable_sort(ss.begin(), ss.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
       size_t i = 0, j = 0;
       while (i < qs.size() && j < ss.size()) {
         if (qs[i].first < ss[j].first) { ++i; continue; }
         if (ss[j].first < qs[i].first) { ++j; continue; }
-        const uint64_t key = qs[i].first;
+        const Relation key = qs[i].first;
         Class d;
         d.op = c.op;
-        d.adjacent = c.adjacent || key != 0;
+        d.adjacent = c.adjacent || key != Relation{};
         for (; i < qs.size() && qs[i].first == key; ++i) d.qs.push_back(qs[i].second);
         for (; j < ss.size() && ss[j].first == key; ++j) d.ss.push_back(ss[j].second);
         out.push_back(std::move(d));
       }
     }
+    for (const auto& n : relQ_[size_t(u)]) codeQ_[size_t(n.first)] = {};
+    for (const auto& n : relS_[size_t(v)]) codeS_[size_t(n.first)] = {};
     return out;
   }
 
@@ -292,12 +315,13 @@ class BranchAndBound {
   const CsgGraph& s_;
   const LeafSimilarityMatrix& sim_;
   const CommonSubgraphOptions& o_;
-  std::vector<uint64_t> relQ_, relS_;
+  std::vector<std::vector<std::pair<int, Relation>>> relQ_, relS_;
+  std::vector<Relation> codeQ_, codeS_;
   std::chrono::steady_clock::time_point deadline_;
   std::vector<NodeMatch> matches_, best_;
   double bestWeight_ = 0;
   bool timedOut_ = false;
-  uint64_t steps_ = 0;
+  int clockInterval_ = 1, untilClock_ = 1;
 };
 
 }  // namespace

@@ -28,6 +28,9 @@
 //    weight + Σ over classes of the best possible gain of min(|class in Q|, |class in S|) vertices),
 //    adapted to weights and to connectedness; stops after timeBudgetMs with complete = false and the
 //    best map found so far.
+// Cost: the tree DP keeps one value per node pair (|Q|·|S| doubles) and runs one assignment per
+// label-compatible pair; the search keeps the graphs' edges (no node-pair tables) and O(|Q| + |S|)
+// per search node. Callers bound the query size (SPEC §4 node limit).
 #include <cstddef>
 #include <vector>
 
@@ -61,7 +64,8 @@ struct CommonSubgraph {
 };
 
 // The maximum-weight common connected subgraph as defined above. leafSimilarity must be
-// query.leafCount x stored.leafCount (invalid_parameter otherwise).
+// query.leafCount x stored.leafCount, every leaf's payload index below leafCount and every child
+// index a node of its graph (invalid_parameter, path "leafSimilarity" or "graph", otherwise).
 CommonSubgraph largestCommonSubgraph(const CsgGraph& query, const CsgGraph& stored,
                                      const LeafSimilarityMatrix& leafSimilarity,
                                      const CommonSubgraphOptions& options = {});

@@ -166,11 +166,24 @@ CsgGraph graph(std::vector<CsgGraphNode> nodes) {
   return g;
 }
 
+struct RandomPair {
+  CsgGraph query, stored;
+  LeafSimilarityMatrix leaves;
+};
+// Two random DAGs of dagNodes (two extra edges each) or two random trees of treeNodes.
+RandomPair randomPair(std::mt19937& rng, bool dag, int dagNodes, int treeNodes) {
+  RandomPair p;
+  p.query = dag ? randomDag(rng, dagNodes, 2) : randomTree(rng, treeNodes);
+  p.stored = dag ? randomDag(rng, dagNodes, 2) : randomTree(rng, treeNodes);
+  p.leaves = randomLeafSimilarity(rng, p.query.leafCount, p.stored.leafCount);
+  return p;
+}
+
 TEST(CommonSubgraph, TreeDynamicProgrammeEqualsBruteForceOnRandomTrees) {
   std::mt19937 rng(6001);
   for (int trial = 0; trial < 3000; ++trial) {
-    const CsgGraph q = randomTree(rng, std::uniform_int_distribution<int>(1, 7)(rng));
-    const CsgGraph s = randomTree(rng, std::uniform_int_distribution<int>(1, 7)(rng));
+    const CsgGraph q = randomTree(rng, std::uniform_int_distribution<int>(1, 8)(rng));
+    const CsgGraph s = randomTree(rng, std::uniform_int_distribution<int>(1, 8)(rng));
     const LeafSimilarityMatrix m = randomLeafSimilarity(rng, q.leafCount, s.leafCount);
     const double threshold = trial % 4 == 0 ? 0.5 : 0.0;
     ASSERT_TRUE(q.isTree() && s.isTree());
@@ -185,8 +198,8 @@ TEST(CommonSubgraph, BranchAndBoundEqualsBruteForceOnRandomDags) {
   std::mt19937 rng(6002);
   int dags = 0;
   for (int trial = 0; trial < 3000; ++trial) {
-    const CsgGraph q = randomDag(rng, std::uniform_int_distribution<int>(1, 7)(rng), trial % 3);
-    const CsgGraph s = randomDag(rng, std::uniform_int_distribution<int>(1, 7)(rng), (trial / 3) % 3);
+    const CsgGraph q = randomDag(rng, std::uniform_int_distribution<int>(1, 8)(rng), trial % 3);
+    const CsgGraph s = randomDag(rng, std::uniform_int_distribution<int>(1, 8)(rng), (trial / 3) % 3);
     if (!q.isTree() || !s.isTree()) ++dags;
     const LeafSimilarityMatrix m = randomLeafSimilarity(rng, q.leafCount, s.leafCount);
     const double threshold = trial % 5 == 0 ? 0.5 : 0.0;
@@ -215,10 +228,7 @@ TEST(CommonSubgraph, TreeDynamicProgrammeEqualsBranchAndBoundOnTrees) {
 TEST(CommonSubgraph, SymmetricInQueryAndStored) {
   std::mt19937 rng(6004);
   for (int trial = 0; trial < 1000; ++trial) {
-    const bool dag = trial % 2 == 1;
-    const CsgGraph q = dag ? randomDag(rng, 7, 2) : randomTree(rng, 9);
-    const CsgGraph s = dag ? randomDag(rng, 7, 2) : randomTree(rng, 9);
-    const LeafSimilarityMatrix m = randomLeafSimilarity(rng, q.leafCount, s.leafCount);
+    const auto [q, s, m] = randomPair(rng, trial % 2 == 1, 7, 9);
     const CommonSubgraph a = largestCommonSubgraph(q, s, m, {0, 10000});
     const CommonSubgraph b = largestCommonSubgraph(s, q, transpose(m), {0, 10000});
     ASSERT_NEAR(a.weight, b.weight, 1e-9) << "trial " << trial;
@@ -236,6 +246,48 @@ TEST(CommonSubgraph, AGraphMatchesItselfCompletely) {
     EXPECT_EQ(r.matchedNodes, int(g.size()));
     EXPECT_NEAR(r.weight, double(g.size()), 1e-12);
   }
+}
+
+// Reordering union / intersection children and subtrahends changes nothing (they are unordered).
+TEST(CommonSubgraph, ReorderingUnorderedChildrenKeepsTheWeight) {
+  std::mt19937 rng(6007);
+  for (int trial = 0; trial < 1000; ++trial) {
+    const auto [q, s, m] = randomPair(rng, trial % 2 == 1, 8, 12);
+    CsgGraph shuffled = s;
+    for (CsgGraphNode& n : shuffled.nodes) {
+      const size_t from = n.op == CsgGraphOp::Difference ? 1 : 0;
+      if (n.children.size() > from) std::shuffle(n.children.begin() + long(from), n.children.end(), rng);
+    }
+    ASSERT_NEAR(largestCommonSubgraph(q, s, m, {0, 10000}).weight, largestCommonSubgraph(q, shuffled, m, {0, 10000}).weight,
+                1e-9)
+        << "trial " << trial;
+  }
+}
+
+// Swapping a difference's minuend with a subtrahend breaks the complete self match. (Trees, and
+// each leaf like itself only: siblings have disjoint leaves, so no other map can repair the swap.)
+TEST(CommonSubgraph, SwappingAMinuendBreaksTheCompleteMatch) {
+  std::mt19937 rng(6008);
+  int tested = 0;
+  for (int trial = 0; trial < 500; ++trial) {
+    const CsgGraph g = randomTree(rng, std::uniform_int_distribution<int>(3, 14)(rng));
+    CsgGraph swapped = g;
+    bool changed = false;
+    for (CsgGraphNode& n : swapped.nodes)
+      if (!changed && n.op == CsgGraphOp::Difference && n.children[0] != n.children[1]) {
+        std::swap(n.children[0], n.children[1]);
+        changed = true;
+      }
+    if (!changed) continue;
+    ++tested;
+    LeafSimilarityMatrix m{g.leafCount, g.leafCount, std::vector<double>(size_t(g.leafCount) * g.leafCount, 0.0)};
+    for (int i = 0; i < g.leafCount; ++i) m.values[size_t(i) * g.leafCount + i] = 1;
+    for (const CommonSubgraph& r : {largestCommonSubgraph(g, swapped, m), largestCommonSubgraphSearch(g, swapped, m, {0, 10000})}) {
+      EXPECT_LT(r.matchedNodes, int(g.size())) << "trial " << trial;
+      EXPECT_LT(r.weight, double(g.size()));
+    }
+  }
+  EXPECT_GT(tested, 200);
 }
 
 // (A ∪ B) against (B ∪ A): union children are unordered.
@@ -329,6 +381,17 @@ TEST(CommonSubgraph, RejectsAMatrixOfTheWrongSize) {
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), errc::kInvalidParameter);
     EXPECT_EQ(e.path(), "leafSimilarity");
+  }
+}
+
+TEST(CommonSubgraph, RejectsAChildOutsideTheGraph) {
+  const CsgGraph bad = graph({op(CsgGraphOp::Union, {1, 5}), leaf(0)});
+  try {
+    largestCommonSubgraph(bad, bad, ones(1, 1));
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), errc::kInvalidParameter);
+    EXPECT_EQ(e.path(), "graph");
   }
 }
 

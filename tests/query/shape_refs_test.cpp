@@ -137,5 +137,17 @@ TEST(ShapeRefs, OutlineListsNodesInPreorderWithReferences) {
   EXPECT_EQ(o.references[1].path, "tree.children[1].children[0].ref");
 }
 
+TEST(ShapeRefs, RememberingResolverAsksOncePerReference) {
+  ToyStore db;
+  db.add("part", "ball", 1, ballPart(1, 0));
+  const ReferenceResolver r = rememberingResolver(db.resolver());
+  EXPECT_EQ(r("part", "ball")->id, 1);
+  EXPECT_EQ(r("part", "ball")->id, 1);
+  EXPECT_FALSE(r("part", "nope").has_value());
+  EXPECT_FALSE(r("part", "nope").has_value());
+  EXPECT_EQ(db.lookups, 2);
+  EXPECT_FALSE(rememberingResolver({}));  // no resolver stays none
+}
+
 }  // namespace
 }  // namespace fsdb
