@@ -97,24 +97,22 @@ class Search {
   }
 
   // The similarities of every query leaf to stored leaf s, computed once per distinct part in a
-  // search (trees share stored parts, and parts from the same words are equal).
+  // search (trees share stored parts, and parts from the same words are equal: the cache gives
+  // them one id, StoredGraph::leafParts).
   struct LeafColumn {
-    const FuzzyPart* part;  // in a StoredGraph that `candidates` keeps alive during the search
     std::vector<double> leaf, transform;
   };
   const LeafColumn& column(const StoredGraph& stored, int s) {
     const FuzzyPart& sp = stored.shape.leaves[size_t(s)].part;
-    std::vector<LeafColumn>& bucket = memo_[stored.leafKeys[size_t(s)]];
-    for (const LeafColumn& c : bucket)
-      if (samePart(*c.part, sp)) return c;
-    LeafColumn c{&sp, {}, {}};
+    const auto found = memo_.find(stored.leafParts[size_t(s)]);
+    if (found != memo_.end()) return found->second;
+    LeafColumn c;
     for (const CsgQueryLeaf& ql : query_.leaves) {
       c.leaf.push_back(ql.condition ? scoreDescriptors(*ql.condition, stored.leafDescriptors[size_t(s)]).score
                                     : partSimilarity(ql.part, sp));
       c.transform.push_back(ql.condition ? 1.0 : transformSimilarity(ql.part, sp));
     }
-    bucket.push_back(std::move(c));
-    return bucket.back();
+    return memo_.emplace(stored.leafParts[size_t(s)], std::move(c)).first->second;
   }
 
   // Whether a candidate with this score bound could still be among the results.
@@ -141,7 +139,7 @@ class Search {
   const size_t limit_;
   const Clock::time_point start_;
   CsgSearchResult result_;
-  std::unordered_map<uint64_t, std::vector<LeafColumn>> memo_;
+  std::unordered_map<int64_t, LeafColumn> memo_;  // by StoredGraph::leafParts id
 };
 
 nlohmann::json mappingJson(const CsgQuery& query, const CsgHit& hit) {

@@ -56,7 +56,7 @@ StoreVersions StoreVersions::read(const Store& store) {
   return out;
 }
 
-std::shared_ptr<const StoredGraph> buildStoredGraph(const Store& store, int64_t shape, size_t maxNodes,
+std::shared_ptr<StoredGraph> buildStoredGraph(const Store& store, int64_t shape, size_t maxNodes,
                                                     const StoreVersions& versions) {
   const StoredObject object = store.get("shape", shape);
   auto out = std::make_shared<StoredGraph>();
@@ -75,10 +75,7 @@ std::shared_ptr<const StoredGraph> buildStoredGraph(const Store& store, int64_t 
     return r;
   };
   out->shape = shapeGraph(nlohmann::json::parse(object.documentJson), "", maxNodes, recording);
-  for (const CsgGraphLeaf& leaf : out->shape.leaves) {
-    out->leafDescriptors.push_back(describePart(leaf.part));
-    out->leafKeys.push_back(partKey(leaf.part));
-  }
+  for (const CsgGraphLeaf& leaf : out->shape.leaves) out->leafDescriptors.push_back(describePart(leaf.part));
   out->signature = csgSignature(out->shape.graph);
   return out;
 }
@@ -90,12 +87,24 @@ std::shared_ptr<const StoredGraph> StoredGraphCache::graph(const Store& store, c
     const auto it = entries_.find(shape.id);
     if (it != entries_.end() && current(*it->second, shape, versions)) return it->second;
   }
-  std::shared_ptr<const StoredGraph> built = buildStoredGraph(store, shape.id, maxNodes, versions);
+  std::shared_ptr<StoredGraph> built = buildStoredGraph(store, shape.id, maxNodes, versions);
   std::lock_guard<std::mutex> lock(mutex_);
   ++builds_;
-  if (entries_.size() >= maxEntries_) entries_.clear();
+  if (entries_.size() >= maxEntries_) {
+    entries_.clear();
+    parts_.clear();
+  }
+  for (const CsgGraphLeaf& leaf : built->shape.leaves) built->leafParts.push_back(intern(leaf.part));
   entries_[shape.id] = built;
   return built;
+}
+
+int64_t StoredGraphCache::intern(const FuzzyPart& part) {
+  std::vector<std::pair<FuzzyPart, int64_t>>& bucket = parts_[partKey(part)];
+  for (const auto& [known, id] : bucket)
+    if (samePart(known, part)) return id;
+  bucket.emplace_back(part, nextPart_);
+  return nextPart_++;
 }
 
 size_t StoredGraphCache::size() const {

@@ -34,14 +34,15 @@ struct StoredGraph {
   std::string name;
   ShapeGraph shape;
   std::vector<std::vector<DescriptorValue>> leafDescriptors;  // by leaf index
-  std::vector<uint64_t> leafKeys;  // by leaf index: partKey of the leaf's part
+  // By leaf index: the cache's id of the leaf's part, equal for equal parts (StoredGraphCache), so
+  // a search computes the similarities of a part used by many trees once.
+  std::vector<int64_t> leafParts;
   CsgSignature signature;
   std::vector<std::pair<int64_t, int>> reached;  // (object id, version) its tree used
 };
 
 // A hash of every parameter and transform value of a part (breakpoints, rotation axis): equal parts
-// have equal keys, so a search computes the similarities of a part used by many trees once
-// (samePart confirms a key match).
+// have equal keys; samePart confirms a key match.
 uint64_t partKey(const FuzzyPart& part);
 bool samePart(const FuzzyPart& a, const FuzzyPart& b);
 
@@ -51,8 +52,9 @@ struct StoreVersions {
   static StoreVersions read(const Store& store);
 };
 
-// Builds the graph of the latest version of `shape` (errors as shapeGraph; not_found when deleted).
-std::shared_ptr<const StoredGraph> buildStoredGraph(const Store& store, int64_t shape, size_t maxNodes,
+// Builds the graph of the latest version of `shape` (errors as shapeGraph; not_found when deleted);
+// leafParts are left empty (the cache fills them).
+std::shared_ptr<StoredGraph> buildStoredGraph(const Store& store, int64_t shape, size_t maxNodes,
                                                     const StoreVersions& versions);
 
 class StoredGraphCache {
@@ -64,6 +66,10 @@ class StoredGraphCache {
   size_t builds() const;  // graphs built since construction (tests and bench see hits and misses)
 
  private:
+  int64_t intern(const FuzzyPart& part);  // under mutex_; ids are never reused, even after a clear
+
+  std::unordered_map<uint64_t, std::vector<std::pair<FuzzyPart, int64_t>>> parts_;  // partKey -> (part, id)
+  int64_t nextPart_ = 0;
   mutable std::mutex mutex_;
   std::unordered_map<int64_t, std::shared_ptr<const StoredGraph>> entries_;
   size_t builds_ = 0;
