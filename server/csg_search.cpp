@@ -61,13 +61,14 @@ class Search {
     for (const Candidate& c : candidates) {
       checkTime();
       if (options_.prune && !canEnter(c.bound, c.graph->id)) break;  // sorted: no later one can either
-      match(*c.graph, c.graph);
+      match(c.graph);
     }
     return std::move(result_);
   }
 
  private:
-  void match(const StoredGraph& stored, const std::shared_ptr<const StoredGraph>& handle) {
+  void match(const std::shared_ptr<const StoredGraph>& handle) {
+    const StoredGraph& stored = *handle;
     ++result_.bounded;
     const int rows = query_.graph.leafCount, cols = stored.shape.graph.leafCount;
     LeafSimilarityMatrix leaf{rows, cols, std::vector<double>(size_t(rows) * size_t(cols))};
