@@ -1,6 +1,8 @@
 #include "query/csg_graph.h"
 
 #include <map>
+#include <memory>
+#include <optional>
 
 #include "geometry/boundary_method.h"
 #include "geometry/error.h"
