@@ -45,7 +45,7 @@ class Search {
   CsgSearchResult run(const Store& store, StoredGraphCache& cache) {
     const StoreVersions versions = StoreVersions::read(store);
     std::vector<Candidate> candidates;
-    for (const ObjectVersion& shape : store.objectVersions("shape")) {
+    for (const ObjectVersion& shape : versions.shapes) {
       checkTime();
       try {
         std::shared_ptr<const StoredGraph> g = cache.graph(store, shape, versions, options_.maxNodes);

@@ -51,8 +51,9 @@ bool samePart(const FuzzyPart& a, const FuzzyPart& b) {
 
 StoreVersions StoreVersions::read(const Store& store) {
   StoreVersions out;
-  for (const char* kind : {"part", "shape"})
-    for (const ObjectVersion& o : store.objectVersions(kind)) out.latest[o.id] = o.latestVersion;
+  out.shapes = store.objectVersions("shape");
+  for (const ObjectVersion& o : store.objectVersions("part")) out.latest[o.id] = o.latestVersion;
+  for (const ObjectVersion& o : out.shapes) out.latest[o.id] = o.latestVersion;
   return out;
 }
 

@@ -46,9 +46,11 @@ struct StoredGraph {
 uint64_t partKey(const FuzzyPart& part);
 bool samePart(const FuzzyPart& a, const FuzzyPart& b);
 
-// Latest versions of every live part and shape, by id (ids are shared by all kinds).
+// Latest versions of every live part and shape, by id (ids are shared by all kinds), and the live
+// shapes in id order (the candidates of a search), from one read of each kind.
 struct StoreVersions {
   std::unordered_map<int64_t, int> latest;
+  std::vector<ObjectVersion> shapes;
   static StoreVersions read(const Store& store);
 };
 

@@ -37,7 +37,8 @@ TEST(StoredGraphs, EqualLeavesShareAnIdAndWritesRebuild) {
   const int64_t s2 = create({{"name", "s2"}, {"tree", {{"op", "difference"}, {"children", {sphere, {{"part", rod}}}}}}}, "shape");
   StoredGraphCache cache;
   StoreVersions versions = StoreVersions::read(*store);
-  const std::vector<ObjectVersion> shapes = store->objectVersions("shape");
+  const std::vector<ObjectVersion> shapes = versions.shapes;
+  EXPECT_EQ(versions.latest.size(), 3u);
   ASSERT_EQ(shapes.size(), 2u);
   const auto g1 = cache.graph(*store, shapes[0], versions, 1000);
   const auto g2 = cache.graph(*store, shapes[1], versions, 1000);
