@@ -590,6 +590,16 @@ std::vector<int64_t> Store::objectIds(const std::string& kind) const {
   return ids;
 }
 
+std::vector<ObjectVersion> Store::objectVersions(const std::string& kind) const {
+  Impl::Lease connection(*impl_);
+  auto statement = (*connection).prepare("SELECT id, name, latest_version FROM objects WHERE kind = ?1 ORDER BY id");
+  statement->bind(1, kind);
+  std::vector<ObjectVersion> out;
+  while (statement->step())
+    out.push_back({statement->columnInt(0), statement->columnText(1), static_cast<int>(statement->columnInt(2))});
+  return out;
+}
+
 std::vector<IndexedObject> Store::indexedObjects(const std::string& kind, const std::vector<int64_t>& ids) const {
   Impl::Lease connection(*impl_);
   Transaction transaction(*connection, Transaction::Mode::kDeferred);

@@ -106,6 +106,12 @@ struct StoredObject {
   std::vector<int64_t> references;  // resolved ids this version refers to (latest version only)
 };
 
+struct ObjectVersion {
+  int64_t id = 0;
+  std::string name;
+  int latestVersion = 0;
+};
+
 struct ListQuery {
   std::string kind;
   std::optional<std::string> name;   // exact name
@@ -241,6 +247,9 @@ class Store {
   std::vector<int64_t> pendingDescriptorIds(const std::string& kind) const;
   // Sorted ids of every live object of `kind` (the full scan's candidates).
   std::vector<int64_t> objectIds(const std::string& kind) const;
+  // Every live object of `kind` by id with its name and latest version, in one read (structural
+  // search: which cached graphs are still current, server/csg_search.h).
+  std::vector<ObjectVersion> objectVersions(const std::string& kind) const;
   // The objects of `kind` among `ids`, in the order given (ids of other kinds or deleted are skipped).
   std::vector<IndexedObject> indexedObjects(const std::string& kind, const std::vector<int64_t>& ids) const;
   // The rows of the latest version of `id`, by component (tests, diagnostics).

@@ -88,6 +88,37 @@ const nlohmann::json& requireArray(const nlohmann::json& j, const std::string& p
   return j;
 }
 
+int64_t optionalInteger(const nlohmann::json& obj, const std::string& path, const std::string& key, int64_t fallback,
+                        int64_t min, int64_t max) {
+  if (!obj.contains(key)) return fallback;
+  const nlohmann::json& v = obj[key];
+  if (!v.is_number_integer() || v.get<int64_t>() < min || v.get<int64_t>() > max)
+    throw Error(errc::kInvalidParameter,
+                key + " must be an integer from " + std::to_string(min) + " to " + std::to_string(max) + ", got " + v.dump(),
+                joinPath(path, key));
+  return v.get<int64_t>();
+}
+
+double optionalNumberIn(const nlohmann::json& obj, const std::string& path, const std::string& key, double fallback,
+                        double min, double max) {
+  if (!obj.contains(key)) return fallback;
+  const nlohmann::json& v = obj[key];
+  const double x = requireNumber(v, joinPath(path, key));
+  if (!(x >= min && x <= max)) {
+    throw Error(errc::kInvalidParameter, key + " must be in [" + formatNumber(min) + ", " + formatNumber(max) + "], got " + v.dump(),
+                joinPath(path, key));
+  }
+  return x;
+}
+
+bool optionalBoolean(const nlohmann::json& obj, const std::string& path, const std::string& key, bool fallback) {
+  if (!obj.contains(key)) return fallback;
+  const nlohmann::json& v = obj[key];
+  if (!v.is_boolean())
+    throw Error(errc::kInvalidDocument, key + " must be a boolean, got " + jsonTypeName(v), joinPath(path, key));
+  return v.get<bool>();
+}
+
 void rejectUnknownKeys(const nlohmann::json& obj, const std::string& path, std::initializer_list<const char*> known,
                        const std::string& where) {
   for (auto it = obj.begin(); it != obj.end(); ++it) {

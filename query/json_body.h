@@ -24,6 +24,14 @@ const nlohmann::json& requireField(const nlohmann::json& obj, const std::string&
 // + `where` (" in a leaf") + "; expected one of: a, b, c".
 void rejectUnknownKeys(const nlohmann::json& obj, const std::string& path, std::initializer_list<const char*> known,
                        const std::string& where = "");
+// Optional members of a request object at `path`, the default when absent. Out of range is
+// invalid_parameter naming path.key and the range ("limit must be an integer from 1 to 1000, got
+// 0"); a value of the wrong type likewise (a boolean of the wrong type is invalid_document).
+int64_t optionalInteger(const nlohmann::json& obj, const std::string& path, const std::string& key, int64_t fallback,
+                        int64_t min, int64_t max);
+double optionalNumberIn(const nlohmann::json& obj, const std::string& path, const std::string& key, double fallback,
+                        double min, double max);
+bool optionalBoolean(const nlohmann::json& obj, const std::string& path, const std::string& key, bool fallback);
 // The JSON type name used in messages: "string", "number", "object", ...
 std::string jsonTypeName(const nlohmann::json& j);
 

@@ -48,9 +48,9 @@ bool contains(const std::vector<std::string>& list, const std::string& w) {
   return std::find(list.begin(), list.end(), w) != list.end();
 }
 
-std::vector<Token> tokenize(const std::string& text) {
+std::vector<Token> tokenize(const std::string& text, size_t from) {
   std::vector<Token> tokens;
-  size_t i = 0;
+  size_t i = from;
   while (i < text.size()) {
     const unsigned char c = static_cast<unsigned char>(text[i]);
     if (std::isspace(c)) {
@@ -124,10 +124,12 @@ FuzzyNumber mirrored(const FuzzyNumber& set) { return add(negate(set), FuzzyNumb
 
 class Parser {
  public:
-  Parser(const std::string& text, const Vocabulary& vocabulary)
+  Parser(const std::string& text, const Vocabulary& vocabulary, size_t from = 0, size_t to = std::string::npos,
+         bool prefix = false)
       : text_(text),
         v_(vocabulary),
-        tokens_(tokenize(text)),
+        tokens_(tokenize(text.substr(0, to), from)),
+        prefix_(prefix),
         intensityWords_(vocabulary.intensityWords()),
         adjectiveWords_(vocabulary.adjectiveWords()),
         nounWords_(vocabulary.nounWords()),
@@ -183,6 +185,17 @@ class Parser {
       fail({"'and'", "'or'", "'that is'", "'at least' NUMBER", "'using' AGGREGATION",
             "a distance and a direction (" + joinList(directionWords_) + ")", "the end of the query"});
     return q;
+  }
+
+  // A noun phrase at the start of the tokens, ending where the phrase ends (parseNounPhraseAt).
+  NounPhraseAt nounPhraseAt() {
+    NounPhraseAt out;
+    if (tokens_.empty()) fail({"a noun phrase such as 'a slightly bent cylinder'"});
+    std::string subject;
+    out.query.root = nounPhrase(&subject);
+    out.query.subject = subject;
+    out.end = tokens_[pos_ - 1].end;
+    return out;
   }
 
   // part_description = [ article ] { [ intensity ] adjective [ "," | "and" ] } noun
@@ -296,6 +309,19 @@ class Parser {
   }
 
   // --- productions ----------------------------------------------------------------------------
+  // Accepts `w` joining two conditions. In a noun phrase read as a prefix (nounPhraseAt), a `w`
+  // not followed by the start of a condition ends the phrase instead: it joins the next operand
+  // of the caller ("the union of a cylinder that is bent and a cube").
+  bool continues(const std::string& w) {
+    if (!at(w)) return false;
+    ++pos_;
+    if (prefix_ && !startsCondition()) {
+      --pos_;
+      return false;
+    }
+    return true;
+  }
+
   bool startsCondition() const {
     if (at("not") || at("(")) return true;
     if (pos_ < tokens_.size() && descriptorIndex(tokens_[pos_].text) >= 0) return true;
@@ -365,7 +391,7 @@ class Parser {
   QueryCondition condition() {
     const size_t start = pos_;
     std::vector<QueryCondition> alternatives{conjunct()};
-    while (acceptWord("or")) {
+    while (continues("or")) {
       if (!startsCondition()) fail(conditionStarts());
       alternatives.push_back(conjunct());
     }
@@ -377,7 +403,7 @@ class Parser {
     const size_t start = pos_;
     std::vector<QueryCondition> all{negation()};
     while (true) {
-      if (acceptWord("and") || acceptWord(",")) {
+      if (continues("and") || continues(",")) {
         if (!startsCondition()) fail(conditionStarts());
       } else if (!startsCondition()) {
         break;
@@ -544,6 +570,7 @@ class Parser {
   const Vocabulary& v_;
   std::vector<Token> tokens_;
   size_t pos_ = 0;
+  const bool prefix_;  // nounPhraseAt: the phrase is followed by the caller's words
   int depth_ = 0;  // nesting of conditions (parentheses, not), bounded by kMaxNesting
   // The vocabulary's word lists.
   const std::vector<std::string>&intensityWords_, &adjectiveWords_, &nounWords_, &directionWords_, &distanceWords_;
@@ -581,6 +608,10 @@ nlohmann::json conditionJson(const QueryCondition& c) {
 
 LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary) {
   return Parser(text, vocabulary).parse();
+}
+
+NounPhraseAt parseNounPhraseAt(const std::string& text, size_t from, size_t to, const Vocabulary& vocabulary) {
+  return Parser(text, vocabulary, from, to, true).nounPhraseAt();
 }
 
 PartDescription parsePartDescription(const std::string& text, const Vocabulary& vocabulary) {

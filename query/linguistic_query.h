@@ -81,6 +81,19 @@ struct LinguisticQuery {
 // deeper than 64 levels (parentheses, "not") are errc::kLimitExceeded, path "text".
 LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary);
 
+// The noun phrase that starts at character `from` of `text` (a leaf of a structural query,
+// query/csg_query_text.h), read up to character `to` at most (npos: the end): the production
+// noun_phrase of the grammar, ending after its noun and relative clause. There an "and", "or" or
+// "," that is not followed by the start of a condition ends the phrase (it is the caller's word:
+// "the union of a cylinder that is bent and a cube"). Returns the phrase as a query (subject,
+// root; no threshold) and the character just after its last word. Errors as parseLinguisticQuery,
+// with positions in `text`; when the words before `to` end too early, the message says so.
+struct NounPhraseAt {
+  LinguisticQuery query;
+  size_t end = 0;
+};
+NounPhraseAt parseNounPhraseAt(const std::string& text, size_t from, size_t to, const Vocabulary& vocabulary);
+
 // The words of a part described by words ("a slightly bent cylinder", "a long, very twisted
 // box"): [ article ] { [ intensity ] adjective [ "," | "and" ] } noun. The pointers point into
 // `vocabulary`. Errors as parseLinguisticQuery (path "text"). query/part_from_words.h turns it

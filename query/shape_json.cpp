@@ -30,22 +30,9 @@ void checkReferenceKey(const nlohmann::json& key, const std::string& path) {
               path);
 }
 
-// `resolver` with each answer remembered for one parse: the csg text asks for every name (as a
-// part, then as a shape) and the walk asks again for the same reference when it builds the leaf.
-ReferenceResolver remembering(const ReferenceResolver& resolver) {
-  if (!resolver) return {};
-  auto answers = std::make_shared<std::map<std::string, std::optional<ResolvedReference>>>();
-  return [resolver, answers](const std::string& kind, const nlohmann::json& key) {
-    const std::string k = kind + '\n' + key.dump();
-    auto it = answers->find(k);
-    if (it == answers->end()) it = answers->emplace(k, resolver(kind, key)).first;
-    return it->second;
-  };
-}
-
 struct Walker {
   size_t maxNodes;
-  ReferenceResolver resolver;  // remembering(the caller's)
+  ReferenceResolver resolver;  // rememberingResolver(the caller's)
   ParsedShape out;
   // Stored shapes already built (shared subtrees are built once) and the chain of stored
   // shapes being expanded (a repeat is a cycle).
@@ -205,6 +192,17 @@ struct Walker {
 
 }  // namespace
 
+ReferenceResolver rememberingResolver(const ReferenceResolver& resolver) {
+  if (!resolver) return {};
+  auto answers = std::make_shared<std::map<std::string, std::optional<ResolvedReference>>>();
+  return [resolver, answers](const std::string& kind, const nlohmann::json& key) {
+    const std::string k = kind + '\n' + key.dump();
+    auto it = answers->find(k);
+    if (it == answers->end()) it = answers->emplace(k, resolver(kind, key)).first;
+    return it->second;
+  };
+}
+
 nlohmann::json shapeTree(const nlohmann::json& doc, const std::string& path, const ReferenceResolver& resolver) {
   const bool hasTree = doc.contains("tree"), hasCsg = doc.contains("csg");
   if (hasTree && hasCsg)
@@ -276,7 +274,7 @@ TreeOutline outlineTree(const nlohmann::json& tree, const std::string& path) {
 ParsedShape parseShapeField(const nlohmann::json& doc, const std::string& path, size_t maxNodes,
                             const ReferenceResolver& resolver) {
   requireObject(doc, path);
-  Walker w{maxNodes, remembering(resolver), {}, {}, {}, {}};
+  Walker w{maxNodes, rememberingResolver(resolver), {}, {}, {}, {}};
   const std::string kind = doc.contains("kind") ? requireString(doc["kind"], joinPath(path, "kind")) : "shape";
   if (kind == "part") {
     w.count(path);

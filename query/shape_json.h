@@ -68,6 +68,11 @@ struct ResolvedReference {
 using ReferenceResolver =
     std::function<std::optional<ResolvedReference>(const std::string& kind, const nlohmann::json& key)>;
 
+// `resolver` with each answer remembered (for one parse, or one caller's several passes over the same
+// document): the csg text asks for every name (as a part, then as a shape) and the walk asks again for
+// the same reference when it builds the leaf. An empty resolver stays empty.
+ReferenceResolver rememberingResolver(const ReferenceResolver& resolver);
+
 ParsedShape parseShapeField(const nlohmann::json& doc, const std::string& path, size_t maxNodes,
                             const ReferenceResolver& resolver = {});
 

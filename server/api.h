@@ -29,7 +29,7 @@ void registerObjectRoutes(HttpServer& server, Store& store);
 // /iso, and the exports of stored curves and surfaces: GET /curves/{id}/svg, /surfaces/{id}/mesh
 void registerBezierRoutes(HttpServer& server, const Store& store);
 
-// POST /query/linguistic (server/linguistic_search.h)
+// POST /query/linguistic (server/linguistic_search.h), POST /query/csg (server/csg_search.h)
 void registerQueryRoutes(HttpServer& server, const Store& store);
 
 // POST /curves/fair (seed 002 fair curves; server/fair_curve_api.cpp)

@@ -277,31 +277,15 @@ nlohmann::json linguisticQueryResponse(const Store& store, const nlohmann::json&
   LinguisticSearchOptions options;
   options.maxNodes = limits.maxNodes;
   options.maxMillis = limits.maxQueryMs;
-  options.limit = kDefaultLimit;
-  if (request.contains("limit")) {
-    const nlohmann::json& l = request["limit"];
-    if (!l.is_number_integer() || l.get<int64_t>() < 1 || l.get<int64_t>() > kMaxLimit)
-      throw Error(errc::kInvalidParameter, "limit must be an integer from 1 to " + std::to_string(kMaxLimit) +
-                                               ", got " + l.dump(), "limit");
-    options.limit = static_cast<int>(l.get<int64_t>());
-  }
-  if (request.contains("threshold")) {
-    options.threshold = requireNumber(request["threshold"], "threshold");
-    if (!(options.threshold >= 0 && options.threshold <= 1))
-      throw Error(errc::kInvalidParameter, "threshold must be in [0, 1], got " + request["threshold"].dump(),
-                  "threshold");
-  }
+  options.limit = static_cast<int>(optionalInteger(request, "", "limit", kDefaultLimit, 1, kMaxLimit));
+  options.threshold = optionalNumberIn(request, "", "threshold", 0.0, 0.0, 1.0);
   std::string kind;
   if (request.contains("kind")) {
     kind = requireString(request["kind"], "kind");
     if (kind != "part" && kind != "shape")
       throw Error(errc::kInvalidParameter, "kind must be \"part\" or \"shape\", got \"" + kind + "\"", "kind");
   }
-  if (request.contains("scan")) {
-    if (!request["scan"].is_boolean())
-      throw Error(errc::kInvalidDocument, "scan must be a boolean, got " + jsonTypeName(request["scan"]), "scan");
-    options.scan = request["scan"].get<bool>();
-  }
+  options.scan = optionalBoolean(request, "", "scan", false);
   const LinguisticQuery query = parseLinguisticQuery(text, activeVocabulary());
   options.kinds = searchKinds(query, kind);
   const LinguisticSearchResult found = searchLinguistic(store, query, options);

@@ -184,7 +184,7 @@ int main(int argc, char** argv) {
                        "most evaluation points (u values, uv pairs, export samples) per Bezier request")
       ->check(CLI::PositiveNumber)->capture_default_str();
   serveCmd->add_option("--max-query-ms", serve.limits.maxQueryMs,
-                       "longest POST /query/linguistic search in milliseconds (413 beyond); 0: no limit")
+                       "longest POST /query/linguistic or /query/csg search in milliseconds (413 beyond); 0: no limit")
       ->check(CLI::Range(0, 86400000))->capture_default_str();
 
   std::string evalFile;
@@ -221,15 +221,15 @@ int main(int argc, char** argv) {
 
   fsdb::QueryCommandOptions query;
   query.dbPath = dbPath;
-  auto* queryCmd = app.add_subcommand("query", "linguistic search: \"find a slightly bent shape\" (exit 0 ran, 1 refused, 2 no database or server)");
-  queryCmd->add_option("TEXT", query.text, "the query in words (GET /vocabulary lists them)")->required();
+  auto* queryCmd = app.add_subcommand("query", "linguistic search (\"find a slightly bent shape\") or CSG search (\"a cube minus a cylinder\", \"A + B - C\") (exit 0 ran, 1 refused, 2 no database or server)");
+  queryCmd->add_option("TEXT", query.text, "the query in words (GET /vocabulary lists them) or a CSG text (schema/csg_query_grammar.ebnf)")->required();
   auto* queryDb = queryCmd->add_option("--db", query.dbPath, "database file")->capture_default_str();
   queryCmd->add_option("--server", query.serverUrl, "ask a running server, e.g. http://127.0.0.1:8080")->excludes(queryDb);
   queryCmd->add_option("--limit", query.limit, "most results")->check(CLI::Range(1, 1000))->capture_default_str();
   queryCmd->add_option("--threshold", query.threshold, "least score")->check(CLI::Range(0.0, 1.0))->capture_default_str();
-  queryCmd->add_option("--kind", query.kind, "only parts or only shapes")->check(CLI::IsMember({"part", "shape"}));
-  queryCmd->add_flag("--scan", query.scan, "score every object instead of the index's candidates (same results)");
-  queryCmd->add_flag("--json", query.json, "print the JSON answer of POST /query/linguistic");
+  queryCmd->add_option("--kind", query.kind, "linguistic: only parts or only shapes")->check(CLI::IsMember({"part", "shape"}));
+  queryCmd->add_flag("--scan", query.scan, "linguistic: score every object instead of the index's candidates (same results)");
+  queryCmd->add_flag("--json", query.json, "print the JSON answer of POST /query/linguistic or /query/csg");
   queryCmd->add_option("--vocabulary", vocabularyPath, "with --db: a vocabulary file instead of the built-in one (as for serve)")
       ->excludes("--server");
 

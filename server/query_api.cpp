@@ -1,5 +1,9 @@
-// POST /query/linguistic (SPEC §4, issue 5): server/linguistic_search.h does the work.
+// POST /query/linguistic (SPEC §4, issue 5) and POST /query/csg (issue 6): server/linguistic_search.h
+// and server/csg_search.h do the work.
+#include <memory>
+
 #include "server/api.h"
+#include "server/csg_search.h"
 #include "server/http_server.h"
 #include "server/linguistic_search.h"
 
@@ -10,6 +14,13 @@ void registerQueryRoutes(HttpServer& server, const Store& store) {
                                        static_cast<double>(server.options().limits.maxQueryMs)};
   server.addRoute("POST", "/query/linguistic", [&store, limits](const ApiRequest& req) {
     return ApiResponse{200, linguisticQueryResponse(store, req.body, limits)};
+  });
+  const CsgRequestLimits csgLimits{limits.maxNodes, limits.maxQueryMs};
+  // The stored graphs live as long as the route; entries are checked against the store's versions
+  // on every query (server/stored_graphs.h), so writes need not notify it.
+  auto cache = std::make_shared<StoredGraphCache>();
+  server.addRoute("POST", "/query/csg", [&store, csgLimits, cache](const ApiRequest& req) {
+    return ApiResponse{200, csgQueryResponse(store, req.body, csgLimits, *cache)};
   });
 }
 

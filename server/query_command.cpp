@@ -11,6 +11,9 @@
 #include "db/store.h"
 #include "geometry/error.h"
 #include "server/http_errors.h"
+#include "query/csg_query_text.h"
+#include "query/vocabulary.h"
+#include "server/csg_search.h"
 #include "server/linguistic_search.h"
 
 namespace fsdb {
@@ -34,7 +37,7 @@ void printTable(const nlohmann::json& answer) {
   int rank = 0;
   for (const nlohmann::json& r : results)
     std::printf("%4d  %.4f  %-5s  %8lld  %s\n", ++rank, r["score"].get<double>(),
-                r["kind"].get<std::string>().c_str(), static_cast<long long>(r["id"].get<int64_t>()),
+                r.value("kind", "shape").c_str(), static_cast<long long>(r["id"].get<int64_t>()),
                 r["name"].get<std::string>().c_str());
   std::fflush(stdout);
 }
@@ -45,14 +48,19 @@ int exitFor(int httpStatus) { return httpStatus >= 500 ? 2 : 1; }
 }  // namespace
 
 int runQuery(const QueryCommandOptions& options) {
-  nlohmann::json request = {{"text", options.text}, {"limit", options.limit}, {"threshold", options.threshold},
-                            {"scan", options.scan}};
+  const bool csg = isCsgQueryText(options.text, activeVocabulary());
+  nlohmann::json request = {{"text", options.text}, {"limit", options.limit}, {"threshold", options.threshold}};
+  if (csg && (options.scan || !options.kind.empty())) {
+    std::cerr << "fsdb query: --scan and --kind apply to linguistic queries; this is a CSG query (shapes only)\n";
+    return 1;
+  }
+  if (!csg) request["scan"] = options.scan;
   if (!options.kind.empty()) request["kind"] = options.kind;
   nlohmann::json answer;
   if (!options.serverUrl.empty()) {
     httplib::Client client(options.serverUrl);
     client.set_read_timeout(600, 0);
-    auto res = client.Post("/query/linguistic", request.dump(), "application/json");
+    auto res = client.Post(csg ? "/query/csg" : "/query/linguistic", request.dump(), "application/json");
     if (!res) {
       std::cerr << "fsdb query: cannot reach " << options.serverUrl << ": " << httplib::to_string(res.error()) << "\n";
       return 2;
@@ -71,7 +79,9 @@ int runQuery(const QueryCommandOptions& options) {
       if (!std::filesystem::exists(options.dbPath))
         throw Error(errc::kStorage, "no database at '" + options.dbPath + "'", "--db");
       std::unique_ptr<Store> store = Store::open(options.dbPath);
-      answer = linguisticQueryResponse(*store, request, LinguisticRequestLimits{options.maxNodes, 0});
+      StoredGraphCache graphs;
+      answer = csg ? csgQueryResponse(*store, request, CsgRequestLimits{options.maxNodes, 0}, graphs)
+                   : linguisticQueryResponse(*store, request, LinguisticRequestLimits{options.maxNodes, 0});
     } catch (const Error& e) {
       printError(errorObject(e.code(), e.what(), e.path()));
       return exitFor(httpStatusFor(e.code()));

@@ -1,11 +1,14 @@
 #pragma once
 // `fsdb query "TEXT" [--db PATH | --server URL] [--limit K] [--threshold T] [--kind part|shape]
-//  [--scan] [--json]` (SPEC §1, issue 5): the linguistic search of POST /query/linguistic on a
-// database file (the same code, server/linguistic_search.h) or through a running server. With
+//  [--scan] [--json]` (SPEC §1, issues 5 and 6): the linguistic search of POST /query/linguistic,
+// or for a CSG text (isCsgQueryText, query/csg_query_text.h: "the union of ...", "a cube minus a
+// cylinder", "A + B - C", a list "a sphere and a box") the structural search of POST /query/csg
+// (--kind and --scan are refused there: it searches shapes, pruning exactly), on a database file
+// (the same code, server/linguistic_search.h, server/csg_search.h) or through a running server. With
 // --db, `--vocabulary FILE` (server/main.cpp, as for serve) makes a user's vocabulary the active one.
 //
 // Output on stdout: a table, one line per result (rank, score, kind, id, name), "no results"
-// when nothing satisfies the query; with --json the answer of POST /query/linguistic as is.
+// when nothing satisfies the query; with --json the answer of the endpoint as is.
 // Exit status: 0 the query ran (with or without results); 1 the query was refused (a parse
 // error or a bad option value: the message, with the character position and the expected
 // words, goes to stderr); 2 the database cannot be opened (or does not exist) or the server

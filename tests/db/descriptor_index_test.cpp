@@ -132,6 +132,25 @@ TEST_F(DescriptorIndexTest, CreateWritesRowsAndCandidatesOverlap) {
   EXPECT_EQ(store->objectIds("part"), std::vector<int64_t>{id});
 }
 
+// objectVersions: every live object of the kind, by id, with its name and latest version.
+TEST_F(DescriptorIndexTest, ObjectVersionsFollowPutsAndDeletes) {
+  const int64_t a = store->create(part("a", 0.2, 0.4)).id;
+  const int64_t b = store->create(part("b", 0.2, 0.4)).id;
+  store->put(a, part("a", 0.7, 0.8, ",\"v\":2"));
+  std::vector<ObjectVersion> v = store->objectVersions("part");
+  ASSERT_EQ(v.size(), 2u);
+  EXPECT_EQ(v[0].id, a);
+  EXPECT_EQ(v[0].name, "a");
+  EXPECT_EQ(v[0].latestVersion, 2);
+  EXPECT_EQ(v[1].id, b);
+  EXPECT_EQ(v[1].latestVersion, 1);
+  store->remove("part", b, false);
+  v = store->objectVersions("part");
+  ASSERT_EQ(v.size(), 1u);
+  EXPECT_EQ(v[0].id, a);
+  EXPECT_TRUE(store->objectVersions("shape").empty());
+}
+
 TEST_F(DescriptorIndexTest, PutReplacesAndDeleteRemoves) {
   const int64_t id = store->create(part("p", 0.2, 0.4)).id;
   store->put(id, part("p", 0.7, 0.8, ",\"v\":2"));

@@ -11,6 +11,7 @@
 #include "geometry/fuzzy_arithmetic.h"
 #include "query/fuzzy_json.h"
 #include "query/vocabulary.h"
+#include "tests/testing/grammar_examples.h"
 
 namespace fsdb {
 namespace {
@@ -254,17 +255,8 @@ TEST(LinguisticQuery, NestingLimit) {
 
 // Every example of schema/query_grammar.ebnf (lines "(* example: ... *)") parses.
 TEST(LinguisticQuery, GrammarExamplesParse) {
-  std::ifstream in(std::string(FSDB_SOURCE_DIR) + "/schema/query_grammar.ebnf");
-  ASSERT_TRUE(in.good());
-  std::string line;
   int examples = 0;
-  while (std::getline(in, line)) {
-    const std::string marker = "(* example: ";
-    const size_t at = line.find(marker);
-    if (at == std::string::npos) continue;
-    const size_t end = line.find(" *)", at);
-    ASSERT_NE(end, std::string::npos) << line;
-    const std::string example = line.substr(at + marker.size(), end - at - marker.size());
+  for (const std::string& example : testing::grammarExamples("query_grammar.ebnf")) {
     EXPECT_NO_THROW(parse(example)) << example;
     ++examples;
   }

@@ -6,34 +6,17 @@
 
 #include "geometry/error.h"
 #include "query/shape_json.h"
+#include "tests/testing/toy_store.h"
 
 namespace fsdb {
 namespace {
 
 using nlohmann::json;
+using testing::ToyStore;
 
 json ballPart(double r, double x) {
   return {{"kind", "part"}, {"params", {{"a1", r}}}, {"transform", {{"translate", {x, 0, 0}}}}};
 }
-
-// A toy database: name -> (id, document) per kind, and a count of lookups.
-struct ToyStore {
-  std::map<std::string, std::map<std::string, ResolvedReference>> byName;
-  mutable int lookups = 0;
-  void add(const std::string& kind, const std::string& name, int64_t id, json doc) {
-    byName[kind][name] = {id, std::move(doc)};
-  }
-  ReferenceResolver resolver() const {
-    return [this](const std::string& kind, const json& key) -> std::optional<ResolvedReference> {
-      ++lookups;
-      auto k = byName.find(kind);
-      if (k == byName.end()) return std::nullopt;
-      for (const auto& [name, r] : k->second)
-        if ((key.is_string() && key == name) || (key.is_number_integer() && key.get<int64_t>() == r.id)) return r;
-      return std::nullopt;
-    };
-  }
-};
 
 Error errorOf(const json& doc, const ReferenceResolver& resolver) {
   try {
@@ -152,6 +135,18 @@ TEST(ShapeRefs, OutlineListsNodesInPreorderWithReferences) {
   EXPECT_EQ(o.references[1].kind, "shape");
   EXPECT_EQ(o.references[1].key, 12);
   EXPECT_EQ(o.references[1].path, "tree.children[1].children[0].ref");
+}
+
+TEST(ShapeRefs, RememberingResolverAsksOncePerReference) {
+  ToyStore db;
+  db.add("part", "ball", 1, ballPart(1, 0));
+  const ReferenceResolver r = rememberingResolver(db.resolver());
+  EXPECT_EQ(r("part", "ball")->id, 1);
+  EXPECT_EQ(r("part", "ball")->id, 1);
+  EXPECT_FALSE(r("part", "nope").has_value());
+  EXPECT_FALSE(r("part", "nope").has_value());
+  EXPECT_EQ(db.lookups, 2);
+  EXPECT_FALSE(rememberingResolver({}));  // no resolver stays none
 }
 
 }  // namespace

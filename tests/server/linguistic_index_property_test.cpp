@@ -20,6 +20,7 @@
 #include "server/documents.h"
 #include "server/linguistic_search.h"
 #include "tests/db/temp_dir.h"
+#include "tests/testing/grammar_examples.h"
 
 namespace fsdb {
 namespace {
@@ -155,16 +156,7 @@ QueryCondition randomCondition(std::mt19937& rng, int depth) {
   return c;
 }
 
-// The "example:" lines of schema/query_grammar.ebnf: every form the parser knows.
-std::vector<std::string> grammarExamples() {
-  std::ifstream in(std::string(FSDB_SOURCE_DIR) + "/schema/query_grammar.ebnf");
-  std::vector<std::string> out;
-  const std::regex example(R"(\(\* example: (.*) \*\))");
-  std::smatch m;
-  for (std::string line; std::getline(in, line);)
-    if (std::regex_search(line, m, example)) out.push_back(m[1]);
-  return out;
-}
+std::vector<std::string> grammarExamples() { return testing::grammarExamples("query_grammar.ebnf"); }
 
 void expectSameAnswers(const Store& store, const LinguisticQuery& query, double threshold, int limit,
                        const std::string& what, size_t* pruned);

@@ -26,11 +26,7 @@ json query(const ServerProcess& server, json body, int status = 200) {
   return r.json;
 }
 
-std::vector<std::string> names(const json& answer) {
-  std::vector<std::string> out;
-  for (const json& r : answer["results"]) out.push_back(r["name"]);
-  return out;
-}
+std::vector<std::string> names(const json& answer) { return fsdb::test::resultNames(answer); }
 
 int64_t create(const ServerProcess& server, const std::string& kind, const json& doc) {
   auto r = server.post("/" + kind + "s", doc);

@@ -182,4 +182,11 @@ inline CommandResult runFsdb(const std::vector<std::string>& args, bool keepStde
   return result;
 }
 
+// The "name" of every result of a query answer ({"results":[{"name",...}]}), in order.
+inline std::vector<std::string> resultNames(const nlohmann::json& answer) {
+  std::vector<std::string> out;
+  for (const nlohmann::json& r : answer["results"]) out.push_back(r["name"]);
+  return out;
+}
+
 }  // namespace fsdb::test

@@ -1,0 +1,186 @@
+// Structural search speed (issue 6): POST /query/csg's search (server/csg_search.h) over N stored
+// trees, pruned (signature and matrix bounds) against unpruned (every tree matched), in one run.
+// Goal: p50 < 200 ms at 10k trees with the stored graphs in memory (server/stored_graphs.h); the
+// first query of a process (graphs built from the documents) is reported apart as "cold".
+//
+// Usage: bench_csg_search [--sizes 10000] [--dir DIR] [--reps R] [--full-reps S]
+//                         [--benchmark_out=FILE.json] (other --benchmark_* flags are ignored)
+// A catalogue is built once per size into DIR/csg-N.sqlite (default build/bench-data): random trees
+// of 3 to 11 nodes (seeded) over inline parts from words (a dozen descriptions, some placed) and a
+// pool of 200 stored parts, through prepareDocument and Store::createBatch as an import would.
+// Every query runs R times pruned and S times unpruned; both answers must be equal.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "db/store.h"
+#include "geometry/error.h"
+#include "query/vocabulary.h"
+#include "server/csg_search.h"
+#include "server/descriptor_rows.h"
+#include "server/documents.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using nlohmann::json;
+
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+const std::vector<std::string> kWords = {
+    "a very bent cylinder", "a straight cylinder", "a very sharp pyramid", "a sphere",        "a box",
+    "a slightly tapered cone", "a cube",           "a long rod",           "a flat disc",     "a twisted box",
+    "a slightly bent rod",  "a very round box"};
+
+int pick(std::mt19937& rng, int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); }
+
+json randomTree(std::mt19937& rng, int depth) {
+  if (depth == 0 || pick(rng, 4) == 0) {
+    if (pick(rng, 5) == 0) return {{"part", "part_" + std::to_string(1 + pick(rng, 200))}};
+    json leaf = {{"part", {{"text", kWords[size_t(pick(rng, int(kWords.size())))]}}}};
+    if (pick(rng, 4) == 0) leaf["transform"] = {{"translate", {pick(rng, 5), pick(rng, 5), 0}}};
+    return leaf;
+  }
+  static const char* ops[] = {"union", "union", "intersection", "difference"};
+  json children = json::array();
+  for (int n = 2 + pick(rng, 2); n > 0; --n) children.push_back(randomTree(rng, depth - 1));
+  return {{"op", ops[pick(rng, 4)]}, {"children", children}};
+}
+
+void build(const std::string& path, size_t n) {
+  const std::string tmp = path + ".tmp";
+  std::filesystem::remove(tmp);
+  auto store = fsdb::Store::open(tmp);
+  std::mt19937 rng(42);
+  const auto start = Clock::now();
+  std::vector<fsdb::NewObject> parts;
+  for (int i = 1; i <= 200; ++i)
+    parts.push_back(fsdb::prepareDocument({{"kind", "part"}, {"name", "part_" + std::to_string(i)},
+                                           {"text", kWords[size_t(pick(rng, int(kWords.size())))]},
+                                           {"params", {{"a2", 0.5 + 0.005 * i}}}},
+                                          "part", *store, 10000, ""));
+  store->createBatch(parts, fsdb::BulkMode::kCreate);
+  for (size_t done = 0; done < n;) {
+    std::vector<fsdb::NewObject> items;
+    for (size_t i = 0; i < 2000 && done < n; ++i, ++done) {
+      json tree = randomTree(rng, 3);
+      if (!tree.contains("op")) tree = {{"op", "union"}, {"children", {tree, randomTree(rng, 1)}}};
+      items.push_back(fsdb::prepareDocument({{"kind", "shape"}, {"name", "tree-" + std::to_string(done + 1)}, {"tree", tree}},
+                                            "shape", *store, 10000, ""));
+    }
+    store->createBatch(items, fsdb::BulkMode::kCreate);
+  }
+  fsdb::refreshPendingDescriptors(*store, 10000);
+  store->checkpoint();
+  store.reset();
+  std::filesystem::rename(tmp, path);
+  std::fprintf(stderr, "built %s: %zu trees in %.1f s\n", path.c_str(), n, msSince(start) / 1000);
+}
+
+double percentile(std::vector<double> v, double q) {
+  std::sort(v.begin(), v.end());
+  return v[static_cast<size_t>(q * (v.size() - 1) + 0.5)];
+}
+
+bool sameHits(const fsdb::CsgSearchResult& a, const fsdb::CsgSearchResult& b) {
+  if (a.hits.size() != b.hits.size()) return false;
+  for (size_t i = 0; i < a.hits.size(); ++i)
+    if (a.hits[i].id != b.hits[i].id || a.hits[i].score.score != b.hits[i].score.score) return false;
+  return true;
+}
+
+const std::vector<std::string> kQueries = {
+    "the union of a very bent cylinder and a very sharp pyramid",
+    "a cube minus a cylinder",
+    "the intersection of a sphere and a box",
+    "the union of a cube and the difference of a box and a slightly bent rod",
+    "\"very bent cylinder\" + part_7 - sphere",
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<size_t> sizes;
+  std::string dir = "build/bench-data", out;
+  int reps = 11, fullReps = 3;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto next = [&]() -> std::string { return i + 1 < argc ? argv[++i] : ""; };
+    if (a == "--sizes") {
+      std::stringstream ss(next());
+      for (std::string s; std::getline(ss, s, ',');) sizes.push_back(std::stoul(s));
+    } else if (a == "--dir") dir = next();
+    else if (a == "--reps") reps = std::stoi(next());
+    else if (a == "--full-reps") fullReps = std::stoi(next());
+    else if (a.rfind("--benchmark_out=", 0) == 0) out = a.substr(16);
+    else if (a.rfind("--benchmark_", 0) == 0) continue;
+    else {
+      std::cerr << "unknown argument " << a << "\n";
+      return 2;
+    }
+  }
+  if (sizes.empty()) sizes = {10000};
+  std::filesystem::create_directories(dir);
+  json report = json::array();
+  try {
+    for (size_t n : sizes) {
+      const std::string path = dir + "/csg-" + std::to_string(n) + ".sqlite";
+      if (!std::filesystem::exists(path)) build(path, n);
+      auto store = fsdb::Store::open(path);
+      fsdb::StoredGraphCache cache;
+      const fsdb::ReferenceResolver resolver = fsdb::storeResolver(*store);
+      std::printf("== %zu trees (%s)\n", n, path.c_str());
+      std::printf("%-75s %5s %7s %7s %8s %8s %9s %7s %6s\n", "query", "hits", "bounded", "matched", "p50 ms",
+                  "p95 ms", "full ms", "ratio", "equal");
+      for (const std::string& text : kQueries) {
+        const fsdb::CsgQuery q = fsdb::parseCsgQuery(text, fsdb::Vocabulary::builtin(), resolver, 10000);
+        fsdb::CsgSearchOptions options;
+        options.limit = 10;
+        if (cache.size() == 0) {
+          const auto t = Clock::now();
+          fsdb::searchCsg(*store, q, options, cache);
+          std::printf("cold (graphs of %zu trees built from their documents): %.0f ms\n", cache.size(), msSince(t));
+          report.push_back({{"trees", n}, {"cold_ms", msSince(t)}});
+        }
+        std::vector<double> pruned, full;
+        fsdb::CsgSearchResult a, b;
+        for (int r = 0; r < reps; ++r) {
+          const auto t = Clock::now();
+          a = fsdb::searchCsg(*store, q, options, cache);
+          pruned.push_back(msSince(t));
+        }
+        options.prune = false;
+        for (int r = 0; r < fullReps; ++r) {
+          const auto t = Clock::now();
+          b = fsdb::searchCsg(*store, q, options, cache);
+          full.push_back(msSince(t));
+        }
+        const double p50 = percentile(pruned, 0.5), p95 = percentile(pruned, 0.95);
+        const double f = full.empty() ? 0.0 : percentile(full, 0.5);
+        const bool equal = full.empty() || sameHits(a, b);
+        std::printf("%-75s %5zu %7zu %7zu %8.1f %8.1f %9.1f %6.1fx %6s\n", ("'" + text + "'").c_str(), a.hits.size(),
+                    a.bounded, a.matched, p50, p95, f, f / p50, equal ? "yes" : "NO");
+        std::fflush(stdout);
+        report.push_back({{"trees", n}, {"query", text}, {"bounded", a.bounded}, {"matched", a.matched},
+                          {"p50_ms", p50}, {"p95_ms", p95}, {"full_p50_ms", f}, {"ratio", f / p50}, {"equal", equal},
+                          {"reps", reps}, {"full_reps", fullReps}});
+        if (!equal) {
+          std::cerr << "pruned and unpruned answers differ for '" << text << "'\n";
+          return 1;
+        }
+      }
+    }
+  } catch (const fsdb::Error& e) {
+    std::cerr << "bench_csg_search: " << e.code() << ": " << e.what() << " (" << e.path() << ")\n";
+    return 1;
+  }
+  if (!out.empty()) std::ofstream(out) << report.dump(2) << "\n";
+  return 0;
+}

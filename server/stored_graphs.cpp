@@ -1,0 +1,121 @@
+// See server/stored_graphs.h.
+#include "server/stored_graphs.h"
+
+#include <cstring>
+
+#include "server/documents.h"
+
+namespace fsdb {
+namespace {
+
+bool current(const StoredGraph& g, const ObjectVersion& shape, const StoreVersions& versions) {
+  if (g.version != shape.latestVersion) return false;
+  for (const auto& [id, version] : g.reached) {
+    const auto it = versions.latest.find(id);
+    if (it == versions.latest.end() || it->second != version) return false;
+  }
+  return true;
+}
+
+// Every fuzzy value of a part, in one order.
+std::vector<const FuzzyNumber*> values(const FuzzyPart& p) {
+  return {&p.eps1, &p.eps2, &p.a1, &p.a2, &p.a3, &p.kx, &p.ky, &p.kv, &p.t, &p.tx, &p.ty, &p.tz, &p.deg, &p.scale};
+}
+
+}  // namespace
+
+uint64_t partKey(const FuzzyPart& part) {
+  uint64_t h = 1469598103934665603ull;  // FNV-1a over the bytes of every breakpoint and the axis
+  const auto mix = [&h](double x) {
+    uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    for (int i = 0; i < 8; ++i) h = (h ^ ((bits >> (8 * i)) & 0xff)) * 1099511628211ull;
+  };
+  for (const FuzzyNumber* v : values(part)) {
+    for (const Breakpoint& b : v->breakpoints()) {
+      mix(b.x);
+      mix(b.mu);
+    }
+    mix(-1.0);  // separates the values
+  }
+  for (double a : {part.axis.x, part.axis.y, part.axis.z}) mix(a);
+  return h;
+}
+
+bool samePart(const FuzzyPart& a, const FuzzyPart& b) {
+  const std::vector<const FuzzyNumber*> va = values(a), vb = values(b);
+  for (size_t i = 0; i < va.size(); ++i)
+    if (!(*va[i] == *vb[i])) return false;
+  return a.axis.x == b.axis.x && a.axis.y == b.axis.y && a.axis.z == b.axis.z;
+}
+
+StoreVersions StoreVersions::read(const Store& store) {
+  StoreVersions out;
+  out.shapes = store.objectVersions("shape");
+  for (const ObjectVersion& o : store.objectVersions("part")) out.latest[o.id] = o.latestVersion;
+  for (const ObjectVersion& o : out.shapes) out.latest[o.id] = o.latestVersion;
+  return out;
+}
+
+std::shared_ptr<StoredGraph> buildStoredGraph(const Store& store, int64_t shape, size_t maxNodes,
+                                                    const StoreVersions& versions) {
+  const StoredObject object = store.get("shape", shape);
+  auto out = std::make_shared<StoredGraph>();
+  out->id = object.id;
+  out->version = object.version;
+  out->name = object.name;
+  // The versions of what the resolver returns, as `versions` knows them (-1: newer than `versions`,
+  // so the entry is rebuilt next time: being conservative never serves a stale graph).
+  const ReferenceResolver store_ = storeResolver(store);
+  const ReferenceResolver recording = [&](const std::string& kind, const nlohmann::json& key) {
+    std::optional<ResolvedReference> r = store_(kind, key);
+    if (r) {
+      const auto it = versions.latest.find(r->id);
+      out->reached.emplace_back(r->id, it == versions.latest.end() ? -1 : it->second);
+    }
+    return r;
+  };
+  out->shape = shapeGraph(nlohmann::json::parse(object.documentJson), "", maxNodes, recording);
+  for (const CsgGraphLeaf& leaf : out->shape.leaves) out->leafDescriptors.push_back(describePart(leaf.part));
+  out->signature = csgSignature(out->shape.graph);
+  return out;
+}
+
+std::shared_ptr<const StoredGraph> StoredGraphCache::graph(const Store& store, const ObjectVersion& shape,
+                                                           const StoreVersions& versions, size_t maxNodes) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = entries_.find(shape.id);
+    if (it != entries_.end() && current(*it->second, shape, versions)) return it->second;
+  }
+  std::shared_ptr<StoredGraph> built = buildStoredGraph(store, shape.id, maxNodes, versions);
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++builds_;
+  if (entries_.size() >= maxEntries_) {
+    entries_.clear();
+    parts_.clear();
+  }
+  for (const CsgGraphLeaf& leaf : built->shape.leaves) built->leafParts.push_back(intern(leaf.part));
+  entries_[shape.id] = built;
+  return built;
+}
+
+int64_t StoredGraphCache::intern(const FuzzyPart& part) {
+  std::vector<std::pair<FuzzyPart, int64_t>>& bucket = parts_[partKey(part)];
+  for (const auto& [known, id] : bucket)
+    if (samePart(known, part)) return id;
+  bucket.emplace_back(part, nextPart_);
+  return nextPart_++;
+}
+
+size_t StoredGraphCache::size() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return entries_.size();
+}
+
+size_t StoredGraphCache::builds() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return builds_;
+}
+
+}  // namespace fsdb
