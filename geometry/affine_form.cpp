@@ -10,34 +10,10 @@ namespace fsdb {
 
 namespace {
 
-// Rounding slack per operation, relative to the magnitudes of the result's terms: each term is one
-// or two roundings away from its exact value, and so is their sum in radius().
-constexpr double kSlack = 4.0 * std::numeric_limits<double>::epsilon();
-// Forms beyond this magnitude are declared invalid: products of two stay finite, so no ∞·0 = NaN
-// can hide in a deviation (as kTame in superquadric_bounds.cpp).
-constexpr double kTame = 1e150;
-
-AffineForm invalid() {
-  AffineForm r;
-  r.valid = false;
-  return r;
-}
-
-double deviationSum(const AffineForm& x) {
-  double s = 0.0;
-  for (int i = 0; i < kAffineSymbols; ++i) s += std::fabs(x.dev[i]);
-  return s;
-}
-
-// Adds the rounding slack to a result whose deviations sum to d in magnitude, and checks it is
-// finite and tame.
-AffineForm finish(AffineForm r, double d) {
-  if (!r.valid) return r;
-  r.err += kSlack * (std::fabs(r.centre) + d + r.err);
-  if (!(std::fabs(r.centre) <= kTame && d <= kTame && r.err <= kTame)) return invalid();
-  return r;
-}
-AffineForm finish(const AffineForm& r) { return finish(r, deviationSum(r)); }
+using affine_detail::deviationSum;
+using affine_detail::finish;
+using affine_detail::invalid;
+using affine_detail::kSlack;
 
 // A linear approximation of f over the range of x: f(x) ∈ slope·x + shift ± error.
 struct Linear {
@@ -121,89 +97,6 @@ AffineForm affineFromInterval(const Interval& a) {
   r.err = 0.5 * a.hi - 0.5 * a.lo;
   if (!(std::isfinite(a.lo) && std::isfinite(a.hi))) return invalid();
   return finish(r);
-}
-
-double radius(const AffineForm& x) { return deviationSum(x) + x.err; }
-
-Interval range(const AffineForm& x) {
-  const double r = radius(x);
-  return {x.centre - r, x.centre + r};
-}
-
-AffineForm add(const AffineForm& x, const AffineForm& y) {
-  AffineForm r;
-  r.valid = x.valid && y.valid;
-  r.centre = x.centre + y.centre;
-  double d = 0.0;
-  for (int i = 0; i < kAffineSymbols; ++i) {
-    r.dev[i] = x.dev[i] + y.dev[i];
-    d += std::fabs(r.dev[i]);
-  }
-  r.err = x.err + y.err;
-  return finish(r, d);
-}
-
-AffineForm sub(const AffineForm& x, const AffineForm& y) {
-  AffineForm r;
-  r.valid = x.valid && y.valid;
-  r.centre = x.centre - y.centre;
-  double d = 0.0;
-  for (int i = 0; i < kAffineSymbols; ++i) {
-    r.dev[i] = x.dev[i] - y.dev[i];
-    d += std::fabs(r.dev[i]);
-  }
-  r.err = x.err + y.err;
-  return finish(r, d);
-}
-
-AffineForm add(double c, const AffineForm& x) {
-  AffineForm r = x;
-  r.centre += c;
-  return finish(r);
-}
-
-AffineForm mul(double c, const AffineForm& x) {
-  AffineForm r;
-  r.valid = x.valid && std::isfinite(c);
-  r.centre = c * x.centre;
-  double d = 0.0;
-  for (int i = 0; i < kAffineSymbols; ++i) {
-    r.dev[i] = c * x.dev[i];
-    d += std::fabs(r.dev[i]);
-  }
-  r.err = std::fabs(c) * x.err;
-  return finish(r, d);
-}
-
-// (x0 + δx)(y0 + δy) = x0·y0 + x0·δy + y0·δx + δx·δy, |δx·δy| <= rx·ry.
-AffineForm mul(const AffineForm& x, const AffineForm& y) {
-  AffineForm r;
-  r.valid = x.valid && y.valid;
-  r.centre = x.centre * y.centre;
-  double d = 0.0, dx = 0.0, dy = 0.0;
-  for (int i = 0; i < kAffineSymbols; ++i) {
-    r.dev[i] = x.centre * y.dev[i] + y.centre * x.dev[i];
-    d += std::fabs(r.dev[i]);
-    dx += std::fabs(x.dev[i]);
-    dy += std::fabs(y.dev[i]);
-  }
-  r.err = std::fabs(x.centre) * y.err + std::fabs(y.centre) * x.err + (dx + x.err) * (dy + y.err);
-  return finish(r, d);
-}
-
-// (x0 + δ)² = x0² + 2·x0·δ + δ², δ² in [0, r²].
-AffineForm sqr(const AffineForm& x) {
-  const double r = radius(x);
-  AffineForm y;
-  y.valid = x.valid;
-  y.centre = x.centre * x.centre + 0.5 * r * r;
-  double d = 0.0;
-  for (int i = 0; i < kAffineSymbols; ++i) {
-    y.dev[i] = 2.0 * x.centre * x.dev[i];
-    d += std::fabs(y.dev[i]);
-  }
-  y.err = 2.0 * std::fabs(x.centre) * x.err + 0.5 * r * r;
-  return finish(y, d);
 }
 
 AffineForm recip(const AffineForm& x) {

@@ -22,13 +22,17 @@
 //  * A form is `valid` unless an operation left its domain (log or sqrt of a range that reaches
 //    0, a reciprocal of a range that holds 0, a non-finite value); invalid propagates, and callers
 //    fall back to their interval enclosure. Invalid forms have no meaningful range.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include "geometry/interval.h"
 
 namespace fsdb {
 
-// Noise symbols: the fourteen part values (slot order, superquadric_slopes.h) and the three
-// coordinates of a point box.
-inline constexpr int kAffineSymbols = 17;
+// Noise symbols: the fourteen part values (slot order, superquadric_slopes.h), the three
+// coordinates of a point box, and one spare, so that the loops over them vectorise in pairs.
+inline constexpr int kAffineSymbols = 18;
 
 struct AffineForm {
   double centre = 0.0;
@@ -42,15 +46,12 @@ AffineForm affineConstant(double c);
 // kAffineSymbols): centre mid, deviation the half width.
 AffineForm affineVariable(const Interval& range, int symbol);
 
-double radius(const AffineForm& x);  // Σ|x_i| + e: the largest distance from the centre
-Interval range(const AffineForm& x);  // [x0 − radius, x0 + radius]; meaningful only when valid
 
-AffineForm add(const AffineForm& x, const AffineForm& y);
-AffineForm sub(const AffineForm& x, const AffineForm& y);
-AffineForm add(double c, const AffineForm& x);
-AffineForm mul(double c, const AffineForm& x);
-AffineForm mul(const AffineForm& x, const AffineForm& y);  // bilinear term bounded by rx·ry
-AffineForm sqr(const AffineForm& x);                       // x², (x − x0)² in [0, r²]
+
+// radius(x) = Σ|x_i| + e (the largest distance from the centre); range(x) = [x0 ∓ radius]
+// (meaningful only when valid); add, sub, add(c, x), mul(c, x), mul(x, y) (the bilinear term
+// bounded by rx·ry less what its diagonal ε_i² terms give back), sqr(x) ((x − x0)² in [0, r²]):
+// inline, below (the enclosures call them in their innermost loops).
 
 AffineForm recip(const AffineForm& x);  // 1/x; invalid if the range holds 0
 AffineForm sqrt(const AffineForm& x);   // invalid unless the range is > 0
@@ -63,5 +64,128 @@ AffineForm atan(const AffineForm& x);
 // A form with no correlation: the interval as centre and accumulated error (for quantities only
 // an interval enclosure can bound; invalid for non-finite ends).
 AffineForm affineFromInterval(const Interval& a);
+
+// Inline: the enclosures call these in their innermost loops.
+namespace affine_detail {
+// Rounding slack per operation, relative to the magnitudes of the result's terms: each term is one
+// or two roundings away from its exact value, and so is their sum in radius().
+inline constexpr double kSlack = 4.0 * std::numeric_limits<double>::epsilon();
+// Forms beyond this magnitude are declared invalid: products of two stay finite, so no ∞·0 = NaN
+// can hide in a deviation (as kTame in superquadric_bounds.cpp).
+inline constexpr double kTame = 1e150;
+
+inline AffineForm invalid() {
+  AffineForm r;
+  r.valid = false;
+  return r;
+}
+
+inline double deviationSum(const AffineForm& x) {
+  double s = 0.0;
+  for (int i = 0; i < kAffineSymbols; ++i) s += std::fabs(x.dev[i]);
+  return s;
+}
+
+// Adds the rounding slack to a result whose deviations sum to d in magnitude, and checks it is
+// finite and tame.
+inline AffineForm finish(AffineForm r, double d) {
+  if (!r.valid) return r;
+  r.err += kSlack * (std::fabs(r.centre) + d + r.err);
+  if (!(std::fabs(r.centre) <= kTame && d <= kTame && r.err <= kTame)) return invalid();
+  return r;
+}
+inline AffineForm finish(const AffineForm& r) { return finish(r, deviationSum(r)); }
+
+}  // namespace affine_detail
+
+inline double radius(const AffineForm& x) { return affine_detail::deviationSum(x) + x.err; }
+
+inline Interval range(const AffineForm& x) {
+  const double r = radius(x);
+  return {x.centre - r, x.centre + r};
+}
+
+inline AffineForm add(const AffineForm& x, const AffineForm& y) {
+  AffineForm r;
+  r.valid = x.valid && y.valid;
+  r.centre = x.centre + y.centre;
+  double d = 0.0;
+  for (int i = 0; i < kAffineSymbols; ++i) {
+    r.dev[i] = x.dev[i] + y.dev[i];
+    d += std::fabs(r.dev[i]);
+  }
+  r.err = x.err + y.err;
+  return affine_detail::finish(r, d);
+}
+
+inline AffineForm sub(const AffineForm& x, const AffineForm& y) {
+  AffineForm r;
+  r.valid = x.valid && y.valid;
+  r.centre = x.centre - y.centre;
+  double d = 0.0;
+  for (int i = 0; i < kAffineSymbols; ++i) {
+    r.dev[i] = x.dev[i] - y.dev[i];
+    d += std::fabs(r.dev[i]);
+  }
+  r.err = x.err + y.err;
+  return affine_detail::finish(r, d);
+}
+
+inline AffineForm add(double c, const AffineForm& x) {
+  AffineForm r = x;
+  r.centre += c;
+  return affine_detail::finish(r);
+}
+
+inline AffineForm mul(double c, const AffineForm& x) {
+  AffineForm r;
+  r.valid = x.valid && std::isfinite(c);
+  r.centre = c * x.centre;
+  double d = 0.0;
+  for (int i = 0; i < kAffineSymbols; ++i) {
+    r.dev[i] = c * x.dev[i];
+    d += std::fabs(r.dev[i]);
+  }
+  r.err = std::fabs(c) * x.err;
+  return affine_detail::finish(r, d);
+}
+
+// (x0 + δx)(y0 + δy) = x0·y0 + x0·δy + y0·δx + δx·δy, |δx·δy| <= rx·ry.
+inline AffineForm mul(const AffineForm& x, const AffineForm& y) {
+  AffineForm r;
+  r.valid = x.valid && y.valid;
+  double d = 0.0, dx = 0.0, dy = 0.0, pos = 0.0, neg = 0.0;
+  for (int i = 0; i < kAffineSymbols; ++i) {
+    r.dev[i] = x.centre * y.dev[i] + y.centre * x.dev[i];
+    d += std::fabs(r.dev[i]);
+    dx += std::fabs(x.dev[i]);
+    dy += std::fabs(y.dev[i]);
+    const double p = x.dev[i] * y.dev[i];
+    pos += std::max(p, 0.0);
+    neg += std::min(p, 0.0);
+  }
+  // δx·δy = Σ_i x_i·y_i·ε_i² + Σ_{i≠j} x_i·y_j·ε_i·ε_j (+ the error terms): the squares lie in
+  // [0, 1], so the diagonal lies in [neg, pos]; the rest is bounded by rx·ry − Σ|x_i·y_i|.
+  const double diagonal = pos - neg;  // Σ|x_i·y_i|
+  r.centre = x.centre * y.centre + 0.5 * (pos + neg);
+  r.err = std::fabs(x.centre) * y.err + std::fabs(y.centre) * x.err +
+          std::max((dx + x.err) * (dy + y.err) - diagonal, 0.0) + 0.5 * diagonal;
+  return affine_detail::finish(r, d);
+}
+
+// (x0 + δ)² = x0² + 2·x0·δ + δ², δ² in [0, r²].
+inline AffineForm sqr(const AffineForm& x) {
+  const double r = radius(x);
+  AffineForm y;
+  y.valid = x.valid;
+  y.centre = x.centre * x.centre + 0.5 * r * r;
+  double d = 0.0;
+  for (int i = 0; i < kAffineSymbols; ++i) {
+    y.dev[i] = 2.0 * x.centre * x.dev[i];
+    d += std::fabs(y.dev[i]);
+  }
+  y.err = 2.0 * std::fabs(x.centre) * x.err + 0.5 * r * r;
+  return affine_detail::finish(y, d);
+}
 
 }  // namespace fsdb

@@ -44,7 +44,7 @@ AffineVec3 unplace(const AffineForm* v, const PlacementBox& pl, const AffineVec3
     const AffineForm c = cos(phi), s = sin(phi), t = add(1.0, mul(-1.0, c));
     const AffineForm kd = add(add(mul(k.x, d.x), mul(k.y, d.y)), mul(k.z, d.z));
     const AffineForm kxd[3] = {sub(mul(k.y, d.z), mul(k.z, d.y)), sub(mul(k.z, d.x), mul(k.x, d.z)),
-                               sub(mul(k.x, d.y), mul(k.y, d.x))};
+                      sub(mul(k.x, d.y), mul(k.y, d.x))};
     const AffineForm tkd = mul(t, kd);
     r = {add(sub(mul(c, d.x), mul(s, kxd[0])), mul(k.x, tkd)),
          add(sub(mul(c, d.y), mul(s, kxd[1])), mul(k.y, tkd)),
@@ -93,53 +93,61 @@ bool untaper(const AffineForm& k, const Interval& kRange, const AffineForm& zc, 
 // x^y = exp(y·log x) for x > 0; by intervals (no correlation kept) where the range of x comes near
 // 0 (the logarithm's forms would swamp the term, which is small there anyway) or a form is
 // invalid. xRange: a sound interval of x (the form's range, or tighter); yRange likewise.
-AffineForm power(const AffineForm& x, const Interval& xRange, const AffineForm& y,
-                 const Interval& yRange) {
+AffineForm power(const AffineForm& x, const Interval& xRange, const AffineForm& y, const Interval& yRange) {
   const Interval r = range(x);
   if (x.valid && y.valid && r.lo > 0.1 * r.hi) return exp(mul(log(x), y));
   const Interval base{std::max(xRange.lo, 0.0), std::max(xRange.hi, 0.0)};
   return affineFromInterval(pow(base, yRange));
 }
 
-// |X|^(2/e) = (X²)^(1/e) for a canonical ratio X and exponent e.
+// |X|^(2/e) for a canonical ratio X and exponent e (inverseE = 1/e). Where X keeps one sign, |X|
+// is ±X, exactly affine (squaring first would lose it: the affine lower end of X² is
+// x0² − 2|x0|·r, often below 0 where X² stays well above it).
 AffineForm ratioPower(const AffineForm& X, const AffineForm& inverseE, const Interval& e) {
   if (!X.valid) return X;
-  const Interval x = abs(range(X));
-  return power(sqr(X), sqr(x), inverseE, {1.0 / e.hi, 1.0 / e.lo});
+  const Interval x = range(X);
+  const Interval exponent{2.0 / e.hi, 2.0 / e.lo};
+  const AffineForm twoOverE = mul(2.0, inverseE);
+  if (x.lo > 0.0) return power(X, x, twoOverE, exponent);
+  if (x.hi < 0.0) return power(mul(-1.0, X), neg(x), twoOverE, exponent);
+  return affineFromInterval(pow(abs(x), exponent));
+}
+
+// F over the boxes, from the fourteen values v (slot order) and the point p; false where a form
+// leaves its domain.
+bool insideOutsideChain(const PartBox& part, const AffineForm* v, AffineVec3 p, AffineForm* out) {
+  const SuperquadricBox& q = part.params;
+  p = unplace(v, part.placement, p);
+  if (!valid(p)) return false;
+  if (!unbend(v[7], q.kv, &p)) return false;
+  // Half-lengths (superquadric.h): A = a1, B = a1·a2, C = a1·a3.
+  const AffineForm inverseA = recip(v[2]), inverseB = recip(mul(v[2], v[3])),
+          inverseC = recip(mul(v[2], v[4]));
+  const AffineForm zc = mul(p.z, inverseC);
+  if (!isPoint(q.t, 0.0)) untwist(v[8], zc, &p);
+  if (!valid(p) || !untaper(v[5], q.kx, zc, &p.x) || !untaper(v[6], q.ky, zc, &p.y))
+    return false;
+  // F = (X^(2/eps2) + Y^(2/eps2))^(eps2/eps1) + Z^(2/eps1)   (seed 004 eq. 1).
+  const AffineForm inverseE1 = recip(v[0]), inverseE2 = recip(v[1]);
+  const AffineForm sum = add(ratioPower(mul(p.x, inverseA), inverseE2, q.eps2),
+                    ratioPower(mul(p.y, inverseB), inverseE2, q.eps2));
+  // The sum is >= 0 whatever its form's range says; its exponent is eps2/eps1.
+  const Interval sumRange = range(sum);
+  const AffineForm radial = power(sum, {std::max(sumRange.lo, 0.0), sumRange.hi}, mul(v[1], inverseE1),
+                         {q.eps2.lo / q.eps1.hi, q.eps2.hi / q.eps1.lo});
+  *out = add(radial, ratioPower(zc, inverseE1, q.eps1));
+  return out->valid;
 }
 
 }  // namespace
 
 bool insideOutsideAffineForm(const PartBox& part, const Interval& x, const Interval& y,
                              const Interval& z, AffineForm* out) {
-  const bool trivial = false;
   AffineForm v[kPartSlots];
   for (int i = 0; i < kPartSlots; ++i) v[i] = affineVariable(partSlot(part, i), i);
-  const SuperquadricBox& q = part.params;
-  AffineVec3 p{affineVariable(x, kPointSymbol), affineVariable(y, kPointSymbol + 1),
-               affineVariable(z, kPointSymbol + 2)};
-  p = unplace(v, part.placement, p);
-  if (!valid(p)) return trivial;
-  if (!unbend(v[7], q.kv, &p)) return trivial;
-  // Half-lengths (superquadric.h): A = a1, B = a1·a2, C = a1·a3.
-  const AffineForm inverseA = recip(v[2]), inverseB = recip(mul(v[2], v[3])),
-                   inverseC = recip(mul(v[2], v[4]));
-  const AffineForm zc = mul(p.z, inverseC);
-  if (!isPoint(q.t, 0.0)) untwist(v[8], zc, &p);
-  if (!valid(p) || !untaper(v[5], q.kx, zc, &p.x) || !untaper(v[6], q.ky, zc, &p.y))
-    return trivial;
-  // F = (X^(2/eps2) + Y^(2/eps2))^(eps2/eps1) + Z^(2/eps1)   (seed 004 eq. 1).
-  const AffineForm inverseE1 = recip(v[0]), inverseE2 = recip(v[1]);
-  const AffineForm sum = add(ratioPower(mul(p.x, inverseA), inverseE2, q.eps2),
-                             ratioPower(mul(p.y, inverseB), inverseE2, q.eps2));
-  // The sum is >= 0 whatever its form's range says; its exponent is eps2/eps1.
-  const Interval sumRange = range(sum);
-  const AffineForm radial = power(sum, {std::max(sumRange.lo, 0.0), sumRange.hi}, mul(v[1], inverseE1),
-                                  {q.eps2.lo / q.eps1.hi, q.eps2.hi / q.eps1.lo});
-  const AffineForm f = add(radial, ratioPower(zc, inverseE1, q.eps1));
-  if (!f.valid) return trivial;
-  *out = f;
-  return true;
+  const AffineVec3 p{affineVariable(x, kPointSymbol), affineVariable(y, kPointSymbol + 1),
+                             affineVariable(z, kPointSymbol + 2)};
+  return insideOutsideChain(part, v, p, out);
 }
 
 Interval insideOutsideAffineBounds(const PartBox& part, const Interval& x, const Interval& y,
@@ -152,7 +160,7 @@ Interval insideOutsideAffineBounds(const PartBox& part, const Interval& x, const
 
 // With σ = +1 (inside) or −1 (F > 1 is −F < −1) and b_j = σ·f_j, a θ qualifies only if
 // σ·F0 + Σ_j b_j·ε_j − e <= σ for its ε, so b_i·ε_i <= σ(1 − F0) + e − Σ_{j≠i} b_j·ε_j
-// <= T − |b_i| with T = σ(1 − F0) + e + Σ_j |f_j| (the other ε at their most favourable ends).
+// <= AffineForm − |b_i| with AffineForm = σ(1 − F0) + e + Σ_j |f_j| (the other ε at their most favourable ends).
 bool contractToQualifying(const AffineForm& f, bool inside, PartBox* box) {
   if (!f.valid) return true;
   const double sigma = inside ? 1.0 : -1.0;

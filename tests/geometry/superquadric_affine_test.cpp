@@ -3,12 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <random>
 #include <vector>
 
 #include "geometry/deformation.h"
 #include "geometry/interval_functions.h"
+#include "geometry/superquadric.h"
 #include "geometry/transform.h"
 #include "random_part_box.h"
 #include "random_superquadric.h"
@@ -24,6 +26,15 @@ using testing::uniform;
 Vec3 nearSurface(std::mt19937_64& rng, const PartBox& box) {
   const PlacedSuperquadric c = midpointPart(box);
   return placeToWorld(c.placement, deformPoint(c.params, testing::randomPointInBox(rng, c.params)));
+}
+
+// A point at G = g of the box's centre part (a canonical point scaled to G = g, G being
+// homogeneous of degree 1, then deformed and placed): g = 1 is its surface.
+Vec3 atLevel(std::mt19937_64& rng, const PartBox& box, double g) {
+  const PlacedSuperquadric c = midpointPart(box);
+  const Vec3 q = testing::randomPointInBox(rng, c.params);
+  return placeToWorld(c.placement,
+                      deformPoint(c.params, q * (g / homogeneousInsideOutside(c.params, q))));
 }
 
 // F at sampled (point, θ) of random boxes (every value an interval, corners and interior) lies in
@@ -97,6 +108,55 @@ TEST(SuperquadricAffine, ShrinksWithTheBoxAndBeatsIntervals) {
   EXPECT_GT(compared, 100);
   EXPECT_GT(tighter, compared * 3 / 4);
   EXPECT_GT(quadratic, scaled * 9 / 10);
+}
+
+// Affine contraction keeps every sampled θ that qualifies (F <= 1 for inside, F > 1 otherwise),
+// narrows some boxes, and reports an empty box only where no sampled θ qualifies.
+TEST(SuperquadricAffine, ContractionKeepsEveryQualifyingTheta) {
+  std::mt19937_64 rng(23);
+  int narrowed = 0, emptied = 0, kept = 0;
+  for (int k = 0; k < 600; ++k) {
+    const PartBox box = randomBox(rng, k % 3 == 0 ? 0.05 : k % 3 == 1 ? 0.02 : 0.005);
+    const Vec3 p = atLevel(rng, box, uniform(rng, 0.7, 1.3));
+    const Interval px{p.x, p.x}, py{p.y, p.y}, pz{p.z, p.z};
+    AffineForm f;
+    if (!insideOutsideAffineForm(box, px, py, pz, &f)) continue;
+    for (const bool inside : {true, false}) {
+      PartBox c = box;
+      const bool nonEmpty = contractToQualifying(f, inside, &c);
+      bool changed = false;
+      for (int i = 0; i < kPartSlots; ++i) {
+        const Interval& a = partSlot(box, i);
+        const Interval& b = partSlot(c, i);
+        EXPECT_GE(b.lo, a.lo);
+        EXPECT_LE(b.hi, a.hi);
+        changed = changed || a.lo != b.lo || a.hi != b.hi;
+      }
+      narrowed += nonEmpty && changed;
+      emptied += !nonEmpty;
+      for (int s = 0; s < 200; ++s) {
+        double v[kPartSlots];
+        for (int i = 0; i < kPartSlots; ++i) {
+          const Interval& w = partSlot(box, i);
+          // Corners, interior, and points at the contracted ends (the likeliest to be cut wrongly).
+          const Interval& n = partSlot(c, i);
+          const int pick = (s + i) % 4;
+          v[i] = pick == 0 ? w.lo : pick == 1 ? w.hi : pick == 2 && nonEmpty ? uniform(rng, n.lo, n.hi) : uniform(rng, w.lo, w.hi);
+        }
+        const double value = testing::partAt(box, v).insideOutside(p);
+        if (inside ? !(value <= 1.0) : !(value > 1.0)) continue;
+        ++kept;
+        ASSERT_TRUE(nonEmpty) << k;
+        for (int i = 0; i < kPartSlots; ++i) {
+          const Interval& n = partSlot(c, i);
+          EXPECT_GE(v[i], n.lo) << k << " slot " << i;
+          EXPECT_LE(v[i], n.hi) << k << " slot " << i;
+        }
+      }
+    }
+  }
+  EXPECT_GT(narrowed, 20);
+  EXPECT_GT(kept, 10000);
 }
 
 // Where the bend's 1 − kv·x may vanish (kv's interval holds 0), the trivial answer.
