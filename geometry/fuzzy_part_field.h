@@ -42,7 +42,7 @@
 // The searches' enclosure of a box is the interval one intersected with the affine one
 // (superquadric_affine.h: one noise symbol per value, a second-order remainder), and each box is
 // first narrowed by affine contraction to the θ that can still qualify (F <= 1 for u, F > 1 for
-// l; every such θ stays in it), re-evaluated while a round narrows a value by more than a tenth.
+// l; every such θ stays in it).
 //  * u: the incumbent, rounded down and checked: its witness lies in P(u) (so u = 1 only when p ∈
 //    upper(1) was shown). u lies in [u_true − τ, u_true] unless the budget ran out; then u is the
 //    largest bound still open (an upper bound of u_true: upper grows).
