@@ -49,7 +49,8 @@ AffineForm affineVariable(const Interval& range, int symbol);
 
 
 // radius(x) = Σ|x_i| + e (the largest distance from the centre); range(x) = [x0 ∓ radius]
-// (meaningful only when valid); add, sub, add(c, x), mul(c, x), mul(x, y) (the bilinear term
+// (meaningful only when valid); add, sub, add(c, x), mul(c, x), combine (a·x + b·y (+ c·z)),
+// mul(x, y) (the bilinear term
 // bounded by rx·ry less what its diagonal ε_i² terms give back), sqr(x) ((x − x0)² in [0, r²]):
 // inline, below (the enclosures call them in their innermost loops).
 
@@ -147,6 +148,38 @@ inline AffineForm mul(double c, const AffineForm& x) {
     d += std::fabs(r.dev[i]);
   }
   r.err = std::fabs(c) * x.err;
+  return affine_detail::finish(r, d);
+}
+
+// a·x + b·y and a·x + b·y + c·z in one pass (linear maps, e.g. rotations, take one operation
+// per coordinate instead of five).
+inline AffineForm combine(double a, const AffineForm& x, double b, const AffineForm& y) {
+  AffineForm r;
+  r.valid = x.valid && y.valid && std::isfinite(a) && std::isfinite(b);
+  r.centre = a * x.centre + b * y.centre;
+  double d = 0.0;
+  for (int i = 0; i < kAffineSymbols; ++i) {
+    r.dev[i] = a * x.dev[i] + b * y.dev[i];
+    d += std::fabs(r.dev[i]);
+  }
+  r.err = std::fabs(a) * x.err + std::fabs(b) * y.err +
+          affine_detail::kSlack * (std::fabs(a * x.centre) + std::fabs(b * y.centre));
+  return affine_detail::finish(r, d);
+}
+inline AffineForm combine(double a, const AffineForm& x, double b, const AffineForm& y, double c,
+                          const AffineForm& z) {
+  AffineForm r;
+  r.valid = x.valid && y.valid && z.valid && std::isfinite(a) && std::isfinite(b) &&
+            std::isfinite(c);
+  r.centre = a * x.centre + b * y.centre + c * z.centre;
+  double d = 0.0;
+  for (int i = 0; i < kAffineSymbols; ++i) {
+    r.dev[i] = a * x.dev[i] + b * y.dev[i] + c * z.dev[i];
+    d += std::fabs(r.dev[i]);
+  }
+  r.err = std::fabs(a) * x.err + std::fabs(b) * y.err + std::fabs(c) * z.err +
+          affine_detail::kSlack *
+              (std::fabs(a * x.centre) + std::fabs(b * y.centre) + std::fabs(c * z.centre));
   return affine_detail::finish(r, d);
 }
 

@@ -25,30 +25,29 @@ struct AffineVec3 {
 
 bool valid(const AffineVec3& v) { return v.x.valid && v.y.valid && v.z.valid; }
 
-// World -> local: R(deg)ᵀ·(w − translate)/scale (transform.h) with Rodrigues' formula for the
-// transpose, Rᵀv = c·v − s·(k × v) + (1 − c)·k·(k·v), k the unit axis (crisp).
+// World -> local: R(deg)ᵀ·(w − translate)/scale (transform.h). All rotations share the axis k, so
+// R(deg)ᵀ = R(α)ᵀ·R(m)ᵀ with m the mid angle (crisp, one linear map) and α = deg − m small, turned
+// by Rodrigues' formula for the transpose, R(α)ᵀv = c·v − s·(k × v) + (1 − c)·k·(k·v): cos α stays
+// near 1, so its products add little remainder (the turn by the whole angle would add cos's
+// first-order spread).
 AffineVec3 unplace(const AffineForm* v, const PlacementBox& pl, const AffineVec3& w) {
   const AffineVec3 d{sub(w.x, v[9]), sub(w.y, v[10]), sub(w.z, v[11])};
-  AffineVec3 r;
-  if (pl.deg.lo == pl.deg.hi) {
-    // One rotation: the crisp matrix, as the crisp evaluation builds it.
-    const Rotation rot = Rotation::fromAxisAngle(pl.axis, pl.deg.lo);
-    const Vec3 cx = rot.applyInverse({1, 0, 0}), cy = rot.applyInverse({0, 1, 0}),
-               cz = rot.applyInverse({0, 0, 1});
-    r = {add(add(mul(cx.x, d.x), mul(cy.x, d.y)), mul(cz.x, d.z)),
-         add(add(mul(cx.y, d.x), mul(cy.y, d.y)), mul(cz.y, d.z)),
-         add(add(mul(cx.z, d.x), mul(cy.z, d.y)), mul(cz.z, d.z))};
-  } else {
+  const double m = pl.deg.lo == pl.deg.hi ? pl.deg.lo : mid(pl.deg);
+  const Rotation rot = Rotation::fromAxisAngle(pl.axis, m);  // as the crisp evaluation builds it
+  const Vec3 cx = rot.applyInverse({1, 0, 0}), cy = rot.applyInverse({0, 1, 0}),
+             cz = rot.applyInverse({0, 0, 1});
+  AffineVec3 r{combine(cx.x, d.x, cy.x, d.y, cz.x, d.z), combine(cx.y, d.x, cy.y, d.y, cz.y, d.z),
+               combine(cx.z, d.x, cy.z, d.y, cz.z, d.z)};
+  if (pl.deg.lo != pl.deg.hi) {
     const Vec3 k = pl.axis / norm(pl.axis);
-    const AffineForm phi = mul(kPi / 180.0, v[12]);
-    const AffineForm c = cos(phi), s = sin(phi), t = add(1.0, mul(-1.0, c));
-    const AffineForm kd = add(add(mul(k.x, d.x), mul(k.y, d.y)), mul(k.z, d.z));
-    const AffineForm kxd[3] = {sub(mul(k.y, d.z), mul(k.z, d.y)), sub(mul(k.z, d.x), mul(k.x, d.z)),
-                      sub(mul(k.x, d.y), mul(k.y, d.x))};
-    const AffineForm tkd = mul(t, kd);
-    r = {add(sub(mul(c, d.x), mul(s, kxd[0])), mul(k.x, tkd)),
-         add(sub(mul(c, d.y), mul(s, kxd[1])), mul(k.y, tkd)),
-         add(sub(mul(c, d.z), mul(s, kxd[2])), mul(k.z, tkd))};
+    const AffineForm alpha = mul(kPi / 180.0, add(-m, v[12]));
+    const AffineForm c = cos(alpha), s = sin(alpha), t = add(1.0, mul(-1.0, c));
+    const AffineForm tkd = mul(t, combine(k.x, r.x, k.y, r.y, k.z, r.z));
+    const AffineForm kxr[3] = {combine(k.y, r.z, -k.z, r.y), combine(k.z, r.x, -k.x, r.z),
+                               combine(k.x, r.y, -k.y, r.x)};
+    r = {combine(1.0, mul(c, r.x), -1.0, mul(s, kxr[0]), k.x, tkd),
+         combine(1.0, mul(c, r.y), -1.0, mul(s, kxr[1]), k.y, tkd),
+         combine(1.0, mul(c, r.z), -1.0, mul(s, kxr[2]), k.z, tkd)};
   }
   const AffineForm inverseScale = recip(v[13]);
   return {mul(r.x, inverseScale), mul(r.y, inverseScale), mul(r.z, inverseScale)};

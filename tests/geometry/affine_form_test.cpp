@@ -50,6 +50,10 @@ TEST(AffineForm, AffineFunctionsAreExact) {
   const Interval zero = range(sub(x, x));
   EXPECT_NEAR(zero.lo, 0.0, 1e-14);
   EXPECT_NEAR(zero.hi, 0.0, 1e-14);
+  // A linear combination is exact too: 2x + 3y − (x − y) = x + 4y over the boxes: [1 − 8, 3 + 0].
+  const Interval lin = range(combine(2.0, x, 3.0, y, -1.0, sub(x, y)));
+  EXPECT_NEAR(lin.lo, -7.0, 1e-13);
+  EXPECT_NEAR(lin.hi, 3.0, 1e-13);
   // Constants are exact and have no deviations.
   const AffineForm c = affineConstant(2.5);
   EXPECT_EQ(range(c).lo, 2.5);
@@ -107,6 +111,7 @@ TEST(AffineForm, OperationsHoldSampledValues) {
     const AffineForm x = randomForm(rng, -3, 3, 0.5), y = randomForm(rng, -3, 3, 0.5);
     const AffineForm sum = add(x, y), diff = sub(x, y), prod = mul(x, y);
     const AffineForm shifted = add(1.5, x), scaled = mul(-2.0, y);
+    const AffineForm two = combine(0.5, x, -3.0, y), three = combine(0.5, x, -3.0, y, 2.0, prod);
     for (int s = 0; s < 20; ++s) {
       double eps[kAffineSymbols] = {};
       for (int i = 0; i < 3; ++i) eps[i] = uniform(rng, -1, 1);
@@ -117,6 +122,8 @@ TEST(AffineForm, OperationsHoldSampledValues) {
       expectHolds(prod, eps, a * b);
       expectHolds(shifted, eps, 1.5 + a);
       expectHolds(scaled, eps, -2.0 * b);
+      expectHolds(two, eps, 0.5 * a - 3.0 * b);
+      expectHolds(three, eps, 0.5 * a - 3.0 * b + 2.0 * a * b);
     }
   }
 }
