@@ -9,6 +9,7 @@
 #include "geometry/number_format.h"
 #include "geometry/deformation.h"
 #include "geometry/superquadric.h"
+#include "geometry/superquadric_affine.h"
 #include "geometry/superquadric_slopes.h"
 #include "geometry/transform.h"
 
@@ -30,6 +31,47 @@ const Interval& slot(const PartBox& b, int i) { return partSlot(b, i); }
 
 // F at the centre of the box: a crisp witness (every θ of a validated part's box is valid).
 double centreValue(const PartBox& b, const Vec3& p) { return midpointPart(b).insideOutside(p); }
+
+// The enclosure of F over the box at p that the point searches use: the interval enclosure
+// (superquadric_bounds.h) and, unless it already excludes the box for the search it serves
+// (inside: lo > 1, no θ with F <= 1; else hi <= 1, none with F > 1), intersected with the affine
+// one (superquadric_affine.h). Both are sound; the affine one keeps the correlations between the
+// fourteen values along the inverse deformations, so over the small boxes of a search it is
+// usually the tighter (its remainder is second order), at about the cost of the interval one.
+Interval pointEnclosure(const PartBox& b, const Vec3& p, bool inside) {
+  const Interval px{p.x, p.x}, py{p.y, p.y}, pz{p.z, p.z};
+  const Interval f = insideOutsideBounds(b, px, py, pz);
+  if (inside ? f.lo > 1.0 : f.hi <= 1.0) return f;
+  return intersect(f, insideOutsideAffineBounds(b, px, py, pz));
+}
+
+// The search's enclosure step (maxMin): the enclosure of pointEnclosure over the box at p, and the
+// box narrowed by affine contraction (contractToQualifying, superquadric_affine.h) to the θ that
+// can still qualify (inside: F <= 1, else F > 1): every such θ stays in it, so the search loses
+// nothing it looks for. False when no θ of the box qualifies. *f encloses F over the box before
+// the narrowing (so over the narrowed box too); *narrowed tells whether the box changed. (Taking
+// the enclosure of the narrowed box again changed no answer and no exhaustion count of the bench
+// part at N = 32, so one round.)
+bool narrowToQualifying(PartBox* box, const Vec3& p, bool inside, Interval* f, bool* narrowed) {
+  const Interval px{p.x, p.x}, py{p.y, p.y}, pz{p.z, p.z};
+  const auto excludes = [inside](const Interval& g) { return inside ? g.lo > 1.0 : g.hi <= 1.0; };
+  *narrowed = false;
+  *f = insideOutsideBounds(*box, px, py, pz);
+  if (excludes(*f)) return false;
+  AffineForm form;
+  if (!insideOutsideAffineForm(*box, px, py, pz, &form)) return true;
+  const Interval a = range(form);
+  *f = intersect(*f, {std::max(a.lo, 0.0), std::max(a.hi, 0.0)});
+  if (excludes(*f)) return false;
+  const PartBox before = *box;
+  if (!contractToQualifying(form, inside, box)) return false;
+  for (int i = 0; i < kSlots && !*narrowed; ++i) {
+    const Interval& w = partSlot(before, i);
+    const Interval& n = partSlot(*box, i);
+    *narrowed = w.lo != n.lo || w.hi != n.hi;
+  }
+  return true;
+}
 
 }  // namespace
 
@@ -94,7 +136,7 @@ bool FuzzyPartField::decide(const Vec3& p, const PartBox& box, Question q) const
     stack.pop_back();
     ++evaluations;
     if (possibly && missesDeformedHull(item.box, px, py, pz)) continue;  // F > 1 on the box
-    const Interval f = insideOutsideBounds(item.box, px, py, pz);
+    const Interval f = pointEnclosure(item.box, p, possibly);
     // The enclosure excludes the box from the question (no witness can lie in it).
     if (possibly ? f.lo > 1.0 : f.hi <= 1.0) continue;
     // A crisp witness: inside (possibly) or outside (not necessarily).
@@ -212,7 +254,7 @@ bool FuzzyPartField::collapsedExcludes(const PartBox& box, const Vec3& p, bool i
     ++*evaluations;
     // The enclosure, and the mean value form F(θ) ∈ F(m) + Σ D_j·(θ_j − m_j) about the centre m
     // (the slopes D over the larger box hold those over the collapsed one).
-    Interval f = insideOutsideBounds(c, px, py, pz);
+    Interval f = pointEnclosure(c, p, inside);
     const double fm = centreValue(c, p);
     Interval mv{fm, fm};
     for (int j = 0; j < n; ++j) {
@@ -327,7 +369,7 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
       PartBox c = box;
       slot(c, i) = {mid(v), mid(v)};
       ++evaluations;
-      const Interval g = insideOutsideBounds(c, px, py, pz);
+      const Interval g = pointEnclosure(c, p, inside);
       const double gain = inside ? end(g) - end(f) : end(f) - end(g);
       weight[i] = std::max(gain, 0.0) / (width(v) / supportWidth_[i]);
       largest = std::max(largest, weight[i]);
@@ -383,8 +425,17 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
     }
     ++evaluations;
     if (inside && missesDeformedHull(node.box, px, py, pz)) continue;  // F > 1 on the whole box
-    const Interval f = insideOutsideBounds(node.box, px, py, pz);
-    if (inside ? f.lo > 1.0 : f.hi <= 1.0) continue;  // no θ of the box qualifies
+    Interval f;
+    bool narrowed = false;
+    if (!narrowToQualifying(&node.box, p, inside, &f, &narrowed))
+      continue;  // no θ of the box qualifies
+    if (narrowed) {
+      node.ub = std::min(node.ub, upperBound(node.box));
+      if (base >= 0.0 && node.ub <= base + tau) {
+        s.pruned = std::max(s.pruned, node.ub);
+        continue;
+      }
+    }
     if (collapsedExcludes(node.box, p, inside, &evaluations)) continue;
     // The peak of the box: each value clamped towards its core maximises μ̂_i over the box, so a
     // witness there settles the box (m = its bound).
@@ -645,7 +696,7 @@ AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
   // u(p) = sup{m(θ) : F(p; θ) <= 1}: the incumbent, whose witness is in P(incumbent).
   {
     // Fast exits: the enclosure over all of P(0) decides most points away from the band.
-    const Interval f = insideOutsideBounds(support_, {p.x, p.x}, {p.y, p.y}, {p.z, p.z});
+    const Interval f = pointEnclosure(support_, p, false);
     if (f.hi <= 1.0) return {1.0f, 0.0f};  // in lower(0) ⊆ lower(α) ⊆ upper(α)
     if (f.lo > 1.0) return {0.0f, kNeverInside};
   }

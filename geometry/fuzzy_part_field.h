@@ -39,6 +39,10 @@
 // enclosure or mean value form (a θ qualifies in the box only if one does in the collapsed box);
 // before each collapse the box is also tried with the mean value form about Baumann's centre
 // (meanValueEnd, superquadric_slopes.h), from the same slopes and one crisp evaluation.
+// The searches' enclosure of a box is the interval one intersected with the affine one
+// (superquadric_affine.h: one noise symbol per value, a second-order remainder), and each box is
+// first narrowed by affine contraction to the θ that can still qualify (F <= 1 for u, F > 1 for
+// l; every such θ stays in it).
 //  * u: the incumbent, rounded down and checked: its witness lies in P(u) (so u = 1 only when p ∈
 //    upper(1) was shown). u lies in [u_true − τ, u_true] unless the budget ran out; then u is the
 //    largest bound still open (an upper bound of u_true: upper grows).

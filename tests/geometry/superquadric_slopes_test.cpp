@@ -9,56 +9,16 @@
 #include "geometry/deformation.h"
 #include "geometry/interval_functions.h"
 #include "geometry/transform.h"
+#include "random_part_box.h"
 #include "random_superquadric.h"
 
 namespace fsdb {
 namespace {
 
-double uniform(std::mt19937_64& rng, double lo, double hi) {
-  return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
-
-// The crisp part whose fourteen values are v (slot order), axis from the box.
-PlacedSuperquadric partAt(const PartBox& box, const double (&v)[kPartSlots]) {
-  return partFromSlots(box.placement.axis, v);
-}
-
-// F at a sampled parameter vector of the box: a random corner for odd s, else a uniform point.
-double sampledValue(std::mt19937_64& rng, const PartBox& box, int s, const Vec3& p) {
-  double v[kPartSlots];
-  for (int i = 0; i < kPartSlots; ++i) {
-    const Interval& w = partSlot(box, i);
-    v[i] = (s & 1) ? ((rng() & 1) ? w.lo : w.hi) : uniform(rng, w.lo, w.hi);
-  }
-  return partAt(box, v).insideOutside(p);
-}
-
-// A small box of every value around a random valid part (kv kept away from 0 and far from the
-// limit, so that the bend's slopes are defined), and a point near its surface.
-PartBox randomBox(std::mt19937_64& rng, double relative) {
-  for (;;) {
-    SuperquadricParams q = testing::randomParams(rng, true);
-    q.eps1 = std::min(std::max(q.eps1, 0.3), 3.5);
-    q.eps2 = std::min(std::max(q.eps2, 0.3), 3.5);
-    q.kx = std::max(-0.8, std::min(0.8, q.kx));
-    q.ky = std::max(-0.8, std::min(0.8, q.ky));
-    if (std::fabs(q.kv) < 0.02) q.kv = 0.02;
-    PlacedSuperquadric c;
-    c.params = q;
-    c.placement = {{uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)},
-                   {uniform(rng, -1, 1), uniform(rng, -1, 1), 1.0},
-                   uniform(rng, -90, 90),
-                   uniform(rng, 0.5, 2)};
-    PartBox box = crispPartBox(c);
-    for (int i = 0; i < kPartSlots; ++i) {
-      Interval& v = partSlot(box, i);
-      const double s = relative * std::max(std::fabs(v.lo), 0.1) * uniform(rng, 0.2, 1.0);
-      v = {v.lo - s, v.hi + s};
-    }
-    if (box.params.kv.lo * box.params.kv.hi <= 0.0) continue;
-    return box;
-  }
-}
+using testing::partAt;
+using testing::randomBox;
+using testing::sampledValue;
+using testing::uniform;
 
 TEST(SuperquadricSlopes, SlotsAddressTheFourteenValues) {
   PartBox b;

@@ -1,0 +1,171 @@
+#include "geometry/affine_form.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "geometry/interval_functions.h"
+
+namespace fsdb {
+
+namespace {
+
+using affine_detail::deviationSum;
+using affine_detail::finish;
+using affine_detail::invalid;
+using affine_detail::kSlack;
+
+// A linear approximation of f over the range of x: f(x) ∈ slope·x + shift ± error.
+struct Linear {
+  double slope, shift, error;
+};
+
+// slope·x + shift ± error as a form (one pass over the deviations).
+AffineForm apply(const AffineForm& x, const Linear& l) {
+  if (!(std::isfinite(l.slope) && std::isfinite(l.shift) && std::isfinite(l.error)))
+    return invalid();
+  AffineForm y;
+  y.centre = l.slope * x.centre + l.shift;
+  double d = 0.0;
+  for (int i = 0; i < kAffineSymbols; ++i) {
+    y.dev[i] = l.slope * x.dev[i];
+    d += std::fabs(y.dev[i]);
+  }
+  // slope·x0 + shift may cancel: its rounding is relative to slope·x0, not to the result.
+  y.err = std::fabs(l.slope) * x.err + l.error + kSlack * std::fabs(l.slope * x.centre);
+  return finish(y, d);
+}
+
+// f(x) = f(x0) + f'(x0)·δ + f''(ξ)/2·δ² with δ = x − x0 in [−r, r] and f''(ξ) in s (an enclosure
+// of f'' over the range of x): the remainder lies in [min(0, s.lo), max(0, s.hi)]·r²/2.
+Linear secondOrder(double x0, double r, double f0, double d0, const Interval& s) {
+  const double q = 0.5 * r * r;
+  const double lo = std::min(0.0, s.lo) * q, hi = std::max(0.0, s.hi) * q;
+  return {d0, f0 - d0 * x0 + 0.5 * (lo + hi), 0.5 * (hi - lo)};
+}
+
+// The min-range approximation (Stolfi & de Figueiredo §3.3) of an f that is monotone and convex or
+// concave on the range [a, b] of x: the slope s = f' at the end where |f'| is least, so that
+// f(x) − s·x is monotone and its range is its values at a and b (fa = f(a), fb = f(b)). Never
+// wider than f's range, whatever f'' does on it (the second-order rule is tighter on narrow ones).
+Linear minRange(const Interval& a, double s, double fa, double fb) {
+  const double ga = fa - s * a.lo, gb = fb - s * a.hi;
+  return {s, 0.5 * (ga + gb),
+          0.5 * std::fabs(ga - gb) +
+              kSlack * (std::fabs(fa) + std::fabs(fb) + std::fabs(s * a.lo) + std::fabs(s * a.hi))};
+}
+
+// The narrower of two approximations over a form whose deviations and error sum to r.
+const Linear& narrower(const Linear& a, const Linear& b, double r) {
+  const double wa = std::fabs(a.slope) * r + a.error, wb = std::fabs(b.slope) * r + b.error;
+  if (!(wb < wa)) return std::isfinite(wa) ? a : b;
+  return b;
+}
+
+// The validity checks every unary function starts with: the range [c − r, c + r].
+bool rangeOf(const AffineForm& x, Interval* a, double* r) {
+  if (!x.valid) return false;
+  *r = radius(x);
+  *a = {x.centre - *r, x.centre + *r};
+  return std::isfinite(a->lo) && std::isfinite(a->hi);
+}
+
+double mignitude(const Interval& a) { return a.lo > 0.0 ? a.lo : a.hi < 0.0 ? -a.hi : 0.0; }
+
+}  // namespace
+
+AffineForm affineConstant(double c) {
+  AffineForm r;
+  r.centre = c;
+  if (!std::isfinite(c)) r.valid = false;
+  return r;
+}
+
+AffineForm affineVariable(const Interval& a, int symbol) {
+  AffineForm r;
+  r.centre = mid(a);
+  r.dev[symbol] = 0.5 * a.hi - 0.5 * a.lo;
+  // mid and the half width round: keep both ends inside.
+  r.err = kSlack * (std::fabs(r.centre) + r.dev[symbol]);
+  if (!(std::isfinite(a.lo) && std::isfinite(a.hi))) r.valid = false;
+  return r;
+}
+
+AffineForm affineFromInterval(const Interval& a) {
+  AffineForm r;
+  r.centre = mid(a);
+  r.err = 0.5 * a.hi - 0.5 * a.lo;
+  if (!(std::isfinite(a.lo) && std::isfinite(a.hi))) return invalid();
+  return finish(r);
+}
+
+AffineForm recip(const AffineForm& x) {
+  Interval a;
+  double r;
+  if (!rangeOf(x, &a, &r) || (a.lo <= 0.0 && a.hi >= 0.0)) return invalid();
+  // (1/x)'' = 2/x³ decreases on each branch; |(1/x)'| = 1/x² is least at the end farthest from 0.
+  const double c = x.centre, far = a.lo > 0.0 ? a.hi : a.lo;
+  return apply(x, narrower(secondOrder(c, r, 1.0 / c, -1.0 / (c * c),
+                                       {2.0 / (a.hi * a.hi * a.hi), 2.0 / (a.lo * a.lo * a.lo)}),
+                           minRange(a, -1.0 / (far * far), 1.0 / a.lo, 1.0 / a.hi), r));
+}
+
+AffineForm sqrt(const AffineForm& x) {
+  Interval a;
+  double r;
+  if (!rangeOf(x, &a, &r) || !(a.lo > 0.0)) return invalid();
+  // (√x)'' = −x^(−3/2)/4 increases.
+  const double s = std::sqrt(x.centre), sa = std::sqrt(a.lo), sb = std::sqrt(a.hi);
+  return apply(x, narrower(secondOrder(x.centre, r, s, 0.5 / s, {-0.25 / (a.lo * sa), -0.25 / (a.hi * sb)}),
+                           minRange(a, 0.5 / sb, sa, sb), r));
+}
+
+AffineForm exp(const AffineForm& x) {
+  Interval a;
+  double r;
+  if (!rangeOf(x, &a, &r) || !(a.hi <= 700.0)) return invalid();
+  const double e = std::exp(x.centre), ea = std::exp(a.lo), eb = std::exp(a.hi);
+  return apply(x, narrower(secondOrder(x.centre, r, e, e, {ea, eb}), minRange(a, ea, ea, eb), r));
+}
+
+AffineForm log(const AffineForm& x) {
+  Interval a;
+  double r;
+  if (!rangeOf(x, &a, &r) || !(a.lo > 0.0)) return invalid();
+  // (log x)'' = −1/x² increases.
+  const double c = x.centre;
+  return apply(x, narrower(secondOrder(c, r, std::log(c), 1.0 / c, {-1.0 / (a.lo * a.lo), -1.0 / (a.hi * a.hi)}),
+                           minRange(a, 1.0 / a.hi, std::log(a.lo), std::log(a.hi)), r));
+}
+
+AffineForm sin(const AffineForm& x) {
+  Interval a;
+  double r;
+  if (!rangeOf(x, &a, &r)) return invalid();
+  const double c = x.centre;
+  return apply(x, secondOrder(c, r, std::sin(c), std::cos(c), neg(fsdb::sin(a))));
+}
+
+AffineForm cos(const AffineForm& x) {
+  Interval a;
+  double r;
+  if (!rangeOf(x, &a, &r)) return invalid();
+  const double c = x.centre;
+  return apply(x, secondOrder(c, r, std::cos(c), -std::sin(c), neg(fsdb::cos(a))));
+}
+
+AffineForm atan(const AffineForm& x) {
+  Interval a;
+  double r;
+  if (!rangeOf(x, &a, &r)) return invalid();
+  // atan'' = −2x/(1 + x²)²: |atan''| <= 2|x|/(1 + x²)² <= 2·|x|max/(1 + |x|min²)², and never more
+  // than its maximum 3√3/8 (at x = ±1/√3); its sign is that of −x.
+  const double m = mignitude(a), d = (1.0 + m * m) * (1.0 + m * m);
+  constexpr double kMax = 0.6495190528383291;  // 3√3/8, rounded up
+  const double down = std::min(2.0 * std::max(a.hi, 0.0) / d, kMax);
+  const double up = std::min(2.0 * std::max(-a.lo, 0.0) / d, kMax);
+  const double c = x.centre;
+  return apply(x, secondOrder(c, r, std::atan(c), 1.0 / (1.0 + c * c), {-down, up}));
+}
+
+}  // namespace fsdb
