@@ -201,7 +201,7 @@ std::string svgOfBezierCurve(const FuzzyBezierCurve& curve, double alpha, int sa
 }
 
 // Every candidate of a fair curve in grey, candidate `chosen` (0: the best) on top in black and
-// thicker, and the given points as dots.
+// thicker, and the given points as dots (only those when R_alpha left no candidate).
 std::string svgOfFairCurve(const FairCurveRequest& request, const FairCurveAnswer& answer, std::size_t chosen) {
   std::vector<SvgPolyline> lines;
   auto polyline = [&](std::size_t k, const char* colour, double width) {
@@ -211,9 +211,10 @@ std::string svgOfFairCurve(const FairCurveRequest& request, const FairCurveAnswe
   };
   for (std::size_t k = 0; k < answer.curves.size(); ++k)
     if (k != chosen) polyline(k, "#a0a0a0", 1.0);
-  polyline(chosen, "#000000", 2.0);
   std::vector<std::array<double, 2>> dots;
   for (const Vec2& p : request.points) dots.push_back({p.x, p.y});
+  if (answer.curves.empty()) return toSvg("fair curve: no candidate reaches alpha_threshold", lines, dots);
+  polyline(chosen, "#000000", 2.0);
   return toSvg("fair curve, candidate " + std::to_string(chosen) + " of " + std::to_string(answer.curves.size()) +
                    " (score " + formatNumber(answer.candidates[chosen].score) + ")",
                lines, dots);
@@ -281,12 +282,14 @@ void registerBezierRoutes(HttpServer& server, const Store& store) {
       reject("alpha", "Bezier");
       reject("samples", "Bezier");
       const FairCurveAnswer answer = answerFairCurve(*curve.fair);
-      // fairCandidates gives at least one candidate (geometry/fair_candidates.h).
+      // R_alpha may leave no candidate: the picture then shows the points only.
       const double k = numberParam(req, "candidate", 0.0);
-      if (k != std::floor(k) || k < 0 || k >= static_cast<double>(answer.curves.size()))
+      const std::size_t n = answer.curves.size();
+      if (k != std::floor(k) || k < 0 || (n > 0 && k >= static_cast<double>(n)) || (n == 0 && req.hasQueryParam("candidate")))
         throw Error(errc::kInvalidParameter,
-                    "candidate is an index 0 .. " + std::to_string(answer.curves.size() - 1) + " (0: the best), got " +
-                        req.queryParam("candidate"),
+                    n == 0 ? "the curve has no candidate (none reaches alpha_threshold)"
+                           : "candidate is an index 0 .. " + std::to_string(n - 1) + " (0: the best), got " +
+                                 req.queryParam("candidate"),
                     "candidate");
       const auto chosen = static_cast<std::size_t>(k);
       return download(svgOfFairCurve(*curve.fair, answer, chosen), "image/svg+xml",

@@ -107,6 +107,18 @@ TEST_F(StoredFairCurve, SvgDrawsEveryCandidateAndHighlightsOne) {
   expectError(server->get(base + "/svg?candidate=0.5"), 422, "invalid_parameter", "candidate");
   expectError(server->get(base + "/svg?alpha=0.5"), 422, "invalid_parameter", "alpha");
   expectError(server->get(base + "/svg?samples=9"), 422, "invalid_parameter", "samples");
+  // R_alpha = 1 leaves no candidate: the picture shows the points only, and no candidate is chosen.
+  json none = figure7();
+  none["alpha_threshold"] = 1;
+  auto empty = server->post("/curves", json{{"name", "fig7-none"}, {"fair", none}});
+  ASSERT_EQ(empty.status, 201) << empty.body;
+  const std::string emptyBase = "/curves/" + std::to_string(empty.json["id"].get<int64_t>());
+  EXPECT_EQ(server->get(emptyBase + "/candidates").json["candidates"], json::array());
+  auto dots = server->get(emptyBase + "/svg");
+  ASSERT_EQ(dots.status, 200) << dots.body;
+  EXPECT_EQ(count(dots.body, "<polyline "), 0u);
+  EXPECT_EQ(count(dots.body, "<circle class=\"point\""), 4u);
+  expectError(server->get(emptyBase + "/svg?candidate=0"), 422, "invalid_parameter", "candidate");
   auto bez = server->post("/curves", json{{"name", "line-svg"}, {"bezier", {{"control_points", {{0, 0}, {1, 1}}}}}});
   ASSERT_EQ(bez.status, 201) << bez.body;
   expectError(server->get("/curves/" + std::to_string(bez.json["id"].get<int64_t>()) + "/svg?candidate=0"), 422,
