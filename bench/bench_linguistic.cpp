@@ -78,7 +78,7 @@ void build(const std::string& path, size_t n) {
       char name[32];
       std::snprintf(name, sizeof name, "part-%07zu", done + 1);
       doc["name"] = name;
-      items.push_back(fsdb::prepareDocument(doc, "part", *store, 10000, ""));
+      items.push_back(fsdb::prepareDocument(doc, "part", *store, fsdb::DocumentLimits{}, ""));
     }
     store->createBatch(items, fsdb::BulkMode::kCreate);
     if (done % 100000 == 0 || done == n)

@@ -81,14 +81,6 @@ FuzzyBezierSurface parseBezierSurface(const json& obj, const std::string& path, 
   return surface;
 }
 
-FuzzyBezierCurve parseCurveDocument(const json& doc, const std::string& path, const BezierJsonLimits& limits) {
-  rejectUnknownKeys(doc, path, {"kind", "name", "bezier", "meta"}, " in a curve document");
-  const std::string bp = joinPath(path, "bezier");
-  const json& bezier = requireObject(requireField(doc, "bezier", path), bp);
-  rejectUnknownKeys(bezier, bp, {"control_points", "weights"});
-  return parseBezierCurve(bezier, bp, limits);
-}
-
 FuzzyBezierSurface parseSurfaceDocument(const json& doc, const std::string& path, const BezierJsonLimits& limits) {
   rejectUnknownKeys(doc, path, {"kind", "name", "bezier", "meta"}, " in a surface document");
   const std::string bp = joinPath(path, "bezier");

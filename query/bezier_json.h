@@ -6,11 +6,8 @@
 //   "control_grid":   [[[x, y, z], ...], ...]       rows along u, columns along v
 //   "u": [u, ...], "uv": [[u, v], ...], "alpha": a  parameters in [0, 1]
 //   "method": "centroid" | "bisector" | "mean_of_maxima" | "smallest_of_maxima" | "largest_of_maxima"
-// Stored documents (kind "curve" / "surface"):
-//   {"kind":"curve","name":...,"bezier":{"control_points":...,"weights":...},"meta":{...}}
+// Stored surface documents (kind "surface"; curve documents: query/curve_document.h):
 //   {"kind":"surface","name":...,"bezier":{"control_grid":...},"meta":{...}}
-// "bezier" is one member of the curve document so that other forms (a fair curve, seed 002)
-// can be added beside it; today it is required.
 //
 // Errors: fsdb::Error invalid_document / invalid_parameter with the JSON path of the bad value
 // prefixed by `path` ("bezier.control_points[2][1].tri[0]", "weights[1]", "uv[3][0]"); unknown
@@ -40,8 +37,7 @@ FuzzyBezierCurve parseBezierCurve(const nlohmann::json& obj, const std::string& 
 FuzzyBezierSurface parseBezierSurface(const nlohmann::json& obj, const std::string& path,
                                       const BezierJsonLimits& limits);
 
-// A whole stored document's "bezier" member (kind and name are the caller's).
-FuzzyBezierCurve parseCurveDocument(const nlohmann::json& doc, const std::string& path, const BezierJsonLimits& limits);
+// A whole stored surface document's "bezier" member (kind and name are the caller's).
 FuzzyBezierSurface parseSurfaceDocument(const nlohmann::json& doc, const std::string& path,
                                         const BezierJsonLimits& limits);
 

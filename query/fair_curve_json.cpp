@@ -37,6 +37,33 @@ const char* behaviorName(FairBehavior b) {
   return "no_inflection";
 }
 
+FairCurveAnswer answerFairCurve(const FairCurveRequest& r) {
+  FairCurveAnswer a;
+  a.radii = radiusMagnitudes(r.points, r.relations, r.closed);
+  a.candidates = fairCandidates(r.points, r.closed, r.options);
+  for (const FairCandidate& c : a.candidates)
+    a.curves.push_back(sampleFairCurve(buildFairCurve(r.points, c.anglesDeg, a.radii, r.closed), r.samples));
+  return a;
+}
+
+nlohmann::json fairCurveAnswerJson(const FairCurveRequest& r, const FairCurveAnswer& a) {
+  nlohmann::json candidates = nlohmann::json::array();
+  for (size_t k = 0; k < a.candidates.size(); ++k) {
+    const FairCandidate& c = a.candidates[k];
+    nlohmann::json curve = nlohmann::json::array();
+    for (const Vec2& p : a.curves[k]) curve.push_back({p.x, p.y});
+    candidates.push_back({{"score", c.score},
+                          {"point", c.point},
+                          {"membership", c.membership},
+                          {"angles_deg", c.anglesDeg},
+                          {"curve", std::move(curve)}});
+  }
+  return {{"candidates", std::move(candidates)},
+          {"first_estimation_deg", firstEstimationAngles(r.points, r.closed)},
+          {"radii", a.radii},
+          {"behavior", behaviorName(r.options.behavior)}};
+}
+
 FairCurveRequest parseFairCurveRequest(const nlohmann::json& body, const FairCurveLimits& limits) {
   requireObject(body, "");
   rejectUnknownKeys(body, "", {"points", "relations", "closed", "behavior", "alpha_threshold", "samples",
@@ -85,18 +112,18 @@ FairCurveRequest parseFairCurveRequest(const nlohmann::json& body, const FairCur
                   "alpha_threshold");
     r.options.alphaThreshold = a;
   }
-  r.samples = static_cast<int>(boundedInteger(body, "samples", r.samples, 2, limits.maxSamples, "max_samples"));
+  r.samples = static_cast<int>(boundedInteger(body, "samples", r.samples, 2, limits.maxSamples, "max_fair_samples"));
   r.options.angleSamples = static_cast<int>(
-      boundedInteger(body, "angle_samples", r.options.angleSamples, 4, limits.maxAngleSamples, "max_angle_samples"));
+      boundedInteger(body, "angle_samples", r.options.angleSamples, 4, limits.maxAngleSamples, "max_fair_angle_samples"));
   r.options.maxCandidates = static_cast<size_t>(boundedInteger(
       body, "max_candidates", static_cast<long long>(r.options.maxCandidates), 1,
-      static_cast<long long>(limits.maxCandidates), "max_candidates"));
+      static_cast<long long>(limits.maxCandidates), "max_fair_candidates"));
   // The answer's size: every returned candidate carries (samples - 1) * pieces + 1 points.
   const size_t pieces = r.points.size() < 2 ? 0 : (r.closed ? r.points.size() : r.points.size() - 1);
   const size_t curvePoints = r.options.maxCandidates * (pieces * static_cast<size_t>(r.samples - 1) + 1);
   if (curvePoints > limits.maxCurvePoints)
     throw Error(errc::kLimitExceeded,
-                "max_candidates x pieces x samples = " + std::to_string(curvePoints) + " curve points exceed max_curve_points=" +
+                "max_candidates x pieces x samples = " + std::to_string(curvePoints) + " curve points exceed max_fair_curve_points=" +
                     std::to_string(limits.maxCurvePoints) + "; lower samples or max_candidates",
                 "samples");
   checkFairPoints(r.points, r.closed);  // points[i] named (fair_curve.h)

@@ -12,7 +12,8 @@
 // max_candidates: >= 1.
 // Errors carry the JSON path: invalid_document for types and unknown keys ("points[2][1]",
 // "relations[0]", "flag"), invalid_parameter for values out of range (422), limit_exceeded (413)
-// naming the limit beyond FairCurveLimits ("points", "samples", "angle_samples", "max_candidates").
+// naming the limit beyond FairCurveLimits ("points", "samples", "angle_samples", "max_candidates"):
+// each limit is the `fsdb serve` option of the same name (--max-fair-points, ...).
 #include <cstddef>
 #include <nlohmann/json.hpp>
 #include <vector>
@@ -23,11 +24,11 @@
 namespace fsdb {
 
 struct FairCurveLimits {
-  size_t maxPoints = 1000;            // max_fair_points
-  int maxSamples = 1000;              // max_samples (curve points per piece)
-  int maxAngleSamples = 3600;         // max_angle_samples
-  size_t maxCandidates = 100;         // max_candidates
-  size_t maxCurvePoints = 1000000;    // max_curve_points: candidates x pieces x samples in one answer
+  size_t maxPoints = 1000;          // max_fair_points: given points
+  int maxSamples = 1000;            // max_fair_samples: curve points per piece
+  int maxAngleSamples = 3600;       // max_fair_angle_samples
+  size_t maxCandidates = 100;       // max_fair_candidates
+  size_t maxCurvePoints = 1000000;  // max_fair_curve_points: candidates x pieces x samples in one answer
 };
 
 struct FairCurveRequest {
@@ -40,5 +41,18 @@ struct FairCurveRequest {
 
 FairCurveRequest parseFairCurveRequest(const nlohmann::json& body, const FairCurveLimits& limits = {});
 const char* behaviorName(FairBehavior b);
+
+// What a request yields (POST /curves/fair, and a stored fair curve's GET /curves/{id}/candidates
+// and /svg): the radius magnitudes |R_i| and the candidates best first (geometry/fair_candidates.h),
+// curves[k] being candidates[k]'s curve sampled with `samples` points per piece.
+struct FairCurveAnswer {
+  std::vector<double> radii;
+  std::vector<FairCandidate> candidates;
+  std::vector<std::vector<Vec2>> curves;
+};
+FairCurveAnswer answerFairCurve(const FairCurveRequest& request);
+// {"candidates":[{"score","point","membership","angles_deg","curve":[[x,y],...]}],
+//  "first_estimation_deg","radii","behavior"}
+nlohmann::json fairCurveAnswerJson(const FairCurveRequest& request, const FairCurveAnswer& answer);
 
 }  // namespace fsdb

@@ -32,8 +32,8 @@ void registerBezierRoutes(HttpServer& server, const Store& store);
 // POST /query/linguistic (server/linguistic_search.h), POST /query/csg (server/csg_search.h)
 void registerQueryRoutes(HttpServer& server, const Store& store);
 
-// POST /curves/fair (seed 002 fair curves; server/fair_curve_api.cpp)
-void registerFairCurveRoutes(HttpServer& server);
+// POST /curves/fair, GET /curves/{id}/candidates (seed 002 fair curves; server/fair_curve_api.cpp)
+void registerFairCurveRoutes(HttpServer& server, const Store& store);
 
 // A positive integer from a path segment or query parameter (digits only, at most `max`);
 // 422 invalid_parameter naming `what` otherwise. Every {id} of every route goes through it.
@@ -41,6 +41,8 @@ int64_t positiveInteger(const std::string& text, const std::string& what, int64_
 // A finite number from query parameter `name`, `fallback` when absent (required when none);
 // 422 invalid_parameter naming it otherwise.
 double numberParam(const ApiRequest& req, const std::string& name, std::optional<double> fallback);
+// The ?version= of a stored-object route (a positive integer), nullopt when absent (the latest).
+std::optional<int> versionParam(const ApiRequest& req);
 
 // Every route family above, in order.
 void registerAllRoutes(HttpServer& server, Store& store);

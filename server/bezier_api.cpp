@@ -5,7 +5,8 @@
 //   POST /surfaces/bezier/evaluate   points of the lower, crisp and upper surfaces
 //   POST /surfaces/bezier/elevate    degree elevation in u and v (the same surface)
 //   POST /surfaces/bezier/iso        an iso-parametric curve's fuzzy control points
-//   GET  /curves/{id}/svg            a stored curve's three polylines at level alpha
+//   GET  /curves/{id}/svg            a stored Bézier curve's three polylines at level alpha, or a
+//                                    stored fair curve's candidates (server/svg_format.h)
 //   GET  /surfaces/{id}/mesh         a stored surface's lower / crisp / upper uv grid as OBJ or STL
 // The /curves/bezier/... routes have one more segment than /curves/{id} and another method than
 // /curves/{id}/svg, so the two families never match the same request.
@@ -13,17 +14,19 @@
 // request or export (max_curve_points), 413 naming the limit.
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "db/store.h"
 #include "geometry/error.h"
 #include "geometry/fuzzy_bezier.h"
 #include "geometry/number_format.h"
 #include "query/bezier_json.h"
+#include "query/curve_document.h"
+#include "query/fair_curve_json.h"
 #include "query/json_body.h"
 #include "server/api.h"
 #include "server/http_server.h"
 #include "server/mesh_format.h"
+#include "server/svg_format.h"
 
 namespace fsdb {
 namespace {
@@ -178,49 +181,43 @@ double alphaParam(const ApiRequest& req) {
   return alpha;
 }
 
-std::optional<int> versionParam(const ApiRequest& req) {
-  if (!req.hasQueryParam("version")) return std::nullopt;
-  return static_cast<int>(positiveInteger(req.queryParam("version"), "version", INT32_MAX));
-}
-
 // The 2-D picture of a curve point: (x, y); a curve of one coordinate is drawn as (u, x).
 std::array<double, 2> project(const CrispPoint& p, double u) {
   return p.size() == 1 ? std::array<double, 2>{u, p[0]} : std::array<double, 2>{p[0], p[1]};
 }
 
-std::string svgOfCurve(const FuzzyBezierCurve& curve, double alpha, int samples) {
-  std::vector<std::array<double, 2>> lines[3];  // lower, crisp, upper
-  double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+// Lower, crisp and upper polylines of a Bézier curve at level alpha (u = 0 .. 1, samples points).
+std::string svgOfBezierCurve(const FuzzyBezierCurve& curve, double alpha, int samples) {
+  SvgPolyline lines[3] = {{"lower", "#1f77b4", {}}, {"crisp", "#000000", {}}, {"upper", "#d62728", {}}};
   const BezierCurveCut cut = cutCurve(curve, alpha);
   for (int i = 0; i < samples; ++i) {
     const double u = static_cast<double>(i) / (samples - 1);  // samples >= 2
     const FuzzyBezierPoint p = evaluateCut(cut, u);
-    const CrispPoint* ends[3] = {&p.lower, &p.crisp, &p.upper};
-    for (int b = 0; b < 3; ++b) {
-      const auto q = project(*ends[b], u);
-      lines[b].push_back(q);
-      x0 = std::min(x0, q[0]), x1 = std::max(x1, q[0]), y0 = std::min(y0, q[1]), y1 = std::max(y1, q[1]);
-    }
+    lines[0].points.push_back(project(p.lower, u));
+    lines[1].points.push_back(project(p.crisp, u));
+    lines[2].points.push_back(project(p.upper, u));
   }
-  const double margin = 0.05 * std::max({x1 - x0, y1 - y0, 1e-9});
-  x0 -= margin, y0 -= margin, x1 += margin, y1 += margin;
-  std::ostringstream s;
-  // y grows upwards in the curve and downwards in SVG: the group flips it.
-  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << formatNumber(x0) << " " << formatNumber(-y1) << " "
-    << formatNumber(x1 - x0) << " " << formatNumber(y1 - y0) << "\">\n"
-    << "<title>" << "fuzzy Bezier curve at alpha " << formatNumber(alpha) << "</title>\n"
-    << "<g transform=\"scale(1,-1)\" fill=\"none\" stroke-width=\"" << formatNumber(margin / 5)
-    << "\">\n";
-  const char* ids[3] = {"lower", "crisp", "upper"};
-  const char* colours[3] = {"#1f77b4", "#000000", "#d62728"};
-  for (int b = 0; b < 3; ++b) {
-    s << "<polyline id=\"" << ids[b] << "\" stroke=\"" << colours[b] << "\" points=\"";
-    for (std::size_t i = 0; i < lines[b].size(); ++i)
-      s << (i ? " " : "") << formatNumber(lines[b][i][0]) << "," << formatNumber(lines[b][i][1]);
-    s << "\"/>\n";
-  }
-  s << "</g>\n</svg>\n";
-  return s.str();
+  return toSvg("fuzzy Bezier curve at alpha " + formatNumber(alpha), {lines[0], lines[1], lines[2]});
+}
+
+// Every candidate of a fair curve in grey, candidate `chosen` (0: the best) on top in black and
+// thicker, and the given points as dots (only those when R_alpha left no candidate).
+std::string svgOfFairCurve(const FairCurveRequest& request, const FairCurveAnswer& answer, std::size_t chosen) {
+  std::vector<SvgPolyline> lines;
+  auto polyline = [&](std::size_t k, const char* colour, double width) {
+    SvgPolyline l{"candidate-" + std::to_string(k), colour, {}, width};
+    for (const Vec2& p : answer.curves[k]) l.points.push_back({p.x, p.y});
+    lines.push_back(std::move(l));
+  };
+  for (std::size_t k = 0; k < answer.curves.size(); ++k)
+    if (k != chosen) polyline(k, "#a0a0a0", 1.0);
+  std::vector<std::array<double, 2>> dots;
+  for (const Vec2& p : request.points) dots.push_back({p.x, p.y});
+  if (answer.curves.empty()) return toSvg("fair curve: no candidate reaches alpha_threshold", lines, dots);
+  polyline(chosen, "#000000", 2.0);
+  return toSvg("fair curve, candidate " + std::to_string(chosen) + " of " + std::to_string(answer.curves.size()) +
+                   " (score " + formatNumber(answer.candidates[chosen].score) + ")",
+               lines, dots);
 }
 
 TriangleMesh meshOfSurface(const FuzzyBezierSurface& surface, double alpha, const std::string& bound, int n) {
@@ -251,6 +248,7 @@ ApiResponse download(std::string bytes, const std::string& contentType, const st
 
 void registerBezierRoutes(HttpServer& server, const Store& store) {
   const BezierJsonLimits limits = bezierLimits(server.options().limits);
+  const FairCurveLimits fair = server.options().limits.fairCurve;
 
   server.addRoute("POST", "/curves/bezier/evaluate", [limits](const ApiRequest& req) {
     return evaluateCurveRoute(req, limits);
@@ -271,13 +269,37 @@ void registerBezierRoutes(HttpServer& server, const Store& store) {
     return isoCurveRoute(req, limits);
   });
 
-  server.addRoute("GET", "/curves/{id}/svg", [limits, &store](const ApiRequest& req) {
+  // A Bézier curve takes alpha and samples; a fair curve takes candidate (its samples per piece
+  // are its document's). A parameter of the other form is 422 invalid_parameter naming it.
+  server.addRoute("GET", "/curves/{id}/svg", [limits, fair, &store](const ApiRequest& req) {
+    const StoredObject object = store.get("curve", positiveInteger(req.pathParams[0], "id"), versionParam(req));
+    const CurveDocument curve = parseCurveDocument(json::parse(object.documentJson), "", limits, fair);
+    auto reject = [&req](const char* name, const char* form) {
+      if (req.hasQueryParam(name))
+        throw Error(errc::kInvalidParameter, std::string(name) + " applies to " + form + " curves only", name);
+    };
+    if (curve.fair) {
+      reject("alpha", "Bezier");
+      reject("samples", "Bezier");
+      const FairCurveAnswer answer = answerFairCurve(*curve.fair);
+      // R_alpha may leave no candidate: the picture then shows the points only.
+      const double k = numberParam(req, "candidate", 0.0);
+      const std::size_t n = answer.curves.size();
+      if (k != std::floor(k) || k < 0 || (n > 0 && k >= static_cast<double>(n)) || (n == 0 && req.hasQueryParam("candidate")))
+        throw Error(errc::kInvalidParameter,
+                    n == 0 ? "the curve has no candidate (none reaches alpha_threshold)"
+                           : "candidate is an index 0 .. " + std::to_string(n - 1) + " (0: the best), got " +
+                                 req.queryParam("candidate"),
+                    "candidate");
+      const auto chosen = static_cast<std::size_t>(k);
+      return download(svgOfFairCurve(*curve.fair, answer, chosen), "image/svg+xml",
+                      object.name + "-candidate-" + std::to_string(chosen) + ".svg");
+    }
+    reject("candidate", "fair");
     const double alpha = alphaParam(req);
     const int samples = countParam(req, "samples", std::min<double>(kDefaultSvgSamples, limits.maxPoints), 2,
                                    limits.maxPoints, limits.pointsLimitName);
-    const StoredObject object = store.get("curve", positiveInteger(req.pathParams[0], "id"), versionParam(req));
-    const FuzzyBezierCurve curve = parseCurveDocument(json::parse(object.documentJson), "", limits);
-    return download(svgOfCurve(curve, alpha, samples), "image/svg+xml",
+    return download(svgOfBezierCurve(*curve.bezier, alpha, samples), "image/svg+xml",
                     object.name + "-" + formatNumber(alpha) + ".svg");
   });
 

@@ -83,7 +83,7 @@ BulkReport importDocuments(Store& store, const std::vector<BulkLine>& lines, con
       }
       try {
         const std::string kind = lineKind(l.document, options.kind);
-        NewObject object = prepareDocument(l.document, kind, store, options.maxNodes, "", &pending);
+        NewObject object = prepareDocument(l.document, kind, store, options.limits, "", &pending);
         pending.add(object.kind, object.name, l.document);  // as given: the resolver needs no "kind"
         items.push_back(std::move(object));
         itemLines.push_back(l.line);
@@ -101,7 +101,7 @@ BulkReport importDocuments(Store& store, const std::vector<BulkLine>& lines, con
           report.addFailure(itemLines[k], errorObject(results[k].errorCode, results[k].errorMessage, results[k].errorPath));
         }
       }
-      refreshPendingDescriptors(store, options.maxNodes);  // shapes with references, upserted versions
+      refreshPendingDescriptors(store, options.limits.maxNodes);  // shapes with references, upserted versions
     }
     if (options.progress) options.progress(end, lines.size());
   }

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "db/store.h"
+#include "server/documents.h"
 
 namespace fsdb {
 
@@ -39,7 +40,7 @@ struct BulkOptions {
   std::string kind;  // "part" / "shape": every line must be of it; "": each line's "kind" decides
   BulkMode mode = BulkMode::kCreate;
   size_t batchSize = 500;
-  size_t maxNodes = 10000;
+  DocumentLimits limits;  // of every document (server/documents.h)
   // Called after each committed batch with (lines done, lines total).
   std::function<void(size_t, size_t)> progress;
 };

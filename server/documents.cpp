@@ -6,9 +6,11 @@
 #include "geometry/error.h"
 #include "geometry/fuzzy_part.h"
 #include "query/bezier_json.h"
+#include "query/curve_document.h"
 #include "query/json_body.h"
 #include "query/part_json.h"
 #include "server/descriptor_rows.h"
+#include "server/http_server.h"
 
 namespace fsdb {
 namespace {
@@ -80,8 +82,12 @@ ReferenceResolver storeResolver(const Store& store, const PendingDocuments* pend
   };
 }
 
+DocumentLimits documentLimits(const ServerLimits& limits) {
+  return DocumentLimits{limits.maxNodes, limits.maxControlPoints, limits.fairCurve};
+}
+
 NewObject prepareDocument(const nlohmann::json& document, const std::string& kind, const Store& store,
-                          size_t maxNodes, const std::string& path, const PendingDocuments* pending) {
+                          const DocumentLimits& limits, const std::string& path, const PendingDocuments* pending) {
   requireObject(document, path);
   nlohmann::json doc = document;
   if (doc.contains("kind")) {
@@ -98,18 +104,17 @@ NewObject prepareDocument(const nlohmann::json& document, const std::string& kin
   out.kind = kind;
   out.name = doc["name"].get<std::string>();
   if (kind == "curve" || kind == "surface") {
-    // A stored curve or surface holds at most max_nodes control points, the limit on the size
-    // of any stored document; evaluation and exports apply max_control_points on top.
-    const BezierJsonLimits limits{maxNodes, "max_nodes"};
-    if (kind == "curve") parseCurveDocument(doc, path, limits);
-    else parseSurfaceDocument(doc, path, limits);
+    BezierJsonLimits bezier;
+    bezier.maxControlPoints = limits.maxControlPoints;
+    if (kind == "curve") parseCurveDocument(doc, path, bezier, limits.fairCurve);
+    else parseSurfaceDocument(doc, path, bezier);
   } else if (kind == "part") {
     const FuzzyPart part = parsePart(doc, path);
     out.parameters = parameterSpans(part);
     out.descriptors = partDescriptorRows(part);
   } else {
     // Validates everything, references included, and keeps the resolved tree (csg text parsed).
-    const ParsedShape parsed = parseShapeField(doc, path, maxNodes, storeResolver(store, pending));
+    const ParsedShape parsed = parseShapeField(doc, path, limits.maxNodes, storeResolver(store, pending));
     if (parsed.tree) out.descriptors = shapeDescriptorRows(shapeComponents(*parsed.tree));
     const TreeOutline outline = outlineTree(parsed.documentTree, parsed.documentTreePath);
     for (const DocumentReference& r : outline.references) out.references.push_back(objectReference(r));

@@ -3,8 +3,11 @@
 // resolved against the store, and the normalised columns the store keeps (db/store.h).
 //
 // Contract:
-// - Curves and surfaces (query/bezier_json.h) are validated with at most maxNodes control points
-//   and keep no normalised columns.
+// - Curves (query/curve_document.h: a Bézier or a fair curve) and surfaces (query/bezier_json.h)
+//   are validated with DocumentLimits: at most maxControlPoints control points (413 naming
+//   max_control_points), a fair curve within the fair-curve limits (max_fair_*). They keep no
+//   normalised columns. A shape has at most maxNodes CSG nodes (max_nodes): each limit means
+//   one thing, and each is the `fsdb serve` option of the same name (server/http_server.h).
 // - prepareDocument validates a part or shape document exactly as evaluation would (every
 //   fuzzy number, range, reference and limit), so nothing the store holds fails to evaluate
 //   for a reason visible at write time. Errors are fsdb::Error with the JSON path inside the
@@ -22,11 +25,20 @@
 #include <utility>
 
 #include "db/store.h"
+#include "query/fair_curve_json.h"
 #include "query/shape_json.h"
 
 namespace fsdb {
 
 struct ServerLimits;
+
+// What prepareDocument enforces; the defaults are those of `fsdb serve`.
+struct DocumentLimits {
+  size_t maxNodes = 10000;        // --max-nodes: CSG nodes of a shape
+  size_t maxControlPoints = 256;  // --max-control-points: of a stored Bézier curve or surface grid
+  FairCurveLimits fairCurve;      // --max-fair-*: a stored fair curve's request form
+};
+DocumentLimits documentLimits(const ServerLimits& limits);
 
 // Names → documents that are about to be written in the same batch, visible to references
 // before they are committed (bulk import: a shape may use a part from an earlier line).
@@ -44,7 +56,8 @@ class PendingDocuments {
 ReferenceResolver storeResolver(const Store& store, const PendingDocuments* pending = nullptr);
 
 NewObject prepareDocument(const nlohmann::json& document, const std::string& kind, const Store& store,
-                          size_t maxNodes, const std::string& path, const PendingDocuments* pending = nullptr);
+                          const DocumentLimits& limits, const std::string& path,
+                          const PendingDocuments* pending = nullptr);
 
 // The JSON the API returns for a stored version:
 //   {"id","kind","name","version","latest_version","created_at","content_hash","document"}

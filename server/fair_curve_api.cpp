@@ -1,43 +1,36 @@
-// POST /curves/fair: fair interpolating curves of seed 002, one per local maximum of the points'
-// fuzzy sets, best first (SPEC §6; geometry/fair_candidates.h, query/fair_curve_json.h).
-#include "geometry/fair_candidates.h"
-#include "geometry/fair_curve.h"
+// Fair interpolating curves of seed 002 over HTTP (SPEC §6; query/fair_curve_json.h):
+//   POST /curves/fair               the candidates of a request, best first
+//   GET  /curves/{id}/candidates    the same for a stored fair curve ({"fair": request}; a
+//                                   Bézier curve has none: 422 invalid_parameter naming "id")
+// Limits: FairCurveLimits from `fsdb serve --max-fair-*` (413 naming the limit).
+#include "db/store.h"
+#include "geometry/error.h"
+#include "query/curve_document.h"
 #include "query/fair_curve_json.h"
 #include "server/api.h"
 #include "server/http_server.h"
 
 namespace fsdb {
-namespace {
 
-nlohmann::json pointsJson(const std::vector<Vec2>& points) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const Vec2& p : points) out.push_back({p.x, p.y});
-  return out;
-}
+void registerFairCurveRoutes(HttpServer& server, const Store& store) {
+  const ServerLimits& limits = server.options().limits;
+  const FairCurveLimits fair = limits.fairCurve;
+  BezierJsonLimits bezier;
+  bezier.maxControlPoints = limits.maxControlPoints;
 
-ApiResponse fairCurves(const ApiRequest& req) {
-  const FairCurveRequest r = parseFairCurveRequest(req.body);
-  const std::vector<double> magnitudes = radiusMagnitudes(r.points, r.relations, r.closed);
-  nlohmann::json candidates = nlohmann::json::array();
-  for (const FairCandidate& c : fairCandidates(r.points, r.closed, r.options)) {
-    const FairCurve curve = buildFairCurve(r.points, c.anglesDeg, magnitudes, r.closed);
-    candidates.push_back({{"score", c.score},
-                          {"point", c.point},
-                          {"membership", c.membership},
-                          {"angles_deg", c.anglesDeg},
-                          {"curve", pointsJson(sampleFairCurve(curve, r.samples))}});
-  }
-  return ApiResponse{200,
-                     {{"candidates", std::move(candidates)},
-                      {"first_estimation_deg", firstEstimationAngles(r.points, r.closed)},
-                      {"radii", magnitudes},
-                      {"behavior", behaviorName(r.options.behavior)}}};
-}
+  server.addRoute("POST", "/curves/fair", [fair](const ApiRequest& req) {
+    const FairCurveRequest r = parseFairCurveRequest(req.body, fair);
+    return ApiResponse{200, fairCurveAnswerJson(r, answerFairCurve(r))};
+  });
 
-}  // namespace
-
-void registerFairCurveRoutes(HttpServer& server) {
-  server.addRoute("POST", "/curves/fair", [](const ApiRequest& req) { return fairCurves(req); });
+  server.addRoute("GET", "/curves/{id}/candidates", [fair, bezier, &store](const ApiRequest& req) {
+    const StoredObject object = store.get("curve", positiveInteger(req.pathParams[0], "id"), versionParam(req));
+    const CurveDocument curve = parseCurveDocument(nlohmann::json::parse(object.documentJson), "", bezier, fair);
+    if (!curve.fair)
+      throw Error(errc::kInvalidParameter, "curve " + std::to_string(object.id) + " is a Bezier curve; only fair curves have candidates",
+                  "id");
+    return ApiResponse{200, fairCurveAnswerJson(*curve.fair, answerFairCurve(*curve.fair))};
+  });
 }
 
 }  // namespace fsdb

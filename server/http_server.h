@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "query/fair_curve_json.h"
+
 namespace httplib {
 class Server;
 struct Request;
@@ -30,10 +32,14 @@ struct ServerLimits {
   int maxJsonDepth = 64;            // --max-json-depth: deeper nesting gets 413
   size_t maxPoints = 1000000;       // --max-points: POST /operators/evaluate points per request
   int maxResolution = 512;          // --max-resolution: voxels along a shape's longest side
-  size_t maxNodes = 10000;          // --max-nodes: CSG nodes per shape, control points per stored curve or surface
+  size_t maxNodes = 10000;          // --max-nodes: CSG nodes per shape
   int maxQueryMs = 10000;           // --max-query-ms: longest linguistic search (413 beyond); 0: none
-  size_t maxControlPoints = 256;    // --max-control-points: of one Bézier curve or surface grid (requests, exports)
+  size_t maxControlPoints = 256;    // --max-control-points: of one Bézier curve or surface grid (requests,
+                                    // stored documents, exports)
   size_t maxCurvePoints = 10000;    // --max-curve-points: u values, uv pairs, export samples per request
+  FairCurveLimits fairCurve;        // --max-fair-points, --max-fair-samples, --max-fair-angle-samples,
+                                    // --max-fair-candidates, --max-fair-curve-points (POST /curves/fair,
+                                    // stored fair curves)
 };
 
 struct ServerOptions {

@@ -38,7 +38,7 @@ void blockShutdownSignals(sigset_t* set) {
 
 // The demo catalogue (SPEC §1): every *.jsonl of `dir` in name order, upserted, into a database
 // that was just created. Failures are logged, never fatal: the server still starts.
-void loadDemo(fsdb::Store& store, const std::string& dir, size_t maxNodes) {
+void loadDemo(fsdb::Store& store, const std::string& dir, const fsdb::DocumentLimits& limits) {
   std::vector<std::filesystem::path> files;
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
@@ -51,7 +51,7 @@ void loadDemo(fsdb::Store& store, const std::string& dir, size_t maxNodes) {
   for (const auto& f : files) {
     fsdb::BulkOptions bulk;
     bulk.mode = fsdb::BulkMode::kUpsert;
-    bulk.maxNodes = maxNodes;
+    bulk.limits = limits;
     try {
       const fsdb::BulkReport r = fsdb::importDocuments(
           store, fsdb::splitBulkBody(fsdb::readTextFile(f.string(), "--demo"), fsdb::kFileJsonDepth), bulk);
@@ -98,7 +98,7 @@ int runServe(const fsdb::ServerOptions& options, const std::string& dbPath, cons
     const bool fresh = !std::filesystem::exists(dbPath);
     store = fsdb::Store::open(dbPath);
     spdlog::info("database {} (schema version {})", dbPath, store->schemaVersion());
-    if (fresh && !demoDir.empty()) loadDemo(*store, demoDir, options.limits.maxNodes);
+    if (fresh && !demoDir.empty()) loadDemo(*store, demoDir, fsdb::documentLimits(options.limits));
     backfillDescriptorIndex(*store, options.limits.maxNodes);
   } catch (const fsdb::Error& e) {
     spdlog::error("cannot open the database: {}", e.what());
@@ -174,14 +174,27 @@ int main(int argc, char** argv) {
 
   serveCmd->add_option("--max-resolution", serve.limits.maxResolution, "largest grid resolution of POST /evaluate")
       ->check(CLI::Range(2, 4096))->capture_default_str();
-  serveCmd->add_option("--max-nodes", serve.limits.maxNodes,
-                       "most CSG nodes in one shape (and control points in a stored curve or surface)")
+  serveCmd->add_option("--max-nodes", serve.limits.maxNodes, "most CSG nodes in one shape")
       ->check(CLI::PositiveNumber)->capture_default_str();
   serveCmd->add_option("--max-control-points", serve.limits.maxControlPoints,
-                       "most control points of a Bezier curve or surface grid in a request or export")
+                       "most control points of a Bezier curve or surface grid (requests, stored documents, exports)")
       ->check(CLI::PositiveNumber)->capture_default_str();
   serveCmd->add_option("--max-curve-points", serve.limits.maxCurvePoints,
                        "most evaluation points (u values, uv pairs, export samples) per Bezier request")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+  serveCmd->add_option("--max-fair-points", serve.limits.fairCurve.maxPoints,
+                       "most given points of a fair curve (POST /curves/fair, stored fair curves)")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+  serveCmd->add_option("--max-fair-samples", serve.limits.fairCurve.maxSamples, "most curve points per fair-curve piece")
+      ->check(CLI::Range(2, 1000000))->capture_default_str();
+  serveCmd->add_option("--max-fair-angle-samples", serve.limits.fairCurve.maxAngleSamples,
+                       "most samples of a fair-curve point's fuzzy set over [0, 180) degrees")
+      ->check(CLI::Range(4, 1000000))->capture_default_str();
+  serveCmd->add_option("--max-fair-candidates", serve.limits.fairCurve.maxCandidates,
+                       "most candidate curves of one fair-curve answer")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+  serveCmd->add_option("--max-fair-curve-points", serve.limits.fairCurve.maxCurvePoints,
+                       "most curve points (candidates x pieces x samples) of one fair-curve answer")
       ->check(CLI::PositiveNumber)->capture_default_str();
   serveCmd->add_option("--max-query-ms", serve.limits.maxQueryMs,
                        "longest POST /query/linguistic or /query/csg search in milliseconds (413 beyond); 0: no limit")

@@ -29,6 +29,11 @@ int64_t positiveInteger(const std::string& text, const std::string& what, int64_
   return v;
 }
 
+std::optional<int> versionParam(const ApiRequest& req) {
+  if (!req.hasQueryParam("version")) return std::nullopt;
+  return static_cast<int>(positiveInteger(req.queryParam("version"), "version", INT32_MAX));
+}
+
 namespace {
 
 constexpr int kDefaultListLimit = 100;
@@ -46,13 +51,13 @@ bool booleanParam(const ApiRequest& req, const std::string& name) {
 
 void registerKind(HttpServer& server, Store& store, const std::string& kind) {
   const std::string base = "/" + kind + "s";
-  const size_t maxNodes = server.options().limits.maxNodes;
+  const DocumentLimits limits = documentLimits(server.options().limits);
   const int maxDepth = server.options().limits.maxJsonDepth;
   const RouteOptions write{true, false};
 
-  server.addRoute("POST", base, [&store, kind, maxNodes, base](const ApiRequest& req) {
-    const StoredObject created = store.create(prepareDocument(req.body, kind, store, maxNodes, ""));
-    refreshPendingDescriptors(store, maxNodes);  // a shape with references is written pending
+  server.addRoute("POST", base, [&store, kind, limits, base](const ApiRequest& req) {
+    const StoredObject created = store.create(prepareDocument(req.body, kind, store, limits, ""));
+    refreshPendingDescriptors(store, limits.maxNodes);  // a shape with references is written pending
     ApiResponse out{201, storedObjectJson(created)};
     out.headers.emplace_back("Location", base + "/" + std::to_string(created.id));
     return out;
@@ -81,19 +86,16 @@ void registerKind(HttpServer& server, Store& store, const std::string& kind) {
 
   server.addRoute("GET", base + "/{id}", [&store, kind](const ApiRequest& req) {
     const int64_t id = positiveInteger(req.pathParams[0], "id");
-    std::optional<int> version;
-    if (req.hasQueryParam("version"))
-      version = static_cast<int>(positiveInteger(req.queryParam("version"), "version", INT32_MAX));
-    return ApiResponse{200, storedObjectJson(store.get(kind, id, version))};
+    return ApiResponse{200, storedObjectJson(store.get(kind, id, versionParam(req)))};
   });
 
-  server.addRoute("PUT", base + "/{id}", [&store, kind, maxNodes](const ApiRequest& req) {
+  server.addRoute("PUT", base + "/{id}", [&store, kind, limits](const ApiRequest& req) {
     const int64_t id = positiveInteger(req.pathParams[0], "id");
     nlohmann::json doc = req.body;
     // The name may be left out: a new version keeps the object's name.
     if (doc.is_object() && !doc.contains("name")) doc["name"] = store.get(kind, id).name;
-    const StoredObject stored = store.put(id, prepareDocument(doc, kind, store, maxNodes, ""));
-    refreshPendingDescriptors(store, maxNodes);  // the objects reaching this one are pending
+    const StoredObject stored = store.put(id, prepareDocument(doc, kind, store, limits, ""));
+    refreshPendingDescriptors(store, limits.maxNodes);  // the objects reaching this one are pending
     return ApiResponse{200, storedObjectJson(stored)};
   }, write);
 
@@ -103,10 +105,10 @@ void registerKind(HttpServer& server, Store& store, const std::string& kind) {
     return ApiResponse{200, {{"deleted", deleted}}};
   }, write);
 
-  server.addRoute("POST", base + "/bulk", [&store, kind, maxNodes, maxDepth](const ApiRequest& req) {
+  server.addRoute("POST", base + "/bulk", [&store, kind, limits, maxDepth](const ApiRequest& req) {
     BulkOptions options;
     options.kind = kind;
-    options.maxNodes = maxNodes;
+    options.limits = limits;
     if (req.hasQueryParam("mode")) {
       const std::string mode = req.queryParam("mode");
       if (mode == "create") options.mode = BulkMode::kCreate;

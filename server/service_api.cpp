@@ -41,7 +41,7 @@ void registerAllRoutes(HttpServer& server, Store& store) {
   registerEvaluationRoutes(server, store);
   registerBezierRoutes(server, store);
   registerQueryRoutes(server, store);
-  registerFairCurveRoutes(server);
+  registerFairCurveRoutes(server, store);
 }
 
 }  // namespace fsdb

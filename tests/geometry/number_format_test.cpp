@@ -15,6 +15,12 @@ TEST(NumberFormat, ShortestText) {
   EXPECT_EQ(formatNumber(-2.5), "-2.5");
   EXPECT_EQ(formatNumber(0.1), "0.1");
   EXPECT_EQ(formatNumber(1e300), "1e+300");
+  // Fewest digits is not shortest text: 10 is "10", not "1e+01".
+  EXPECT_EQ(formatNumber(10), "10");
+  EXPECT_EQ(formatNumber(-200), "-200");
+  EXPECT_EQ(formatNumber(123000), "123000");
+  EXPECT_EQ(formatNumber(1e6), "1e+06");
+  EXPECT_EQ(formatNumber(1.5e-5), "1.5e-05");
   EXPECT_EQ(formatNumber(std::numeric_limits<double>::infinity()), "inf");
   EXPECT_EQ(formatNumber(std::nan("")), "nan");
 }

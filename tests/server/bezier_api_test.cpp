@@ -226,7 +226,26 @@ TEST_F(BezierApi, LimitsAnswer413NamingTheLimit) {
   for (int i = 0; i < 3; ++i) grid.push_back({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}});
   expectError(server->post("/surfaces/bezier/evaluate", json{{"control_grid", grid}, {"uv", {{0, 0}}}}), 413,
               "limit_exceeded", "control_grid");
+  // Stored curves and surfaces obey --max-control-points too (not --max-nodes).
+  r = server->post("/curves", json{{"name", "too-many"}, {"bezier", {{"control_points", many}}}});
+  expectError(r, 413, "limit_exceeded", "bezier.control_points");
+  EXPECT_NE(r.json["error"]["message"].get<std::string>().find("max_control_points=8"), std::string::npos) << r.body;
+  r = server->post("/surfaces", json{{"name", "too-many"}, {"bezier", {{"control_grid", grid}}}});
+  expectError(r, 413, "limit_exceeded", "bezier.control_grid");
+  EXPECT_NE(r.json["error"]["message"].get<std::string>().find("max_control_points=8"), std::string::npos) << r.body;
   EXPECT_EQ(server->get("/health").status, 200);  // and the server keeps serving
+}
+
+// --max-nodes bounds a shape's CSG nodes only: a small one leaves stored curves alone.
+TEST(BezierLimits, MaxNodesDoesNotLimitStoredCurves) {
+  ServerProcess small({"--max-nodes", "2"});
+  json points = json::array();
+  for (int i = 0; i < 5; ++i) points.push_back({i, i % 2});
+  auto r = small.post("/curves", json{{"name", "five"}, {"bezier", {{"control_points", points}}}});
+  EXPECT_EQ(r.status, 201) << r.body;
+  r = small.post("/shapes", json::parse(R"({"name":"s","tree":{"op":"union","children":[{"part":{"params":{"a1":1}}},{"part":{"params":{"a1":2}}}]}})"));
+  EXPECT_EQ(r.status, 413) << r.body;
+  EXPECT_NE(r.json["error"]["message"].get<std::string>().find("max_nodes=2"), std::string::npos) << r.body;
 }
 
 TEST_F(BezierApi, StoresCurvesWithNamesAndVersions) {
@@ -249,7 +268,7 @@ TEST_F(BezierApi, StoresCurvesWithNamesAndVersions) {
   EXPECT_EQ(server->get("/shapes/" + std::to_string(id)).status, 404);
   expectError(server->post("/curves", json{{"name", "bad"}, {"bezier", {{"control_points", json::parse("[[0],[{\"tri\":[1,0,2]}]]")}}}}),
               422, "invalid_document", "bezier.control_points[1][0].tri[1]");
-  expectError(server->post("/curves", json{{"name", "bad"}, {"fair", {}}}), 422, "invalid_document", "fair");
+  expectError(server->post("/curves", json{{"name", "bad"}, {"fair", nullptr}}), 422, "invalid_document", "fair");
   expectError(server->post("/curves", json{{"name", "bad"}}), 422, "invalid_document", "bezier");
   expectError(server->post("/curves", json{{"kind", "surface"}, {"name", "bad"}, {"bezier", {{"control_points", arcPoints()}}}}),
               422, "invalid_document", "kind");

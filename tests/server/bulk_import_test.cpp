@@ -101,7 +101,7 @@ TEST(ImportDocuments, WithoutARouteKindEachLineNeedsItsKind) {
 TEST(PrepareDocument, FillsKindChecksNamesAndComputesNormalisedColumns) {
   TempDir dir;
   auto store = Store::open(dir.file("db.sqlite"));
-  NewObject p = prepareDocument(json{{"name", "p"}, {"params", {{"a1", {{"tri", {1, 2, 3}}}}}}}, "part", *store, 10, "");
+  NewObject p = prepareDocument(json{{"name", "p"}, {"params", {{"a1", {{"tri", {1, 2, 3}}}}}}}, "part", *store, DocumentLimits{10}, "");
   EXPECT_EQ(json::parse(p.documentJson)["kind"], "part");
   ASSERT_EQ(p.parameters.size(), 14u);
   EXPECT_EQ(p.parameters[2].name, "a1");
@@ -113,7 +113,7 @@ TEST(PrepareDocument, FillsKindChecksNamesAndComputesNormalisedColumns) {
 
   NewObject s = prepareDocument(
       json{{"name", "s"}, {"tree", {{"op", "union"}, {"children", {{{"part", "p"}}, {{"part", {{"params", {{"a1", 1}}}}}}}}}}},
-      "shape", *store, 10, "");
+      "shape", *store, DocumentLimits{10}, "");
   ASSERT_EQ(s.nodes.size(), 3u);
   EXPECT_EQ(s.nodes[1].kind, "ref");
   EXPECT_EQ(s.nodes[1].refIndex, 0);
@@ -123,7 +123,7 @@ TEST(PrepareDocument, FillsKindChecksNamesAndComputesNormalisedColumns) {
 
   auto errorPath = [&](const json& doc, const std::string& kind) {
     try {
-      prepareDocument(doc, kind, *store, 10, "line");
+      prepareDocument(doc, kind, *store, DocumentLimits{10}, "line");
     } catch (const Error& e) {
       return e.path();
     }
@@ -137,10 +137,45 @@ TEST(PrepareDocument, FillsKindChecksNamesAndComputesNormalisedColumns) {
   EXPECT_EQ(errorPath(json{{"name", "x"}, {"tree", {{"part", "nope"}}}}, "shape"), "line.tree.part");
 }
 
+// Each limit means one thing: max_nodes counts a shape's CSG nodes, max_control_points a stored
+// curve's or surface's control points, max_fair_points a stored fair curve's given points.
+TEST(PrepareDocument, EachKindIsLimitedByItsOwnOption) {
+  TempDir dir;
+  auto store = Store::open(dir.file("db.sqlite"));
+  DocumentLimits limits;
+  limits.maxNodes = 2;
+  limits.maxControlPoints = 3;
+  limits.fairCurve.maxPoints = 3;
+  auto limitError = [&](const json& doc, const std::string& kind) {
+    try {
+      prepareDocument(doc, kind, *store, limits, "");
+    } catch (const Error& e) {
+      return e.code() + " " + e.path() + ": " + e.what();
+    }
+    return std::string("no error");
+  };
+  const json three = {{0, 0}, {1, 1}, {2, 0}}, four = {{0, 0}, {1, 1}, {2, 0}, {3, 1}};
+  // Three control points pass with max_nodes = 2, four do not with max_control_points = 3.
+  EXPECT_EQ(limitError({{"name", "c3"}, {"bezier", {{"control_points", three}}}}, "curve"), "no error");
+  const std::string curve = limitError({{"name", "c4"}, {"bezier", {{"control_points", four}}}}, "curve");
+  EXPECT_EQ(curve.rfind("limit_exceeded bezier.control_points: ", 0), 0u) << curve;
+  EXPECT_NE(curve.find("max_control_points=3"), std::string::npos) << curve;
+  const std::string surface =
+      limitError({{"name", "s4"}, {"bezier", {{"control_grid", {{{0, 0, 0}, {1, 0, 0}}, {{0, 1, 0}, {1, 1, 0}}}}}}}, "surface");
+  EXPECT_NE(surface.find("max_control_points=3"), std::string::npos) << surface;
+  EXPECT_EQ(limitError({{"name", "f3"}, {"fair", {{"points", three}}}}, "curve"), "no error");
+  const std::string fair = limitError({{"name", "f4"}, {"fair", {{"points", four}}}}, "curve");
+  EXPECT_EQ(fair.rfind("limit_exceeded fair.points: ", 0), 0u) << fair;
+  EXPECT_NE(fair.find("max_fair_points=3"), std::string::npos) << fair;
+  const json tree = {{"op", "union"}, {"children", {{{"part", {{"params", {{"a1", 1}}}}}}, {{"part", {{"params", {{"a1", 2}}}}}}}}};
+  const std::string shape = limitError({{"name", "s"}, {"tree", tree}}, "shape");
+  EXPECT_NE(shape.find("max_nodes=2"), std::string::npos) << shape;
+}
+
 TEST(StoreResolver, FindsStoredObjectsByNameOrIdAndPendingOnesFirst) {
   TempDir dir;
   auto store = Store::open(dir.file("db.sqlite"));
-  const StoredObject p = store->create(prepareDocument(json{{"name", "p"}, {"params", {{"a1", 1}}}}, "part", *store, 10, ""));
+  const StoredObject p = store->create(prepareDocument(json{{"name", "p"}, {"params", {{"a1", 1}}}}, "part", *store, DocumentLimits{10}, ""));
   PendingDocuments pending;
   pending.add("part", "q", json{{"params", {{"a1", 2}}}});
   const ReferenceResolver resolve = storeResolver(*store, &pending);

@@ -104,11 +104,11 @@ TEST_F(FairCurveApi, LimitsAnswer413NamingTheLimitAndTheServerKeepsServing) {
   EXPECT_EQ(e["error"]["path"], "points");
   EXPECT_NE(e["error"]["message"].get<std::string>().find("max_fair_points=1000"), std::string::npos);
   e = post({{"points", {{0, 0}, {1, 1}}}, {"samples", 1001}}, 413);
-  EXPECT_NE(e["error"]["message"].get<std::string>().find("max_samples=1000"), std::string::npos);
+  EXPECT_NE(e["error"]["message"].get<std::string>().find("max_fair_samples=1000"), std::string::npos);
   json big = json::array();
   for (int i = 0; i < 500; ++i) big.push_back({i, i % 2});
   e = post({{"points", big}, {"samples", 1000}, {"max_candidates", 100}}, 413);
-  EXPECT_NE(e["error"]["message"].get<std::string>().find("max_curve_points=1000000"), std::string::npos);
+  EXPECT_NE(e["error"]["message"].get<std::string>().find("max_fair_curve_points=1000000"), std::string::npos);
   EXPECT_EQ(server->get("/health").status, 200);
 }
 

@@ -75,7 +75,7 @@ class Catalogue {
       // Parts that shapes reference stay unplaced (a leaf may then place them).
       const FuzzyPart part = randomPart(rng_, i % 2 == 1);
       partNames_.push_back("p" + std::to_string(i));
-      store_->create(prepareDocument(partDocument(part, partNames_.back(), i % 2 == 1), "part", *store_, 10000, ""));
+      store_->create(prepareDocument(partDocument(part, partNames_.back(), i % 2 == 1), "part", *store_, DocumentLimits{}, ""));
     }
     for (int i = 0; i < shapes; ++i) {
       nlohmann::json children = nlohmann::json::array();
@@ -84,7 +84,7 @@ class Catalogue {
       nlohmann::json doc = {{"kind", "shape"}, {"name", "s" + std::to_string(i)},
                             {"tree", {{"op", chance(rng_, 0.7) ? "union" : "difference"}, {"children", children}}}};
       if (n == 1) doc["tree"] = children[0];
-      store_->create(prepareDocument(doc, "shape", *store_, 10000, ""));
+      store_->create(prepareDocument(doc, "shape", *store_, DocumentLimits{}, ""));
       shapeNames_.push_back("s" + std::to_string(i));
     }
   }
@@ -95,7 +95,7 @@ class Catalogue {
       const int i = 2 * std::uniform_int_distribution<int>(0, static_cast<int>(partNames_.size() - 1) / 2)(rng_);
       const std::optional<StoredObject> found = store_->find({"part", std::nullopt, partNames_[i], ""});
       store_->put(found->id, prepareDocument(partDocument(randomPart(rng_, false), partNames_[i], false), "part", *store_,
-                                             10000, ""));
+                                             DocumentLimits{}, ""));
     }
   }
 
@@ -254,7 +254,7 @@ TEST(LinguisticIndexProperty, LevelScanEqualsFullScan) {
     FuzzyPart tied;
     tied.eps1 = tied.eps2 = FuzzyNumber::crisp(1.0);
     for (int i = 0; i < 12; ++i)
-      store.create(prepareDocument(partDocument(tied, "tied" + std::to_string(i), true), "part", store, 10000, ""));
+      store.create(prepareDocument(partDocument(tied, "tied" + std::to_string(i), true), "part", store, DocumentLimits{}, ""));
     std::vector<LinguisticQuery> queries;
     for (const std::string& text : texts) queries.push_back(parseLinguisticQuery(text, Vocabulary::builtin()));
     for (int q = 0; q < 30; ++q) {
