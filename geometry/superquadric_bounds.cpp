@@ -312,6 +312,39 @@ void deformedHalfExtents(const SuperquadricBox& q, double* X, double* Y, double*
   *Z = z;
 }
 
+namespace {
+
+// The same test one map further in, after the inverse bend (whose interval z blows up near the
+// bending axis, where the taper factor then may vanish and the enclosure says nothing): F <= 1
+// needs every canonical ratio <= 1 (seed 004 eq. 1: each term of F is >= 0), so |z| <= C, and
+// the taper factors k·z/C + 1 lie in [1 − |k|, 1 + |k|]: the untwisted point has |x| <= A(1 +
+// |kx|), |y| <= B(1 + |ky|), and the twist (a turn about z, z unchanged) keeps its radius. So an
+// unbent box with |z| > C, or (untwisted) |x| or |y| beyond those, or (twisted) a radius beyond
+// theirs, holds no point of any S(θ). Near the bending axis the unbent x is about 1/k, far
+// beyond A: points there are excluded here while the whole-chain enclosure is trivial.
+bool missesUnbentHull(const SuperquadricBox& q, const IntervalVec3& local) {
+  if (isPoint(q.kv, 0.0)) return false;  // the test above already saw this box
+  const double reach = std::max({magnitude(local.x), magnitude(local.y), magnitude(local.z)});
+  if (!(magnitude(q.kv) * reach <= kTame)) return false;
+  IntervalVec3 b = unbend(q.kv, local);
+  // x = (1 − s)/k, the direct form of unbend's x (deformation.cpp), where k keeps away from 0:
+  // near the bending axis s is small and this keeps x near 1/k, where the cancellation-free
+  // form multiplies wide intervals.
+  if (abs(q.kv).lo >= 1.0 / kTame) {
+    const Interval s = hypot(sub(kOne, mul(q.kv, local.x)), mul(q.kv, local.z));
+    b.x = intersect(b.x, div(sub(kOne, s), q.kv));
+  }
+  constexpr double kSlack = 1.0 + 1e-9;
+  const double X = q.a1.hi * (1.0 + magnitude(q.kx)) * kSlack;
+  const double Y = q.a1.hi * q.a2.hi * (1.0 + magnitude(q.ky)) * kSlack;
+  const double Z = q.a1.hi * q.a3.hi * kSlack;
+  if (mignitude(b.z) > Z) return true;  // (NaN compares false: no conclusion)
+  if (isPoint(q.t, 0.0)) return mignitude(b.x) > X || mignitude(b.y) > Y;
+  return std::hypot(mignitude(b.x), mignitude(b.y)) > std::hypot(X, Y);
+}
+
+}  // namespace
+
 bool missesDeformedHull(const PartBox& part, const Interval& x, const Interval& y,
                         const Interval& z) {
   const PlacementBox& pl = part.placement;
@@ -326,7 +359,7 @@ bool missesDeformedHull(const PartBox& part, const Interval& x, const Interval& 
     const double reach = e[i] * (1.0 + 1e-9);
     if (l[i].lo > reach || l[i].hi < -reach) return true;
   }
-  return false;
+  return missesUnbentHull(part.params, local);
 }
 
 Interval homogeneousInsideOutsideBounds(const PartBox& part, const Interval& x,

@@ -70,8 +70,13 @@ Interval insideOutsideBounds(const PartBox& part, const Interval& x, const Inter
 void deformedHalfExtents(const SuperquadricBox& q, double* X, double* Y, double* Z);
 
 // True when, for every θ of `part`, no point of x × y × z maps into that local box (unplace by
-// the placement box, as the enclosure does): then F > 1 there, however loose the enclosure of
-// the deformations is. The miss keeps a relative margin of 1e-9 (no outward rounding).
+// the placement box, as the enclosure does), or, one map further in, the inverse bend of the
+// local box (interval unbend, as the enclosure's) misses the unbent hull: |z| <= C, |x| <= A(1 +
+// |kx|), |y| <= B(1 + |ky|), or with a twist the radius of those two (F <= 1 needs every
+// canonical ratio <= 1, and then the taper factors lie in [1 − |k|, 1 + |k|]). Then F > 1 there,
+// however loose the enclosure of the deformations is (near the bending axis, where the bent
+// hull reaches and the inverse bend's z spans most of a turn, the unbent x is about 1/kv). The
+// miss keeps a relative margin of 1e-9 (no outward rounding).
 bool missesDeformedHull(const PartBox& part, const Interval& x, const Interval& y,
                         const Interval& z);
 

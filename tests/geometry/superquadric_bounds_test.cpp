@@ -11,6 +11,7 @@
 #include "geometry/interval_functions.h"
 #include "geometry/placed_superquadric.h"
 #include "geometry/superquadric.h"
+#include "geometry/transform.h"
 #include "random_superquadric.h"
 
 namespace fsdb {
@@ -411,6 +412,58 @@ TEST(SuperquadricBounds, DeformedHullHoldsEverySampledPart) {
   PartBox sphere;
   EXPECT_TRUE(missesDeformedHull(sphere, {1.01, 1.2}, {0.0, 0.0}, {0.0, 0.0}));
   EXPECT_FALSE(missesDeformedHull(sphere, {0.99, 1.2}, {0.0, 0.0}, {0.0, 0.0}));
+}
+
+// Boxes around the bending axis (local (1/kv, y, 0), where the inverse bend's z spans most of a
+// turn and the whole-chain enclosure is trivial): what missesDeformedHull excludes there through
+// the unbent hull (|z| <= C, |x|, |y| or the twisted radius within the tapered half-lengths)
+// holds no sampled part at any sampled point. Sampling favours the corners of both boxes.
+TEST(SuperquadricBounds, UnbentHullHoldsEverySampledPartNearTheBendingAxis) {
+  std::mt19937_64 rng(20261202);
+  int missed = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    PlacedSuperquadric centre = randomPart(rng);
+    if (std::fabs(centre.params.kv) < 1e-3) continue;
+    const PartBox box = fuzzify(rng, centre, trial % 2 == 0 ? 0.02 : 0.1);
+    const SuperquadricParams& q = centre.params;
+    const Vec3 axis{1.0 / q.kv + uniform(rng, -0.3, 0.3) * q.A(),
+                    uniform(rng, -1.5, 1.5) * q.B(), uniform(rng, -0.3, 0.3) * q.C()};
+    const Vec3 c = PlacementFrame(centre.placement).toWorld(axis);
+    const double size = q.a1 * centre.placement.scale * uniform(rng, 0.0, 0.2);
+    const PointBox points{{c.x - size, c.x + size}, {c.y - size, c.y + size},
+                          {c.z - size, c.z + size}};
+    if (!missesDeformedHull(box, points.x, points.y, points.z)) continue;
+    // Missed although the box's centre lies in the bent hull of the centre part (the local box of
+    // deformedHalfExtents): the unbent hull decided.
+    double e[3];
+    deformedHalfExtents(box.params, &e[0], &e[1], &e[2]);
+    const Vec3 l = PlacementFrame(centre.placement).toLocal(c);
+    if (std::fabs(l.x) <= e[0] && std::fabs(l.y) <= e[1] && std::fabs(l.z) <= e[2]) ++missed;
+    for (int s = 0; s < 40; ++s) {
+      const PlacedSuperquadric part = samplePart(rng, box);
+      const Vec3 w{sample(rng, points.x), sample(rng, points.y), sample(rng, points.z)};
+      EXPECT_GT(part.insideOutside(w), 1.0) << "trial " << trial;
+    }
+  }
+  EXPECT_GT(missed, 100) << missed;
+}
+
+// A long bent, tapered part at a point on its bending axis (local (1/kv, 0, 0)): the bent hull
+// cannot miss it (the bend swings the long part past the axis), the unbent x is about 1/kv = 3.3,
+// far beyond A(1 + |kx|) = 1.5. Near such points the inverse bend's z spans most of a turn, a
+// taper factor may vanish and the enclosure may say nothing: before the unbent hull such voxels
+// of the 14-fuzzy bench part (bench_fuzzy_part_field.cpp) ran their searches out of budget and
+// answered u = 1.
+TEST(SuperquadricBounds, UnbentHullMissesAPointOnTheBendingAxis) {
+  PartBox box;
+  box.params.a3 = {4.0, 4.0};  // long enough for the bend to swing the bent hull past the axis
+  box.params.kx = {0.4, 0.5};
+  box.params.kv = {0.29, 0.31};
+  const Interval px{1.0 / 0.3, 1.0 / 0.3}, p0{0.0, 0.0};
+  EXPECT_TRUE(missesDeformedHull(box, px, p0, p0));
+  std::mt19937_64 rng(7);
+  for (int s = 0; s < 2000; ++s)
+    EXPECT_GT(samplePart(rng, box).insideOutside({px.lo, 0.0, 0.0}), 1.0);
 }
 
 // A twisted part with a fuzzy twist, at a point well off its axis: the radius that the twist
