@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_stats.h"
 #include "db/store.h"
 #include "geometry/error.h"
 #include "query/vocabulary.h"
@@ -28,6 +29,9 @@
 #include "server/documents.h"
 
 namespace {
+
+using fsdb::bench::percentile;
+using fsdb::bench::sameHits;
 
 using Clock = std::chrono::steady_clock;
 using nlohmann::json;
@@ -82,18 +86,6 @@ void build(const std::string& path, size_t n) {
   store.reset();
   std::filesystem::rename(tmp, path);
   std::fprintf(stderr, "built %s: %zu trees in %.1f s\n", path.c_str(), n, msSince(start) / 1000);
-}
-
-double percentile(std::vector<double> v, double q) {
-  std::sort(v.begin(), v.end());
-  return v[static_cast<size_t>(q * (v.size() - 1) + 0.5)];
-}
-
-bool sameHits(const fsdb::CsgSearchResult& a, const fsdb::CsgSearchResult& b) {
-  if (a.hits.size() != b.hits.size()) return false;
-  for (size_t i = 0; i < a.hits.size(); ++i)
-    if (a.hits[i].id != b.hits[i].id || a.hits[i].score.score != b.hits[i].score.score) return false;
-  return true;
 }
 
 const std::vector<std::string> kQueries = {

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_stats.h"
 #include "db/store.h"
 #include "geometry/error.h"
 #include "query/linguistic_query.h"
@@ -31,6 +32,9 @@
 #include "server/linguistic_search.h"
 
 namespace {
+
+using fsdb::bench::percentile;
+using fsdb::bench::sameHits;
 
 using Clock = std::chrono::steady_clock;
 
@@ -88,18 +92,6 @@ void build(const std::string& path, size_t n) {
   store.reset();
   std::filesystem::rename(tmp, path);
   std::fprintf(stderr, "built %s: %zu parts in %.1f s\n", path.c_str(), n, msSince(start) / 1000);
-}
-
-double percentile(std::vector<double> v, double q) {
-  std::sort(v.begin(), v.end());
-  return v[static_cast<size_t>(q * (v.size() - 1) + 0.5)];
-}
-
-bool sameResults(const fsdb::LinguisticSearchResult& a, const fsdb::LinguisticSearchResult& b) {
-  if (a.hits.size() != b.hits.size()) return false;
-  for (size_t i = 0; i < a.hits.size(); ++i)
-    if (a.hits[i].id != b.hits[i].id || a.hits[i].score.score != b.hits[i].score.score) return false;
-  return true;
 }
 
 const std::vector<std::string> kQueries = {
@@ -166,7 +158,7 @@ int main(int argc, char** argv) {
         }
         const double p50 = percentile(indexed, 0.5), p95 = percentile(indexed, 0.95);
         const double scan = scanned.empty() ? 0.0 : percentile(scanned, 0.5);
-        const bool equal = scanned.empty() || sameResults(a, b);  // --scan-reps 0: index only (profiling)
+        const bool equal = scanned.empty() || sameHits(a, b);  // --scan-reps 0: index only (profiling)
         std::printf("%-45s %9zu %9zu %9.2f %10.2f %7.0f %8.1fx %6s\n", ("\"" + text + "\"").c_str(), a.hits.size(),
                     a.candidates, p50, p95, scan, scan / p50, equal ? "yes" : "NO");
         std::fflush(stdout);

@@ -158,7 +158,16 @@ std::vector<double> radiusMagnitudes(const std::vector<Vec2>& points, const std:
   for (double v : e) mean += v;
   mean /= static_cast<double>(n);
   std::vector<double> r(n);
-  for (size_t i = 0; i < n; ++i) r[i] = chord * std::pow(ratio, e[i] - mean);
+  for (size_t i = 0; i < n; ++i) {
+    r[i] = chord * std::pow(ratio, e[i] - mean);
+    // Points near the double range (or a long run of one relation on a huge or tiny chord) leave
+    // no representable radius: the request's fault, named by its field, not buildFairCurve's.
+    if (!std::isfinite(r[i]) || !(r[i] > 0))
+      throw Error(errc::kInvalidParameter,
+                  "the radius-vector magnitudes are not representable (the points are too far apart or too close, "
+                  "or too many relations in a row); got " + formatNumber(r[i]) + " at " + pointPath(i),
+                  relations.empty() ? "points" : "relations");
+  }
   return r;
 }
 

@@ -67,6 +67,8 @@ struct FairCurve {
 // Checks points (finite, consecutive distinct, enough of them); throws as in the header.
 void checkFairPoints(const std::vector<Vec2>& points, bool closed);
 // |R_i| from the SMOOTHER / SHARPER relations (relations: N-1 entries open, N closed, or none).
+// Magnitudes that are not finite and > 0 (points near the double range) are invalid_parameter at
+// "points" (or "relations" when given).
 std::vector<double> radiusMagnitudes(const std::vector<Vec2>& points, const std::vector<Relation>& relations,
                                      bool closed, double ratio = 1.5);
 // The first estimation of the radius-vector angles, in degrees in [0, 180).

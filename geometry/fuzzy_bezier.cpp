@@ -31,7 +31,18 @@ void validatePolygon(const std::vector<FuzzyPoint>& points, const std::string& p
 
 double coreMidpoint(const FuzzyNumber& a) {
   const Interval c = a.core();
-  return 0.5 * (c.lo + c.hi);
+  return 0.5 * c.lo + 0.5 * c.hi;  // (lo + hi) / 2 overflows for ends near ±1.8e308
+}
+
+// Coordinates near the double range can still overflow in the combinations (a rational curve's
+// w·P, differences of the hull): an answer holds finite numbers or is refused, never null.
+FuzzyBezierPoint finite(FuzzyBezierPoint p, const char* path) {
+  for (const CrispPoint* q : {&p.lower, &p.crisp, &p.upper})
+    for (double x : *q)
+      if (!std::isfinite(x))
+        throw Error(errc::kDomainError, "the curve's values overflow the double range here (coordinates or weights too large)",
+                    path);
+  return p;
 }
 
 // Per control point: the lower ends of the coordinates' cuts, then the core midpoints, then the
@@ -217,8 +228,8 @@ BezierCurveCut cutCurve(const FuzzyBezierCurve& curve, double alpha) {
 
 FuzzyBezierPoint evaluateCut(const BezierCurveCut& cut, double u) {
   checkUnit(u, "u");
-  if (!cut.weights.empty()) return evaluateRational(cut, u);
-  return unpack(deCasteljau(cut.ends, u), cut.dimension);
+  if (!cut.weights.empty()) return finite(evaluateRational(cut, u), "control_points");
+  return finite(unpack(deCasteljau(cut.ends, u), cut.dimension), "control_points");
 }
 
 FuzzyBezierPoint evaluateCurve(const FuzzyBezierCurve& curve, double u, double alpha) {
@@ -243,7 +254,7 @@ FuzzyBezierPoint evaluateCut(const BezierSurfaceCut& cut, double u, double v) {
   // seed 003 Algorithm 2: de Casteljau along each row at v, then along the column at u.
   std::vector<CrispPoint> column;
   for (const auto& row : cut.ends) column.push_back(deCasteljau(row, v));
-  return unpack(deCasteljau(column, u), cut.dimension);
+  return finite(unpack(deCasteljau(column, u), cut.dimension), "control_grid");
 }
 
 FuzzyBezierPoint evaluateSurface(const FuzzyBezierSurface& surface, double u, double v, double alpha) {

@@ -52,7 +52,9 @@
 // a weight list of the wrong length and weights whose support reaches 0 or below are
 // errc::kInvalidDocument with the path of the bad item ("control_points[2]", "weights[1]",
 // "control_grid[1][3]"); α outside [0, 1] and u, v outside [0, 1] (or not finite) are
-// errc::kInvalidParameter ("alpha", "u", "v").
+// errc::kInvalidParameter ("alpha", "u", "v"); a point whose values overflow the double range
+// (coordinates or weights near ±1.8e308) is errc::kDomainError ("control_points", "control_grid"),
+// so an evaluation never returns inf or NaN.
 #include <cstddef>
 #include <vector>
 

@@ -15,6 +15,7 @@ namespace fsdb {
 namespace {
 
 constexpr double kNoMatch = -1;  // pairWeight of an inadmissible pair
+constexpr int kPollInterval = 4096;  // tree DP node pairs between CommonSubgraphOptions::poll calls
 
 // The weight a pair (u, v) adds when matched (query/common_subgraph.h objective), kNoMatch if it
 // may not be matched.
@@ -61,15 +62,18 @@ CommonSubgraph finish(std::vector<NodeMatch> matches, const CsgGraph& q, bool co
 
 class TreeMatcher {
  public:
-  TreeMatcher(const CsgGraph& q, const CsgGraph& s, const LeafSimilarityMatrix& sim, const CommonSubgraphOptions& o)
-      : q_(q), s_(s), sim_(sim), o_(o), best_(q.size() * s.size(), kNoMatch) {}
+  TreeMatcher(const CsgGraph& q, const CsgGraph& s, const LeafSimilarityMatrix& sim, const CommonSubgraphOptions& o,
+              const CommonSubgraphPoll& poll)
+      : q_(q), s_(s), sim_(sim), o_(o), poll_(poll), best_(q.size() * s.size(), kNoMatch) {}
 
   CommonSubgraph run() {
     const std::vector<int> qo = postOrder(q_), so = postOrder(s_);
     int bu = -1, bv = -1;
     double top = 0;
+    int untilPoll = kPollInterval;
     for (int u : qo)
       for (int v : so) {
+        if (poll_ && --untilPoll <= 0) poll_(), untilPoll = kPollInterval;
         const double w = pairWeight(q_, s_, sim_, o_, u, v);
         if (w == kNoMatch) continue;
         const double b = w + children(u, v, nullptr);
@@ -120,7 +124,7 @@ class TreeMatcher {
     std::vector<double> w(size_t(rows) * size_t(cols));
     for (int i = 0; i < rows; ++i)
       for (int j = 0; j < cols; ++j) w[size_t(i) * cols + j] = gain(a[from + i], b[from + j]);
-    const Assignment m = maxWeightAssignment(rows, cols, w);
+    const Assignment m = maxWeightAssignment(rows, cols, w, poll_);
     if (pairs)
       for (int i = 0; i < rows; ++i)
         if (m.columnOfRow[size_t(i)] >= 0) pairs->push_back({a[from + i], b[from + m.columnOfRow[size_t(i)]]});
@@ -138,6 +142,7 @@ class TreeMatcher {
   const CsgGraph& s_;
   const LeafSimilarityMatrix& sim_;
   const CommonSubgraphOptions& o_;
+  const CommonSubgraphPoll& poll_;
   std::vector<double> best_;
 };
 
@@ -176,8 +181,9 @@ std::vector<std::vector<std::pair<int, Relation>>> relations(const CsgGraph& g) 
 
 class BranchAndBound {
  public:
-  BranchAndBound(const CsgGraph& q, const CsgGraph& s, const LeafSimilarityMatrix& sim, const CommonSubgraphOptions& o)
-      : q_(q), s_(s), sim_(sim), o_(o), relQ_(relations(q)), relS_(relations(s)), codeQ_(q.size()),
+  BranchAndBound(const CsgGraph& q, const CsgGraph& s, const LeafSimilarityMatrix& sim, const CommonSubgraphOptions& o,
+                 const CommonSubgraphPoll& poll)
+      : q_(q), s_(s), sim_(sim), o_(o), poll_(poll), relQ_(relations(q)), relS_(relations(s)), codeQ_(q.size()),
         codeS_(s.size()),
         deadline_(std::chrono::steady_clock::now() +
                   std::chrono::microseconds(int64_t(std::max(0.0, std::min(o.timeBudgetMs, 1e12)) * 1000))) {}
@@ -235,6 +241,7 @@ class BranchAndBound {
     // work, so small graphs do not pay for it and large ones do not overrun the budget.
     if (--untilClock_ > 0) return false;
     untilClock_ = clockInterval_;
+    if (poll_) poll_();
     if (std::chrono::steady_clock::now() > deadline_) timedOut_ = true;
     return timedOut_;
   }
@@ -316,6 +323,7 @@ class BranchAndBound {
   const CsgGraph& s_;
   const LeafSimilarityMatrix& sim_;
   const CommonSubgraphOptions& o_;
+  const CommonSubgraphPoll& poll_;
   std::vector<std::vector<std::pair<int, Relation>>> relQ_, relS_;
   std::vector<Relation> codeQ_, codeS_;
   std::chrono::steady_clock::time_point deadline_;
@@ -328,17 +336,18 @@ class BranchAndBound {
 }  // namespace
 
 CommonSubgraph largestCommonSubgraph(const CsgGraph& query, const CsgGraph& stored,
-                                     const LeafSimilarityMatrix& leafSimilarity, const CommonSubgraphOptions& options) {
+                                     const LeafSimilarityMatrix& leafSimilarity, const CommonSubgraphOptions& options,
+                                     const CommonSubgraphPoll& poll) {
   checkInputs(query, stored, leafSimilarity);
-  if (query.isTree() && stored.isTree()) return TreeMatcher(query, stored, leafSimilarity, options).run();
-  return BranchAndBound(query, stored, leafSimilarity, options).run();
+  if (query.isTree() && stored.isTree()) return TreeMatcher(query, stored, leafSimilarity, options, poll).run();
+  return BranchAndBound(query, stored, leafSimilarity, options, poll).run();
 }
 
 CommonSubgraph largestCommonSubgraphSearch(const CsgGraph& query, const CsgGraph& stored,
                                            const LeafSimilarityMatrix& leafSimilarity,
-                                           const CommonSubgraphOptions& options) {
+                                           const CommonSubgraphOptions& options, const CommonSubgraphPoll& poll) {
   checkInputs(query, stored, leafSimilarity);
-  return BranchAndBound(query, stored, leafSimilarity, options).run();
+  return BranchAndBound(query, stored, leafSimilarity, options, poll).run();
 }
 
 }  // namespace fsdb

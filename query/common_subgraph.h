@@ -32,6 +32,7 @@
 // label-compatible pair; the search keeps the graphs' edges (no node-pair tables) and O(|Q| + |S|)
 // per search node. Callers bound the query size (SPEC §4 node limit).
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace fsdb {
@@ -49,6 +50,11 @@ struct CommonSubgraphOptions {
   double leafThreshold = 0.0;  // leaves match only when similarity > 0 and >= leafThreshold
   double timeBudgetMs = 100;   // general (DAG) search only; the tree algorithm is exact and polynomial
 };
+
+// `poll`, when set, is called now and then (about every 4096 node pairs of the tree DP, every row of
+// its assignments, every clock read of the DAG search); it may throw to abandon the whole match (the
+// caller's query time limit: a tree DP of two 10000-node unions is exact but not quick).
+using CommonSubgraphPoll = std::function<void()>;
 
 struct NodeMatch {
   int queryNode = 0;
@@ -68,12 +74,14 @@ struct CommonSubgraph {
 // index a node of its graph (invalid_parameter, path "leafSimilarity" or "graph", otherwise).
 CommonSubgraph largestCommonSubgraph(const CsgGraph& query, const CsgGraph& stored,
                                      const LeafSimilarityMatrix& leafSimilarity,
-                                     const CommonSubgraphOptions& options = {});
+                                     const CommonSubgraphOptions& options = {},
+                                     const CommonSubgraphPoll& poll = {});
 
 // The same objective solved by the general branch and bound even on trees (tests compare it with
 // the tree DP; callers use largestCommonSubgraph).
 CommonSubgraph largestCommonSubgraphSearch(const CsgGraph& query, const CsgGraph& stored,
                                            const LeafSimilarityMatrix& leafSimilarity,
-                                           const CommonSubgraphOptions& options = {});
+                                           const CommonSubgraphOptions& options = {},
+                                     const CommonSubgraphPoll& poll = {});
 
 }  // namespace fsdb

@@ -72,34 +72,49 @@ class PhraseParser {
   }
 
  private:
+  // A chain of minus nests (differences are not associative): each link counts as a nesting level.
   nlohmann::json expr() {
     nlohmann::json left = list();
-    while (acceptAny({"minus", "without"})) left = combine("difference", std::move(left), list());
-    return left;
-  }
-
-  nlohmann::json list() {
-    nlohmann::json left = meet();
-    while (joinsList()) left = combine("union", std::move(left), meet());
-    return left;
-  }
-
-  nlohmann::json meet() {
-    nlohmann::json left = item();
-    while (at("intersected")) {
-      ++pos_;
-      expect("with");
-      left = combine("intersection", std::move(left), item());
+    int links = 0;
+    while (acceptAny({"minus", "without"})) {
+      if (depth_ + ++links > kMaxNesting) tooDeep();
+      nlohmann::json operands = nlohmann::json::array();
+      operands.push_back(std::move(left));
+      operands.push_back(list());
+      left = node("difference", std::move(operands));
     }
     return left;
   }
 
+  // A list is one n-ary union (unions flatten in the graph anyway), built without copies: a list of
+  // thousands of operands is one node, not a left-deep chain copied at every link.
+  nlohmann::json list() {
+    nlohmann::json operands = nlohmann::json::array();
+    operands.push_back(meet());
+    while (joinsList()) operands.push_back(meet());
+    return operands.size() == 1 ? std::move(operands[0]) : node("union", std::move(operands));
+  }
+
+  nlohmann::json meet() {
+    nlohmann::json operands = nlohmann::json::array();
+    operands.push_back(item());
+    while (at("intersected")) {
+      ++pos_;
+      expect("with");
+      operands.push_back(item());
+    }
+    return operands.size() == 1 ? std::move(operands[0]) : node("intersection", std::move(operands));
+  }
+
+  [[noreturn]] void tooDeep() const {
+    throw Error(errc::kLimitExceeded,
+                "the query nests operations deeper than " + std::to_string(kMaxNesting) + " levels (at character " +
+                    std::to_string(offset()) + ")",
+                "text");
+  }
+
   nlohmann::json item() {
-    if (++depth_ > kMaxNesting)
-      throw Error(errc::kLimitExceeded,
-                  "the query nests operations deeper than " + std::to_string(kMaxNesting) + " levels (at character " +
-                      std::to_string(offset()) + ")",
-                  "text");
+    if (++depth_ > kMaxNesting) tooDeep();
     struct Leave {
       int& d;
       ~Leave() { --d; }
@@ -114,16 +129,17 @@ class PhraseParser {
     if (at("union") || at("intersection") || at("difference")) {
       const std::string op = words_[pos_++].text;
       expect("of");
-      nlohmann::json node{{"op", op}, {"children", {item()}}};
+      nlohmann::json operands = nlohmann::json::array();
+      operands.push_back(item());
       if (op == "difference") {
         expect("and");
-        node["children"].push_back(item());
-        return node;
+        operands.push_back(item());
+        return node(op, std::move(operands));
       }
       if (!joinsList()) fail({"'and'", "','"});
-      do node["children"].push_back(item());
+      do operands.push_back(item());
       while (joinsList());
-      return node;
+      return node(op, std::move(operands));
     }
     pos_ = save;
     return leaf();
@@ -150,8 +166,12 @@ class PhraseParser {
     return accept("and") || accept("plus");
   }
 
-  static nlohmann::json combine(const std::string& op, nlohmann::json left, nlohmann::json right) {
-    return {{"op", op}, {"children", {std::move(left), std::move(right)}}};
+  // {"op", "children"} taking the operands by move (a braced json list would copy them).
+  static nlohmann::json node(const std::string& op, nlohmann::json operands) {
+    nlohmann::json out = nlohmann::json::object();
+    out["op"] = op;
+    out["children"] = std::move(operands);
+    return out;
   }
 
   bool at(const std::string& w) const { return pos_ < words_.size() && words_[pos_].text == w; }
@@ -259,7 +279,7 @@ CsgQuery graphOf(const std::string& form, const nlohmann::json& doc, const std::
 // The query tree as "parsed" shows it: placeholders replaced by the description.
 nlohmann::json shownTree(nlohmann::json tree, const std::vector<CsgQueryLeaf>& descriptions) {
   if (tree.contains("children")) {
-    for (nlohmann::json& c : tree["children"]) c = shownTree(c, descriptions);
+    for (nlohmann::json& c : tree["children"]) c = shownTree(std::move(c), descriptions);
     return tree;
   }
   if (tree.contains("part") && tree["part"].is_object() && tree["part"].contains("name")) {

@@ -88,7 +88,8 @@ class Search {
     CsgHit hit;
     hit.id = stored.id;
     hit.match = largestCommonSubgraph(query_.graph, stored.shape.graph, leaf,
-                                      {options_.leafThreshold, options_.timeBudgetMs});
+                                      {options_.leafThreshold, options_.timeBudgetMs},
+                                      [this] { checkTime(); });  // max_query_ms holds inside one long match too
     hit.score = scoreCommonSubgraph(query_.graph, stored.shape.graph, hit.match, transform, options_.weights);
     if (!(hit.score.score > 0) || hit.score.score < options_.threshold) return;
     hit.stored = handle;

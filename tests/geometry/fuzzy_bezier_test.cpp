@@ -68,6 +68,30 @@ void expectNested(const FuzzyBezierPoint& p1, const FuzzyBezierPoint& p2) {
   }
 }
 
+// Ends near the double range: the crisp midpoint of a core [1e308, 1e308] is 1e308 (it was
+// (lo + hi) / 2 = inf, shown as null), and values that do overflow are refused, never inf or NaN.
+TEST(FuzzyBezier, HugeCoordinatesStayFiniteOrAreRefused) {
+  FuzzyBezierCurve big;
+  big.controlPoints = {{FuzzyNumber::crisp(1e308), FuzzyNumber::crisp(-1e308)},
+                       {FuzzyNumber::crisp(1e308), FuzzyNumber::crisp(1e308)}};
+  const FuzzyBezierPoint p = evaluateCurve(big, 0.5, 0.0);
+  EXPECT_EQ(p.crisp, (CrispPoint{1e308, 0.0}));
+  EXPECT_EQ(p.lower, p.crisp);
+  FuzzyBezierCurve rational;
+  for (int k = 0; k < 3; ++k) {
+    rational.controlPoints.push_back({FuzzyNumber::triangular(-1e308, 0, 1e308), FuzzyNumber::crisp(1)});
+    rational.weights.push_back(FuzzyNumber::triangular(1e-300, 1, 1e300));
+  }
+  try {
+    evaluateCurve(rational, 0.5, 0.0);
+    ADD_FAILURE() << "an overflowing hull was returned";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), errc::kDomainError);
+    EXPECT_EQ(e.path(), "control_points");
+  }
+  EXPECT_NO_THROW(evaluateCurve(rational, 0.5, 1.0));  // the core is finite
+}
+
 TEST(FuzzyBezier, TriangularCutIsTheSeedFormula) {
   // seed 003 eq. 3: [l + α(m − l), r − α(r − m)].
   const FuzzyNumber a = FuzzyNumber::triangular(1, 2, 4);

@@ -67,6 +67,34 @@ TEST(Assignment, PrefersTheBetterTotalOverTheGreedyPair) {
   EXPECT_EQ(a.columnOfRow, (std::vector<int>{1, 0}));
 }
 
+// A union of thousands of children against one of a few (POST /query/csg with a long list) is
+// k²·n work, not n³: 20000 x 3 would be ~8e12 steps padded to a square.
+TEST(Assignment, LongThinMatricesAugmentTheSmallerSide) {
+  const int rows = 20000, cols = 3;
+  std::vector<double> w(size_t(rows) * cols, 0.5);
+  w[size_t(7) * cols + 0] = 2;      // the best rows of each column
+  w[size_t(19999) * cols + 1] = 3;
+  w[size_t(123) * cols + 2] = 4;
+  int polls = 0;
+  const Assignment a = maxWeightAssignment(rows, cols, w, [&] { ++polls; });
+  EXPECT_DOUBLE_EQ(a.weight, 9);
+  EXPECT_EQ(a.columnOfRow[7], 0);
+  EXPECT_EQ(a.columnOfRow[19999], 1);
+  EXPECT_EQ(a.columnOfRow[123], 2);
+  EXPECT_EQ(polls, cols);  // once per augmented (smaller-side) vertex
+  std::vector<double> t(size_t(rows) * cols);  // the transpose: 3 x 20000
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c) t[size_t(c) * rows + r] = w[size_t(r) * cols + c];
+  const Assignment b = maxWeightAssignment(cols, rows, t);
+  EXPECT_DOUBLE_EQ(b.weight, 9);
+  EXPECT_EQ(b.columnOfRow, (std::vector<int>{7, 19999, 123}));
+}
+
+TEST(Assignment, PollMayStopTheRun) {
+  EXPECT_THROW(maxWeightAssignment(3, 3, std::vector<double>(9, 1.0), [] { throw Error(errc::kLimitExceeded, "stop"); }),
+               Error);
+}
+
 TEST(Assignment, RejectsBadWeights) {
   EXPECT_THROW(maxWeightAssignment(2, 2, {1, 2, 3}), Error);
   EXPECT_THROW(maxWeightAssignment(1, 1, {-1}), Error);

@@ -373,6 +373,22 @@ TEST(CommonSubgraph, TimeBudgetCutsTheSearchShort) {
   expectValid(q, s, m, 0, r);
 }
 
+// A union of 3000 leaves against a union of 3 (a long CSG list query): the children's assignment
+// augments the 3, and the poll runs; a throwing poll abandons the match (the search's time limit).
+TEST(CommonSubgraph, WideUnionsMatchQuicklyAndPollStopsThem) {
+  std::vector<CsgGraphNode> wide{op(CsgGraphOp::Union, {})};
+  for (int i = 0; i < 3000; ++i) wide[0].children.push_back(i + 1), wide.push_back(leaf(i));
+  const CsgGraph q = graph(wide);
+  const CsgGraph s = graph({op(CsgGraphOp::Union, {1, 2, 3}), leaf(0), leaf(1), leaf(2)});
+  LeafSimilarityMatrix m = ones(3000, 3);
+  int polls = 0;
+  const CommonSubgraph r = largestCommonSubgraph(q, s, m, {}, [&] { ++polls; });
+  EXPECT_DOUBLE_EQ(r.weight, 4);  // the union and three leaves
+  EXPECT_GT(polls, 0);
+  EXPECT_THROW(largestCommonSubgraph(q, q, ones(3000, 3000), {}, [] { throw Error(errc::kLimitExceeded, "stop"); }),
+               Error);
+}
+
 TEST(CommonSubgraph, RejectsAMatrixOfTheWrongSize) {
   const CsgGraph q = graph({leaf(0)});
   try {

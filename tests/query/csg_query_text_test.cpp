@@ -8,6 +8,7 @@
 #include "geometry/error.h"
 #include "query/vocabulary.h"
 #include "tests/testing/grammar_examples.h"
+#include "tests/testing/text_error.h"
 
 namespace fsdb {
 namespace {
@@ -28,15 +29,7 @@ std::string shape(const CsgQuery& q, int node) {
 std::string shape(const CsgQuery& q) { return shape(q, q.graph.root); }
 
 std::string errorOf(const std::string& text, const ReferenceResolver& resolver = {}) {
-  try {
-    parse(text, resolver);
-  } catch (const Error& e) {
-    EXPECT_EQ(e.code(), errc::kInvalidParameter) << text;
-    EXPECT_EQ(e.path(), "text") << text;
-    return e.what();
-  }
-  ADD_FAILURE() << "no error for \"" << text << "\"";
-  return "";
+  return test::textErrorOf(text, [&](const std::string& t) { parse(t, resolver); });
 }
 
 TEST(CsgQueryText, PhraseOperations) {

@@ -12,6 +12,7 @@
 #include "query/fuzzy_json.h"
 #include "query/vocabulary.h"
 #include "tests/testing/grammar_examples.h"
+#include "tests/testing/text_error.h"
 
 namespace fsdb {
 namespace {
@@ -22,15 +23,7 @@ const Vocabulary& v() { return Vocabulary::builtin(); }
 LinguisticQuery parse(const std::string& text) { return parseLinguisticQuery(text, v()); }
 
 std::string errorOf(const std::string& text) {
-  try {
-    parse(text);
-  } catch (const Error& e) {
-    EXPECT_EQ(e.code(), errc::kInvalidParameter) << text;
-    EXPECT_EQ(e.path(), "text") << text;
-    return e.what();
-  }
-  ADD_FAILURE() << "no error for \"" << text << "\"";
-  return "";
+  return test::textErrorOf(text, [](const std::string& t) { parse(t); });
 }
 
 void expectLeaf(const QueryCondition& c, const std::string& descriptor, const FuzzyNumber& set, const std::string& text) {

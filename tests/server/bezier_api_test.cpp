@@ -56,6 +56,19 @@ TEST_F(BezierApi, EvaluatesLowerCrispAndUpperCurves) {
   EXPECT_EQ(p[2]["crisp"], json({4.0, 0.0}));
 }
 
+// Coordinates near the double range: the crisp curve was null ((lo + hi) / 2 overflowed); an
+// evaluation that does overflow is 422 domain_error, never a null in a 200.
+TEST_F(BezierApi, HugeCoordinatesAreFiniteOrRefused) {
+  auto r = server->post("/curves/bezier/evaluate", json{{"control_points", {{1e308, 1e308}, {1e308, -1e308}}}, {"u", {0.5}}});
+  ASSERT_EQ(r.status, 200) << r.body;
+  EXPECT_EQ(r.json["points"][0]["crisp"], json({1e308, 0.0})) << r.body;
+  const json coordinate = json::object({{"tri", {-1e308, 0, 1e308}}}), weight = json::object({{"tri", {1e-300, 1, 1e300}}});
+  const json wide = json::array({json::array({coordinate, 1}), json::array({coordinate, 1})});
+  const json weights = json::array({weight, weight});
+  expectError(server->post("/curves/bezier/evaluate", json{{"control_points", wide}, {"weights", weights}, {"u", {0.5}}}),
+              422, "domain_error", "control_points");
+}
+
 TEST_F(BezierApi, AlphaDefaultsToTheSupport) {
   auto r = server->post("/curves/bezier/evaluate", json{{"control_points", arcPoints()}, {"u", {0}}});
   ASSERT_EQ(r.status, 200) << r.body;

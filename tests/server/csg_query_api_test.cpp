@@ -209,6 +209,31 @@ TEST(CsgQueryApi, NodeAndTimeLimits) {
   EXPECT_EQ(server.get("/health").status, 200);
 }
 
+// Wide queries within --max-nodes: a union of thousands of children matched against small stored
+// unions is an assignment of thousands against a few (it was padded to a square: hours); a phrase
+// list of thousands of operands is one union (it was a left-deep chain copied at every "and": tens
+// of seconds); a match of two wide unions that takes too long stops at --max-query-ms (it ran on
+// past it inside one tree DP).
+TEST(CsgQueryApi, WideQueriesAnswerOrStopAtTheTimeLimit) {
+  ServerProcess server({"--max-query-ms", "1000"});
+  shape(server, "pair", node("union", {kBent, kSharp}));
+  json wide = json::array();
+  for (int i = 0; i < 5000; ++i) wide.push_back(i % 2 ? kBent : kSharp);
+  json a = query(server, {{"tree", node("union", wide)}});
+  EXPECT_EQ(a["parsed"]["leaves"], 5000);
+  EXPECT_EQ(names(a), (std::vector<std::string>{"pair"}));
+  std::string text = "a very bent cylinder";
+  for (int i = 0; i < 3000; ++i) text += " and a very sharp pyramid";
+  a = query(server, {{"text", text}});
+  EXPECT_EQ(a["parsed"]["leaves"], 3001);
+  EXPECT_EQ(a["parsed"]["tree"]["children"].size(), 3001u) << "one n-ary union";
+  EXPECT_EQ(names(a), (std::vector<std::string>{"pair"}));
+  shape(server, "wide", node("union", json(wide.begin(), wide.begin() + 4000)));
+  json e = query(server, {{"tree", node("union", wide)}}, 413);
+  EXPECT_NE(e["error"]["message"].get<std::string>().find("max_query_ms=1000"), std::string::npos) << e.dump();
+  EXPECT_EQ(server.get("/health").status, 200);
+}
+
 TEST(CsgQueryCli, RoutesCsgTexts) {
   TempDir dir;
   const std::string db = dir.file("cli.sqlite");

@@ -112,4 +112,10 @@ TEST_F(FairCurveApi, LimitsAnswer413NamingTheLimitAndTheServerKeepsServing) {
   EXPECT_EQ(server->get("/health").status, 200);
 }
 
+// Points near the double range: the error named "magnitudes[0]", a field no request has.
+TEST_F(FairCurveApi, UnrepresentableRadiiNameThePoints) {
+  expectError({{"points", {{0, 0}, {1e308, 0}, {1e308, 1e308}}}}, 422, "invalid_parameter", "points");
+  expectError({{"points", {{-1e308, 0}, {1e308, 0}, {0, 1e308}}}, {"closed", true}}, 422, "invalid_parameter", "points");
+}
+
 }  // namespace
