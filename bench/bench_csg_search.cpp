@@ -1,7 +1,8 @@
 // Structural search speed (issue 6): POST /query/csg's search (server/csg_search.h) over N stored
 // trees, pruned (signature and matrix bounds) against unpruned (every tree matched), in one run.
 // Goal: p50 < 200 ms at 10k trees with the stored graphs in memory (server/stored_graphs.h); the
-// first query of a process (graphs built from the documents) is reported apart as "cold".
+// first query of a process (graphs built from the documents, in parallel) is reported apart as "cold",
+// after the same build done serially ("cold serial build").
 //
 // Usage: bench_csg_search [--sizes 10000] [--dir DIR] [--reps R] [--full-reps S]
 //                         [--benchmark_out=FILE.json] (other --benchmark_* flags are ignored)
@@ -136,6 +137,14 @@ int main(int argc, char** argv) {
         fsdb::CsgSearchOptions options;
         options.limit = 10;
         if (cache.size() == 0) {
+          {  // the serial build of every graph (one graph() call per shape), for the ratio to the parallel one
+            fsdb::StoredGraphCache serial;
+            const fsdb::StoreVersions versions = fsdb::StoreVersions::read(*store);
+            const auto t = Clock::now();
+            for (const fsdb::ObjectVersion& shape : versions.shapes) serial.graph(*store, shape, versions, 10000);
+            std::printf("cold serial build (graphs of %zu trees, one at a time): %.0f ms\n", serial.size(), msSince(t));
+            report.push_back({{"trees", n}, {"cold_serial_ms", msSince(t)}});
+          }
           const auto t = Clock::now();
           fsdb::searchCsg(*store, q, options, cache);
           std::printf("cold (graphs of %zu trees built from their documents): %.0f ms\n", cache.size(), msSince(t));

@@ -45,14 +45,12 @@ class Search {
   CsgSearchResult run(const Store& store, StoredGraphCache& cache) {
     const StoreVersions versions = StoreVersions::read(store);
     std::vector<Candidate> candidates;
-    for (const ObjectVersion& shape : versions.shapes) {
-      checkTime();
-      try {
-        std::shared_ptr<const StoredGraph> g = cache.graph(store, shape, versions, options_.maxNodes);
-        candidates.push_back({signatureBound(signature_, g->signature, options_.weights), std::move(g)});
-      } catch (const Error& e) {
-        if (e.code() != std::string(errc::kNotFound)) throw;  // deleted meanwhile
-      }
+    // Missing graphs (the first search of a process, or after writes) are built in parallel.
+    for (std::shared_ptr<const StoredGraph>& g :
+         cache.graphs(store, versions, options_.maxNodes, [this]() { checkTime(); })) {
+      if (!g) continue;  // deleted meanwhile
+      const double bound = signatureBound(signature_, g->signature, options_.weights);
+      candidates.push_back({bound, std::move(g)});
     }
     result_.candidates = candidates.size();
     std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {

@@ -49,6 +49,9 @@ struct ServerOptions {
   std::string token;
   int port = 8080;  // 0: pick a free port
   int threads = 0;  // 0: hardware concurrency (at least 2)
+  // Build the stored shapes' graphs of structural search in the background at start
+  // (server/graph_warmup.h); --no-warm-graphs turns it off.
+  bool warmGraphs = true;
   ServerLimits limits;
 };
 

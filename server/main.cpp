@@ -196,6 +196,8 @@ int main(int argc, char** argv) {
   serveCmd->add_option("--max-fair-curve-points", serve.limits.fairCurve.maxCurvePoints,
                        "most curve points (candidates x pieces x samples) of one fair-curve answer")
       ->check(CLI::PositiveNumber)->capture_default_str();
+  serveCmd->add_flag_callback("--no-warm-graphs", [&serve]() { serve.warmGraphs = false; },
+                              "do not build the graphs of structural search at start (the first query does)");
   serveCmd->add_option("--max-query-ms", serve.limits.maxQueryMs,
                        "longest POST /query/linguistic or /query/csg search in milliseconds (413 beyond); 0: no limit")
       ->check(CLI::Range(0, 86400000))->capture_default_str();

@@ -4,6 +4,7 @@
 
 #include "server/api.h"
 #include "server/csg_search.h"
+#include "server/graph_warmup.h"
 #include "server/http_server.h"
 #include "server/linguistic_search.h"
 
@@ -19,7 +20,11 @@ void registerQueryRoutes(HttpServer& server, const Store& store) {
   // The stored graphs live as long as the route; entries are checked against the store's versions
   // on every query (server/stored_graphs.h), so writes need not notify it.
   auto cache = std::make_shared<StoredGraphCache>();
-  server.addRoute("POST", "/query/csg", [&store, csgLimits, cache](const ApiRequest& req) {
+  // Built in the background from the start (server/graph_warmup.h); the route owns it, so it stops
+  // and joins when the server goes, before the store.
+  std::shared_ptr<GraphWarmup> warmup;
+  if (server.options().warmGraphs) warmup = std::make_shared<GraphWarmup>(store, cache, limits.maxNodes);
+  server.addRoute("POST", "/query/csg", [&store, csgLimits, cache, warmup](const ApiRequest& req) {
     return ApiResponse{200, csgQueryResponse(store, req.body, csgLimits, *cache)};
   });
 }

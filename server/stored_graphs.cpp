@@ -1,8 +1,14 @@
 // See server/stored_graphs.h.
 #include "server/stored_graphs.h"
 
+#include <atomic>
+#include <chrono>
 #include <cstring>
+#include <exception>
 
+#include <tbb/parallel_for.h>
+
+#include "geometry/error.h"
 #include "server/documents.h"
 
 namespace fsdb {
@@ -90,14 +96,77 @@ std::shared_ptr<const StoredGraph> StoredGraphCache::graph(const Store& store, c
   }
   std::shared_ptr<StoredGraph> built = buildStoredGraph(store, shape.id, maxNodes, versions);
   std::lock_guard<std::mutex> lock(mutex_);
+  insert(built);
+  return built;
+}
+
+void StoredGraphCache::insert(const std::shared_ptr<StoredGraph>& built) {
   ++builds_;
   if (entries_.size() >= maxEntries_) {
     entries_.clear();
     parts_.clear();
   }
   for (const CsgGraphLeaf& leaf : built->shape.leaves) built->leafParts.push_back(intern(leaf.part));
-  entries_[shape.id] = built;
-  return built;
+  entries_[built->id] = built;
+}
+
+std::vector<std::shared_ptr<const StoredGraph>> StoredGraphCache::graphs(const Store& store,
+                                                                         const StoreVersions& versions,
+                                                                         size_t maxNodes,
+                                                                         const std::function<void()>& check) {
+  const std::vector<ObjectVersion>& shapes = versions.shapes;
+  std::vector<std::shared_ptr<const StoredGraph>> out(shapes.size());
+  // The indexes of `shapes` without a current entry; the others are filled in.
+  const auto lookUp = [&]() {
+    std::vector<size_t> missing;
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (size_t i = 0; i < shapes.size(); ++i) {
+      if (out[i]) continue;
+      const auto it = entries_.find(shapes[i].id);
+      if (it != entries_.end() && current(*it->second, shapes[i], versions)) out[i] = it->second;
+      else missing.push_back(i);
+    }
+    return missing;
+  };
+  if (lookUp().empty()) return out;
+  std::unique_lock<std::timed_mutex> building(buildMutex_, std::defer_lock);
+  while (!building.try_lock_for(std::chrono::milliseconds(20)))
+    if (check) check();
+  const std::vector<size_t> missing = lookUp();  // what the build we waited for left
+  std::vector<std::shared_ptr<StoredGraph>> built(missing.size());
+  std::vector<std::exception_ptr> errors(missing.size());
+  std::atomic<bool> stopped{false};  // check() threw: build nothing more
+  std::exception_ptr stopError;
+  std::mutex stopMutex;
+  tbb::parallel_for(size_t(0), missing.size(), [&](size_t k) {
+    if (stopped.load()) return;
+    try {
+      if (check) check();
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(stopMutex);
+      if (!stopped.exchange(true)) stopError = std::current_exception();
+      return;
+    }
+    try {
+      built[k] = buildStoredGraph(store, shapes[missing[k]].id, maxNodes, versions);
+    } catch (const Error& e) {
+      if (e.code() != std::string(errc::kNotFound)) errors[k] = std::current_exception();  // not_found: deleted
+    } catch (...) {
+      errors[k] = std::current_exception();
+    }
+  });
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (size_t k = 0; k < missing.size(); ++k) {  // in shape order: the interned ids of serial graph() calls
+      if (!built[k]) continue;
+      insert(built[k]);
+      out[missing[k]] = built[k];
+    }
+  }
+  if (stopError) std::rethrow_exception(stopError);
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+  return out;
 }
 
 int64_t StoredGraphCache::intern(const FuzzyPart& part) {

@@ -14,7 +14,13 @@
 //   asked for; their entries go when the cache is cleared (when it holds more than maxEntries).
 // - Thread-safe; a graph is built outside the lock (two threads may build the same one; either
 //   result is the same).
+// - graphs() builds every missing or stale entry of a search at once, in parallel (tbb), and interns
+//   the leaves' parts in shape order afterwards, so the entries (leafParts ids included) are those
+//   of calling graph() for each shape in order. One graphs() build runs at a time: a search that
+//   arrives while another (or the warm-up at serve start, server/graph_warmup.h) builds waits for
+//   it and then builds only what is still missing, so no graph is built twice.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <unordered_map>
@@ -64,11 +70,19 @@ class StoredGraphCache {
   explicit StoredGraphCache(size_t maxEntries = 200000) : maxEntries_(maxEntries) {}
   std::shared_ptr<const StoredGraph> graph(const Store& store, const ObjectVersion& shape, const StoreVersions& versions,
                                            size_t maxNodes);
+  // The graphs of versions.shapes, in that order (nullptr for a shape deleted meanwhile). check()
+  // (may be empty) runs while waiting for another build and before each build; what it throws
+  // stops the build and is rethrown. Other build errors: the one of the first shape in order is
+  // rethrown after the others were built and kept.
+  std::vector<std::shared_ptr<const StoredGraph>> graphs(const Store& store, const StoreVersions& versions,
+                                                         size_t maxNodes, const std::function<void()>& check = {});
   size_t size() const;
   size_t builds() const;  // graphs built since construction (tests and bench see hits and misses)
 
  private:
   int64_t intern(const FuzzyPart& part);  // under mutex_; ids are never reused, even after a clear
+  // Under mutex_: counts the build, interns its parts and keeps it.
+  void insert(const std::shared_ptr<StoredGraph>& built);
 
   std::unordered_map<uint64_t, std::vector<std::pair<FuzzyPart, int64_t>>> parts_;  // partKey -> (part, id)
   int64_t nextPart_ = 0;
@@ -76,6 +90,7 @@ class StoredGraphCache {
   std::unordered_map<int64_t, std::shared_ptr<const StoredGraph>> entries_;
   size_t builds_ = 0;
   const size_t maxEntries_;
+  std::timed_mutex buildMutex_;  // held by the one graphs() build at a time
 };
 
 }  // namespace fsdb

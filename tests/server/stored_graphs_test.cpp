@@ -1,8 +1,12 @@
 // The stored-graph cache (server/stored_graphs.h): partKey and samePart, one id for equal leaf parts
-// across trees, entries served while the versions hold and rebuilt after a write they depend on.
+// across trees, entries served while the versions hold and rebuilt after a write they depend on;
+// graphs() (the parallel build) gives the entries of serial graph() calls, builds each graph once
+// when two threads ask at the same time, and skips deleted shapes.
 #include "server/stored_graphs.h"
 
 #include <gtest/gtest.h>
+
+#include <thread>
 
 #include "server/documents.h"
 #include "tests/db/temp_dir.h"
@@ -61,6 +65,98 @@ TEST(StoredGraphs, EqualLeavesShareAnIdAndWritesRebuild) {
   EXPECT_NE(again->leafParts[0], g1->leafParts[0]);
   EXPECT_EQ(cache.builds(), 3u);
   EXPECT_EQ(cache.size(), 2u);
+}
+
+// A catalogue of `n` trees over two stored parts and a few parts from words (leaves repeat, so the
+// interned ids matter).
+std::unique_ptr<Store> catalogue(const TempDir& dir, int n) {
+  auto store = Store::open(dir.file("fsdb.sqlite"));
+  const auto create = [&](const json& doc, const std::string& kind) {
+    return store->create(prepareDocument(doc, kind, *store, DocumentLimits{1000}, "")).id;
+  };
+  create({{"name", "rod"}, {"params", {{"a1", 1}, {"a3", 3}}}}, "part");
+  create({{"name", "plate"}, {"params", {{"a1", 2}, {"a2", 2}, {"a3", 0.2}}}}, "part");
+  const std::vector<json> leaves = {{{"part", "rod"}}, {{"part", "plate"}}, {{"part", {{"text", "a sphere"}}}},
+                                    {{"part", {{"text", "a very bent cylinder"}}}}, {{"part", {{"text", "a box"}}}}};
+  const std::vector<std::string> ops = {"union", "intersection", "difference"};
+  for (int i = 0; i < n; ++i) {
+    json tree = {{"op", ops[size_t(i) % 3]},
+                 {"children", {leaves[size_t(i) % 5], leaves[size_t(i * 7 + 1) % 5]}}};
+    if (i % 4 == 0) tree = {{"op", "union"}, {"children", {tree, leaves[size_t(i / 4) % 5]}}};
+    create({{"name", "s" + std::to_string(i)}, {"tree", tree}}, "shape");
+  }
+  return store;
+}
+
+void expectSameGraph(const StoredGraph& a, const StoredGraph& b) {
+  EXPECT_EQ(a.id, b.id);
+  EXPECT_EQ(a.version, b.version);
+  EXPECT_EQ(a.name, b.name);
+  EXPECT_EQ(a.leafParts, b.leafParts);
+  EXPECT_EQ(a.reached, b.reached);
+  EXPECT_EQ(a.signature.nodes(), b.signature.nodes());
+  EXPECT_EQ(a.signature.unions, b.signature.unions);
+  EXPECT_EQ(a.signature.differences, b.signature.differences);
+  EXPECT_EQ(a.shape.graph.nodes.size(), b.shape.graph.nodes.size());
+  ASSERT_EQ(a.shape.leaves.size(), b.shape.leaves.size());
+  for (size_t i = 0; i < a.shape.leaves.size(); ++i) EXPECT_TRUE(samePart(a.shape.leaves[i].part, b.shape.leaves[i].part));
+  ASSERT_EQ(a.leafDescriptors.size(), b.leafDescriptors.size());
+  for (size_t i = 0; i < a.leafDescriptors.size(); ++i) {
+    ASSERT_EQ(a.leafDescriptors[i].size(), b.leafDescriptors[i].size());
+    for (size_t j = 0; j < a.leafDescriptors[i].size(); ++j) {
+      EXPECT_EQ(a.leafDescriptors[i][j].descriptor, b.leafDescriptors[i][j].descriptor);
+      EXPECT_TRUE(a.leafDescriptors[i][j].value == b.leafDescriptors[i][j].value);
+    }
+  }
+}
+
+TEST(StoredGraphs, ParallelBuildGivesTheSerialGraphs) {
+  TempDir dir;
+  auto store = catalogue(dir, 120);
+  const StoreVersions versions = StoreVersions::read(*store);
+  ASSERT_EQ(versions.shapes.size(), 120u);
+  StoredGraphCache serial, parallel;
+  std::vector<std::shared_ptr<const StoredGraph>> one;
+  for (const ObjectVersion& shape : versions.shapes) one.push_back(serial.graph(*store, shape, versions, 1000));
+  const auto all = parallel.graphs(*store, versions, 1000);
+  ASSERT_EQ(all.size(), one.size());
+  for (size_t i = 0; i < all.size(); ++i) {
+    ASSERT_TRUE(all[i]);
+    expectSameGraph(*all[i], *one[i]);
+  }
+  EXPECT_EQ(parallel.builds(), 120u);
+  EXPECT_EQ(parallel.graphs(*store, versions, 1000), all);  // served from the cache, nothing rebuilt
+  EXPECT_EQ(parallel.builds(), 120u);
+  EXPECT_EQ(parallel.graph(*store, versions.shapes[7], versions, 1000), all[7]);
+}
+
+TEST(StoredGraphs, ConcurrentBuildsBuildEachGraphOnce) {
+  TempDir dir;
+  auto store = catalogue(dir, 200);
+  const StoreVersions versions = StoreVersions::read(*store);
+  StoredGraphCache cache;
+  std::vector<std::shared_ptr<const StoredGraph>> a, b;
+  std::thread other([&]() { a = cache.graphs(*store, versions, 1000); });
+  b = cache.graphs(*store, versions, 1000);
+  other.join();
+  EXPECT_EQ(cache.builds(), 200u);  // the second waited for the first and found every graph
+  EXPECT_EQ(a, b);
+}
+
+TEST(StoredGraphs, GraphsSkipDeletedShapesAndStopOnCheck) {
+  TempDir dir;
+  auto store = catalogue(dir, 10);
+  const StoreVersions versions = StoreVersions::read(*store);
+  store->remove("shape", versions.shapes[3].id, false);
+  StoredGraphCache cache;
+  const auto all = cache.graphs(*store, versions, 1000);
+  ASSERT_EQ(all.size(), 10u);
+  EXPECT_FALSE(all[3]);  // deleted after the versions were read
+  EXPECT_TRUE(all[2] && all[4]);
+  StoredGraphCache stopped;
+  EXPECT_THROW(stopped.graphs(*store, StoreVersions::read(*store), 1000, []() { throw std::runtime_error("stop"); }),
+               std::runtime_error);
+  EXPECT_EQ(stopped.builds(), 0u);
 }
 
 }  // namespace
