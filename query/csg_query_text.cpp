@@ -61,7 +61,7 @@ std::vector<Word> words(const std::string& text) {
 class PhraseParser {
  public:
   PhraseParser(const std::string& text, const Vocabulary& vocabulary, std::vector<CsgQueryLeaf>& leaves)
-      : text_(text), v_(vocabulary), words_(words(text)), leaves_(leaves) {}
+      : text_(text), words_(words(text)), leaves_(leaves), phrases_(text, vocabulary) {}
 
   nlohmann::json parse() {
     if (words_.empty()) fail({"a query such as 'the union of a bent cylinder and a sphere'"});
@@ -148,7 +148,7 @@ class PhraseParser {
   nlohmann::json leaf() {
     if (pos_ >= words_.size()) fail({"a noun phrase such as 'a slightly bent cylinder'", "'('", "'the union of'"});
     const size_t from = words_[pos_].offset;
-    NounPhraseAt phrase = parseNounPhraseAt(text_, from, std::string::npos, v_);
+    NounPhraseAt phrase = phrases_.at(from);  // the text tokenised once, not at every leaf
     while (pos_ < words_.size() && words_[pos_].offset < phrase.end) ++pos_;
     CsgQueryLeaf out;
     out.text = text_.substr(from, phrase.end - from);
@@ -204,9 +204,9 @@ class PhraseParser {
 
   static constexpr int kMaxNesting = 64;
   const std::string& text_;
-  const Vocabulary& v_;
   std::vector<Word> words_;
   std::vector<CsgQueryLeaf>& leaves_;
+  NounPhraseReader phrases_;
   size_t pos_ = 0;
   int depth_ = 0;
 };

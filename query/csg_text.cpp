@@ -78,14 +78,16 @@ class Parser {
 
   // Left-associative chains of one operation become one n-ary node. For difference only the
   // left operand may be merged: (A − B) − C = difference[A, B, C], but A − (B − C) is not.
+  // The operands are moved, never copied: a chain of n names copied its growing list at every
+  // link (quadratic: "cube + cube + ..." of 9999 names took seconds).
   static nlohmann::json combine(const std::string& op, nlohmann::json left, nlohmann::json right) {
     nlohmann::json node{{"op", op}, {"children", nlohmann::json::array()}};
     if (left.contains("op") && left["op"] == op)
-      node["children"] = left["children"];
+      node["children"] = std::move(left["children"]);
     else
       node["children"].push_back(std::move(left));
     if (op != "difference" && right.contains("op") && right["op"] == op)
-      for (auto& c : right["children"]) node["children"].push_back(c);
+      for (auto& c : right["children"]) node["children"].push_back(std::move(c));
     else
       node["children"].push_back(std::move(right));
     return node;

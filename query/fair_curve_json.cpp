@@ -14,9 +14,10 @@ long long boundedInteger(const nlohmann::json& body, const char* key, long long 
                          long long limit, const char* limitName) {
   if (!body.contains(key)) return fallback;
   const nlohmann::json& v = body[key];
-  if (!v.is_number_integer())
+  const std::optional<int64_t> integral = integralNumber(v);  // 32 and 32.0, as every integer field
+  if (!integral)
     throw Error(errc::kInvalidDocument, std::string(key) + " must be an integer, got " + v.dump(), key);
-  const long long n = v.get<long long>();
+  const long long n = *integral;
   if (n < lo)
     throw Error(errc::kInvalidParameter, std::string(key) + " must be at least " + std::to_string(lo) + ", got " +
                                              std::to_string(n), key);

@@ -92,11 +92,26 @@ int64_t optionalInteger(const nlohmann::json& obj, const std::string& path, cons
                         int64_t min, int64_t max) {
   if (!obj.contains(key)) return fallback;
   const nlohmann::json& v = obj[key];
-  if (!v.is_number_integer() || v.get<int64_t>() < min || v.get<int64_t>() > max)
+  const std::optional<int64_t> n = integralNumber(v);
+  if (!n || *n < min || *n > max)
     throw Error(errc::kInvalidParameter,
                 key + " must be an integer from " + std::to_string(min) + " to " + std::to_string(max) + ", got " + v.dump(),
                 joinPath(path, key));
-  return v.get<int64_t>();
+  return *n;
+}
+
+std::optional<int64_t> integralNumber(const nlohmann::json& v) {
+  constexpr double kExact = 9007199254740992.0;  // 2^53
+  if (v.is_number_unsigned())
+    return v.get<uint64_t>() <= uint64_t(kExact) ? std::optional<int64_t>(int64_t(v.get<uint64_t>())) : std::nullopt;
+  if (v.is_number_integer()) {
+    const int64_t n = v.get<int64_t>();
+    return n >= -int64_t(kExact) && n <= int64_t(kExact) ? std::optional<int64_t>(n) : std::nullopt;
+  }
+  if (!v.is_number_float()) return std::nullopt;
+  const double x = v.get<double>();
+  if (!(x >= -kExact && x <= kExact) || x != std::floor(x)) return std::nullopt;
+  return static_cast<int64_t>(x);
 }
 
 double optionalNumberIn(const nlohmann::json& obj, const std::string& path, const std::string& key, double fallback,

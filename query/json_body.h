@@ -4,6 +4,7 @@
 // (path "body", the limit named) so a hostile document cannot exhaust the stack.
 #include <initializer_list>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "query/json_path.h"
@@ -27,8 +28,12 @@ void rejectUnknownKeys(const nlohmann::json& obj, const std::string& path, std::
 // Optional members of a request object at `path`, the default when absent. Out of range is
 // invalid_parameter naming path.key and the range ("limit must be an integer from 1 to 1000, got
 // 0"); a value of the wrong type likewise (a boolean of the wrong type is invalid_document).
+// Integers may be written 32 or 32.0 (integralNumber).
 int64_t optionalInteger(const nlohmann::json& obj, const std::string& path, const std::string& key, int64_t fallback,
                         int64_t min, int64_t max);
+// The one rule for integer fields: a JSON number whose value is an integer (32, 32.0, -4e2; not
+// 2.5, not a string) within +-2^53 (where doubles still count exactly), else nullopt.
+std::optional<int64_t> integralNumber(const nlohmann::json& v);
 double optionalNumberIn(const nlohmann::json& obj, const std::string& path, const std::string& key, double fallback,
                         double min, double max);
 bool optionalBoolean(const nlohmann::json& obj, const std::string& path, const std::string& key, bool fallback);

@@ -48,10 +48,11 @@ bool contains(const std::vector<std::string>& list, const std::string& w) {
   return std::find(list.begin(), list.end(), w) != list.end();
 }
 
-std::vector<Token> tokenize(const std::string& text, size_t from) {
+// The tokens of text[from, to) (to <= text.size()), as if the text ended at `to`.
+std::vector<Token> tokenize(const std::string& text, size_t from, size_t to) {
   std::vector<Token> tokens;
   size_t i = from;
-  while (i < text.size()) {
+  while (i < to) {
     const unsigned char c = static_cast<unsigned char>(text[i]);
     if (std::isspace(c)) {
       ++i;
@@ -60,16 +61,22 @@ std::vector<Token> tokenize(const std::string& text, size_t from) {
     Token t;
     t.offset = i;
     if (std::isalpha(c)) {
-      while (i < text.size() && (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '-' || text[i] == '\''))
+      while (i < to && (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '-' || text[i] == '\''))
         t.text += static_cast<char>(std::tolower(static_cast<unsigned char>(text[i++])));
-    } else if (std::isdigit(c) || ((c == '-' || c == '+' || c == '.') && i + 1 < text.size() &&
+    } else if (std::isdigit(c) || ((c == '-' || c == '+' || c == '.') && i + 1 < to &&
                                    (std::isdigit(static_cast<unsigned char>(text[i + 1])) || text[i + 1] == '.'))) {
-      const char* begin = text.c_str() + i;
+      // strtod reads no blank, parenthesis or comma after its first character: it sees the run up
+      // to one of them or `to` (a copy of that run only, so tokenising stays linear in the text).
+      size_t runEnd = i;
+      while (runEnd < to && !std::isspace(static_cast<unsigned char>(text[runEnd])) && text[runEnd] != '(' &&
+             text[runEnd] != ')' && text[runEnd] != ',')
+        ++runEnd;
+      const std::string run = text.substr(i, runEnd - i);
       char* stop = nullptr;
-      const double value = std::strtod(begin, &stop);
-      if (stop == begin || !std::isfinite(value))
+      const double value = std::strtod(run.c_str(), &stop);
+      if (stop == run.c_str() || !std::isfinite(value))
         throw Error(errc::kInvalidParameter, "bad number at character " + std::to_string(i), "text");
-      i += static_cast<size_t>(stop - begin);
+      i += static_cast<size_t>(stop - run.c_str());
       t.text = text.substr(t.offset, i - t.offset);
       t.number = true;
     } else if (c == '(' || c == ')' || c == ',') {
@@ -122,13 +129,28 @@ FuzzyNumber restrictedToUnit(const FuzzyNumber& set) {
 // The set of a low-pole adjective: d -> 1 - d (exact: negation and a crisp shift).
 FuzzyNumber mirrored(const FuzzyNumber& set) { return add(negate(set), FuzzyNumber::crisp(1.0)); }
 
+// Tokens [begin, begin + n) of a tokenised text, read by a Parser (which may own them).
+struct TokenView {
+  const Token* data = nullptr;
+  size_t n = 0;
+  size_t size() const { return n; }
+  bool empty() const { return n == 0; }
+  const Token& operator[](size_t i) const { return data[i]; }
+};
+
 class Parser {
  public:
   Parser(const std::string& text, const Vocabulary& vocabulary, size_t from = 0, size_t to = std::string::npos,
          bool prefix = false)
+      : Parser(text, vocabulary, TokenView{}, prefix) {
+    owned_ = tokenize(text, from, std::min(to, text.size()));
+    tokens_ = TokenView{owned_.data(), owned_.size()};
+  }
+  // Over tokens of `text` tokenised elsewhere (NounPhraseReader): `tokens` must outlive the parser.
+  Parser(const std::string& text, const Vocabulary& vocabulary, TokenView tokens, bool prefix)
       : text_(text),
         v_(vocabulary),
-        tokens_(tokenize(text.substr(0, to), from)),
+        tokens_(tokens),
         prefix_(prefix),
         intensityWords_(vocabulary.intensityWords()),
         adjectiveWords_(vocabulary.adjectiveWords()),
@@ -568,7 +590,8 @@ class Parser {
 
   const std::string& text_;
   const Vocabulary& v_;
-  std::vector<Token> tokens_;
+  std::vector<Token> owned_;  // the tokens when the parser tokenised the text itself
+  TokenView tokens_;
   size_t pos_ = 0;
   const bool prefix_;  // nounPhraseAt: the phrase is followed by the caller's words
   int depth_ = 0;  // nesting of conditions (parentheses, not), bounded by kMaxNesting
@@ -612,6 +635,29 @@ LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& 
 
 NounPhraseAt parseNounPhraseAt(const std::string& text, size_t from, size_t to, const Vocabulary& vocabulary) {
   return Parser(text, vocabulary, from, to, true).nounPhraseAt();
+}
+
+struct NounPhraseReader::Tokens {
+  std::vector<Token> tokens;  // of text[from, end) for the `from` of the first call
+};
+
+NounPhraseReader::NounPhraseReader(const std::string& text, const Vocabulary& vocabulary)
+    : text_(text), vocabulary_(vocabulary) {}
+NounPhraseReader::~NounPhraseReader() = default;
+
+NounPhraseAt NounPhraseReader::at(size_t from) {
+  // Tokens never span blanks, parentheses or commas, so tokenising from an earlier position gives
+  // the same tokens from `from` on when `from` starts one; elsewhere the phrase is read on its own.
+  if (!tokens_ || (!tokens_->tokens.empty() && from < tokens_->tokens.front().offset)) {
+    tokens_ = std::make_unique<Tokens>();
+    tokens_->tokens = tokenize(text_, from, text_.size());
+  }
+  const std::vector<Token>& all = tokens_->tokens;
+  const auto first = std::lower_bound(all.begin(), all.end(), from,
+                                      [](const Token& t, size_t offset) { return t.offset < offset; });
+  if (first != all.begin() && std::prev(first)->end > from) return parseNounPhraseAt(text_, from, std::string::npos, vocabulary_);
+  const TokenView view{all.data() + (first - all.begin()), size_t(all.end() - first)};
+  return Parser(text_, vocabulary_, view, true).nounPhraseAt();
 }
 
 PartDescription parsePartDescription(const std::string& text, const Vocabulary& vocabulary) {

@@ -37,6 +37,7 @@
 // direction and the fuzzy translations (exact alpha-cuts of the norm) for the distance.
 // explain: every condition with text, in pre-order (the and / or nodes carry the text they
 // cover), with its score for the component (pair) that gave the total.
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -93,6 +94,26 @@ struct NounPhraseAt {
   size_t end = 0;
 };
 NounPhraseAt parseNounPhraseAt(const std::string& text, size_t from, size_t to, const Vocabulary& vocabulary);
+
+// parseNounPhraseAt(text, from, npos, vocabulary) for many phrases of one text (the leaves of a
+// phrase-form CSG query): the text is tokenised once, at the first call, from its `from` on, not
+// again at every phrase (which made a list of n operands quadratic). Calls with ascending `from`
+// reuse the tokens; each gives exactly what parseNounPhraseAt gives. `text` and `vocabulary` must
+// outlive the reader.
+class NounPhraseReader {
+ public:
+  NounPhraseReader(const std::string& text, const Vocabulary& vocabulary);
+  ~NounPhraseReader();
+  NounPhraseReader(const NounPhraseReader&) = delete;
+  NounPhraseReader& operator=(const NounPhraseReader&) = delete;
+  NounPhraseAt at(size_t from);
+
+ private:
+  struct Tokens;
+  const std::string& text_;
+  const Vocabulary& vocabulary_;
+  std::unique_ptr<Tokens> tokens_;
+};
 
 // The words of a part described by words ("a slightly bent cylinder", "a long, very twisted
 // box"): [ article ] { [ intensity ] adjective [ "," | "and" ] } noun. The pointers point into

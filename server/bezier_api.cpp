@@ -66,10 +66,11 @@ ApiResponse evaluateCurveRoute(const ApiRequest& req, const BezierJsonLimits& li
 
 int integerField(const json& body, const char* key, int fallback) {
   if (!body.contains(key)) return fallback;
-  const double x = requireNumber(body[key], key);
-  if (x != std::floor(x) || x < 0 || x > 1e6)
+  requireNumber(body[key], key);
+  const std::optional<int64_t> n = integralNumber(body[key]);
+  if (!n || *n < 0 || *n > 1000000)
     throw Error(errc::kInvalidParameter, std::string(key) + " must be a non-negative integer", key);
-  return static_cast<int>(x);
+  return static_cast<int>(*n);
 }
 
 ApiResponse elevateCurveRoute(const ApiRequest& req, const BezierJsonLimits& limits) {

@@ -69,6 +69,15 @@ class Search {
     const StoredGraph& stored = *handle;
     ++result_.bounded;
     const int rows = query_.graph.leafCount, cols = stored.shape.graph.leafCount;
+    const size_t pairs = size_t(rows) * size_t(cols);
+    if (pairs > options_.maxPairs)
+      throw Error(errc::kLimitExceeded,
+                  std::to_string(rows) + " query leaves x " + std::to_string(cols) + " leaves of stored shape " +
+                      std::to_string(stored.id) + " exceed max_csg_pairs=" + std::to_string(options_.maxPairs) +
+                      "; query fewer leaves or raise --max-csg-pairs",
+                  "text");
+    // Each cached column holds `rows` pairs; this shape may add `cols` columns.
+    if ((memo_.size() + size_t(cols)) * size_t(rows) > options_.maxPairs) memo_.clear();
     LeafSimilarityMatrix leaf{rows, cols, std::vector<double>(size_t(rows) * size_t(cols))};
     LeafSimilarityMatrix transform{rows, cols, std::vector<double>(size_t(rows) * size_t(cols))};
     for (int s = 0; s < cols; ++s) {
@@ -196,6 +205,7 @@ nlohmann::json csgQueryResponse(const Store& store, const nlohmann::json& reques
   options.prune = optionalBoolean(request, "", "prune", true);
   options.maxNodes = limits.maxNodes;
   options.maxMillis = limits.maxQueryMs;
+  options.maxPairs = limits.maxPairs;
   const ReferenceResolver resolver = storeResolver(store);
   const CsgQuery query =
       request.contains("text")

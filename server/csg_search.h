@@ -19,6 +19,11 @@
 //   ids, scores and order, as long as every match is complete (trees; a DAG search that hits
 //   timeBudgetMs may find a different best-so-far mapping).
 // - maxMillis > 0: a search still running after that long stops with limit_exceeded (413) naming it.
+// - maxPairs: a candidate the scan reaches whose query leaves x stored leaves exceed it stops the
+//   search with limit_exceeded (413) naming max_csg_pairs, before its similarity tables are
+//   allocated (two doubles a pair). The per-search cache of leaf similarity columns is emptied
+//   whenever it would hold more than maxPairs pairs, so memory stays within a few tables.
+//   (A pruned search may stop before it reaches such a candidate and answer.)
 #include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -42,6 +47,7 @@ struct CsgSearchOptions {
   bool prune = true;
   size_t maxNodes = 10000;     // for stored shapes
   double maxMillis = 0;        // 0: no limit
+  size_t maxPairs = 4u << 20;  // query leaves x stored leaves of one match (--max-csg-pairs)
 };
 
 struct CsgHit {
@@ -64,6 +70,7 @@ CsgSearchResult searchCsg(const Store& store, const CsgQuery& query, const CsgSe
 struct CsgRequestLimits {
   size_t maxNodes = 10000;  // query and stored graphs (--max-nodes)
   double maxQueryMs = 0;    // --max-query-ms (0: none); also the largest time_budget_ms
+  size_t maxPairs = 4u << 20;  // --max-csg-pairs (CsgSearchOptions::maxPairs)
 };
 
 // The whole request {"text" | "tree", "weights":{"components","transforms","structure"}, "limit",

@@ -34,6 +34,8 @@ struct ServerLimits {
   int maxResolution = 512;          // --max-resolution: voxels along a shape's longest side
   size_t maxNodes = 10000;          // --max-nodes: CSG nodes per shape
   int maxQueryMs = 10000;           // --max-query-ms: longest linguistic search (413 beyond); 0: none
+  size_t maxCsgPairs = 4u << 20;    // --max-csg-pairs: query leaves x stored leaves of one CSG match (two
+                                    // tables of doubles: 64 MiB at the default; 413 beyond)
   size_t maxControlPoints = 256;    // --max-control-points: of one Bézier curve or surface grid (requests,
                                     // stored documents, exports)
   size_t maxCurvePoints = 10000;    // --max-curve-points: u values, uv pairs, export samples per request

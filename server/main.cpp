@@ -201,6 +201,9 @@ int main(int argc, char** argv) {
   serveCmd->add_option("--max-query-ms", serve.limits.maxQueryMs,
                        "longest POST /query/linguistic or /query/csg search in milliseconds (413 beyond); 0: no limit")
       ->check(CLI::Range(0, 86400000))->capture_default_str();
+  serveCmd->add_option("--max-csg-pairs", serve.limits.maxCsgPairs,
+                       "most query leaves x stored leaves of one POST /query/csg match (413 beyond)")
+      ->check(CLI::PositiveNumber)->capture_default_str();
 
   std::string evalFile;
   fsdb::EvalOptions eval;

@@ -16,7 +16,7 @@ void registerQueryRoutes(HttpServer& server, const Store& store) {
   server.addRoute("POST", "/query/linguistic", [&store, limits](const ApiRequest& req) {
     return ApiResponse{200, linguisticQueryResponse(store, req.body, limits)};
   });
-  const CsgRequestLimits csgLimits{limits.maxNodes, limits.maxQueryMs};
+  const CsgRequestLimits csgLimits{limits.maxNodes, limits.maxQueryMs, server.options().limits.maxCsgPairs};
   // The stored graphs live as long as the route; entries are checked against the store's versions
   // on every query (server/stored_graphs.h), so writes need not notify it.
   auto cache = std::make_shared<StoredGraphCache>();

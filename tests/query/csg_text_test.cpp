@@ -48,6 +48,17 @@ TEST(CsgText, ChainsBecomeNaryNodesButDifferenceKeepsItsOrder) {
   EXPECT_EQ(rightNested["children"][1]["op"], "difference");
 }
 
+// A long chain is one node with every operand in order (its operands are moved at each link, not
+// copied: bench/bench_csg_query_text times it); parenthesised operands change nothing.
+TEST(CsgText, LongChainsKeepEveryOperandInOrder) {
+  std::string text = "P0";
+  for (int i = 1; i < 5000; ++i) text += (i % 2 ? " + " : " + (") + std::string("P") + std::to_string(i) + (i % 2 ? "" : ")");
+  const json tree = parse(text);
+  EXPECT_EQ(tree["op"], "union");
+  ASSERT_EQ(tree["children"].size(), 5000u);
+  for (int i = 0; i < 5000; ++i) EXPECT_EQ(tree["children"][size_t(i)], json({{"part", "P" + std::to_string(i)}})) << i;
+}
+
 TEST(CsgText, ResolvesNamesToPartsOrShapesAndAcceptsQuotedNames) {
   EXPECT_EQ(parse("sWheel + bolt"), json({{"op", "union"}, {"children", {{{"ref", "sWheel"}}, {{"part", "bolt"}}}}}));
   EXPECT_EQ(parse("\"bent-rod\" - cap.v2"),

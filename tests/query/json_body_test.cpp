@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "geometry/error.h"
 
 namespace fsdb {
@@ -55,6 +57,22 @@ TEST(JsonBody, TypedAccessNamesThePath) {
   EXPECT_EQ(errorOf([&] { requireObject(doc["arr"], "arr"); }).path(), "arr");
   EXPECT_EQ(errorOf([&] { requireField(doc["a"], "c", "a"); }).path(), "a.c");
   EXPECT_EQ(jsonTypeName(doc["arr"]), "array");
+}
+
+// One rule for integer fields: 32 and 32.0 are the integer 32; 2.5, strings, and doubles beyond
+// 2^53 are none. optionalInteger follows it.
+TEST(JsonBody, IntegralNumbersAreIntegersWrittenEitherWay) {
+  EXPECT_EQ(integralNumber(json(32)), 32);
+  EXPECT_EQ(integralNumber(json(32.0)), 32);
+  EXPECT_EQ(integralNumber(json(-400.0)), -400);
+  EXPECT_EQ(integralNumber(json(uint64_t(7))), 7);
+  EXPECT_FALSE(integralNumber(json(2.5)));
+  EXPECT_FALSE(integralNumber(json("32")));
+  EXPECT_FALSE(integralNumber(json(true)));
+  EXPECT_FALSE(integralNumber(json(1e300)));
+  EXPECT_FALSE(integralNumber(json(std::numeric_limits<uint64_t>::max())));
+  EXPECT_EQ(optionalInteger(json{{"limit", 10.0}}, "", "limit", 1, 1, 1000), 10);
+  EXPECT_EQ(errorOf([] { optionalInteger(json{{"limit", 10.5}}, "", "limit", 1, 1, 1000); }).path(), "limit");
 }
 
 }  // namespace

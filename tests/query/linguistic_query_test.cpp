@@ -256,5 +256,46 @@ TEST(LinguisticQuery, GrammarExamplesParse) {
   EXPECT_GE(examples, 15);
 }
 
+// NounPhraseReader reads what parseNounPhraseAt reads at every position (ascending, then an
+// earlier one again, and a position inside a word), errors included, from one tokenisation.
+TEST(NounPhraseReader, GivesWhatParseNounPhraseAtGives) {
+  const std::string text = "a very bent cylinder that is long and a box, and (a sphere that is 0.5 round) and a cube";
+  auto same = [&](NounPhraseReader& reader, size_t from) {
+    std::string expected, got;
+    size_t expectedEnd = 0, gotEnd = 0;
+    try {
+      NounPhraseAt p = parseNounPhraseAt(text, from, std::string::npos, v());
+      expected = toJson(p.query).dump();
+      expectedEnd = p.end;
+    } catch (const Error& e) {
+      expected = std::string("error: ") + e.what();
+    }
+    try {
+      NounPhraseAt p = reader.at(from);
+      got = toJson(p.query).dump();
+      gotEnd = p.end;
+    } catch (const Error& e) {
+      got = std::string("error: ") + e.what();
+    }
+    EXPECT_EQ(got, expected) << "from " << from;
+    EXPECT_EQ(gotEnd, expectedEnd) << "from " << from;
+  };
+  NounPhraseReader reader(text, v());
+  std::vector<size_t> starts = {0};
+  for (size_t i = 1; i < text.size(); ++i)
+    if (text[i - 1] == ' ' || text[i - 1] == '(') starts.push_back(i);
+  for (size_t from : starts) same(reader, from);
+  same(reader, 0);
+  same(reader, 3);  // inside "very": read on its own
+  NounPhraseReader late(text, v());
+  same(late, text.find("a box"));
+  same(late, 0);  // before the first call's position: tokenised again
+  // A character the linguistic words refuse, after the phrase, is reported as parseNounPhraseAt does.
+  const std::string bad = "a cube and a box # x";
+  NounPhraseReader badReader(bad, v());
+  EXPECT_EQ(test::textErrorOf(bad, [&](const std::string&) { badReader.at(0); }),
+            test::textErrorOf(bad, [&](const std::string& t) { parseNounPhraseAt(t, 0, std::string::npos, v()); }));
+}
+
 }  // namespace
 }  // namespace fsdb

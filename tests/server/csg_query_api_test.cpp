@@ -215,7 +215,8 @@ TEST(CsgQueryApi, NodeAndTimeLimits) {
 // of seconds); a match of two wide unions that takes too long stops at --max-query-ms (it ran on
 // past it inside one tree DP).
 TEST(CsgQueryApi, WideQueriesAnswerOrStopAtTheTimeLimit) {
-  ServerProcess server({"--max-query-ms", "1000"});
+  // 5000 x 4000 leaf pairs below: over the default --max-csg-pairs, which this test is not about.
+  ServerProcess server({"--max-query-ms", "1000", "--max-csg-pairs", "20000000"});
   shape(server, "pair", node("union", {kBent, kSharp}));
   json wide = json::array();
   for (int i = 0; i < 5000; ++i) wide.push_back(i % 2 ? kBent : kSharp);
@@ -232,6 +233,24 @@ TEST(CsgQueryApi, WideQueriesAnswerOrStopAtTheTimeLimit) {
   json e = query(server, {{"tree", node("union", wide)}}, 413);
   EXPECT_NE(e["error"]["message"].get<std::string>().find("max_query_ms=1000"), std::string::npos) << e.dump();
   EXPECT_EQ(server.get("/health").status, 200);
+}
+
+// --max-csg-pairs: a match of more query leaves x stored leaves would allocate two tables of that
+// many doubles (10,000 x 10,000 leaves: 1.6 GB); it is 413 naming the limit before that, and the
+// server keeps serving (the same query within the limit still answers).
+TEST(CsgQueryApi, LeafPairLimit) {
+  ServerProcess server({"--max-csg-pairs", "20"});
+  json five = json::array();
+  for (int i = 0; i < 5; ++i) five.push_back(i % 2 ? kBent : kSharp);
+  shape(server, "five", node("union", five));
+  json e = query(server, {{"tree", node("union", five)}}, 413);
+  EXPECT_EQ(e["error"]["code"], "limit_exceeded");
+  EXPECT_NE(e["error"]["message"].get<std::string>().find("max_csg_pairs=20"), std::string::npos) << e.dump();
+  EXPECT_EQ(server.get("/health").status, 200);
+  json four(five.begin(), five.begin() + 4);
+  const json a = query(server, {{"tree", node("union", four)}});
+  EXPECT_EQ(names(a), (std::vector<std::string>{"five"}));
+  EXPECT_EQ(a["parsed"]["leaves"], 4);
 }
 
 TEST(CsgQueryCli, RoutesCsgTexts) {

@@ -74,6 +74,18 @@ TEST_F(FairCurveApi, OpenCurveWithRelationsAndThreshold) {
   EXPECT_LT(distance(curve.back(), body["points"][2]), 1e-9);
 }
 
+// Integer fields take integral doubles as the Bézier routes do (query/json_body.h integralNumber):
+// samples 32.0 is samples 32; 2.5 stays refused (FairCurveApi errors).
+TEST_F(FairCurveApi, IntegralDoublesAreIntegers) {
+  json body = {{"points", {{100, 440}, {200, 150}, {550, 450}}}, {"samples", 9}, {"max_candidates", 3}};
+  const json asInteger = post(body);
+  body["samples"] = 9.0;
+  body["max_candidates"] = 3.0;
+  EXPECT_EQ(post(body), asInteger);
+  auto e = server->post("/curves/bezier/elevate", json{{"control_points", {{0, 0}, {2, 2}, {4, 0}}}, {"times", 2.0}});
+  EXPECT_EQ(e.status, 200) << e.body;
+}
+
 TEST_F(FairCurveApi, BadInputAnswers422WithTheJsonPath) {
   expectError({{"points", {{0, 0}, {1, "a"}}}}, 422, "invalid_document", "points[1][1]");
   expectError({{"points", {{0, 0}, {1, 1, 1}}}}, 422, "invalid_document", "points[1]");
