@@ -31,13 +31,11 @@
 
 namespace {
 
-using fsdb::bench::percentile;
-using fsdb::bench::sameHits;
-
-using Clock = std::chrono::steady_clock;
+using fsdb::bench::Clock;
+using fsdb::bench::compareRuns;
+using fsdb::bench::msSince;
+using fsdb::bench::timeRuns;
 using nlohmann::json;
-
-double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 const std::vector<std::string> kWords = {
     "a very bent cylinder", "a straight cylinder", "a very sharp pyramid", "a sphere",        "a box",
@@ -150,29 +148,18 @@ int main(int argc, char** argv) {
           std::printf("cold (graphs of %zu trees built from their documents): %.0f ms\n", cache.size(), msSince(t));
           report.push_back({{"trees", n}, {"cold_ms", msSince(t)}});
         }
-        std::vector<double> pruned, full;
         fsdb::CsgSearchResult a, b;
-        for (int r = 0; r < reps; ++r) {
-          const auto t = Clock::now();
-          a = fsdb::searchCsg(*store, q, options, cache);
-          pruned.push_back(msSince(t));
-        }
+        const auto pruned = timeRuns(reps, [&] { a = fsdb::searchCsg(*store, q, options, cache); });
         options.prune = false;
-        for (int r = 0; r < fullReps; ++r) {
-          const auto t = Clock::now();
-          b = fsdb::searchCsg(*store, q, options, cache);
-          full.push_back(msSince(t));
-        }
-        const double p50 = percentile(pruned, 0.5), p95 = percentile(pruned, 0.95);
-        const double f = full.empty() ? 0.0 : percentile(full, 0.5);
-        const bool equal = full.empty() || sameHits(a, b);
+        const auto full = timeRuns(fullReps, [&] { b = fsdb::searchCsg(*store, q, options, cache); });
+        const fsdb::bench::Comparison c = compareRuns(pruned, full, a, b);
         std::printf("%-75s %5zu %7zu %7zu %8.1f %8.1f %9.1f %6.1fx %6s\n", ("'" + text + "'").c_str(), a.hits.size(),
-                    a.bounded, a.matched, p50, p95, f, f / p50, equal ? "yes" : "NO");
+                    a.bounded, a.matched, c.p50, c.p95, c.refP50, c.ratio(), c.equal ? "yes" : "NO");
         std::fflush(stdout);
         report.push_back({{"trees", n}, {"query", text}, {"bounded", a.bounded}, {"matched", a.matched},
-                          {"p50_ms", p50}, {"p95_ms", p95}, {"full_p50_ms", f}, {"ratio", f / p50}, {"equal", equal},
-                          {"reps", reps}, {"full_reps", fullReps}});
-        if (!equal) {
+                          {"p50_ms", c.p50}, {"p95_ms", c.p95}, {"full_p50_ms", c.refP50}, {"ratio", c.ratio()},
+                          {"equal", c.equal}, {"reps", reps}, {"full_reps", fullReps}});
+        if (!c.equal) {
           std::cerr << "pruned and unpruned answers differ for '" << text << "'\n";
           return 1;
         }

@@ -33,12 +33,10 @@
 
 namespace {
 
-using fsdb::bench::percentile;
-using fsdb::bench::sameHits;
-
-using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+using fsdb::bench::Clock;
+using fsdb::bench::compareRuns;
+using fsdb::bench::msSince;
+using fsdb::bench::timeRuns;
 
 // Mostly crisp deformations (a catalogue of plain parts with some bent, tapered, twisted ones),
 // about a third of the values fuzzy.
@@ -143,29 +141,19 @@ int main(int argc, char** argv) {
         fsdb::LinguisticSearchOptions options;
         options.kinds = fsdb::searchKinds(q, "");
         options.limit = 10;
-        std::vector<double> indexed, scanned;
         fsdb::LinguisticSearchResult a, b;
-        for (int r = 0; r < reps; ++r) {
-          const auto t = Clock::now();
-          a = fsdb::searchLinguistic(*store, q, options);
-          indexed.push_back(msSince(t));
-        }
+        const auto indexed = timeRuns(reps, [&] { a = fsdb::searchLinguistic(*store, q, options); });
         options.scan = true;
-        for (int r = 0; r < scanReps; ++r) {
-          const auto t = Clock::now();
-          b = fsdb::searchLinguistic(*store, q, options);
-          scanned.push_back(msSince(t));
-        }
-        const double p50 = percentile(indexed, 0.5), p95 = percentile(indexed, 0.95);
-        const double scan = scanned.empty() ? 0.0 : percentile(scanned, 0.5);
-        const bool equal = scanned.empty() || sameHits(a, b);  // --scan-reps 0: index only (profiling)
+        const auto scanned = timeRuns(scanReps, [&] { b = fsdb::searchLinguistic(*store, q, options); });
+        // --scan-reps 0: index only (profiling)
+        const fsdb::bench::Comparison c = compareRuns(indexed, scanned, a, b);
         std::printf("%-45s %9zu %9zu %9.2f %10.2f %7.0f %8.1fx %6s\n", ("\"" + text + "\"").c_str(), a.hits.size(),
-                    a.candidates, p50, p95, scan, scan / p50, equal ? "yes" : "NO");
+                    a.candidates, c.p50, c.p95, c.refP50, c.ratio(), c.equal ? "yes" : "NO");
         std::fflush(stdout);
         report.push_back({{"parts", n}, {"query", text}, {"candidates", a.candidates}, {"scanned", b.candidates},
-                          {"p50_ms", p50}, {"p95_ms", p95}, {"scan_p50_ms", scan}, {"ratio", scan / p50},
-                          {"equal", equal}, {"reps", reps}, {"scan_reps", scanReps}});
-        if (!equal) {
+                          {"p50_ms", c.p50}, {"p95_ms", c.p95}, {"scan_p50_ms", c.refP50}, {"ratio", c.ratio()},
+                          {"equal", c.equal}, {"reps", reps}, {"scan_reps", scanReps}});
+        if (!c.equal) {
           std::cerr << "indexed and scan answers differ for \"" << text << "\"\n";
           return 1;
         }

@@ -9,6 +9,8 @@ namespace fsdb {
 class HttpServer;
 class Store;
 struct ApiRequest;
+struct BezierJsonLimits;
+struct ServerLimits;
 
 // GET /health (with the store's counts), GET /openapi.json
 void registerServiceRoutes(HttpServer& server, const Store& store);
@@ -28,6 +30,9 @@ void registerObjectRoutes(HttpServer& server, Store& store);
 // POST /curves/bezier/evaluate, /elevate, /defuzzify, POST /surfaces/bezier/evaluate, /elevate,
 // /iso, and the exports of stored curves and surfaces: GET /curves/{id}/svg, /surfaces/{id}/mesh
 void registerBezierRoutes(HttpServer& server, const Store& store);
+// The Bézier limits of `fsdb serve` (--max-control-points, --max-curve-points) for
+// query/bezier_json.h; every curve and surface route reads documents through them.
+BezierJsonLimits bezierLimits(const ServerLimits& limits);
 
 // POST /query/linguistic (server/linguistic_search.h), POST /query/csg (server/csg_search.h)
 void registerQueryRoutes(HttpServer& server, const Store& store);

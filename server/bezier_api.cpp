@@ -36,13 +36,6 @@ using nlohmann::json;
 constexpr int kDefaultSvgSamples = 101;
 constexpr int kDefaultMeshResolution = 32;
 
-BezierJsonLimits bezierLimits(const ServerLimits& limits) {
-  BezierJsonLimits out;
-  out.maxControlPoints = limits.maxControlPoints;
-  out.maxPoints = limits.maxCurvePoints;
-  return out;
-}
-
 double alphaOf(const json& body) { return body.contains("alpha") ? parseUnitNumber(body["alpha"], "alpha") : 0.0; }
 
 json pointJson(const FuzzyBezierPoint& p) { return {{"lower", p.lower}, {"crisp", p.crisp}, {"upper", p.upper}}; }
@@ -246,6 +239,13 @@ ApiResponse download(std::string bytes, const std::string& contentType, const st
 }
 
 }  // namespace
+
+BezierJsonLimits bezierLimits(const ServerLimits& limits) {
+  BezierJsonLimits out;
+  out.maxControlPoints = limits.maxControlPoints;
+  out.maxPoints = limits.maxCurvePoints;
+  return out;
+}
 
 void registerBezierRoutes(HttpServer& server, const Store& store) {
   const BezierJsonLimits limits = bezierLimits(server.options().limits);

@@ -5,6 +5,7 @@
 // Limits: FairCurveLimits from `fsdb serve --max-fair-*` (413 naming the limit).
 #include "db/store.h"
 #include "geometry/error.h"
+#include "query/bezier_json.h"
 #include "query/curve_document.h"
 #include "query/fair_curve_json.h"
 #include "server/api.h"
@@ -15,8 +16,7 @@ namespace fsdb {
 void registerFairCurveRoutes(HttpServer& server, const Store& store) {
   const ServerLimits& limits = server.options().limits;
   const FairCurveLimits fair = limits.fairCurve;
-  BezierJsonLimits bezier;
-  bezier.maxControlPoints = limits.maxControlPoints;
+  const BezierJsonLimits bezier = bezierLimits(limits);
 
   server.addRoute("POST", "/curves/fair", [fair](const ApiRequest& req) {
     const FairCurveRequest r = parseFairCurveRequest(req.body, fair);
