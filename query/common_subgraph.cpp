@@ -267,13 +267,17 @@ class BranchAndBound {
     }
     if (pick < 0) return;
     const int u = classes[size_t(pick)].qs.front();
-    std::vector<int> candidates;
-    for (int v : classes[size_t(pick)].ss)
-      if (weight(u, v) != kNoMatch) candidates.push_back(v);
-    std::stable_sort(candidates.begin(), candidates.end(), [&](int x, int y) { return weight(u, x) > weight(u, y); });
-    for (int v : candidates) {
-      std::vector<Class> next = refine(classes, u, v);
+    // (weight, v) of the admissible pairs, heaviest first: each weight computed once, not at every
+    // comparison of the sort.
+    std::vector<std::pair<double, int>> candidates;
+    for (int v : classes[size_t(pick)].ss) {
       const double w = weight(u, v);
+      if (w != kNoMatch) candidates.push_back({w, v});
+    }
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const auto& x, const auto& y) { return x.first > y.first; });
+    for (const auto& [w, v] : candidates) {
+      std::vector<Class> next = refine(classes, u, v);
       matches_.push_back({u, v, w});
       search(next, current + w);
       matches_.pop_back();

@@ -256,7 +256,7 @@ size_t placeholderIndex(const std::string& name) {
 
 // The graph of `doc` and the leaves: placeholders become `descriptions[k]`, parts stay parts.
 CsgQuery graphOf(const std::string& form, const nlohmann::json& doc, const std::string& path, size_t maxNodes,
-                 const ReferenceResolver& resolver, std::vector<CsgQueryLeaf> descriptions) {
+                 const ReferenceResolver& resolver, const std::vector<CsgQueryLeaf>& descriptions) {
   ShapeGraph g = shapeGraph(doc, path, maxNodes, resolver);
   CsgQuery q;
   q.form = form;
@@ -296,10 +296,13 @@ CsgQuery parseCsgQuery(const std::string& text, const Vocabulary& vocabulary, co
                        size_t maxNodes) {
   std::vector<CsgQueryLeaf> descriptions;
   const bool formula = isCsgFormula(text);
+  // One lookup per reference: formulaTree asks for every name (as a part, then as a shape) and
+  // graphOf asks again for the same names when it builds the leaves.
+  const ReferenceResolver remembered = rememberingResolver(resolver);
   nlohmann::json tree =
-      formula ? formulaTree(text, vocabulary, resolver, descriptions) : PhraseParser(text, vocabulary, descriptions).parse();
+      formula ? formulaTree(text, vocabulary, remembered, descriptions) : PhraseParser(text, vocabulary, descriptions).parse();
   const nlohmann::json doc = {{"kind", "shape"}, {"name", "query"}, {"tree", tree}};
-  CsgQuery q = graphOf(formula ? "formula" : "phrase", doc, "", maxNodes, resolver, descriptions);
+  CsgQuery q = graphOf(formula ? "formula" : "phrase", doc, "", maxNodes, remembered, descriptions);
   q.tree = shownTree(std::move(tree), descriptions);
   return q;
 }

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+
 
 #include "geometry/error.h"
 #include "query/vocabulary.h"
@@ -125,6 +127,21 @@ TEST(CsgQueryText, FormulaNamesAreStoredObjectsOrDescriptions) {
     if (leaf.text == "bolt") EXPECT_EQ(leaf.partId, 7);
   // Without a resolver every name is a description.
   EXPECT_EQ(shape(parse("cube + cylinder")), "union('cube', 'cylinder')");
+}
+
+// Each stored reference is looked up once per query: the formula asks for every name as a part and
+// as a shape, and building the graph asks again; the answers are remembered (rememberingResolver).
+TEST(CsgQueryText, FormulaLooksUpEachReferenceOnce) {
+  std::map<std::string, int> calls;
+  const ReferenceResolver inner = testResolver();
+  const ReferenceResolver counting = [&](const std::string& kind, const nlohmann::json& key) {
+    ++calls[kind + ' ' + key.dump()];
+    return inner(kind, key);
+  };
+  const CsgQuery q = parse("C = bolt + bolt - (cube * pair)", counting);
+  EXPECT_EQ(shape(q), "difference(union('bolt', 'bolt'), intersection('cube', 'bolt', ''))");
+  EXPECT_FALSE(calls.empty());
+  for (const auto& [what, n] : calls) EXPECT_EQ(n, 1) << what;
 }
 
 TEST(CsgQueryText, FormIsChosenByCharacters) {
