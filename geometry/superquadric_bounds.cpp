@@ -27,8 +27,6 @@ struct IntervalVec3 {
 
 Interval point(double v) { return {v, v}; }
 
-bool isPoint(const Interval& a, double v) { return a.lo == v && a.hi == v; }
-
 bool isTame(const Interval& a) { return a.lo >= -kTame && a.hi <= kTame; }  // false for NaN
 
 // atan(w)/w, = 1 at w = 0: the same two-branch evaluation as deformation.cpp's atanc.
@@ -157,8 +155,6 @@ Interval absUntaper(const Interval& x, const Interval& k, const Interval& zc) {
 // The box of canonical |x|/A, |y|/B, |z|/C over the point and parameter boxes: the inputs of
 // the canonical F, which increases in each. Returns false when intermediate values leave
 // the tame range (absurd coordinates or sizes); the caller then answers the trivial bound.
-// Smallest |x| over an interval.
-double mignitude(const Interval& a) { return a.lo > 0.0 ? a.lo : a.hi < 0.0 ? -a.hi : 0.0; }
 
 // A lower bound of the cross-section norm R = ||(X, Y)||_(2/eps2) that the twist cannot blur:
 // the twist turns (x, y) about z and keeps its radius r, and with M >= A·|fx|, B·|fy| (the taper

@@ -17,7 +17,6 @@ constexpr double kE = 2.71828182845904523536;
 // ∞·0 = NaN can hide inside an interval product's min and max (as in superquadric_bounds.cpp).
 constexpr double kTame = 1e150;
 
-bool isPoint(const Interval& a, double v) { return a.lo == v && a.hi == v; }
 bool tame(const Interval& a) { return a.lo >= -kTame && a.hi <= kTame; }  // false for NaN
 
 Interval expI(const Interval& a) { return {std::exp(a.lo), std::exp(a.hi)}; }
