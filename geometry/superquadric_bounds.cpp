@@ -16,9 +16,6 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegToRad = kPi / 180.0;
 constexpr double kMaxFinite = std::numeric_limits<double>::max();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// Magnitude limit for intermediate values: products of two values below it stay finite, so
-// no ∞·0 = NaN can arise inside the interval products (whose min/max would hide it).
-constexpr double kTame = 1e150;
 const Interval kOne{1.0, 1.0};
 
 struct IntervalVec3 {
@@ -26,8 +23,6 @@ struct IntervalVec3 {
 };
 
 Interval point(double v) { return {v, v}; }
-
-bool isTame(const Interval& a) { return a.lo >= -kTame && a.hi <= kTame; }  // false for NaN
 
 // atan(w)/w, = 1 at w = 0: the same two-branch evaluation as deformation.cpp's atanc.
 double atanc(double w) {
