@@ -70,8 +70,6 @@ bool rangeOf(const AffineForm& x, Interval* a, double* r) {
   return std::isfinite(a->lo) && std::isfinite(a->hi);
 }
 
-double mignitude(const Interval& a) { return a.lo > 0.0 ? a.lo : a.hi < 0.0 ? -a.hi : 0.0; }
-
 }  // namespace
 
 AffineForm affineConstant(double c) {

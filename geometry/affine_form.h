@@ -72,7 +72,7 @@ namespace affine_detail {
 // or two roundings away from its exact value, and so is their sum in radius().
 inline constexpr double kSlack = 4.0 * std::numeric_limits<double>::epsilon();
 // Forms beyond this magnitude are declared invalid: products of two stay finite, so no ∞·0 = NaN
-// can hide in a deviation (as kTame in superquadric_bounds.cpp).
+// can hide in a deviation (the same limit as fsdb::kTame, superquadric_bounds.h).
 inline constexpr double kTame = 1e150;
 
 inline AffineForm invalid() {

@@ -175,16 +175,15 @@ std::vector<double> firstEstimationAngles(const std::vector<Vec2>& points, bool 
   checkFairPoints(points, closed);
   const size_t n = points.size();
   std::vector<double> angles(n);
-  auto degrees = [](const Vec2& v) { return std::atan2(v.y, v.x) * (180.0 / M_PI); };
   for (size_t i = 0; i < n; ++i) {
     const bool first = !closed && i == 0, last = !closed && i + 1 == n;
     if (first || last) {  // the normal of the end chord
-      angles[i] = normalizeAngle180(degrees(first ? points[1] - points[0] : points[i] - points[i - 1]) + 90);
+      angles[i] = normalizeAngle180(degreesOf(first ? points[1] - points[0] : points[i] - points[i - 1]) + 90);
       continue;
     }
     const Vec2 toPrev = unit(points[(i + n - 1) % n] - points[i]), toNext = unit(points[(i + 1) % n] - points[i]);
     const Vec2 bisector = toPrev + toNext;
-    angles[i] = normalizeAngle180(length(bisector) > 1e-12 ? degrees(bisector) : degrees(toNext) + 90);
+    angles[i] = normalizeAngle180(length(bisector) > 1e-12 ? degreesOf(bisector) : degreesOf(toNext) + 90);
   }
   return angles;
 }

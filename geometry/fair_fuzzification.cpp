@@ -12,7 +12,7 @@
 namespace fsdb {
 namespace {
 
-double angleOf(const Vec2& v) { return normalizeAngle180(std::atan2(v.y, v.x) * (180.0 / M_PI)); }
+double angleOf(const Vec2& v) { return normalizeAngle180(degreesOf(v)); }
 
 int sign(double v) { return (v > 0) - (v < 0); }
 

@@ -25,6 +25,10 @@ constexpr double kMargin = 1e-12;
 // A box narrower than this, relative to the support, in every value is treated as one θ.
 constexpr double kDegenerate = 1e-12;
 
+// Whether an enclosure f of F over a box shows that no θ of the box serves the search: inside
+// looks for F <= 1 (excluded when f.lo > 1), outside for F > 1 (excluded when f.hi <= 1).
+bool excludes(const Interval& f, bool inside) { return inside ? f.lo > 1.0 : f.hi <= 1.0; }
+
 // The fourteen fuzzy values of a part box, addressed by index for splitting.
 Interval& slot(PartBox& b, int i) { return partSlot(b, i); }
 const Interval& slot(const PartBox& b, int i) { return partSlot(b, i); }
@@ -41,7 +45,7 @@ double centreValue(const PartBox& b, const Vec3& p) { return midpointPart(b).ins
 Interval pointEnclosure(const PartBox& b, const Vec3& p, bool inside) {
   const Interval px{p.x, p.x}, py{p.y, p.y}, pz{p.z, p.z};
   const Interval f = insideOutsideBounds(b, px, py, pz);
-  if (inside ? f.lo > 1.0 : f.hi <= 1.0) return f;
+  if (excludes(f, inside)) return f;
   return intersect(f, insideOutsideAffineBounds(b, px, py, pz));
 }
 
@@ -54,15 +58,14 @@ Interval pointEnclosure(const PartBox& b, const Vec3& p, bool inside) {
 // part at N = 32, so one round.)
 bool narrowToQualifying(PartBox* box, const Vec3& p, bool inside, Interval* f, bool* narrowed) {
   const Interval px{p.x, p.x}, py{p.y, p.y}, pz{p.z, p.z};
-  const auto excludes = [inside](const Interval& g) { return inside ? g.lo > 1.0 : g.hi <= 1.0; };
   *narrowed = false;
   *f = insideOutsideBounds(*box, px, py, pz);
-  if (excludes(*f)) return false;
+  if (excludes(*f, inside)) return false;
   AffineForm form;
   if (!insideOutsideAffineForm(*box, px, py, pz, &form)) return true;
   const Interval a = range(form);
   *f = intersect(*f, {std::max(a.lo, 0.0), std::max(a.hi, 0.0)});
-  if (excludes(*f)) return false;
+  if (excludes(*f, inside)) return false;
   const PartBox before = *box;
   if (!contractToQualifying(form, inside, box)) return false;
   for (int i = 0; i < kSlots && !*narrowed; ++i) {
@@ -138,7 +141,7 @@ bool FuzzyPartField::decide(const Vec3& p, const PartBox& box, Question q) const
     if (possibly && missesDeformedHull(item.box, px, py, pz)) continue;  // F > 1 on the box
     const Interval f = pointEnclosure(item.box, p, possibly);
     // The enclosure excludes the box from the question (no witness can lie in it).
-    if (possibly ? f.lo > 1.0 : f.hi <= 1.0) continue;
+    if (excludes(f, possibly)) continue;
     // A crisp witness: inside (possibly) or outside (not necessarily).
     if (settles(item.centre)) return possibly;
     // Split the value that is widest relative to its support: a common yardstick for sizes, angles
@@ -264,7 +267,7 @@ bool FuzzyPartField::collapsedExcludes(const PartBox& box, const Vec3& p, bool i
       mv = add(mv, mul(d[j], Interval{v.lo - m, v.hi - m}));
     }
     if (std::isfinite(mv.lo) && std::isfinite(mv.hi)) f = intersect(f, mv);
-    if (inside ? f.lo > 1.0 : f.hi <= 1.0) return true;
+    if (excludes(f, inside)) return true;
   }
   return false;
 }

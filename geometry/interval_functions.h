@@ -29,6 +29,10 @@ inline double mid(const Interval& a) { return 0.5 * a.lo + 0.5 * a.hi; }  // hal
 inline double magnitude(const Interval& a) {  // max |x| over a
   return std::max(std::fabs(a.lo), std::fabs(a.hi));
 }
+inline double mignitude(const Interval& a) {  // min |x| over a: 0 when a holds 0
+  return a.lo > 0.0 ? a.lo : a.hi < 0.0 ? -a.hi : 0.0;
+}
+inline bool isPoint(const Interval& a, double v) { return a.lo == v && a.hi == v; }  // a == [v, v]
 
 // The intersection of two enclosures of the same quantity. Both are sound, so the true value
 // lies in both; if rounding makes them miss each other by an ulp, the gap between them is

@@ -17,8 +17,6 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kMaxFinite = std::numeric_limits<double>::max();
 constexpr int kPointSymbol = kPartSlots;  // x, y, z of the point box: symbols 14, 15, 16
 
-bool isPoint(const Interval& a, double v) { return a.lo == v && a.hi == v; }
-
 struct AffineVec3 {
   AffineForm x, y, z;
 };

@@ -16,9 +16,6 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegToRad = kPi / 180.0;
 constexpr double kMaxFinite = std::numeric_limits<double>::max();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// Magnitude limit for intermediate values: products of two values below it stay finite, so
-// no ∞·0 = NaN can arise inside the interval products (whose min/max would hide it).
-constexpr double kTame = 1e150;
 const Interval kOne{1.0, 1.0};
 
 struct IntervalVec3 {
@@ -26,10 +23,6 @@ struct IntervalVec3 {
 };
 
 Interval point(double v) { return {v, v}; }
-
-bool isPoint(const Interval& a, double v) { return a.lo == v && a.hi == v; }
-
-bool isTame(const Interval& a) { return a.lo >= -kTame && a.hi <= kTame; }  // false for NaN
 
 // atan(w)/w, = 1 at w = 0: the same two-branch evaluation as deformation.cpp's atanc.
 double atanc(double w) {
@@ -157,8 +150,6 @@ Interval absUntaper(const Interval& x, const Interval& k, const Interval& zc) {
 // The box of canonical |x|/A, |y|/B, |z|/C over the point and parameter boxes: the inputs of
 // the canonical F, which increases in each. Returns false when intermediate values leave
 // the tame range (absurd coordinates or sizes); the caller then answers the trivial bound.
-// Smallest |x| over an interval.
-double mignitude(const Interval& a) { return a.lo > 0.0 ? a.lo : a.hi < 0.0 ? -a.hi : 0.0; }
 
 // A lower bound of the cross-section norm R = ||(X, Y)||_(2/eps2) that the twist cannot blur:
 // the twist turns (x, y) about z and keeps its radius r, and with M >= A·|fx|, B·|fy| (the taper

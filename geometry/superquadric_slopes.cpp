@@ -13,12 +13,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kE = 2.71828182845904523536;
-// Every value and slope end stays below this magnitude, so a product of two stays finite and no
-// ∞·0 = NaN can hide inside an interval product's min and max (as in superquadric_bounds.cpp).
-constexpr double kTame = 1e150;
-
-bool isPoint(const Interval& a, double v) { return a.lo == v && a.hi == v; }
-bool tame(const Interval& a) { return a.lo >= -kTame && a.hi <= kTame; }  // false for NaN
 
 Interval expI(const Interval& a) { return {std::exp(a.lo), std::exp(a.hi)}; }
 Interval logI(const Interval& a) { return {std::log(a.lo), std::log(a.hi)}; }  // a.lo > 0
@@ -136,7 +130,7 @@ class Diff {
       // negative for the smallest e; for x <= 1 it is <= 0, beyond 1 it grows with x and e.
       ce = {-1.0 / (kE * e.v.lo), X > 1.0 ? std::pow(X, e.v.hi) * std::log(X) : 0.0};
     }
-    if (!tame(cx) || !tame(ce)) return failed();
+    if (!isTame(cx) || !isTame(ce)) return failed();
     for (int j = 0; j < n_; ++j)
       r.d[j] = fsdb::add(xSlopes ? fsdb::mul(cx, x.d[j]) : Interval{0.0, 0.0},
                          fsdb::mul(ce, e.d[j]));
@@ -151,8 +145,8 @@ class Diff {
     return check(r);
   }
   Ad check(const Ad& r) {
-    bool good = tame(r.v);
-    for (int j = 0; j < n_ && good; ++j) good = tame(r.d[j]);
+    bool good = isTame(r.v);
+    for (int j = 0; j < n_ && good; ++j) good = isTame(r.d[j]);
     if (!good) ok_ = false;
     return r;
   }

@@ -25,5 +25,7 @@ inline Vec2 unitAtDegrees(double deg) {
   const double r = deg * (M_PI / 180.0);
   return {std::cos(r), std::sin(r)};
 }
+// The direction of v in degrees from the x axis, in (-180, 180] (atan2's range).
+inline double degreesOf(const Vec2& v) { return std::atan2(v.y, v.x) * (180.0 / M_PI); }
 
 }  // namespace fsdb

@@ -48,6 +48,12 @@ TEST(IntervalFunctions, ScalarHelpers) {
   EXPECT_EQ(mid({1, 3}), 2.0);
   EXPECT_EQ(mid({-kMaxFinite, kMaxFinite}), 0.0);  // no overflow
   EXPECT_EQ(magnitude({-5, 3}), 5.0);
+  EXPECT_EQ(mignitude({2, 5}), 2.0);
+  EXPECT_EQ(mignitude({-5, -3}), 3.0);
+  EXPECT_EQ(mignitude({-5, 3}), 0.0);
+  EXPECT_TRUE(isPoint({0, 0}, 0.0));
+  EXPECT_FALSE(isPoint({0, 1}, 0.0));
+  EXPECT_FALSE(isPoint({1, 1}, 0.0));
   EXPECT_EQ(intersect({0, 3}, {1, 5}), (Interval{1, 3}));
   // Two enclosures that miss by rounding: the gap, never an inverted interval.
   EXPECT_EQ(intersect({0, 1}, {1.0 + 1e-16 * 2, 2}), (Interval{1, 1.0 + 1e-16 * 2}));

@@ -485,5 +485,14 @@ TEST(SuperquadricBounds, TwistKeepsTheDistanceFromTheAxis) {
     }
 }
 
+TEST(SuperquadricBounds, IsTameBoundsMagnitudeAndRejectsNaN) {
+  EXPECT_TRUE(isTame({-kTame, kTame}));
+  EXPECT_TRUE(isTame({-1.0, 2.0}));
+  EXPECT_FALSE(isTame({-1.0, 2.0 * kTame}));
+  EXPECT_FALSE(isTame({-2.0 * kTame, 0.0}));
+  EXPECT_FALSE(isTame({std::nan(""), 0.0}));
+  EXPECT_FALSE(isTame({0.0, std::numeric_limits<double>::infinity()}));
+}
+
 }  // namespace
 }  // namespace fsdb
