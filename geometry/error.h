@@ -23,6 +23,7 @@ inline constexpr const char* kInUse = "in_use";                         // 409 (
 inline constexpr const char* kUnknownReference = "unknown_reference";  // 422 (a reference to no stored part/shape)
 inline constexpr const char* kReferenceCycle = "reference_cycle";      // 422 (a shape that would contain itself)
 inline constexpr const char* kUnauthorized = "unauthorized";            // 401 (write without the bearer token)
+inline constexpr const char* kUnsupportedMediaType = "unsupported_media_type";  // 415 (a multipart body)
 inline constexpr const char* kStorage = "storage_error";                // 503 (database busy, disk full, I/O error)
 }  // namespace errc
 

@@ -12,7 +12,7 @@ int httpStatusFor(const std::string& code) {
       {errc::kLimitExceeded, 413},    {errc::kInvalidParameter, 422},
       {errc::kInvalidDocument, 422},  {errc::kUnknownName, 422},
       {errc::kDomainError, 422},      {"method_not_allowed", 405},
-      {"unsupported_media_type", 415}, {errc::kConflict, 409},
+      {errc::kUnsupportedMediaType, 415}, {errc::kConflict, 409},
       {errc::kInUse, 409},            {errc::kUnknownReference, 422},
       {errc::kReferenceCycle, 422},   {errc::kUnauthorized, 401},
       {errc::kStorage, 503}};

@@ -49,7 +49,7 @@ void readBody(const httplib::Request& req, const httplib::ContentReader& content
               std::string* body, httplib::Response& res) {
   if (req.is_multipart_form_data()) {
     content([](const httplib::MultipartFormData&) { return true; }, [](const char*, size_t) { return true; });
-    throw Error("unsupported_media_type",
+    throw Error(errc::kUnsupportedMediaType,
                 "multipart/form-data bodies are not accepted; send the document itself "
                 "(Content-Type: application/json, or JSON Lines for bulk imports)",
                 "body");
