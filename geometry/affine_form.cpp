@@ -166,4 +166,39 @@ AffineForm atan(const AffineForm& x) {
   return apply(x, secondOrder(c, r, std::atan(c), 1.0 / (1.0 + c * c), {-down, up}));
 }
 
+AffineForm pow(const AffineForm& x, const AffineForm& q) {
+  Interval a, b;
+  double rx, rq;
+  if (!rangeOf(x, &a, &rx) || !rangeOf(q, &b, &rq) || !(a.lo > 0.0)) return invalid();
+  const double x0 = x.centre, q0 = q.centre, f0 = std::pow(x0, q0), l0 = std::log(x0);
+  const double fx = q0 * f0 / x0, fq = f0 * l0;  // the gradient at the centre
+  // The Hessian over the box: x^e = exp(e·ln x) for any real e, ln x in [ln a.lo, ln a.hi].
+  const Interval lnx{std::log(a.lo), std::log(a.hi)};
+  const auto powerOf = [&](double shift) {  // {x^(q − shift)}
+    const Interval e = mul(Interval{b.lo - shift, b.hi - shift}, lnx);
+    return Interval{std::exp(e.lo), std::exp(e.hi)};
+  };
+  const Interval hxx = mul(mul(b, Interval{b.lo - 1.0, b.hi - 1.0}), powerOf(2.0));
+  const Interval hxq = mul(powerOf(1.0), add(Interval{1.0, 1.0}, mul(b, lnx)));
+  const Interval hqq = mul(powerOf(0.0), sqr(lnx));
+  // Lagrange remainder on the segment from the centre (it stays in the box): ½·δᵀHδ with
+  // δx² in [0, rx²], δx·δq in [−rx·rq, rx·rq], δq² in [0, rq²]; its midpoint moves the centre.
+  const double mixed = rx * rq;
+  const Interval quadratic =
+      mul(0.5, add(add(mul(hxx, Interval{0.0, rx * rx}), mul(2.0, mul(hxq, Interval{-mixed, mixed}))),
+                   mul(hqq, Interval{0.0, rq * rq})));
+  const double remainder = 0.5 * quadratic.hi - 0.5 * quadratic.lo;
+  AffineForm r;
+  r.centre = f0 + mid(quadratic);
+  double d = 0.0;
+  for (int i = 0; i < kAffineSymbols; ++i) {
+    r.dev[i] = fx * x.dev[i] + fq * q.dev[i];
+    d += std::fabs(r.dev[i]);
+  }
+  r.err = std::fabs(fx) * x.err + std::fabs(fq) * q.err + remainder;
+  if (!(std::isfinite(f0) && std::isfinite(fx) && std::isfinite(fq) && std::isfinite(remainder)))
+    return invalid();
+  return finish(r, d);
+}
+
 }  // namespace fsdb

@@ -61,6 +61,12 @@ AffineForm log(const AffineForm& x);    // invalid unless the range is > 0
 AffineForm sin(const AffineForm& x);
 AffineForm cos(const AffineForm& x);
 AffineForm atan(const AffineForm& x);
+// x^q for a base whose range is > 0 (invalid otherwise, or where the result overflows): one
+// second-order Taylor step in both arguments about the centres, with the Hessian of x^q
+// (q(q−1)x^(q−2), x^(q−1)(1 + q·ln x), x^q·ln²x) enclosed over the box of the two ranges. One
+// remainder instead of the three of exp(q·log x) (log, product, exp), so a power over a canonical
+// ratio keeps several times less accumulated error.
+AffineForm pow(const AffineForm& x, const AffineForm& q);
 
 // A form with no correlation: the interval as centre and accumulated error (for quantities only
 // an interval enclosure can bound; invalid for non-finite ends).

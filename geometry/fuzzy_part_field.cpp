@@ -229,17 +229,25 @@ PlacedSuperquadric thetaAt(const PartBox& b, const double (&v)[kSlots]) {
 // rest.) The collapsed box is also bounded by the mean value form with those slopes. Each
 // slope enclosure and each enclosure counts as an evaluation.
 bool FuzzyPartField::collapsedExcludes(const PartBox& box, const Vec3& p, bool inside,
-                                       int* evaluations) const {
+                                       int* evaluations, const int* given, int givenCount,
+                                       const Interval* givenSlopes) const {
   const Interval px{p.x, p.x}, py{p.y, p.y}, pz{p.z, p.z};
   PartBox c = box;
   for (int round = 0; round < 3 && *evaluations < options_.evaluationBudget; ++round) {
     int open[kSlots], n = 0;
-    for (int j = 0; j < fuzzyCount_; ++j)
-      if (width(slot(c, fuzzySlots_[j])) > 0.0) open[n++] = fuzzySlots_[j];
-    if (n == 0) return false;
     Interval d[kSlots];
-    ++*evaluations;
-    if (!insideOutsideSlopes(c, px, py, pz, open, n, d)) return false;
+    if (round == 0 && givenSlopes != nullptr) {
+      // Slopes over a box that holds this one hold over it (listed values may be single values).
+      n = givenCount;
+      std::copy(given, given + n, open);
+      std::copy(givenSlopes, givenSlopes + n, d);
+    } else {
+      for (int j = 0; j < fuzzyCount_; ++j)
+        if (width(slot(c, fuzzySlots_[j])) > 0.0) open[n++] = fuzzySlots_[j];
+      if (n == 0) return false;
+      ++*evaluations;
+      if (!insideOutsideSlopes(c, px, py, pz, open, n, d)) return false;
+    }
     // The mean value form about Baumann's centre (superquadric_slopes.h), one crisp evaluation:
     // where it excludes the box no θ of it qualifies. (No outward rounding: boundsOver's margin.)
     const double end = meanValueEnd(c, p, inside, open, n, d);
@@ -270,6 +278,37 @@ bool FuzzyPartField::collapsedExcludes(const PartBox& box, const Vec3& p, bool i
     if (excludes(f, inside)) return true;
   }
   return false;
+}
+
+// Dominance narrowing, exact for the max-min objective. Where ∂F/∂θ_i keeps one sign over the box
+// and moving θ_i towards its core moves F the way the search wants (down for u, up for l), every θ
+// of the box is beaten or matched by the θ with that value moved towards the core, as far as the
+// box allows: F moves the right way (the slope holds all along, the box is convex) and μ̂_i rises
+// or stays (μ̂ rises up to the core and falls after it), so m(θ) does not fall. Hence the θ with
+// θ_i beyond the core's near end cannot hold the best m: for u with F nondecreasing in θ_i the box
+// keeps [lo, min(hi, max(lo, core.lo))] (a box wholly above the core keeps its lower face), and
+// the mirror images for the other three cases. Nothing qualifying with the best m is lost, so the
+// searches' guarantees stand; the box loses the half of each signed value that lies on the wrong
+// side of the core.
+bool FuzzyPartField::narrowByDominance(PartBox* box, const int* open, int count, const Interval* d,
+                                       bool inside) const {
+  bool changed = false;
+  for (int j = 0; j < count; ++j) {
+    const int sign = d[j].lo >= 0.0 ? 1 : d[j].hi <= 0.0 ? -1 : 0;
+    if (sign == 0) continue;
+    Interval& v = slot(*box, open[j]);
+    const Interval& core = slot(core_, open[j]);
+    if ((sign > 0) == inside) {  // F falls (u) or rises (l) downwards: keep the lower part
+      const double top = std::min(v.hi, std::max(v.lo, core.lo));
+      changed = changed || top < v.hi;
+      v.hi = top;
+    } else {
+      const double bottom = std::max(v.lo, std::min(v.hi, core.hi));
+      changed = changed || bottom > v.lo;
+      v.lo = bottom;
+    }
+  }
+  return changed;
 }
 
 // Max-min branch and bound (see the header): maximise m(θ) = min_i μ̂_i(θ_i) over the θ of P(0)
@@ -439,7 +478,24 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
         continue;
       }
     }
-    if (collapsedExcludes(node.box, p, inside, &evaluations)) continue;
+    // The slopes over the box: dominance first (it keeps the best m), then the collapse tests.
+    int open[kSlots], openCount = 0;
+    for (int j = 0; j < fuzzyCount_; ++j)
+      if (width(slot(node.box, fuzzySlots_[j])) > 0.0) open[openCount++] = fuzzySlots_[j];
+    Interval boxSlopes[kSlots];
+    ++evaluations;
+    const bool boxSlopesKnown =
+        openCount > 0 && insideOutsideSlopes(node.box, px, py, pz, open, openCount, boxSlopes);
+    if (boxSlopesKnown && narrowByDominance(&node.box, open, openCount, boxSlopes, inside)) {
+      node.ub = std::min(node.ub, upperBound(node.box));
+      if (base >= 0.0 && node.ub <= base + tau) {
+        s.pruned = std::max(s.pruned, node.ub);
+        continue;
+      }
+    }
+    if (collapsedExcludes(node.box, p, inside, &evaluations, open, openCount,
+                          boxSlopesKnown ? boxSlopes : nullptr))
+      continue;
     // The peak of the box: each value clamped towards its core maximises μ̂_i over the box, so a
     // witness there settles the box (m = its bound).
     double peak[kSlots], centre[kSlots];

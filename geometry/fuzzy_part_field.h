@@ -36,7 +36,10 @@
 // sound exclusions: a box whose placement cannot bring p into the local box that holds every
 // S(θ) of it (missesDeformedHull) has no θ with F <= 1, and a box is dropped when the box with
 // its monotone values collapsed to their F-lowering (u) or F-raising (l) ends is excluded by its
-// enclosure or mean value form (a θ qualifies in the box only if one does in the collapsed box);
+// enclosure or mean value form (a θ qualifies in the box only if one does in the collapsed box),
+// and, before that, a signed value's half of the box beyond its core on the side where moving
+// towards the core helps (lower F for u, higher for l) is cut away (narrowByDominance: the moved
+// θ has at least the same m, so the best m stays in the box);
 // before each collapse the box is also tried with the mean value form about Baumann's centre
 // (meanValueEnd, superquadric_slopes.h), from the same slopes and one crisp evaluation.
 // The searches' enclosure of a box is the interval one intersected with the affine one
@@ -133,7 +136,15 @@ class FuzzyPartField : public AlphaFieldSource {
   Search maxMin(const Vec3& p, bool inside) const;
   // Is the box excluded for the search (inside: no θ with F <= 1; else none with F > 1) once its
   // monotone values are collapsed to their ends? Adds its evaluations to *evaluations.
-  bool collapsedExcludes(const PartBox& box, const Vec3& p, bool inside, int* evaluations) const;
+  // slopes, when not null, holds ∂F/∂θ for the `count` slots `open` over a box that holds `box`
+  // (the first round then takes them instead of computing its own).
+  bool collapsedExcludes(const PartBox& box, const Vec3& p, bool inside, int* evaluations,
+                         const int* open = nullptr, int count = 0,
+                         const Interval* slopes = nullptr) const;
+  // Dominance narrowing (see the .cpp): narrows the box to the θ that no other θ of it beats, for
+  // slopes d of the `count` slots `open` over the box; true when the box changed.
+  bool narrowByDominance(PartBox* box, const int* open, int count, const Interval* d,
+                         bool inside) const;
   PartBox cutAt(double alpha) const;  // boxAt(alpha), cutting only the fuzzy values
   // Monotone shortcut (see above): sign[i] = +1 / −1 when F is nondecreasing / nonincreasing in
   // fuzzy value i over the point box [lo, hi] × P(0) (0 for crisp values); false unless every
