@@ -422,7 +422,15 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
   };
 
   heap.push_back({support_, 1.0, 0.0});
+  // A dive that finds no witness in a quarter of the budget may find none at all (u_true <= τ, or
+  // no θ of P(0) puts p outside): from then on best first, so that the proof lowers the largest
+  // open bound steadily and an exhausted search answers that bound rather than 1.
+  const int diveLimit = options_.evaluationBudget / 4;
   while (!heap.empty()) {
+    if (diving && evaluations >= diveLimit) {
+      diving = false;
+      std::make_heap(heap.begin(), heap.end(), lessPromising);
+    }
     std::pop_heap(heap.begin(), heap.end(), lessPromising);
     Node node = std::move(heap.back());
     heap.pop_back();
