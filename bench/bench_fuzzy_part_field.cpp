@@ -2,7 +2,8 @@
 // 3): ns per levelsAt at points inside, outside and on the boundary band, for a crisp unit sphere,
 // a fuzzy sphere (a1 = tri(0.8, 1, 1.2)) and a fuzzy bent, tapered, twisted, placed part (every
 // value spread by a few percent); and ns per boundsOver on blocks of edge 0.1 around the part.
-// Points and blocks are fixed (seed 1). BM_DeformedPartGrid: EnvelopeGrid::build of the fuzzy
+// Points and blocks are fixed (seed 1). BM_FuzzyDeformationsGrid: the part with only its four
+// deformation values fuzzy, N = 64 ... 512. BM_DeformedPartGrid: EnvelopeGrid::build of the fuzzy
 // deformed part with N = 32, 64 or 128 voxels across its bounding box, through levelsAt (impl 1) or
 // the previous bisection reference::bisectionLevelsAt (impl 0, at 32), one iteration each.
 #include <benchmark/benchmark.h>
@@ -14,11 +15,11 @@
 
 #include "bench/grid_bench.h"
 #include "geometry/fuzzy_part_field.h"
+#include "tests/testing/fuzzy_bench_part.h"
 
 namespace fsdb {
 namespace {
 
-FuzzyNumber spread(double m, double s) { return FuzzyNumber::triangular(m - s, m, m + s); }
 
 FuzzyPart crispSphere() { return FuzzyPart{}; }
 
@@ -28,23 +29,18 @@ FuzzyPart fuzzySphere() {
   return part;
 }
 
-FuzzyPart fuzzyDeformed() {
-  FuzzyPart part;
-  part.eps1 = spread(0.7, 0.035);
-  part.eps2 = spread(1.3, 0.065);
-  part.a1 = spread(1.0, 0.05);
-  part.a2 = spread(0.8, 0.04);
-  part.a3 = spread(2.0, 0.1);
-  part.kx = spread(0.4, 0.05);
-  part.ky = spread(-0.3, 0.05);
-  part.kv = spread(0.3, 0.015);
-  part.t = spread(1.2, 0.05);
-  part.tx = spread(0.5, 0.025);
-  part.ty = spread(-0.25, 0.0125);
-  part.tz = spread(0.1, 0.005);
-  part.axis = {1, 1, 0};
-  part.deg = spread(30, 3);
-  part.scale = spread(1.5, 0.075);
+FuzzyPart fuzzyDeformed() { return testing::allValuesFuzzyPart(); }
+
+// The issue's "fuzzy bent, tapered, twisted part": the same part with only its four deformation
+// values fuzzy (taper kx, ky, bend kv, twist t: "a slightly bent, tapered, twisted bar"), the
+// other ten crisp at the cores above.
+FuzzyPart fuzzyDeformations() {
+  FuzzyPart part = fuzzyDeformed();
+  for (FuzzyNumber* v : {&part.eps1, &part.eps2, &part.a1, &part.a2, &part.a3, &part.tx, &part.ty,
+                         &part.tz, &part.deg, &part.scale}) {
+    const double core = v->core().lo;
+    *v = FuzzyNumber::triangular(core, core, core);
+  }
   return part;
 }
 
@@ -162,6 +158,23 @@ BENCHMARK(BM_DeformedPartGrid)
     ->Args({32, 1})
     ->Args({64, 1})
     ->Args({128, 1})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// The part with only its deformation values fuzzy at N = 64 ... 512 (the resolutions of issue 3's
+// bench list), one iteration each.
+void BM_FuzzyDeformationsGrid(benchmark::State& state) {
+  const FuzzyPartField field(fuzzyDeformations());
+  const double h = bench::voxelSizeAcross(field, static_cast<double>(state.range(0)));
+  const std::uint64_t before = field.budgetExhaustions();
+  bench::timeGridBuild(state, field, h);
+  state.counters["exhausted"] = static_cast<double>(field.budgetExhaustions() - before);
+}
+BENCHMARK(BM_FuzzyDeformationsGrid)
+    ->ArgName("across")
+    ->RangeMultiplier(2)
+    ->Range(64, 512)
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();

@@ -30,8 +30,9 @@
 // settles the box), the corner that F's slopes favour (central differences at the core midpoint,
 // and after each new incumbent at its witness), or the centre, then a regula
 // falsi walk towards the peak; boxes are split where fixing a value to its midpoint moved the
-// enclosure most (measured once per search). Until the first witness the search dives (the box
-// whose centre is nearest a witness first). For u the search starts cut to P(τ): u = 0 is a correct
+// enclosure most (measured once per search). Until the first witness, and for at most a
+// quarter of the budget, the search dives (the box whose centre is nearest a witness first; then
+// best first, so that an exhausted search's largest open bound has come down). For u the search starts cut to P(τ): u = 0 is a correct
 // answer for any u_true <= τ. A fast exit first tries the enclosure over P(0) at p. Two more
 // sound exclusions: a box whose placement cannot bring p into the local box that holds every
 // S(θ) of it (missesDeformedHull) has no θ with F <= 1, and a box is dropped when the box with

@@ -12,6 +12,7 @@
 #include "geometry/envelope_grid.h"
 #include "geometry/interval_functions.h"
 #include "random_superquadric.h"
+#include "testing/fuzzy_bench_part.h"
 
 namespace fsdb {
 namespace {
@@ -561,24 +562,7 @@ TEST(FuzzyPartFieldTest, RandomFuzzyPartsOnALowResolutionGridRespectTheDefinitio
 // found no witness in a quarter of their budget turned best first, they kept diving, their largest
 // open bound stayed 1, and upper(1) came out 2.8 % above lower(1) at N = 32.
 TEST(FuzzyPartFieldTest, ExhaustedSearchesKeepUpperOneAtTheCore) {
-  const auto spread = [](double m, double s) { return tri(m - s, m, m + s); };
-  FuzzyPart part;
-  part.eps1 = spread(0.7, 0.035);
-  part.eps2 = spread(1.3, 0.065);
-  part.a1 = spread(1.0, 0.05);
-  part.a2 = spread(0.8, 0.04);
-  part.a3 = spread(2.0, 0.1);
-  part.kx = spread(0.4, 0.05);
-  part.ky = spread(-0.3, 0.05);
-  part.kv = spread(0.3, 0.015);
-  part.t = spread(1.2, 0.05);
-  part.tx = spread(0.5, 0.025);
-  part.ty = spread(-0.25, 0.0125);
-  part.tz = spread(0.1, 0.005);
-  part.axis = {1, 1, 0};
-  part.deg = spread(30, 3);
-  part.scale = spread(1.5, 0.075);
-  const FuzzyPartField field(part);
+  const FuzzyPartField field(testing::allValuesFuzzyPart());
   Vec3 lo, hi;
   field.boundingBox(&lo, &hi);
   const double h = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) / 32.0;
