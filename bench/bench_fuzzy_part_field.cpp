@@ -20,7 +20,6 @@
 namespace fsdb {
 namespace {
 
-
 FuzzyPart crispSphere() { return FuzzyPart{}; }
 
 FuzzyPart fuzzySphere() {
