@@ -201,4 +201,47 @@ AffineForm pow(const AffineForm& x, const AffineForm& q) {
   return finish(r, d);
 }
 
+AffineForm absPow(const AffineForm& x, const Interval& q) {
+  Interval a;
+  double rx;
+  if (!rangeOf(x, &a, &rx) || !(q.lo >= 1.0) || !std::isfinite(q.hi)) return invalid();
+  const double qm = mid(q);
+  const double fa = std::pow(std::fabs(a.lo), qm), fb = std::pow(std::fabs(a.hi), qm);
+  const double s = a.hi > a.lo ? (fb - fa) / (a.hi - a.lo) : 0.0;
+  // g(x) = |x|^e − s·x is convex for every exponent e >= 1; for a fixed x, |x|^e is monotone in e,
+  // so the extremes over the box are at e = q.lo or q.hi: max at an end of the range, min at g's
+  // stationary point (or an end, or 0 where the slope jumps for e = 1).
+  const auto g = [&](double v, double e) { return std::pow(std::fabs(v), e) - s * v; };
+  double up = -std::numeric_limits<double>::infinity(), lo = std::numeric_limits<double>::infinity();
+  double magnitude = 0.0;
+  for (double e : {q.lo, q.hi}) {
+    for (double v : {a.lo, a.hi}) {
+      const double gv = g(v, e);
+      up = std::max(up, gv);
+      lo = std::min(lo, gv);
+      magnitude = std::max(magnitude, std::pow(std::fabs(v), e) + std::fabs(s * v));
+    }
+    lo = std::min(lo, g(std::min(std::max(0.0, a.lo), a.hi), e));
+    if (e > 1.0 && s != 0.0) {
+      const double stationary = std::copysign(std::pow(std::fabs(s) / e, 1.0 / (e - 1.0)), s);
+      lo = std::min(lo, g(std::min(std::max(stationary, a.lo), a.hi), e));
+    }
+  }
+  if (!(std::isfinite(up) && std::isfinite(lo) && std::isfinite(s))) return invalid();
+  // The stationary point and the powers round: a relative slack of the magnitudes involved keeps
+  // the band's ends outside g's true extremes.
+  const double slack = 1e-12 * magnitude;
+  lo -= slack;
+  up += slack;
+  AffineForm r;
+  r.centre = s * x.centre + 0.5 * (lo + up);
+  double d = 0.0;
+  for (int i = 0; i < kAffineSymbols; ++i) {
+    r.dev[i] = s * x.dev[i];
+    d += std::fabs(r.dev[i]);
+  }
+  r.err = std::fabs(s) * x.err + 0.5 * (up - lo) + kSlack * std::fabs(s * x.centre);
+  return finish(r, d);
+}
+
 }  // namespace fsdb

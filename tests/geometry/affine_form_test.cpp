@@ -176,6 +176,45 @@ TEST(AffineForm, PowerKeepsLessErrorThanExpOfLog) {
   EXPECT_NEAR(range(p).hi, std::pow(0.7, 1.3), 1e-14);
 }
 
+// |x|^q over ranges that reach or straddle 0, for exponent intervals with q.lo >= 1, holds the
+// true value at random symbols and exponents.
+TEST(AffineForm, AbsPowHoldsSampledValues) {
+  std::mt19937_64 rng(13);
+  for (int k = 0; k < 2000; ++k) {
+    const AffineForm x = randomForm(rng, -0.3, 1.5, k % 2 ? 0.2 : 0.02);
+    const double q0 = uniform(rng, 1.0, 3.5);
+    const Interval q{q0, q0 + (k % 3 ? uniform(rng, 0.0, 0.3) : 0.0)};
+    const AffineForm r = absPow(x, q);
+    for (int s = 0; s < 20; ++s) {
+      double eps[kAffineSymbols] = {};
+      for (int i = 0; i < 3; ++i) eps[i] = s == 0 ? 1.0 : s == 1 ? -1.0 : uniform(rng, -1, 1);
+      const double e = s == 2 ? 1.0 : uniform(rng, -1, 1);
+      const double qe = s % 2 ? q.lo : uniform(rng, q.lo, q.hi);
+      expectHolds(r, eps, std::pow(std::fabs(valueAt(x, eps, e)), qe));
+    }
+  }
+  EXPECT_FALSE(absPow(affineVariable({-0.1, 0.5}, 0), {0.9, 1.2}).valid);  // not convex
+  EXPECT_FALSE(absPow(affineVariable({0.0, INFINITY}, 0), {2.0, 2.0}).valid);
+}
+
+// Near 0 the band is several times narrower than the interval range and keeps the correlation:
+// x^1.54 on [0, b] has range [0, b^1.54]; the band's error is about 0.16·b^1.54 (the secant's gap
+// to the curve), its deviation the secant slope.
+TEST(AffineForm, AbsPowNearZeroIsNarrowerThanTheRange) {
+  for (double b : {0.05, 0.2, 1.0}) {
+    const AffineForm x = affineVariable({0.0, b}, 0);
+    const AffineForm r = absPow(x, {1.54, 1.54});
+    ASSERT_TRUE(r.valid);
+    const double top = std::pow(b, 1.54);
+    EXPECT_LT(r.err, 0.2 * top) << b;
+    EXPECT_NEAR(r.dev[0], 0.5 * b * top / b, 1e-9 * top);  // secant slope × half width
+    // Straddling 0: still sound at the ends and the bottom.
+    const AffineForm s = absPow(affineVariable({-b, 0.5 * b}, 1), {1.54, 1.54});
+    EXPECT_LE(range(s).lo, 0.0 + 1e-15);
+    EXPECT_GE(range(s).hi, top - 1e-15);
+  }
+}
+
 // The remainder of a nonlinear function shrinks quadratically with the form's radius: the error
 // term over a tenth of the spread is about a hundredth.
 TEST(AffineForm, RemainderIsSecondOrder) {
