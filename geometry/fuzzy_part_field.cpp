@@ -1,6 +1,7 @@
 #include "geometry/fuzzy_part_field.h"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <vector>
 
@@ -56,13 +57,19 @@ Interval pointEnclosure(const PartBox& b, const Vec3& p, bool inside) {
 // the narrowing (so over the narrowed box too); *narrowed tells whether the box changed. (Taking
 // the enclosure of the narrowed box again changed no answer and no exhaustion count of the bench
 // part at N = 32, so one round.)
-bool narrowToQualifying(PartBox* box, const Vec3& p, bool inside, Interval* f, bool* narrowed) {
+bool narrowToQualifying(PartBox* box, const Vec3& p, bool inside, Interval* f, bool* narrowed,
+                        AffineForm* formOut = nullptr) {
   const Interval px{p.x, p.x}, py{p.y, p.y}, pz{p.z, p.z};
   *narrowed = false;
   *f = insideOutsideBounds(*box, px, py, pz);
   if (excludes(*f, inside)) return false;
-  AffineForm form;
-  if (!insideOutsideAffineForm(*box, px, py, pz, &form)) return true;
+  AffineForm scratch;
+  AffineForm& form = formOut != nullptr ? *formOut : scratch;
+  form.valid = false;
+  if (!insideOutsideAffineForm(*box, px, py, pz, &form)) {
+    form.valid = false;
+    return true;
+  }
   const Interval a = range(form);
   *f = intersect(*f, {std::max(a.lo, 0.0), std::max(a.hi, 0.0)});
   if (excludes(*f, inside)) return false;
@@ -311,6 +318,53 @@ bool FuzzyPartField::narrowByDominance(PartBox* box, const int* open, int count,
   return changed;
 }
 
+// The linearised bound of a box (maxMin): every θ of the box that qualifies (F <= 1 for u, F > 1
+// for l) satisfies the affine form's linear condition, σ·Σ f_i·ε_i <= σ·(1 − F0) + e (σ = +1 for
+// u, −1 for l; ε_i the noise symbols of formBox, the box the form was computed over), and has
+// m(θ) >= t only if it lies in P(t). So no qualifying θ of the box has m above the least t at which
+// P(t) ∩ box holds no point of that half-space: the least over P(t) ∩ box of σ·Σ f_i·ε_i (each
+// term at an end) exceeds the right-hand side. That sum rises with t (the cuts nest), so bisection
+// on [0, ub] finds the bound; the box bound ub ignores F, this one trades the values against each
+// other. Returns a bound <= ub (rounded up), or −1 when even t = 0 admits no such point.
+double FuzzyPartField::linearizedBound(const PartBox& box, const PartBox& formBox,
+                                       const AffineForm& form, bool inside, double ub) const {
+  const double sigma = inside ? 1.0 : -1.0;
+  const double rhs = sigma * (1.0 - form.centre) + form.err;
+  double scale = std::fabs(rhs);
+  for (int j = 0; j < fuzzyCount_; ++j) scale += std::fabs(form.dev[fuzzySlots_[j]]);
+  const double slack = 1e-12 * scale;
+  // The least of σ·Σ f_i·ε_i over P(t) ∩ box; +∞ when that set is empty.
+  const auto least = [&](double t) {
+    double sum = 0.0;
+    for (int j = 0; j < fuzzyCount_; ++j) {
+      const int i = fuzzySlots_[j];
+      const Interval& b = slot(box, i);
+      Interval c = b;
+      if (t > 0.0) {
+        const Interval cut = t >= 1.0 ? slot(core_, i) : values_[i]->alphaCut(t);
+        c = {std::max(b.lo, cut.lo), std::min(b.hi, cut.hi)};
+        if (c.lo > c.hi) return std::numeric_limits<double>::infinity();
+      }
+      const Interval& w = slot(formBox, i);
+      const double half = 0.5 * w.hi - 0.5 * w.lo;
+      const double coefficient = sigma * form.dev[i];
+      if (!(half > 0.0) || coefficient == 0.0) continue;
+      const double end = coefficient > 0.0 ? c.lo : c.hi;
+      sum += coefficient * ((end - mid(w)) / half);
+    }
+    return sum;
+  };
+  const auto admits = [&](double t) { return least(t) <= rhs + slack; };
+  if (!admits(0.0)) return -1.0;
+  if (admits(ub)) return ub;
+  double lo = 0.0, hi = ub;  // admits(lo), !admits(hi)
+  while (hi - lo > 0.125 * options_.tolerance) {
+    const double m = 0.5 * (lo + hi);
+    (admits(m) ? lo : hi) = m;
+  }
+  return std::min(ub, hi + kMembershipSlack);
+}
+
 // Max-min branch and bound (see the header): maximise m(θ) = min_i μ̂_i(θ_i) over the θ of P(0)
 // with F(p; θ) <= 1 (inside) or F(p; θ) > 1 (!inside).
 FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const {
@@ -477,8 +531,21 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
     if (inside && missesDeformedHull(node.box, px, py, pz)) continue;  // F > 1 on the whole box
     Interval f;
     bool narrowed = false;
-    if (!narrowToQualifying(&node.box, p, inside, &f, &narrowed))
+    const PartBox formBox = node.box;  // the box the affine form's noise symbols refer to
+    AffineForm form;
+    if (!narrowToQualifying(&node.box, p, inside, &f, &narrowed, &form))
       continue;  // no θ of the box qualifies
+    if (form.valid) {
+      const double lp = linearizedBound(node.box, formBox, form, inside, node.ub);
+      if (lp < 0.0) continue;  // no θ of the box satisfies the linear condition
+      if (lp < node.ub) {
+        node.ub = lp;
+        if (base >= 0.0 && node.ub <= base + tau) {
+          s.pruned = std::max(s.pruned, node.ub);
+          continue;
+        }
+      }
+    }
     if (narrowed) {
       node.ub = std::min(node.ub, upperBound(node.box));
       if (base >= 0.0 && node.ub <= base + tau) {

@@ -46,7 +46,9 @@
 // The searches' enclosure of a box is the interval one intersected with the affine one
 // (superquadric_affine.h: one noise symbol per value, a second-order remainder), and each box is
 // first narrowed by affine contraction to the θ that can still qualify (F <= 1 for u, F > 1 for
-// l; every such θ stays in it).
+// l; every such θ stays in it); the same form's linear condition also lowers the box's bound to
+// the highest level whose cut of the box still meets it (linearizedBound: the values traded
+// against one another, where the box bound takes each at its best).
 //  * u: the incumbent, rounded down and checked: its witness lies in P(u) (so u = 1 only when p ∈
 //    upper(1) was shown). u lies in [u_true − τ, u_true] unless the budget ran out; then u is the
 //    largest bound still open (an upper bound of u_true: upper grows).
@@ -79,6 +81,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "geometry/affine_form.h"
 #include "geometry/alpha_field.h"
 #include "geometry/fuzzy_part.h"
 #include "geometry/placed_superquadric.h"
@@ -146,6 +149,10 @@ class FuzzyPartField : public AlphaFieldSource {
   // slopes d of the `count` slots `open` over the box; true when the box changed.
   bool narrowByDominance(PartBox* box, const int* open, int count, const Interval* d,
                          bool inside) const;
+  // The linearised bound (see the .cpp) of the qualifying θ of `box`, from the affine form of F
+  // over formBox (which holds box); <= ub, or −1 when no θ of box can qualify.
+  double linearizedBound(const PartBox& box, const PartBox& formBox, const AffineForm& form,
+                         bool inside, double ub) const;
   PartBox cutAt(double alpha) const;  // boxAt(alpha), cutting only the fuzzy values
   // Monotone shortcut (see above): sign[i] = +1 / −1 when F is nondecreasing / nonincreasing in
   // fuzzy value i over the point box [lo, hi] × P(0) (0 for crisp values); false unless every
