@@ -30,7 +30,8 @@
 // settles the box), the corner that F's slopes favour (central differences at the core midpoint,
 // and after each new incumbent at its witness), or the centre, then a regula
 // falsi walk towards the peak; boxes are split where fixing a value to its midpoint moved the
-// enclosure most (measured once per search). Until the first witness, and for at most a
+// enclosure most (measured at the first box, and again every as many splits deep as there are
+// fuzzy values). Until the first witness, and for at most a
 // quarter of the budget, the search dives (the box whose centre is nearest a witness first; then
 // best first, so that an exhausted search's largest open bound has come down). For u the search starts cut to P(τ): u = 0 is a correct
 // answer for any u_true <= τ. A fast exit first tries the enclosure over P(0) at p. Two more
