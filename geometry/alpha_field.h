@@ -24,6 +24,7 @@
 // counts as necessarily inside from α = uB on, instead of just above it): a set of measure zero
 // in α, and for one requested α a set of measure zero in space; volumes are unaffected.
 #include <cmath>
+#include <cstdint>
 
 #include "geometry/vec3.h"
 
@@ -107,6 +108,20 @@ class AlphaFieldSource {
         for (int k = 0; k < BlockLattice::kDim; ++k)
           out[(i * BlockLattice::kDim + j) * BlockLattice::kDim + k] = levelsAt(b.at(i, j, k));
   }
+  // How many point searches ran out of their budget since construction and answered with a
+  // conservative bound instead of the level to the tolerance (upper too high, lower too low):
+  // fuzzy parts count theirs (geometry/fuzzy_part_field.h), CSG nodes report the sum over their
+  // children (a child shared twice in a DAG counts twice), exact sources 0. A caller that wants
+  // the count of one evaluation takes the difference before and after it.
+  virtual std::uint64_t budgetExhaustions() const { return 0; }
 };
+
+// The sum of budgetExhaustions() over a node's children (shared pointers to sources).
+template <class Children>
+std::uint64_t sumBudgetExhaustions(const Children& children) {
+  std::uint64_t n = 0;
+  for (const auto& child : children) n += child->budgetExhaustions();
+  return n;
+}
 
 }  // namespace fsdb

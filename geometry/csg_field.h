@@ -37,6 +37,7 @@ class CsgField : public AlphaFieldSource {
   // that cannot change the result (background in a union or as a subtrahend, anything once an
   // intersection or difference is empty, anything once a union is (1, 0)) are never sampled.
   void sampleBlock(const BlockLattice& b, AlphaLevels* out) const override;
+  std::uint64_t budgetExhaustions() const override { return sumBudgetExhaustions(children_); }
 
   CsgOp op() const { return op_; }
   const std::vector<std::shared_ptr<const AlphaFieldSource>>& children() const { return children_; }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -58,6 +59,33 @@ class BlockSampler {
   virtual void sampleLeaf(const Coord& origin, AlphaLevels* out) const = 0;
 };
 
+// The running checks of EnvelopeBuildLimits, shared by every task of one build. Throwing from a
+// TBB task cancels the others and rethrows in the caller; each of them stops at its next check.
+class BuildGuard {
+ public:
+  explicit BuildGuard(const EnvelopeBuildLimits& limits) : limits_(limits) {}
+  void checkTime() const {
+    if (limits_.deadline != std::chrono::steady_clock::time_point::max() &&
+        std::chrono::steady_clock::now() > limits_.deadline)
+      throw Error(errc::kLimitExceeded, "the grid build ran past its deadline", kDeadlinePath);
+  }
+  // Before a leaf pair is made: counts it, and throws when the leaves would pass the limit.
+  void countLeafPair() {
+    if (limits_.maxLeafBytes == 0) return;
+    const std::uint64_t n = leafPairs_.fetch_add(1, std::memory_order_relaxed) + 1;
+    if (n * EnvelopeGrid::leafPairBytes() > limits_.maxLeafBytes)
+      throw Error(errc::kLimitExceeded,
+                  "the grid needs more than " + std::to_string(limits_.maxLeafBytes) + " bytes of leaves (" +
+                      std::to_string(n) + " leaf pairs of " + std::to_string(EnvelopeGrid::leafPairBytes()) +
+                      " bytes so far)",
+                  kMaxLeafBytesPath);
+  }
+
+ private:
+  const EnvelopeBuildLimits& limits_;
+  std::atomic<std::uint64_t> leafPairs_{0};
+};
+
 // One 8³ block of the result: a leaf pair, or (upper == nullptr) an active tile of value `tile`.
 struct Block {
   Coord origin;
@@ -65,7 +93,8 @@ struct Block {
   std::unique_ptr<LeafT> upper, lower;
 };
 
-void buildLeafBlock(const BlockSampler& s, const Coord& origin, std::vector<Block>* out) {
+void buildLeafBlock(const BlockSampler& s, const Coord& origin, BuildGuard& guard, std::vector<Block>* out) {
+  guard.checkTime();
   AlphaLevels v;
   if (s.uniformOver(CoordBBox::createCube(origin, kLeafDim), &v)) {
     if (!isBackground(v)) out->push_back({origin, v, nullptr, nullptr});
@@ -84,6 +113,7 @@ void buildLeafBlock(const BlockSampler& s, const Coord& origin, std::vector<Bloc
     out->push_back({origin, values[0], nullptr, nullptr});
     return;
   }
+  guard.countLeafPair();
   auto upper = std::make_unique<LeafT>(origin, 0.0f, false);
   auto lower = std::make_unique<LeafT>(origin, kNeverInside, false);
   for (openvdb::Index n = 0; n < LeafT::SIZE; ++n) {
@@ -95,8 +125,9 @@ void buildLeafBlock(const BlockSampler& s, const Coord& origin, std::vector<Bloc
 }
 
 // A 32³ super-block: one bounds test first, 64 leaf blocks when that fails.
-void buildSuperBlock(const BlockSampler& s, const Coord& origin, const CoordBBox& box,
+void buildSuperBlock(const BlockSampler& s, const Coord& origin, const CoordBBox& box, BuildGuard& guard,
                      std::vector<Block>* out) {
+  guard.checkTime();
   AlphaLevels v;
   const CoordBBox super = CoordBBox::createCube(origin, kSuperDim);
   const bool uniform = s.uniformOver(super, &v);
@@ -109,7 +140,7 @@ void buildSuperBlock(const BlockSampler& s, const Coord& origin, const CoordBBox
         if (uniform)
           out->push_back({o, v, nullptr, nullptr});
         else
-          buildLeafBlock(s, o, out);
+          buildLeafBlock(s, o, guard, out);
       }
 }
 
@@ -152,10 +183,12 @@ EnvelopeGridStats statsOf(const FloatGrid& upper, const FloatGrid& lower) {
 
 // Samples `s` over the index box `box` (inclusive): 128³ nodes first (serially; few), then the
 // 32³ super-blocks of the undecided ones in parallel, each into its own block list, then the
-// lists go into the trees serially (adding a leaf only moves a pointer).
+// lists go into the trees serially (adding a leaf only moves a pointer). `limits` stop it by
+// throwing; the block lists and the half-made grids are then freed on the way out.
 std::shared_ptr<EnvelopeGrid::Impl> buildGrids(const BlockSampler& s, const CoordBBox& box,
-                                               double h) {
+                                               double h, const EnvelopeBuildLimits& limits = {}) {
   initializeOpenVdb();
+  BuildGuard guard(limits);
   const auto start = std::chrono::steady_clock::now();
   auto impl = std::make_shared<EnvelopeGrid::Impl>();
   impl->voxelSize = h;
@@ -177,6 +210,7 @@ std::shared_ptr<EnvelopeGrid::Impl> buildGrids(const BlockSampler& s, const Coor
     for (int x = lo.x(); x <= box.max().x(); x += kNodeDim)
       for (int y = lo.y(); y <= box.max().y(); y += kNodeDim)
         for (int z = lo.z(); z <= box.max().z(); z += kNodeDim) {
+          guard.checkTime();
           const Coord o(x, y, z);
           const CoordBBox node = CoordBBox::createCube(o, kNodeDim);
           AlphaLevels v;
@@ -199,7 +233,7 @@ std::shared_ptr<EnvelopeGrid::Impl> buildGrids(const BlockSampler& s, const Coor
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, supers.size()),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       for (std::size_t i = r.begin(); i != r.end(); ++i)
-                        buildSuperBlock(s, supers[i], box, &results[i]);
+                        buildSuperBlock(s, supers[i], box, guard, &results[i]);
                     });
   for (auto& list : results)
     for (Block& b : list) {
@@ -328,7 +362,17 @@ Histogram histogram(const FloatTree& tree, std::size_t buckets, BucketOf bucketO
 
 }  // namespace
 
-EnvelopeGrid EnvelopeGrid::build(const AlphaFieldSource& source, double voxelSize) {
+std::uint64_t EnvelopeGrid::leafPairBytes() {
+  // openvdb's count for one leaf with its voxel buffer allocated (what every leaf the build makes
+  // has): the node (value mask, origin, buffer header) plus 8³ floats, times the two grids.
+  // Heap bookkeeping of the allocator is not in it, nor the 128³ internal nodes above the leaves
+  // (32 KiB each, one per 16³ leaves when full: under 1 % of a dense grid's leaves).
+  static const std::uint64_t bytes = 2 * static_cast<std::uint64_t>(LeafT(Coord(0), 0.0f).memUsage());
+  return bytes;
+}
+
+EnvelopeGrid EnvelopeGrid::build(const AlphaFieldSource& source, double voxelSize,
+                                 const EnvelopeBuildLimits& limits) {
   if (!(std::isfinite(voxelSize) && voxelSize > 0.0))
     throw Error(errc::kInvalidParameter, "voxel size must be finite and positive", "voxel_size");
   Vec3 lo, hi;
@@ -349,7 +393,7 @@ EnvelopeGrid EnvelopeGrid::build(const AlphaFieldSource& source, double voxelSiz
                     Coord(static_cast<int>(std::floor(c[3])) + 1,
                           static_cast<int>(std::floor(c[4])) + 1,
                           static_cast<int>(std::floor(c[5])) + 1));
-  return EnvelopeGrid(buildGrids(SourceSampler(source, voxelSize), box, voxelSize));
+  return EnvelopeGrid(buildGrids(SourceSampler(source, voxelSize), box, voxelSize, limits));
 }
 
 double EnvelopeGrid::voxelSize() const { return impl_->voxelSize; }

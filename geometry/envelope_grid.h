@@ -12,6 +12,7 @@
 // pruning is done on both at once for that reason.
 // A grid is immutable once built; copies share it, and every const member is thread-safe.
 // OpenVDB types stay out of this header: geometry/envelope_grid_vdb.h hands out the grids.
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -40,12 +41,31 @@ struct EnvelopeGridStats {
 
 enum class BooleanOp { kUnion, kIntersection, kDifference };
 
+// Limits of one build, so that a caller (a server thread) gets control back from a build that
+// would take too much memory or time. Both are checked while the build runs; a build that stops
+// throws and keeps nothing (the leaves made so far are freed, no grid is returned).
+struct EnvelopeBuildLimits {
+  // Most bytes of 8³ leaves, both grids together (leafPairBytes() per leaf pair); 0: no limit.
+  // Exceeded: Error(limit_exceeded, ..., kMaxLeafBytesPath) as soon as the leaf that would pass
+  // it is about to be made.
+  std::uint64_t maxLeafBytes = 0;
+  // Checked before every 8³ block is sampled (every TBB task checks it), so a build stops within
+  // the time of one block's samples past it: Error(limit_exceeded, ..., kDeadlinePath).
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+};
+inline constexpr const char* kMaxLeafBytesPath = "max_leaf_bytes";
+inline constexpr const char* kDeadlinePath = "deadline";
+
 class EnvelopeGrid {
  public:
   // Samples `source` at voxel size h over its bounding box padded by one voxel, in parallel
   // (TBB). Throws Error(invalid_parameter, "voxel_size") unless h is finite and positive and
-  // the box fits the index range of openvdb coordinates at that size.
-  static EnvelopeGrid build(const AlphaFieldSource& source, double voxelSize);
+  // the box fits the index range of openvdb coordinates at that size; the errors of `limits`.
+  static EnvelopeGrid build(const AlphaFieldSource& source, double voxelSize,
+                            const EnvelopeBuildLimits& limits = {});
+  // Bytes of one leaf in each of the two grids (a voxel block of 8³ levels), as openvdb's own
+  // memUsage() counts them (the counting of stats().memoryBytes): what maxLeafBytes is made of.
+  static std::uint64_t leafPairBytes();
 
   double voxelSize() const;
   // Levels of the voxel that holds p (nearest voxel centre); the background far away.

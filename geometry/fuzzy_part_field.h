@@ -124,7 +124,7 @@ class FuzzyPartField : public AlphaFieldSource {
   bool isCrisp() const { return crisp_.has_value(); }
   double tolerance() const { return options_.tolerance; }
   // How many queries ran out of budget and answered conservatively, since construction.
-  std::uint64_t budgetExhaustions() const { return exhaustions_.load(); }
+  std::uint64_t budgetExhaustions() const override { return exhaustions_.load(); }
 
  private:
   enum class Question { kPossibly, kNecessarily };

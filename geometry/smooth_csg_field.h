@@ -63,6 +63,7 @@ class SmoothCsgField : public AlphaFieldSource {
   AlphaLevels levelsAt(const Vec3& p) const override;
   AlphaLevelBounds boundsOver(const Vec3& lo, const Vec3& hi) const override;
   void boundingBox(Vec3* lo, Vec3* hi) const override;
+  std::uint64_t budgetExhaustions() const override { return sumBudgetExhaustions(children_); }
 
   const std::vector<std::shared_ptr<const AlphaFieldSource>>& children() const { return children_; }
   const NodeOperator& nodeOperator() const { return operator_; }
@@ -81,6 +82,7 @@ class MembershipCsgField : public MembershipField {
   double membership(const Vec3& p) const override;
   MembershipRange membershipOver(const Vec3& lo, const Vec3& hi) const override;
   void boundingBox(Vec3* lo, Vec3* hi) const override;
+  std::uint64_t budgetExhaustions() const override { return sumBudgetExhaustions(children_); }
 
   const std::vector<std::shared_ptr<const MembershipField>>& children() const { return children_; }
   const NodeOperator& nodeOperator() const { return operator_; }

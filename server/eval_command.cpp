@@ -52,6 +52,8 @@ int runEval(const std::string& file, const EvalOptions& options) {
     if (!options.alphas.empty()) request["alphas"] = options.alphas;
     EvaluationLimits limits;
     limits.maxResolution = 4096;  // the command line is the user's own machine: no server limit
+    limits.maxGridMb = options.maxGridMb;
+    limits.maxEvalMs = options.maxEvalMs;
     const Evaluation evaluation =
         evaluateShape(request, limits, store ? storeResolver(*store) : ReferenceResolver{});
     nlohmann::json result = evaluation.result;

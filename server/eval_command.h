@@ -6,6 +6,7 @@
 // reads stdin. --resolution and --alphas override the request's. --mesh OUT.obj|OUT.stl writes
 // the boundary of lower(α) or upper(α) (--mesh-alpha, --mesh-bound) and --vdb OUT.vdb both
 // grids. Exit 0 on success, 1 with the error body on stderr otherwise.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,6 +21,8 @@ struct EvalOptions {
   std::string meshBound = "upper";  // lower | upper
   std::string vdbPath;
   std::string dbPath;  // "" = no database
+  std::uint64_t maxGridMb = 0;  // --max-grid-mb (0: no limit, the user's own machine)
+  int maxEvalMs = 0;            // --max-eval-ms (0: no limit)
 };
 
 int runEval(const std::string& file, const EvalOptions& options);

@@ -49,6 +49,33 @@ int parseResolution(const nlohmann::json& request, const EvaluationLimits& limit
   return static_cast<int>(n);
 }
 
+// EnvelopeGrid::build under the evaluation's limits; a limit the build hits comes back in the
+// terms of the request (its resolution) and of the option that sets it.
+EnvelopeGrid buildGrid(const AlphaFieldSource& source, double voxelSize, int resolution,
+                       const EvaluationLimits& limits, std::chrono::steady_clock::time_point started) {
+  EnvelopeBuildLimits buildLimits;
+  buildLimits.maxLeafBytes = limits.maxGridMb << 20;
+  if (limits.maxEvalMs > 0) buildLimits.deadline = started + std::chrono::milliseconds(limits.maxEvalMs);
+  try {
+    return EnvelopeGrid::build(source, voxelSize, buildLimits);
+  } catch (const Error& e) {
+    if (e.code() != errc::kLimitExceeded) throw;
+    const std::string at = " at resolution " + std::to_string(resolution);
+    if (e.path() == kMaxLeafBytesPath)
+      throw Error(errc::kLimitExceeded,
+                  "the grid needs more than max_grid_mb=" + std::to_string(limits.maxGridMb) + " MiB of voxel blocks" +
+                      at + "; lower the resolution (the blocks grow with its square for a crisp surface, up to its cube) "
+                      "or raise --max-grid-mb",
+                  "resolution");
+    if (e.path() == kDeadlinePath)
+      throw Error(errc::kLimitExceeded,
+                  "the evaluation ran longer than max_eval_ms=" + std::to_string(limits.maxEvalMs) + " ms" + at +
+                      "; lower the resolution (fewer fuzzy values also help) or raise --max-eval-ms",
+                  "resolution");
+    throw;
+  }
+}
+
 // The one evaluation path: `parse` yields the shape (parsed from the request, or already parsed
 // by the caller); `withShape` says whether the request carries "shape" itself.
 Evaluation evaluate(const nlohmann::json& request, const EvaluationLimits& limits, bool withShape,
@@ -92,13 +119,16 @@ Evaluation evaluate(const nlohmann::json& request, const EvaluationLimits& limit
                     " gives voxels of " + formatNumber(voxelSize) + ", outside [" + formatNumber(kMinVoxelSize) +
                     ", " + formatNumber(kMaxVoxelSize) + "]",
                 "shape");
-  auto grid = std::make_shared<const EnvelopeGrid>(EnvelopeGrid::build(*shape.field, voxelSize));
+  const std::uint64_t exhaustedBefore = shape.field->budgetExhaustions();
+  auto grid = std::make_shared<const EnvelopeGrid>(buildGrid(*shape.field, voxelSize, resolution, limits, started));
+  const std::uint64_t exhaustedSearches = shape.field->budgetExhaustions() - exhaustedBefore;
   std::vector<LevelVolume> volumes = grid->volumes(alphas);
   if (boundary) {
     // seed 004 eq. 4: per level, the crisp lower and upper boundary solids, on the same lattice.
     for (LevelVolume& v : volumes) {
       for (bool upper : {false, true}) {
-        const EnvelopeGrid crisp = EnvelopeGrid::build(*boundarySolid(*shape.tree, v.alpha, upper), voxelSize);
+        const EnvelopeGrid crisp =
+            buildGrid(*boundarySolid(*shape.tree, v.alpha, upper), voxelSize, resolution, limits, started);
         const double volume = crisp.volumes({1.0})[0].lower_volume;
         (upper ? v.upper_volume : v.lower_volume) = volume;
       }
@@ -119,6 +149,7 @@ Evaluation evaluate(const nlohmann::json& request, const EvaluationLimits& limit
           {"millis", millis},
           {"parts", shape.partCount},
           {"nodes", shape.nodeCount},
+          {"exhausted_searches", exhaustedSearches},
           {"bounding_box", {{"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}}},
           {"grid",
            {{"leaf_nodes", stats.leafCount},

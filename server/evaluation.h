@@ -11,7 +11,23 @@
 //               geometry/boundary_method.h: one crisp grid per level and bound); only with
 //               zadeh node operators, else invalid_parameter at the first smooth operator's path.
 // Response: {"alphas":[{"alpha","lower_volume","upper_volume"}], "voxel_size", "active_voxels",
-//            "millis", "parts", "nodes", "grid":{"leaf_nodes","tiles","memory_bytes"}}
+//            "millis", "parts", "nodes", "exhausted_searches", "grid":{"leaf_nodes","tiles","memory_bytes"}}
+//   exhausted_searches: how many per-voxel searches of the fuzzy parts ran out of their budget
+//               during this evaluation's grid build (AlphaFieldSource::budgetExhaustions, the
+//               difference before and after; the parsed fields are fresh per request). Each one
+//               left a conservative bound instead of the level to the part's tolerance (upper
+//               level too high, lower too low), so at most that many voxels have levels that are
+//               bounds, not exact; 0 means every level is exact to the tolerance. Counted per
+//               search (a voxel has up to two), a part that occurs twice in the tree twice.
+//               A cached stored-shape answer keeps the count of the evaluation that made it.
+// Limits (all limit_exceeded, HTTP 413, path "resolution", the message naming the limit):
+//   max_resolution: the resolution asked for, before anything is built;
+//   max_grid_mb:    the grid's 8³ leaves (both float grids, EnvelopeGrid::leafPairBytes each),
+//                   counted while the build makes them; the build stops at the first leaf past it;
+//   max_eval_ms:    wall time from the start of the evaluation (parse and every grid build; the
+//                   builds check it before each 8³ block, so they stop within one block's time).
+//   Nothing of a stopped evaluation is kept or cached.
+#include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -24,6 +40,8 @@ class EnvelopeGrid;
 struct EvaluationLimits {
   int maxResolution = 512;  // --max-resolution
   size_t maxNodes = 10000;  // --max-nodes: CSG nodes per shape
+  std::uint64_t maxGridMb = 1024;  // --max-grid-mb: MiB of grid leaves per evaluation; 0: no limit
+  int maxEvalMs = 60000;           // --max-eval-ms: wall time per evaluation; 0: no limit
 };
 
 // The answer and the grid it was computed on (for mesh and .vdb exports).

@@ -92,7 +92,9 @@ ApiResponse bytesResponse(std::string bytes, const std::string& contentType, con
 }  // namespace
 
 void registerEvaluationRoutes(HttpServer& server, Store& store) {
-  const EvaluationLimits limits{server.options().limits.maxResolution, server.options().limits.maxNodes};
+  const ServerLimits& serverLimits = server.options().limits;
+  const EvaluationLimits limits{serverLimits.maxResolution, serverLimits.maxNodes, serverLimits.maxGridMb,
+                                serverLimits.maxEvalMs};
   const int maxDepth = server.options().limits.maxJsonDepth;
 
   server.addRoute("POST", "/evaluate", [limits, &store](const ApiRequest& req) {

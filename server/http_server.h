@@ -11,6 +11,7 @@
 // - start() binds before it returns, so the caller can print the real port (`--port 0`).
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <regex>
@@ -33,6 +34,8 @@ struct ServerLimits {
   size_t maxPoints = 1000000;       // --max-points: POST /operators/evaluate points per request
   int maxResolution = 512;          // --max-resolution: voxels along a shape's longest side
   size_t maxNodes = 10000;          // --max-nodes: CSG nodes per shape
+  std::uint64_t maxGridMb = 1024;   // --max-grid-mb: MiB of leaves of one evaluation's grid (413 beyond); 0: none
+  int maxEvalMs = 60000;            // --max-eval-ms: longest grid evaluation (413 beyond); 0: none
   int maxQueryMs = 10000;           // --max-query-ms: longest linguistic search (413 beyond); 0: none
   size_t maxCsgPairs = 4u << 20;    // --max-csg-pairs: query leaves x stored leaves of one CSG match (two
                                     // tables of doubles: 64 MiB at the default; 413 beyond)

@@ -174,6 +174,14 @@ int main(int argc, char** argv) {
 
   serveCmd->add_option("--max-resolution", serve.limits.maxResolution, "largest grid resolution of POST /evaluate")
       ->check(CLI::Range(2, 4096))->capture_default_str();
+  serveCmd->add_option("--max-grid-mb", serve.limits.maxGridMb,
+                       "most MiB of voxel blocks in one evaluation's grid (POST /evaluate, stored-shape evaluate, "
+                       "mesh and grid.vdb; 413 beyond); 0: no limit")
+      ->check(CLI::Range(0, 1 << 24))->capture_default_str();
+  serveCmd->add_option("--max-eval-ms", serve.limits.maxEvalMs,
+                       "longest evaluation in milliseconds (POST /evaluate, stored-shape evaluate, mesh and grid.vdb; "
+                       "413 beyond); 0: no limit")
+      ->check(CLI::Range(0, 86400000))->capture_default_str();
   serveCmd->add_option("--max-nodes", serve.limits.maxNodes, "most CSG nodes in one shape")
       ->check(CLI::PositiveNumber)->capture_default_str();
   serveCmd->add_option("--max-control-points", serve.limits.maxControlPoints,
@@ -220,6 +228,10 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"lower", "upper"}))->capture_default_str();
   evalCmd->add_option("--vdb", eval.vdbPath, "write both grids (upper, lower) to OUT.vdb");
 
+  evalCmd->add_option("--max-grid-mb", eval.maxGridMb, "stop when the grid's voxel blocks pass this many MiB; 0: no limit")
+      ->check(CLI::Range(0, 1 << 24))->capture_default_str();
+  evalCmd->add_option("--max-eval-ms", eval.maxEvalMs, "stop an evaluation running longer (milliseconds); 0: no limit")
+      ->check(CLI::Range(0, 86400000))->capture_default_str();
   evalCmd->add_option("--db", eval.dbPath, "database for SHAPE-ID and for references in FILE");
   evalCmd->add_option("--vocabulary", vocabularyPath, "a vocabulary file for parts described by words (as for serve)");
 
