@@ -68,7 +68,7 @@ void build(const std::string& path, size_t n) {
     parts.push_back(fsdb::prepareDocument({{"kind", "part"}, {"name", "part_" + std::to_string(i)},
                                            {"text", kWords[size_t(pick(rng, int(kWords.size())))]},
                                            {"params", {{"a2", 0.5 + 0.005 * i}}}},
-                                          "part", *store, fsdb::DocumentLimits{10000}, ""));
+                                          "part", *store, fsdb::DocumentLimits{}, ""));
   store->createBatch(parts, fsdb::BulkMode::kCreate);
   for (size_t done = 0; done < n;) {
     std::vector<fsdb::NewObject> items;
@@ -76,7 +76,7 @@ void build(const std::string& path, size_t n) {
       json tree = randomTree(rng, 3);
       if (!tree.contains("op")) tree = {{"op", "union"}, {"children", {tree, randomTree(rng, 1)}}};
       items.push_back(fsdb::prepareDocument({{"kind", "shape"}, {"name", "tree-" + std::to_string(done + 1)}, {"tree", tree}},
-                                            "shape", *store, fsdb::DocumentLimits{10000}, ""));
+                                            "shape", *store, fsdb::DocumentLimits{}, ""));
     }
     store->createBatch(items, fsdb::BulkMode::kCreate);
   }

@@ -123,8 +123,11 @@ TEST(CsgQueryText, FormulaNamesAreStoredObjectsOrDescriptions) {
   }
   EXPECT_EQ(descriptions, 2);
   EXPECT_EQ(parts, 3);
-  for (const CsgQueryLeaf& leaf : q.leaves)
-    if (leaf.text == "bolt") EXPECT_EQ(leaf.partId, 7);
+  for (const CsgQueryLeaf& leaf : q.leaves) {
+    if (leaf.text == "bolt") {
+      EXPECT_EQ(leaf.partId, 7);
+    }
+  }
   // Without a resolver every name is a description.
   EXPECT_EQ(shape(parse("cube + cylinder")), "union('cube', 'cylinder')");
 }

@@ -97,11 +97,14 @@ TEST(CsgSimilarity, ScoreOneOnlyForAnExactMatch) {
     EXPECT_LE(c.score, 1);
     bool perfect = m.matchedNodes == int(q.size()) && q.size() == s.size();
     for (const NodeMatch& x : m.matches)
-      if (q.nodes[size_t(x.queryNode)].op == CsgGraphOp::Leaf)
+      if (q.nodes[size_t(x.queryNode)].op == CsgGraphOp::Leaf) {
         perfect = perfect && x.similarity == 1 &&
                   transforms.at(q.nodes[size_t(x.queryNode)].leaf, s.nodes[size_t(x.storedNode)].leaf) == 1;
+      }
     EXPECT_EQ(c.score == 1, perfect) << "trial " << trial;
-    if (self) EXPECT_EQ(c.score, 1);
+    if (self) {
+      EXPECT_EQ(c.score, 1);
+    }
   }
 }
 

@@ -231,7 +231,9 @@ TEST(DescriptorPrefilter, LevelPiecesCoverTheRangeAndBoundTheirValues) {
     EXPECT_EQ(pieces.back().toLo, toLo);
     for (size_t k = 0; k < pieces.size(); ++k) {
       EXPECT_LE(pieces[k].fromLo, pieces[k].toLo);
-      if (k > 0) EXPECT_EQ(pieces[k].fromLo, std::nextafter(pieces[k - 1].toLo, 1e300));
+      if (k > 0) {
+        EXPECT_EQ(pieces[k].fromLo, std::nextafter(pieces[k - 1].toLo, 1e300));
+      }
       if (pieces[k].bound < 1) ++below1;
     }
     for (int v = 0; v < 20; ++v) {

@@ -11,6 +11,13 @@
 namespace fsdb {
 namespace {
 
+// Document limits with at most `n` CSG nodes, the rest at their defaults.
+DocumentLimits nodeLimit(size_t n) {
+  DocumentLimits limits;
+  limits.maxNodes = n;
+  return limits;
+}
+
 using nlohmann::json;
 
 std::string part(const std::string& name, double a1) {
@@ -101,7 +108,7 @@ TEST(ImportDocuments, WithoutARouteKindEachLineNeedsItsKind) {
 TEST(PrepareDocument, FillsKindChecksNamesAndComputesNormalisedColumns) {
   TempDir dir;
   auto store = Store::open(dir.file("db.sqlite"));
-  NewObject p = prepareDocument(json{{"name", "p"}, {"params", {{"a1", {{"tri", {1, 2, 3}}}}}}}, "part", *store, DocumentLimits{10}, "");
+  NewObject p = prepareDocument(json{{"name", "p"}, {"params", {{"a1", {{"tri", {1, 2, 3}}}}}}}, "part", *store, nodeLimit(10), "");
   EXPECT_EQ(json::parse(p.documentJson)["kind"], "part");
   ASSERT_EQ(p.parameters.size(), 14u);
   EXPECT_EQ(p.parameters[2].name, "a1");
@@ -113,7 +120,7 @@ TEST(PrepareDocument, FillsKindChecksNamesAndComputesNormalisedColumns) {
 
   NewObject s = prepareDocument(
       json{{"name", "s"}, {"tree", {{"op", "union"}, {"children", {{{"part", "p"}}, {{"part", {{"params", {{"a1", 1}}}}}}}}}}},
-      "shape", *store, DocumentLimits{10}, "");
+      "shape", *store, nodeLimit(10), "");
   ASSERT_EQ(s.nodes.size(), 3u);
   EXPECT_EQ(s.nodes[1].kind, "ref");
   EXPECT_EQ(s.nodes[1].refIndex, 0);
@@ -123,7 +130,7 @@ TEST(PrepareDocument, FillsKindChecksNamesAndComputesNormalisedColumns) {
 
   auto errorPath = [&](const json& doc, const std::string& kind) {
     try {
-      prepareDocument(doc, kind, *store, DocumentLimits{10}, "line");
+      prepareDocument(doc, kind, *store, nodeLimit(10), "line");
     } catch (const Error& e) {
       return e.path();
     }
@@ -175,7 +182,7 @@ TEST(PrepareDocument, EachKindIsLimitedByItsOwnOption) {
 TEST(StoreResolver, FindsStoredObjectsByNameOrIdAndPendingOnesFirst) {
   TempDir dir;
   auto store = Store::open(dir.file("db.sqlite"));
-  const StoredObject p = store->create(prepareDocument(json{{"name", "p"}, {"params", {{"a1", 1}}}}, "part", *store, DocumentLimits{10}, ""));
+  const StoredObject p = store->create(prepareDocument(json{{"name", "p"}, {"params", {{"a1", 1}}}}, "part", *store, nodeLimit(10), ""));
   PendingDocuments pending;
   pending.add("part", "q", json{{"params", {{"a1", 2}}}});
   const ReferenceResolver resolve = storeResolver(*store, &pending);

@@ -33,11 +33,11 @@ class Catalogue {
     for (int i = 0; i < parts; ++i) {
       json doc = {{"kind", "part"}, {"name", "p" + std::to_string(i)}, {"text", kWords[size_t(pick(rng_, int(kWords.size())))]}};
       if (i % 3 == 0) doc["params"] = {{"a1", 1 + i % 4}};
-      parts_.push_back(store_->create(prepareDocument(doc, "part", *store_, DocumentLimits{10000}, "")).id);
+      parts_.push_back(store_->create(prepareDocument(doc, "part", *store_, DocumentLimits{}, "")).id);
     }
     for (int i = 0; i < shapes; ++i) {
       const json doc = {{"kind", "shape"}, {"name", "s" + std::to_string(i)}, {"tree", tree(3, i > 5)}};
-      shapes_.push_back(store_->create(prepareDocument(doc, "shape", *store_, DocumentLimits{10000}, "")).id);
+      shapes_.push_back(store_->create(prepareDocument(doc, "shape", *store_, DocumentLimits{}, "")).id);
     }
   }
 
@@ -144,7 +144,7 @@ TEST(CsgSearchProperty, CacheRebuildsWhatAWriteChanged) {
   const int64_t part = c.parts()[0];
   const size_t reaching = c.store().dependents(part).size();
   c.store().put(part, prepareDocument({{"kind", "part"}, {"name", "p0"}, {"text", "a very bent cylinder"}}, "part",
-                                      c.store(), DocumentLimits{10000}, ""));
+                                      c.store(), DocumentLimits{}, ""));
   searchCsg(c.store(), query, options, cache);
   EXPECT_EQ(cache.builds(), 30u + reaching);
   // And their answers are those of fresh graphs.
