@@ -108,6 +108,19 @@ FuzzyPartField::FuzzyPartField(const FuzzyPart& part, FuzzyPartFieldOptions opti
   bool allCrisp = true;
   for (int i = 0; i < kSlots; ++i) allCrisp = allCrisp && supportWidth_[i] <= 0.0;
   if (allCrisp) crisp_.emplace(part_.coreRepresentative());
+  // One fuzzy size (a1 or the placement scale) of an undeformed part: F is homogeneous in it.
+  if (fuzzyCount_ == 1 && (fuzzySlots_[0] == 2 || fuzzySlots_[0] == 13)) {
+    bool undeformed = true;
+    for (int i : {5, 6, 7, 8}) undeformed = undeformed && isPoint(slot(support_, i), 0.0);
+    if (undeformed) {
+      sizeSlot_ = fuzzySlots_[0];
+      double v[kSlots];
+      for (int i = 0; i < kSlots; ++i) v[i] = slot(support_, i).lo;
+      sizeReference_ = mid(slot(core_, sizeSlot_));
+      v[sizeSlot_] = sizeReference_;
+      sizeReferencePart_ = partFromSlots(support_.placement.axis, v);
+    }
+  }
 }
 
 PartBox FuzzyPartField::cutAt(double alpha) const {
@@ -823,6 +836,74 @@ AlphaLevels FuzzyPartField::cornerLevels(const Vec3& p, const signed char* sign,
   return out;
 }
 
+// One fuzzy size v (a1, which scales A, B and C together, or the placement scale) and no
+// taper, twist or bend: F(p; v) = (ρ/v)^(2/ε1) with ρ = v_ref·G(p; v_ref), G = F^(ε1/2) (SPEC §2:
+// the canonical ratios scale with 1/v), so S(v) holds p exactly when v >= ρ. Then, with μ̂ the hull
+// membership of v (rising up to the core, falling after it), exactly:
+//   u = 1 for ρ <= core.hi, μ̂(ρ) on the falling side, 0 (and l = never) beyond the support;
+//   l = 0 for ρ <= support.lo, μ̂(ρ) on the rising side, never for ρ > core.lo.
+// One evaluation of G gives ρ. Each answer rests on the corner that the monotone shortcut would
+// have evaluated (the F-lowering end of P(u) for u, the F-raising end of P(l) for l): F there is
+// (ρ/v)^(2/ε1), decided by the identity where v is clear of ρ by a relative 1e-9 (far above the
+// rounding of ρ), else by a crisp evaluation of F at that corner. So the answers carry the witnesses
+// and proofs of cornerLevels, rounded the same way (u down, l up), and are exact rather than
+// τ-brackets. False where a check disagrees (rounding at the boundary, overflow): the caller
+// falls back to the general path.
+bool FuzzyPartField::sizeLevels(const Vec3& p, AlphaLevels* out) const {
+  // G = F^(ε1/2) (superquadric.h) is homogeneous of degree −1 in v: G(p; v) = G(p; v_ref)·v_ref/v,
+  // so S(v) holds p exactly when v >= ρ = v_ref·G(p; v_ref). (sizeSlot_ is set only when every
+  // value but v is crisp, so the angle is crisp and rotation_ is built.)
+  const PlacedSuperquadric& reference = sizeReferencePart_;
+  const Placement& pl = reference.placement;
+  const Vec3 local = rotation_.applyInverse(p - pl.translate) / pl.scale;
+  const double rho =
+      sizeReference_ * homogeneousInsideOutside(reference.params, undeformPoint(reference.params, local));
+  if (!std::isfinite(rho)) return false;
+  const FuzzyNumber& v = *values_[sizeSlot_];
+  const Interval support = slot(support_, sizeSlot_), core = slot(core_, sizeSlot_);
+  // Does S(value) hold p? By the identity (value >= ρ) where value is clear of ρ by far more than
+  // rounding, else by a crisp evaluation of F at that value.
+  constexpr double kClear = 1e-9;
+  const auto inside = [&](double value) {
+    if (value >= rho * (1.0 + kClear)) return true;
+    if (value <= rho * (1.0 - kClear)) return false;
+    double theta[kSlots];
+    for (int i = 0; i < kSlots; ++i) theta[i] = slot(support_, i).lo;
+    theta[sizeSlot_] = value;
+    return valueAt(thetaAt(support_, theta), p) <= 1.0;
+  };
+  const auto cut = [&](float alpha) { return alpha >= 1.0f ? core : v.alphaCut(alpha); };
+  if (!inside(support.hi)) {  // outside S(θ) for every θ of P(0)
+    *out = {0.0f, kNeverInside};
+    return true;
+  }
+  if (!inside(core.hi)) {
+    // u = μ̂(ρ) on the falling side, rounded down to a float whose cut still reaches ρ; the
+    // witness is that cut's upper end.
+    float u = floatDown(hullMembership(v, rho));
+    for (int k = 0; k < 8 && u > 0.0f && cut(u).hi < rho; ++k) u = std::nextafter(u, -1.0f);
+    if (!(u > 0.0f) || cut(u).hi < rho || !inside(cut(u).hi)) return false;
+    *out = {u, kNeverInside};
+    return true;
+  }
+  // u = 1 (the witness: the core's upper end).
+  if (inside(support.lo)) {  // inside S(θ) for every θ of P(0)
+    *out = {1.0f, 0.0f};
+    return true;
+  }
+  if (!inside(core.lo)) {  // a θ of P(1) puts p outside
+    *out = {1.0f, kNeverInside};
+    return true;
+  }
+  // l = μ̂(ρ) on the rising side, rounded up to a float whose cut starts at or above ρ: every θ
+  // of P(l) puts p inside (its lower end, the F-raising corner, does).
+  float l = floatUp(hullMembership(v, rho));
+  for (int k = 0; k < 8 && l < 1.0f && cut(l).lo < rho; ++k) l = std::nextafter(l, 2.0f);
+  if (cut(l).lo < rho || !inside(cut(l).lo)) return false;
+  *out = {1.0f, l};
+  return true;
+}
+
 AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
   if (crisp_) {
     if (crisp_->insideOutside(p) <= 1.0) return {1.0f, 0.0f};
@@ -831,6 +912,8 @@ AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
   // Outside the local box that holds every S(θ): u = 0, l = never (the enclosure of the
   // deformations alone is loose far from the part).
   if (missesDeformedHull(support_, {p.x, p.x}, {p.y, p.y}, {p.z, p.z})) return {0.0f, kNeverInside};
+  AlphaLevels sized;
+  if (sizeSlot_ >= 0 && sizeLevels(p, &sized)) return sized;
   signed char sign[kSlots];
   if (monotoneSigns(p, p, sign)) return cornerLevels(p, sign);
   const double tau = options_.tolerance;
@@ -887,6 +970,17 @@ void FuzzyPartField::sampleSubBlock(const BlockLattice& b, int i, int j, int k, 
   const AlphaLevelBounds bounds =
       boundsOver(b.at(i, j, k), b.at(i + size - 1, j + size - 1, k + size - 1));
   const bool uniform = bounds.uniform();
+  if (!uniform && size <= 2 && sizeSlot_ >= 0) {
+    // One fuzzy size of an undeformed part: each voxel in closed form (sizeLevels).
+    AlphaLevels sized;
+    for (int x = i; x < i + size; ++x)
+      for (int y = j; y < j + size; ++y)
+        for (int z = k; z < k + size; ++z)
+          out[(x * d + y) * d + z] = sizeLevels(b.at(x, y, z), &sized)
+                                         ? sized
+                                         : FuzzyPartField::levelsAt(b.at(x, y, z));
+    return;
+  }
   if (!uniform && size <= 2 && !crisp_) {
     // Signs that hold over the whole block serve every voxel of it (one slope enclosure per block
     // instead of one per voxel); otherwise levelsAt tries the voxel's own.

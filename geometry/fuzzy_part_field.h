@@ -162,6 +162,9 @@ class FuzzyPartField : public AlphaFieldSource {
   // levelsAt where monotoneSigns holds over a box that contains p; inCore: p is known to be
   // inside S(θ) for every θ of P(1) (then u = 1 needs no evaluation).
   AlphaLevels cornerLevels(const Vec3& p, const signed char* sign, bool inCore = false) const;
+  // levelsAt in closed form for one fuzzy size of an undeformed part (sizeSlot_ >= 0; see the
+  // .cpp); false where its checks disagree (then the general path answers).
+  bool sizeLevels(const Vec3& p, AlphaLevels* out) const;
   // The corner of P(alpha) where F is least (least) or largest, for the given signs.
   PlacedSuperquadric cornerAt(double alpha, const signed char* sign, bool least) const;
   // u rounded down to a float whose cut still holds the witness (p ∈ upper(u) stays shown).
@@ -190,6 +193,11 @@ class FuzzyPartField : public AlphaFieldSource {
   // Set when every value is crisp: then P(α) is one θ for every α, upper(α) = lower(α) = S(θ),
   // and levelsAt is one crisp evaluation (u, l) = (1, 0) inside, (0, never) outside.
   std::optional<PreparedSuperquadric> crisp_;
+  // Set (the slot: 2 a1 or 13 scale) when that is the only fuzzy value and the part has no taper,
+  // twist or bend: then F(p; v) = (ρ(p)/v)^(2/ε1) and sizeLevels answers in closed form.
+  int sizeSlot_ = -1;
+  double sizeReference_ = 1.0;              // v_ref, the core's midpoint
+  PlacedSuperquadric sizeReferencePart_;    // the part at v_ref
   mutable std::atomic<std::uint64_t> exhaustions_{0};
 };
 

@@ -316,6 +316,42 @@ TEST(FuzzyPartFieldTest, MonotoneShortcutMatchesTheBisectionReference) {
   EXPECT_EQ(newExhaustions, 0u);
 }
 
+// One fuzzy size (a1 or the placement scale) of an undeformed part takes the closed form
+// (sizeLevels: F is homogeneous in the size): against the bisection reference, which never uses
+// it, on flat and pinched exponents, placed and turned parts, a trapezoid with a vertical side and
+// a piecewise-linear size; and block by block against the voxel-by-voxel answers.
+TEST(FuzzyPartFieldTest, OneFuzzySizeInClosedFormMatchesTheBisectionReference) {
+  std::mt19937_64 rng(29);
+  int compared = 0;
+  std::uint64_t newExhaustions = 0, oldExhaustions = 0;
+  FuzzyPart flat;
+  flat.eps1 = FuzzyNumber::crisp(0.3);
+  flat.eps2 = FuzzyNumber::crisp(1.7);
+  flat.a1 = tri(0.7, 0.9, 1.0);
+  flat.a2 = FuzzyNumber::crisp(0.6);
+  flat.a3 = FuzzyNumber::crisp(1.4);
+  flat.tx = FuzzyNumber::crisp(0.3);
+  flat.axis = {1, 2, 0};
+  flat.deg = FuzzyNumber::crisp(35);
+  FuzzyPart pinched;
+  pinched.eps1 = FuzzyNumber::crisp(2.5);
+  pinched.eps2 = FuzzyNumber::crisp(3.0);
+  pinched.scale = FuzzyNumber::trapezoidal(1.0, 1.0, 1.2, 1.5);  // a vertical left side
+  pinched.tz = FuzzyNumber::crisp(-0.4);
+  FuzzyPart piecewise;
+  piecewise.a1 = FuzzyNumber::fromPoints({{0.5, 0.0}, {0.8, 0.7}, {0.9, 1.0}, {1.3, 0.4}, {1.6, 0.0}});
+  for (const FuzzyPart& part : {flat, pinched, piecewise}) {
+    compareWithBisection(part, rng, 80, &compared, &newExhaustions, &oldExhaustions);
+    const FuzzyPartField field(part);
+    Vec3 lo, hi;
+    field.boundingBox(&lo, &hi);
+    for (int k = 0; k < 6; ++k)
+      expectBlockMatchesPoints(field, latticeAt(randomPoint(rng, lo, hi), 0.02 * (hi.x - lo.x)));
+  }
+  EXPECT_GT(compared, 200);
+  EXPECT_EQ(newExhaustions, 0u);
+}
+
 // boundsOver bounds the true levels. levelsAt gives them (to τ) unless a query ran out of budget;
 // its conservative answer may then leave the bounds (the enclosure is not monotone under inclusion,
 // so a block can be excluded where its points are not), so those points are skipped and counted.
