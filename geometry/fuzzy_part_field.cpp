@@ -881,8 +881,9 @@ bool FuzzyPartField::sizeLevels(const Vec3& p, AlphaLevels* out) const {
     // u = μ̂(ρ) on the falling side, rounded down to a float whose cut still reaches ρ; the
     // witness is that cut's upper end.
     float u = floatDown(hullMembership(v, rho));
-    for (int k = 0; k < 8 && u > 0.0f && cut(u).hi < rho; ++k) u = std::nextafter(u, -1.0f);
-    if (!(u > 0.0f) || cut(u).hi < rho || !inside(cut(u).hi)) return false;
+    Interval c = cut(u);
+    for (int k = 0; k < 8 && u > 0.0f && c.hi < rho; ++k) c = cut(u = std::nextafter(u, -1.0f));
+    if (!(u > 0.0f) || c.hi < rho || !inside(c.hi)) return false;
     *out = {u, kNeverInside};
     return true;
   }
@@ -898,8 +899,9 @@ bool FuzzyPartField::sizeLevels(const Vec3& p, AlphaLevels* out) const {
   // l = μ̂(ρ) on the rising side, rounded up to a float whose cut starts at or above ρ: every θ
   // of P(l) puts p inside (its lower end, the F-raising corner, does).
   float l = floatUp(hullMembership(v, rho));
-  for (int k = 0; k < 8 && l < 1.0f && cut(l).lo < rho; ++k) l = std::nextafter(l, 2.0f);
-  if (cut(l).lo < rho || !inside(cut(l).lo)) return false;
+  Interval c = cut(l);
+  for (int k = 0; k < 8 && l < 1.0f && c.lo < rho; ++k) c = cut(l = std::nextafter(l, 2.0f));
+  if (c.lo < rho || !inside(c.lo)) return false;
   *out = {1.0f, l};
   return true;
 }
