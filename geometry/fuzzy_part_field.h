@@ -111,7 +111,8 @@ class FuzzyPartField : public AlphaFieldSource {
   void boundingBox(Vec3* lo, Vec3* hi) const override;
   // Per block: bounds 4³ and then 2³ sub-blocks (boundsOver) and fills the uniform ones, so that
   // only voxels near the fuzzy band (or the crisp surface) are evaluated one by one; crisp parts
-  // evaluate F there without the virtual call. Same values as levelsAt (up to budget exhaustion,
+  // evaluate F there without the virtual call; a part with one fuzzy size (sizeLevels) answers a
+  // non-uniform 4³ sub-block voxel by voxel. Same values as levelsAt (up to budget exhaustion,
   // as for the grid's own block pruning).
   void sampleBlock(const BlockLattice& b, AlphaLevels* out) const override;
 
