@@ -32,6 +32,17 @@ TEST(SuperquadricSlopes, SlotsAddressTheFourteenValues) {
 }
 
 // Central differences at sampled parameter vectors and points lie in the enclosures.
+// (F(v + h·e_i) − F(v − h·e_i)) / 2h at the point q.
+double centralDifference(const PartBox& box, const double (&v)[kPartSlots], int i, double h,
+                         const Vec3& q) {
+  double a[kPartSlots], b[kPartSlots];
+  std::copy(v, v + kPartSlots, a);
+  std::copy(v, v + kPartSlots, b);
+  a[i] -= h;
+  b[i] += h;
+  return (partAt(box, b).insideOutside(q) - partAt(box, a).insideOutside(q)) / (2 * h);
+}
+
 TEST(SuperquadricSlopes, EnclosuresHoldCentralDifferences) {
   std::mt19937_64 rng(3);
   int checked = 0, bounded = 0;
@@ -56,13 +67,7 @@ TEST(SuperquadricSlopes, EnclosuresHoldCentralDifferences) {
       }
       const Vec3 q{uniform(rng, x.lo, x.hi), uniform(rng, y.lo, y.hi), uniform(rng, z.lo, z.hi)};
       for (int i = 0; i < kPartSlots; ++i) {
-        const double h = 1e-5 * width(partSlot(box, i));
-        double a[kPartSlots], b[kPartSlots];
-        std::copy(v, v + kPartSlots, a);
-        std::copy(v, v + kPartSlots, b);
-        a[i] -= h;
-        b[i] += h;
-        const double fd = (partAt(box, b).insideOutside(q) - partAt(box, a).insideOutside(q)) / (2 * h);
+        const double fd = centralDifference(box, v, i, 1e-5 * width(partSlot(box, i)), q);
         if (!std::isfinite(fd)) continue;
         const double tol = 1e-4 * (1.0 + std::fabs(fd));
         EXPECT_GE(fd, d[i].lo - tol) << "slot " << i << " part " << k;
@@ -73,6 +78,78 @@ TEST(SuperquadricSlopes, EnclosuresHoldCentralDifferences) {
   }
   EXPECT_GT(bounded, 100);
   EXPECT_GT(checked, 10000);
+}
+
+// The inverse bend's z' = (z/u)·φ(kv·z/u), φ(t) = atan(t)/t: its slopes hold central differences
+// for strong bends (|kv|·C up to 3, so t runs through 0 and past the extremes of φ' at ±0.8243)
+// and boxes from thin to wide, at points inside, near and outside the part.
+TEST(SuperquadricSlopes, BendSlopesHoldCentralDifferences) {
+  std::mt19937_64 rng(31);
+  int checked = 0;
+  const int bend[2] = {7, 4};  // kv, and a3 (which sets C)
+  for (int k = 0; k < 400; ++k) {
+    PlacedSuperquadric centre;
+    centre.params.a3 = uniform(rng, 0.5, 3.0);
+    centre.params.kv = uniform(rng, -3.0, 3.0) / centre.params.C();
+    centre.params.eps1 = uniform(rng, 0.4, 2.5);
+    PartBox box = crispPartBox(centre);
+    const double spread = k % 2 ? 0.002 : 0.05;
+    for (int i : bend) {
+      Interval& v = partSlot(box, i);
+      v = {v.lo * (1.0 - spread), v.hi * (1.0 + spread)};
+      if (v.lo > v.hi) std::swap(v.lo, v.hi);
+    }
+    if (!(magnitude(box.params.kv) * box.params.a3.hi * box.params.a1.hi < 3.1)) continue;
+    const Vec3 p{uniform(rng, -1.5, 1.5), uniform(rng, -1.5, 1.5),
+                 uniform(rng, -1.2, 1.2) * centre.params.C()};
+    Interval d[2];
+    if (!insideOutsideSlopes(box, {p.x, p.x}, {p.y, p.y}, {p.z, p.z}, bend, 2, d)) continue;
+    for (int s = 0; s < 6; ++s) {
+      double v[kPartSlots];
+      for (int i = 0; i < kPartSlots; ++i) {
+        const Interval& w = partSlot(box, i);
+        v[i] = w.lo == w.hi ? w.lo : uniform(rng, w.lo + 0.01 * width(w), w.hi - 0.01 * width(w));
+      }
+      for (int j = 0; j < 2; ++j) {
+        const int i = bend[j];
+        const double fd = centralDifference(box, v, i, 1e-6 * std::max(std::fabs(v[i]), 1e-3), p);
+        if (!std::isfinite(fd) || std::fabs(fd) > 1e6) continue;
+        const double tol = 1e-4 * (1.0 + std::fabs(fd));
+        EXPECT_GE(fd, d[j].lo - tol) << "slot " << i << " case " << k;
+        EXPECT_LE(fd, d[j].hi + tol) << "slot " << i << " case " << k;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 1000);
+}
+
+// The same form keeps the slope in kv signed where F is monotone in it: at points of a bent
+// part's fuzzy band (kv = 0.3 ± 0.015, C = 2) the interval slope of kv used to straddle 0 at
+// every point (atan(kv·w)/kv: two large terms that nearly cancel).
+TEST(SuperquadricSlopes, BendSlopeKeepsItsSignInTheBand) {
+  PlacedSuperquadric centre;
+  centre.params.a3 = 2.0;
+  centre.params.kv = 0.3;
+  PartBox box = crispPartBox(centre);
+  box.params.kv = {0.285, 0.315};
+  const int slots[1] = {7};
+  int signed_ = 0, tried = 0;
+  std::mt19937_64 rng(37);
+  while (tried < 200) {
+    // A point of the band: inside S(θ) for one end of kv and outside for the other.
+    const Vec3 p{uniform(rng, -1.5, 1.5), uniform(rng, -1.5, 1.5), uniform(rng, -2.2, 2.2)};
+    double lo[kPartSlots], hi[kPartSlots];
+    for (int i = 0; i < kPartSlots; ++i) lo[i] = hi[i] = partSlot(box, i).lo;
+    hi[7] = 0.315;
+    const double fLo = partAt(box, lo).insideOutside(p), fHi = partAt(box, hi).insideOutside(p);
+    if ((fLo <= 1.0) == (fHi <= 1.0)) continue;
+    ++tried;
+    Interval d[1];
+    ASSERT_TRUE(insideOutsideSlopes(box, {p.x, p.x}, {p.y, p.y}, {p.z, p.z}, slots, 1, d));
+    signed_ += d[0].lo > 0.0 || d[0].hi < 0.0;
+  }
+  EXPECT_GT(signed_, 150) << signed_ << " of " << tried;
 }
 
 // Where every slope has a sign, F over the box lies between its two signed corners.
