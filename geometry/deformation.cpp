@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/interval_functions.h"
+
 namespace fsdb {
 
 namespace {
@@ -12,12 +14,6 @@ namespace {
 double sinc(double u) {
   if (std::fabs(u) < 1e-4) return 1.0 - u * u / 6.0;
   return std::sin(u) / u;
-}
-
-// atan(w)/w, = 1 at w = 0; the dropped series term w⁴/5 is < 2e-17 below |w| = 1e-4.
-double atanc(double w) {
-  if (std::fabs(w) < 1e-4) return 1.0 - w * w / 3.0;
-  return std::atan(w) / w;
 }
 
 // x / f where the taper factor f may vanish (only at |z| >= C, outside the part): no

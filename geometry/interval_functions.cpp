@@ -91,4 +91,25 @@ Interval atan2(const Interval& y, const Interval& x) {
   return {*std::min_element(c, c + 4), *std::max_element(c, c + 4)};
 }
 
+Interval atanc(const Interval& w) {
+  return {atanc(magnitude(w)), atanc(mignitude(w))};
+}
+
+Interval atancSlope(const Interval& w) {
+  const auto slope = [](double x) {
+    if (std::fabs(x) < 0.05) {
+      const double x2 = x * x;
+      return x * (-2.0 / 3.0 + x2 * (4.0 / 5.0 - x2 * 6.0 / 7.0));
+    }
+    return (1.0 / (1.0 + x * x) - std::atan(x) / x) / x;
+  };
+  constexpr double kStar = 0.8243, kExtreme = 0.29224806 + 1e-8;
+  double lo = std::min(slope(w.lo), slope(w.hi)), hi = std::max(slope(w.lo), slope(w.hi));
+  if (w.lo <= kStar && kStar <= w.hi) lo = std::min(lo, -kExtreme);
+  if (w.lo <= -kStar && -kStar <= w.hi) hi = std::max(hi, kExtreme);
+  const double m = std::min(magnitude(w), 0.05);
+  const double truncation = 8.0 / 9.0 * std::pow(m, 7.0) + 1e-15;
+  return {lo - truncation, hi + truncation};
+}
+
 }  // namespace fsdb

@@ -48,6 +48,18 @@ Interval sqrt(const Interval& a);  // precondition a.lo >= 0
 // Saturates at the largest finite double; 0^e = 0.
 Interval pow(const Interval& base, const Interval& exponent);
 
+// atan(w)/w, = 1 at w = 0 (the inverse bend's z = (Z/u)·atanc(kv·Z/u), deformation.cpp); the
+// dropped series term w⁴/5 is < 2e-17 below |w| = 1e-4.
+inline double atanc(double w) {
+  if (std::fabs(w) < 1e-4) return 1.0 - w * w / 3.0;
+  return std::atan(w) / w;
+}
+Interval atanc(const Interval& w);  // {atan(w)/w}: even and falling in |w|, so its ends
+// {d/dw atanc(w)} = {(1/(1 + w²) − atanc(w))/w}: odd, with its extremes ∓0.29224806 at w = ±0.8243
+// (falling between them, rising outside), so its range is at the ends and at ±0.8243 where held;
+// near 0 by its series −2w/3 + 4w³/5 − 6w⁵/7 widened by the truncation bound (8/9)|w|⁷.
+Interval atancSlope(const Interval& w);
+
 Interval sin(const Interval& a);  // radians; [−1, 1] for width >= 2π or non-finite ends
 Interval cos(const Interval& a);
 

@@ -24,18 +24,6 @@ struct IntervalVec3 {
 
 Interval point(double v) { return {v, v}; }
 
-// atan(w)/w, = 1 at w = 0: the same two-branch evaluation as deformation.cpp's atanc.
-double atanc(double w) {
-  if (std::fabs(w) < 1e-4) return 1.0 - w * w / 3.0;
-  return std::atan(w) / w;
-}
-
-// {atan(w)/w}: even and decreasing in |w|.
-Interval atancRange(const Interval& w) {
-  const Interval a = abs(w);
-  return {atanc(a.hi), atanc(a.lo)};
-}
-
 // World -> local: Rᵀ·(w − translate)/scale (transform.h), over the placement box. All
 // rotations share the unit axis k, so R(θ)ᵀ = R(α)·R(θm)ᵀ with α = θm − θ for the mid angle
 // θm: rotate the box by the crisp R(θm)ᵀ to w', then bound the turn by α, |α| <= δ (the half
@@ -93,7 +81,7 @@ IntervalVec3 unbend(const Interval& k, const IntervalVec3& p) {
   const Interval ak = abs(k);
   if (u.lo >= 1.0 / kTame) {
     const Interval w = div(v, u);
-    z = intersect(z, mul(div(p.z, u), atancRange(w)));
+    z = intersect(z, mul(div(p.z, u), atanc(w)));
     // The same z as atan(v/u)/k: where k keeps away from 0 this keeps the correlation between
     // Z/u and atanc(v/u) that the product above loses (both are large together when u is
     // small), e.g. for points near the bending axis. atan is increasing: its range is its ends.

@@ -87,31 +87,11 @@ class Diff {
       r.d[j] = fsdb::mul(fsdb::add(fsdb::mul(a.v, a.d[j]), fsdb::mul(b.v, b.d[j])), inverse);
     return check(r);
   }
-  // φ(t) = atan(t)/t (φ(0) = 1), for the inverse bend's z' = (z/u)·φ(kv·z/u): written so, the
-  // slope of z' in kv has no cancellation (atan(kv·w)/kv has two large terms that nearly cancel,
-  // and as intervals the kv slope straddled 0 at every band point of a bent part). φ is even and
-  // falls in |t|; φ'(t) = (1/(1 + t²) − φ(t))/t is odd with its extremes ∓0.29224806 at
-  // t = ±0.8243 (falling on (−0.8243, 0.8243), rising outside), so over an interval its range is
-  // at the ends and at ±0.8243 where held. Near 0, φ' by its series −2t/3 + 4t³/5 − 6t⁵/7 with
-  // the truncation bound (8/9)|t|⁷.
-  Ad atanRatio(const Ad& t) {
-    const auto phi = [](double x) { return x == 0.0 ? 1.0 : std::atan(x) / x; };
-    const auto dphi = [](double x) {
-      if (std::fabs(x) < 0.05) {
-        const double x2 = x * x;
-        return x * (-2.0 / 3.0 + x2 * (4.0 / 5.0 - x2 * 6.0 / 7.0));
-      }
-      return (1.0 / (1.0 + x * x) - std::atan(x) / x) / x;
-    };
-    constexpr double kStar = 0.8243, kExtreme = 0.29224806 + 1e-8;
-    const Interval value{phi(magnitude(t.v)), phi(mignitude(t.v))};
-    double lo = std::min(dphi(t.v.lo), dphi(t.v.hi)), hi = std::max(dphi(t.v.lo), dphi(t.v.hi));
-    if (contains(t.v, kStar)) lo = std::min(lo, -kExtreme);
-    if (contains(t.v, -kStar)) hi = std::max(hi, kExtreme);
-    const double m = std::min(magnitude(t.v), 0.05);
-    const double truncation = 8.0 / 9.0 * std::pow(m, 7.0) + 1e-15;
-    return chain(value, {lo - truncation, hi + truncation}, t);
-  }
+  // atanc(t) = atan(t)/t (interval_functions.h), for the inverse bend's z' = (z/u)·atanc(kv·z/u):
+  // written so, the slope of z' in kv has no cancellation (atan(kv·w)/kv has two large terms
+  // that nearly cancel, and as intervals the kv slope straddled 0 at every band point of a bent
+  // part).
+  Ad atanc(const Ad& t) { return chain(fsdb::atanc(t.v), atancSlope(t.v), t); }
   // |x|: where x may change sign the slope is ±dx (either one-sided derivative).
   Ad abs(const Ad& a) {
     if (a.v.lo >= 0.0) return a;
@@ -241,7 +221,7 @@ bool insideOutsideSlopes(const PartBox& part, const Interval& x, const Interval&
     const Ad bv = D.mul(kv, pz);
     const Ad s = D.hypot(u, bv);
     const Ad bx = D.div(D.sub(D.mul(px, D.addConstant(1.0, u)), D.mul(bv, pz)), D.addConstant(1.0, s));
-    pz = D.mul(D.div(pz, u), D.atanRatio(D.div(bv, u)));  // atan(kv·z/u)/kv
+    pz = D.mul(D.div(pz, u), D.atanc(D.div(bv, u)));  // atan(kv·z/u)/kv
     px = bx;
   }
   const Ad C = D.mul(a1, a3);

@@ -175,5 +175,41 @@ TEST(IntervalFunctions, RandomInclusionAndTightnessOfTwoArgumentFunctions) {
   }
 }
 
+// atanc(w) = atan(w)/w and its derivative over intervals: inclusion and tightness against dense
+// samples, on intervals through 0, across the derivative's extremes at ±0.8243 and far out; the
+// derivative against central differences of the scalar atanc.
+TEST(IntervalFunctions, AtancAndItsSlope) {
+  std::mt19937_64 rng(41);
+  // The derivative in long double (its cancellation near 0 costs 1e-19 relative, not 1e-16), by
+  // the series below 1e-3.
+  const auto derivative = [](double x) {
+    const long double w = x, w2 = w * w;
+    if (std::fabs(x) < 1e-3) return double(w * (-2.0L / 3 + w2 * (4.0L / 5 - w2 * (6.0L / 7 - w2 * 8.0L / 9))));
+    return double((1.0L / (1.0L + w2) - std::atan(w) / w) / w);
+  };
+  EXPECT_EQ(atanc(0.0), 1.0);
+  EXPECT_NEAR(atanc(1.0), std::atan(1.0), 1e-16);
+  for (int k = 0; k < 300; ++k) {
+    const double reach = k % 3 == 0 ? 0.1 : k % 3 == 1 ? 2.0 : 20.0;
+    const Interval a = randomInterval(rng, -reach, reach);
+    // Tightness up to the sampling step at an interior extreme (both have |f''| < 1 there).
+    const double step = (a.hi - a.lo) / 400, slack = 1e-6 + step * step;
+    expectInclusionAndTightness("atanc", atanc(a), a, [](double w) { return atanc(w); }, slack);
+    expectInclusionAndTightness("atancSlope", atancSlope(a), a, derivative, slack);
+  }
+  // The extremes: −0.29224806 at 0.8243, +0.29224806 at −0.8243.
+  const Interval both = atancSlope({-1.0, 1.0});
+  EXPECT_NEAR(both.lo, -0.29224806, 1e-7);
+  EXPECT_NEAR(both.hi, 0.29224806, 1e-7);
+  EXPECT_LE(both.lo, derivative(0.8243));
+  // The slope range holds central differences of the scalar atanc too (the form the search uses).
+  for (double w : {-3.0, -0.8243, -0.2, 0.03, 0.5, 0.8243, 4.0}) {
+    const double h = 1e-6, fd = (atanc(w + h) - atanc(w - h)) / (2 * h);
+    const Interval r = atancSlope({w - 1e-3, w + 1e-3});
+    EXPECT_GE(fd, r.lo - 1e-8) << w;
+    EXPECT_LE(fd, r.hi + 1e-8) << w;
+  }
+}
+
 }  // namespace
 }  // namespace fsdb
