@@ -10,20 +10,16 @@
 // of 3 to 11 nodes (seeded) over inline parts from words (a dozen descriptions, some placed) and a
 // pool of 200 stored parts, through prepareDocument and Store::createBatch as an import would.
 // Every query runs R times pruned and S times unpruned; both answers must be equal.
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "bench/bench_stats.h"
 #include "db/store.h"
-#include "geometry/error.h"
 #include "query/vocabulary.h"
 #include "server/csg_search.h"
 #include "server/descriptor_rows.h"
@@ -98,30 +94,15 @@ const std::vector<std::string> kQueries = {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<size_t> sizes;
-  std::string dir = "build/bench-data", out;
-  int reps = 11, fullReps = 3;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto next = [&]() -> std::string { return i + 1 < argc ? argv[++i] : ""; };
-    if (a == "--sizes") {
-      std::stringstream ss(next());
-      for (std::string s; std::getline(ss, s, ',');) sizes.push_back(std::stoul(s));
-    } else if (a == "--dir") dir = next();
-    else if (a == "--reps") reps = std::stoi(next());
-    else if (a == "--full-reps") fullReps = std::stoi(next());
-    else if (a.rfind("--benchmark_out=", 0) == 0) out = a.substr(16);
-    else if (a.rfind("--benchmark_", 0) == 0) continue;
-    else {
-      std::cerr << "unknown argument " << a << "\n";
-      return 2;
-    }
-  }
-  if (sizes.empty()) sizes = {10000};
+  fsdb::bench::Args args;
+  args.reps = 11, args.refReps = 3;
+  if (!fsdb::bench::parseArgs(argc, argv, "--full-reps", args)) return 2;
+  if (args.sizes.empty()) args.sizes = {10000};
+  const std::string& dir = args.dir;
+  const int reps = args.reps, fullReps = args.refReps;
   std::filesystem::create_directories(dir);
-  json report = json::array();
-  try {
-    for (size_t n : sizes) {
+  return fsdb::bench::runReport("bench_csg_search", args.out, [&](json& report) {
+    for (size_t n : args.sizes) {
       const std::string path = dir + "/csg-" + std::to_string(n) + ".sqlite";
       if (!std::filesystem::exists(path)) build(path, n);
       auto store = fsdb::Store::open(path);
@@ -165,10 +146,6 @@ int main(int argc, char** argv) {
         }
       }
     }
-  } catch (const fsdb::Error& e) {
-    std::cerr << "bench_csg_search: " << e.code() << ": " << e.what() << " (" << e.path() << ")\n";
-    return 1;
-  }
-  if (!out.empty()) std::ofstream(out) << report.dump(2) << "\n";
-  return 0;
+    return 0;
+  });
 }

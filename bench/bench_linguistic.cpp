@@ -13,18 +13,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "bench/bench_stats.h"
 #include "db/store.h"
-#include "geometry/error.h"
 #include "query/linguistic_query.h"
 #include "query/part_json.h"
 #include "query/vocabulary.h"
@@ -103,32 +99,15 @@ const std::vector<std::string> kQueries = {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<size_t> sizes;
-  std::string dir = "build/bench-data", out;
-  int reps = 21, scanReps = 3;
-  bool underRunner = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto next = [&]() -> std::string { return i + 1 < argc ? argv[++i] : ""; };
-    if (a == "--sizes") {
-      std::stringstream ss(next());
-      for (std::string s; std::getline(ss, s, ',');) sizes.push_back(std::stoul(s));
-    } else if (a == "--dir") dir = next();
-    else if (a == "--reps") reps = std::stoi(next());
-    else if (a == "--scan-reps") scanReps = std::stoi(next());
-    else if (a.rfind("--benchmark_out=", 0) == 0) out = a.substr(16), underRunner = true;
-    else if (a.rfind("--benchmark_", 0) == 0) underRunner = true;
-    else {
-      std::cerr << "unknown argument " << a << "\n";
-      return 2;
-    }
-  }
-  if (sizes.empty()) sizes = {100000};
-  (void)underRunner;
+  fsdb::bench::Args args;
+  args.reps = 21, args.refReps = 3;
+  if (!fsdb::bench::parseArgs(argc, argv, "--scan-reps", args)) return 2;
+  if (args.sizes.empty()) args.sizes = {100000};
+  const std::string& dir = args.dir;
+  const int reps = args.reps, scanReps = args.refReps;
   std::filesystem::create_directories(dir);
-  nlohmann::json report = nlohmann::json::array();
-  try {
-    for (size_t n : sizes) {
+  return fsdb::bench::runReport("bench_linguistic", args.out, [&](nlohmann::json& report) {
+    for (size_t n : args.sizes) {
       const std::string path = dir + "/parts-" + std::to_string(n) + ".sqlite";
       if (!std::filesystem::exists(path)) build(path, n);
       auto store = fsdb::Store::open(path);
@@ -159,10 +138,6 @@ int main(int argc, char** argv) {
         }
       }
     }
-  } catch (const fsdb::Error& e) {
-    std::cerr << "bench_linguistic: " << e.code() << ": " << e.what() << " (" << e.path() << ")\n";
-    return 1;
-  }
-  if (!out.empty()) std::ofstream(out) << report.dump(2) << "\n";
-  return 0;
+    return 0;
+  });
 }

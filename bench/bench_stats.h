@@ -1,11 +1,20 @@
 #pragma once
-// What the search benches (bench_linguistic, bench_csg_search) share: timing repeated runs,
-// percentiles of timings, the pruned-equals-full check of two result lists (ids and scores, in
-// order) and the summary row of a fast path measured against its reference path.
+// What the search benches (bench_linguistic, bench_csg_search) share: their command line, timing
+// repeated runs, percentiles of timings, the pruned-equals-full check of two result lists (ids and
+// scores, in order), the summary row of a fast path measured against its reference path and the
+// run that writes the JSON report.
 #include <algorithm>
 #include <chrono>
 #include <cstddef>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "geometry/error.h"
 
 namespace fsdb::bench {
 
@@ -58,6 +67,50 @@ Comparison compareRuns(const std::vector<double>& fast, const std::vector<double
   c.refP50 = ref.empty() ? 0.0 : percentile(ref, 0.5);
   c.equal = ref.empty() || sameHits(a, b);
   return c;
+}
+
+// The command line: [--sizes N,M] [--dir DIR] [--reps R] [<refFlag> S] [--benchmark_out=FILE.json];
+// other --benchmark_* flags are ignored, so scripts/run-benchmarks can run the bench.
+struct Args {
+  std::vector<size_t> sizes;  // empty: the bench's default
+  std::string dir = "build/bench-data", out;
+  int reps, refReps;  // fast path, reference path
+};
+
+// Fills args (its reps and refReps hold the defaults); false, after a message, on an unknown argument.
+inline bool parseArgs(int argc, char** argv, const std::string& refFlag, Args& args) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto next = [&]() -> std::string { return i + 1 < argc ? argv[++i] : ""; };
+    if (a == "--sizes") {
+      std::stringstream ss(next());
+      for (std::string s; std::getline(ss, s, ',');) args.sizes.push_back(std::stoul(s));
+    } else if (a == "--dir") args.dir = next();
+    else if (a == "--reps") args.reps = std::stoi(next());
+    else if (a == refFlag) args.refReps = std::stoi(next());
+    else if (a.rfind("--benchmark_out=", 0) == 0) args.out = a.substr(16);
+    else if (a.rfind("--benchmark_", 0) == 0) continue;
+    else {
+      std::cerr << "unknown argument " << a << "\n";
+      return false;
+    }
+  }
+  return true;
+}
+
+// Runs body(report) (its exit status; rows go into the JSON array report), reports an fsdb::Error
+// as "name: code: message (path)" with status 1, and writes the report to out when one is named.
+template <class F>
+int runReport(const char* name, const std::string& out, F&& body) {
+  nlohmann::json report = nlohmann::json::array();
+  try {
+    if (const int rc = body(report)) return rc;
+  } catch (const fsdb::Error& e) {
+    std::cerr << name << ": " << e.code() << ": " << e.what() << " (" << e.path() << ")\n";
+    return 1;
+  }
+  if (!out.empty()) std::ofstream(out) << report.dump(2) << "\n";
+  return 0;
 }
 
 }  // namespace fsdb::bench
