@@ -22,8 +22,6 @@ bool isWordChar(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '\'' || c == '.';
 }
 
-const std::vector<std::string> kVerbs = {"find", "show", "search", "get", "list"};
-const std::vector<std::string> kArticles = {"a", "an", "the", "any", "some", "all"};
 const std::vector<std::string> kOperationWords = {"union", "intersection", "difference", "minus",
                                                   "without", "plus", "intersected"};
 
@@ -65,7 +63,7 @@ class PhraseParser {
 
   nlohmann::json parse() {
     if (words_.empty()) fail({"a query such as 'the union of a bent cylinder and a sphere'"});
-    if (acceptAny(kVerbs)) accept("for");
+    if (acceptAny(queryVerbs())) accept("for");
     nlohmann::json tree = expr();
     if (pos_ < words_.size()) fail({"'minus'", "'and'", "','", "'plus'", "'intersected with'", "the end of the query"});
     return tree;
@@ -125,7 +123,7 @@ class PhraseParser {
       return inner;
     }
     const size_t save = pos_;
-    acceptAny(kArticles);
+    acceptAny(queryArticles());
     if (at("union") || at("intersection") || at("difference")) {
       const std::string op = words_[pos_++].text;
       expect("of");

@@ -40,8 +40,6 @@ const std::vector<std::string>& grammarWords() {
 // The deepest nesting of parentheses and "not" a query may have.
 constexpr int kMaxNesting = 64;
 
-const std::vector<std::string> kVerbs = {"find", "show", "search", "get", "list"};
-const std::vector<std::string> kArticles = {"a", "an", "the", "any", "some", "all"};
 const std::vector<std::string> kApproximately = {"exactly", "about", "around", "approximately", "roughly"};
 
 bool contains(const std::vector<std::string>& list, const std::string& w) {
@@ -161,7 +159,7 @@ class Parser {
   LinguisticQuery parse() {
     LinguisticQuery q;
     if (tokens_.empty()) fail({"a query such as 'find a slightly bent shape'"});
-    if (acceptAny(kVerbs)) acceptWord("for");
+    if (acceptAny(queryVerbs())) acceptWord("for");
     const size_t start = pos_;
     std::string subject;
     QueryCondition first = nounPhrase(&subject);
@@ -224,7 +222,7 @@ class Parser {
   PartDescription partDescription() {
     PartDescription d;
     if (tokens_.empty()) fail({"words such as 'a slightly bent cylinder'"});
-    acceptAny(kArticles);
+    acceptAny(queryArticles());
     std::string word;
     while (true) {
       const size_t start = pos_;
@@ -360,7 +358,7 @@ class Parser {
   // noun_phrase = [ article ] [ condition ] noun [ ("that"|"which") ("is"|"are") condition ]
   QueryCondition nounPhrase(std::string* subject) {
     const size_t start = pos_;
-    acceptAny(kArticles);
+    acceptAny(queryArticles());
     std::vector<QueryCondition> parts;
     const bool hasModifiers = startsCondition();
     if (hasModifiers) parts.push_back(condition());
@@ -631,6 +629,16 @@ nlohmann::json conditionJson(const QueryCondition& c) {
 
 LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary) {
   return Parser(text, vocabulary).parse();
+}
+
+const std::vector<std::string>& queryVerbs() {
+  static const std::vector<std::string> verbs = {"find", "show", "search", "get", "list"};
+  return verbs;
+}
+
+const std::vector<std::string>& queryArticles() {
+  static const std::vector<std::string> articles = {"a", "an", "the", "any", "some", "all"};
+  return articles;
 }
 
 NounPhraseAt parseNounPhraseAt(const std::string& text, size_t from, size_t to, const Vocabulary& vocabulary) {

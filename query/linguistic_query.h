@@ -82,6 +82,12 @@ struct LinguisticQuery {
 // deeper than 64 levels (parentheses, "not") are errc::kLimitExceeded, path "text".
 LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary);
 
+// The grammar's opening verbs (each may be followed by "for") and its articles, in the grammar's
+// order; the phrase form of structural queries (query/csg_query_text.h) opens with the same verbs
+// and names operations after the same articles.
+const std::vector<std::string>& queryVerbs();
+const std::vector<std::string>& queryArticles();
+
 // The noun phrase that starts at character `from` of `text` (a leaf of a structural query,
 // query/csg_query_text.h), read up to character `to` at most (npos: the end): the production
 // noun_phrase of the grammar, ending after its noun and relative clause. There an "and", "or" or

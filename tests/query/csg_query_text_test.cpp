@@ -45,6 +45,15 @@ TEST(CsgQueryText, PhraseOperations) {
   EXPECT_EQ(shape(parse("find a sphere plus a box plus a cone")), "union('a sphere', 'a box', 'a cone')");
 }
 
+// The phrase form opens with the linguistic grammar's verbs and names operations after its articles.
+TEST(CsgQueryText, PhraseVerbsAndArticlesAreTheLinguisticOnes) {
+  for (const std::string& verb : queryVerbs())
+    for (const std::string& opening : {verb, verb + " for"})
+      EXPECT_EQ(shape(parse(opening + " a sphere plus a box")), "union('a sphere', 'a box')") << opening;
+  for (const std::string& article : queryArticles())
+    EXPECT_EQ(shape(parse(article + " union of a sphere and a box")), "union('a sphere', 'a box')") << article;
+}
+
 TEST(CsgQueryText, PhraseNestingAndPrecedence) {
   EXPECT_EQ(shape(parse("the union of a cube and the difference of a box and a cylinder")),
             "union('a cube', difference('a box', 'a cylinder'))");

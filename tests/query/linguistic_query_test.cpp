@@ -41,6 +41,22 @@ TEST(LinguisticQuery, SlightlyBentShape) {
   expectLeaf(q.root, "bendness", *v().intensity("slightly"), "slightly bent");
 }
 
+// queryVerbs and queryArticles are the grammar's words (schema/query_grammar.ebnf), and each one
+// opens a query (a verb, with or without "for") or a noun phrase (an article) as the grammar says.
+TEST(LinguisticQuery, QueryVerbsAndArticles) {
+  EXPECT_EQ(queryVerbs(), (std::vector<std::string>{"find", "show", "search", "get", "list"}));
+  EXPECT_EQ(queryArticles(), (std::vector<std::string>{"a", "an", "the", "any", "some", "all"}));
+  for (const std::string& verb : queryVerbs())
+    for (const std::string& opening : {verb, verb + " for"}) {
+      const LinguisticQuery q = parse(opening + " a slightly bent shape");
+      expectLeaf(q.root, "bendness", *v().intensity("slightly"), "slightly bent");
+    }
+  for (const std::string& article : queryArticles()) {
+    const LinguisticQuery q = parse("find " + article + " slightly bent shape");
+    expectLeaf(q.root, "bendness", *v().intensity("slightly"), "slightly bent");
+  }
+}
+
 TEST(LinguisticQuery, RelativeClauseWithAnd) {
   const LinguisticQuery q = parse("find shapes that are very round and slightly tapered");
   ASSERT_EQ(q.root.kind, Kind::kAnd);
