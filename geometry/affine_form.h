@@ -46,8 +46,6 @@ AffineForm affineConstant(double c);
 // kAffineSymbols): centre mid, deviation the half width.
 AffineForm affineVariable(const Interval& range, int symbol);
 
-
-
 // radius(x) = Σ|x_i| + e (the largest distance from the centre); range(x) = [x0 ∓ radius]
 // (meaningful only when valid); add, sub, add(c, x), mul(c, x), combine (a·x + b·y (+ c·z)),
 // mul(x, y) (the bilinear term
