@@ -84,9 +84,6 @@ namespace affine_detail {
 // Rounding slack per operation, relative to the magnitudes of the result's terms: each term is one
 // or two roundings away from its exact value, and so is their sum in radius().
 inline constexpr double kSlack = 4.0 * std::numeric_limits<double>::epsilon();
-// Forms beyond this magnitude are declared invalid: products of two stay finite, so no ∞·0 = NaN
-// can hide in a deviation (the same limit as fsdb::kTame, superquadric_bounds.h).
-inline constexpr double kTame = 1e150;
 
 inline AffineForm invalid() {
   AffineForm r;
@@ -101,7 +98,8 @@ inline double deviationSum(const AffineForm& x) {
 }
 
 // Adds the rounding slack to a result whose deviations sum to d in magnitude, and checks it is
-// finite and tame.
+// finite and tame (kTame, interval.h: products of two tame forms stay finite, so no ∞·0 = NaN can
+// hide in a deviation).
 inline AffineForm finish(AffineForm r, double d) {
   if (!r.valid) return r;
   r.err += kSlack * (std::fabs(r.centre) + d + r.err);
