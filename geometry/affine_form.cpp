@@ -10,7 +10,6 @@ namespace fsdb {
 
 namespace {
 
-using affine_detail::deviationSum;
 using affine_detail::finish;
 using affine_detail::invalid;
 using affine_detail::kSlack;
@@ -233,15 +232,7 @@ AffineForm absPow(const AffineForm& x, const Interval& q) {
   const double slack = 1e-12 * magnitude;
   lo -= slack;
   up += slack;
-  AffineForm r;
-  r.centre = s * x.centre + 0.5 * (lo + up);
-  double d = 0.0;
-  for (int i = 0; i < kAffineSymbols; ++i) {
-    r.dev[i] = s * x.dev[i];
-    d += std::fabs(r.dev[i]);
-  }
-  r.err = std::fabs(s) * x.err + 0.5 * (up - lo) + kSlack * std::fabs(s * x.centre);
-  return finish(r, d);
+  return apply(x, {s, 0.5 * (lo + up), 0.5 * (up - lo)});
 }
 
 }  // namespace fsdb

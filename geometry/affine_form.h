@@ -46,8 +46,6 @@ AffineForm affineConstant(double c);
 // kAffineSymbols): centre mid, deviation the half width.
 AffineForm affineVariable(const Interval& range, int symbol);
 
-
-
 // radius(x) = Σ|x_i| + e (the largest distance from the centre); range(x) = [x0 ∓ radius]
 // (meaningful only when valid); add, sub, add(c, x), mul(c, x), combine (a·x + b·y (+ c·z)),
 // mul(x, y) (the bilinear term
@@ -86,9 +84,6 @@ namespace affine_detail {
 // Rounding slack per operation, relative to the magnitudes of the result's terms: each term is one
 // or two roundings away from its exact value, and so is their sum in radius().
 inline constexpr double kSlack = 4.0 * std::numeric_limits<double>::epsilon();
-// Forms beyond this magnitude are declared invalid: products of two stay finite, so no ∞·0 = NaN
-// can hide in a deviation (the same limit as fsdb::kTame, superquadric_bounds.h).
-inline constexpr double kTame = 1e150;
 
 inline AffineForm invalid() {
   AffineForm r;
@@ -103,7 +98,8 @@ inline double deviationSum(const AffineForm& x) {
 }
 
 // Adds the rounding slack to a result whose deviations sum to d in magnitude, and checks it is
-// finite and tame.
+// finite and tame (kTame, interval.h: products of two tame forms stay finite, so no ∞·0 = NaN can
+// hide in a deviation).
 inline AffineForm finish(AffineForm r, double d) {
   if (!r.valid) return r;
   r.err += kSlack * (std::fabs(r.centre) + d + r.err);

@@ -54,27 +54,25 @@ Interval pointEnclosure(const PartBox& b, const Vec3& p, bool inside) {
 // box narrowed by affine contraction (contractToQualifying, superquadric_affine.h) to the θ that
 // can still qualify (inside: F <= 1, else F > 1): every such θ stays in it, so the search loses
 // nothing it looks for. False when no θ of the box qualifies. *f encloses F over the box before
-// the narrowing (so over the narrowed box too); *narrowed tells whether the box changed. (Taking
-// the enclosure of the narrowed box again changed no answer and no exhaustion count of the bench
-// part at N = 32, so one round.)
+// the narrowing (so over the narrowed box too); *narrowed tells whether the box changed; on true, *form is
+// the affine form of F over the box before the narrowing (form->valid false where there is none).
+// (Taking the enclosure of the narrowed box again changed no answer and no exhaustion count of the
+// bench part at N = 32, so one round.)
 bool narrowToQualifying(PartBox* box, const Vec3& p, bool inside, Interval* f, bool* narrowed,
-                        AffineForm* formOut = nullptr) {
+                        AffineForm* form) {
   const Interval px{p.x, p.x}, py{p.y, p.y}, pz{p.z, p.z};
   *narrowed = false;
   *f = insideOutsideBounds(*box, px, py, pz);
   if (excludes(*f, inside)) return false;
-  AffineForm scratch;
-  AffineForm& form = formOut != nullptr ? *formOut : scratch;
-  form.valid = false;
-  if (!insideOutsideAffineForm(*box, px, py, pz, &form)) {
-    form.valid = false;
+  if (!insideOutsideAffineForm(*box, px, py, pz, form)) {
+    form->valid = false;
     return true;
   }
-  const Interval a = range(form);
+  const Interval a = range(*form);
   *f = intersect(*f, {std::max(a.lo, 0.0), std::max(a.hi, 0.0)});
   if (excludes(*f, inside)) return false;
   const PartBox before = *box;
-  if (!contractToQualifying(form, inside, box)) return false;
+  if (!contractToQualifying(*form, inside, box)) return false;
   for (int i = 0; i < kSlots && !*narrowed; ++i) {
     const Interval& w = partSlot(before, i);
     const Interval& n = partSlot(*box, i);
@@ -418,6 +416,13 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
   // needs the proof over all of P(0)). -1: none yet.
   double base = inside ? 0.0 : -1.0;
   PartBox cut;  // P(base + τ) once there is a base
+  // A box whose bound cannot beat the incumbent by more than τ is done with: its bound joins
+  // what was pruned.
+  const auto prunes = [&](double ub) {
+    if (!(base >= 0.0 && ub <= base + tau)) return false;
+    s.pruned = std::max(s.pruned, ub);
+    return true;
+  };
   if (base >= 0.0) cut = cutAt(tau);
   double weight[kSlots], slope[kSlots];
   bool haveWeights = false, haveSlopes = false;
@@ -504,8 +509,7 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
     heap.pop_back();
     // Best first: nothing left can beat the incumbent by more than τ (while diving, the heap is
     // ordered by promise: drop just this box).
-    if (base >= 0.0 && node.ub <= base + tau) {
-      s.pruned = std::max(s.pruned, node.ub);
+    if (prunes(node.ub)) {
       if (diving) continue;
       break;
     }
@@ -536,10 +540,7 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
       if (shrunk) s.pruned = std::max(s.pruned, std::min(node.ub, target));
       if (empty) continue;
       node.ub = std::min(node.ub, upperBound(node.box));
-      if (node.ub <= base + tau) {
-        s.pruned = std::max(s.pruned, node.ub);
-        continue;
-      }
+      if (prunes(node.ub)) continue;
     }
     ++evaluations;
     if (inside && missesDeformedHull(node.box, px, py, pz)) continue;  // F > 1 on the whole box
@@ -554,18 +555,12 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
       if (lp < 0.0) continue;  // no θ of the box satisfies the linear condition
       if (lp < node.ub) {
         node.ub = lp;
-        if (base >= 0.0 && node.ub <= base + tau) {
-          s.pruned = std::max(s.pruned, node.ub);
-          continue;
-        }
+        if (prunes(node.ub)) continue;
       }
     }
     if (narrowed) {
       node.ub = std::min(node.ub, upperBound(node.box));
-      if (base >= 0.0 && node.ub <= base + tau) {
-        s.pruned = std::max(s.pruned, node.ub);
-        continue;
-      }
+      if (prunes(node.ub)) continue;
     }
     // The slopes over the box: dominance first (it keeps the best m), then the collapse tests.
     int open[kSlots], openCount = 0;
@@ -577,10 +572,7 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
         openCount > 0 && insideOutsideSlopes(node.box, px, py, pz, open, openCount, boxSlopes);
     if (boxSlopesKnown && narrowByDominance(&node.box, open, openCount, boxSlopes, inside)) {
       node.ub = std::min(node.ub, upperBound(node.box));
-      if (base >= 0.0 && node.ub <= base + tau) {
-        s.pruned = std::max(s.pruned, node.ub);
-        continue;
-      }
+      if (prunes(node.ub)) continue;
     }
     if (collapsedExcludes(node.box, p, inside, &evaluations, open, openCount,
                           boxSlopesKnown ? boxSlopes : nullptr))
@@ -702,10 +694,7 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
         child->promise = inside ? -fc : fc;
         if (witness(fc)) improve(membershipAt(c), theta);
       }
-      if (base >= 0.0 && child->ub <= base + tau) {
-        s.pruned = std::max(s.pruned, child->ub);
-        continue;
-      }
+      if (prunes(child->ub)) continue;
       heap.push_back(std::move(*child));
       std::push_heap(heap.begin(), heap.end(), lessPromising);
     }

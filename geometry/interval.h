@@ -20,6 +20,13 @@ struct Interval {
 bool operator==(const Interval& a, const Interval& b);
 bool operator!=(const Interval& a, const Interval& b);
 
+// Magnitude limit for the enclosures' intermediate values (superquadric_bounds.cpp,
+// superquadric_slopes.cpp, and the affine forms of affine_form.h): products of two values below
+// it stay finite, so no ∞·0 = NaN can arise inside the interval products (whose min/max would
+// hide it).
+inline constexpr double kTame = 1e150;
+inline bool isTame(const Interval& a) { return a.lo >= -kTame && a.hi <= kTame; }  // false for NaN
+
 // The elementary operations are inline: the enclosures and interval slopes of the voxel
 // evaluator call them in their innermost loops.
 inline Interval add(const Interval& a, const Interval& b) {  // [a.lo + b.lo, a.hi + b.hi]

@@ -134,7 +134,7 @@ bool insideOutsideChain(const PartBox& part, const AffineForm* v, AffineVec3 p, 
   if (!unbend(v[7], q.kv, &p)) return false;
   // Half-lengths (superquadric.h): A = a1, B = a1·a2, C = a1·a3.
   const AffineForm inverseA = recip(v[2]), inverseB = recip(mul(v[2], v[3])),
-          inverseC = recip(mul(v[2], v[4]));
+                   inverseC = recip(mul(v[2], v[4]));
   const AffineForm zc = mul(p.z, inverseC);
   if (!isPoint(q.t, 0.0)) untwist(v[8], zc, &p);
   if (!valid(p) || !untaper(v[5], q.kx, zc, &p.x) || !untaper(v[6], q.ky, zc, &p.y))
@@ -142,11 +142,11 @@ bool insideOutsideChain(const PartBox& part, const AffineForm* v, AffineVec3 p, 
   // F = (X^(2/eps2) + Y^(2/eps2))^(eps2/eps1) + Z^(2/eps1)   (seed 004 eq. 1).
   const AffineForm inverseE1 = recip(v[0]), inverseE2 = recip(v[1]);
   const AffineForm sum = add(ratioPower(mul(p.x, inverseA), inverseE2, q.eps2),
-                    ratioPower(mul(p.y, inverseB), inverseE2, q.eps2));
+                             ratioPower(mul(p.y, inverseB), inverseE2, q.eps2));
   // The sum is >= 0 whatever its form's range says; its exponent is eps2/eps1.
   const Interval sumRange = range(sum);
   const AffineForm radial = power(sum, {std::max(sumRange.lo, 0.0), sumRange.hi}, mul(v[1], inverseE1),
-                         {q.eps2.lo / q.eps1.hi, q.eps2.hi / q.eps1.lo});
+                                  {q.eps2.lo / q.eps1.hi, q.eps2.hi / q.eps1.lo});
   *out = add(radial, ratioPower(zc, inverseE1, q.eps1));
   return out->valid;
 }
@@ -158,7 +158,7 @@ bool insideOutsideAffineForm(const PartBox& part, const Interval& x, const Inter
   AffineForm v[kPartSlots];
   for (int i = 0; i < kPartSlots; ++i) v[i] = affineVariable(partSlot(part, i), i);
   const AffineVec3 p{affineVariable(x, kPointSymbol), affineVariable(y, kPointSymbol + 1),
-                             affineVariable(z, kPointSymbol + 2)};
+                     affineVariable(z, kPointSymbol + 2)};
   return insideOutsideChain(part, v, p, out);
 }
 
@@ -172,13 +172,11 @@ Interval insideOutsideAffineBounds(const PartBox& part, const Interval& x, const
 
 // With σ = +1 (inside) or −1 (F > 1 is −F < −1) and b_j = σ·f_j, a θ qualifies only if
 // σ·F0 + Σ_j b_j·ε_j − e <= σ for its ε, so b_i·ε_i <= σ(1 − F0) + e − Σ_{j≠i} b_j·ε_j
-// <= AffineForm − |b_i| with AffineForm = σ(1 − F0) + e + Σ_j |f_j| (the other ε at their most favourable ends).
+// <= t − |b_i| with t = σ(1 − F0) + e + Σ_j |f_j| (the other ε at their most favourable ends).
 bool contractToQualifying(const AffineForm& f, bool inside, PartBox* box) {
   if (!f.valid) return true;
   const double sigma = inside ? 1.0 : -1.0;
-  double sum = 0.0;
-  for (int i = 0; i < kAffineSymbols; ++i) sum += std::fabs(f.dev[i]);
-  const double t = sigma * (1.0 - f.centre) + f.err + sum;
+  const double t = sigma * (1.0 - f.centre) + f.err + affine_detail::deviationSum(f);
   if (!(t >= 0.0)) return !(t < 0.0);  // no θ qualifies (NaN: no conclusion)
   for (int i = 0; i < kPartSlots; ++i) {
     const double b = sigma * f.dev[i];

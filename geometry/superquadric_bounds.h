@@ -48,12 +48,6 @@ struct PartBox {
   PlacementBox placement;
 };
 
-// Magnitude limit for the enclosures' intermediate values (here and in superquadric_slopes.cpp):
-// products of two values below it stay finite, so no ∞·0 = NaN can arise inside the interval
-// products (whose min/max would hide it).
-inline constexpr double kTame = 1e150;
-inline bool isTame(const Interval& a) { return a.lo >= -kTame && a.hi <= kTame; }  // false for NaN
-
 // The degenerate box of a crisp part: every interval a single value.
 PartBox crispPartBox(const PlacedSuperquadric& part);
 

@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <fstream>
 
-#include "tests/server/server_process.h"
+#include "tests/server/shared_server.h"
 
-using fsdb::test::ServerProcess;
+using fsdb::test::SharedServerTest;
 using nlohmann::json;
 
 namespace {
@@ -22,13 +22,10 @@ json fuzzyBall(double r1, double r2, double r3, double x = 0) {
           {"transform", {{"translate", {x, 0, 0}}}}};
 }
 
-class EvaluateApi : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() { server = new ServerProcess({"--max-resolution", "200", "--max-nodes", "5"}); }
-  static void TearDownTestSuite() { delete server; }
-  static ServerProcess* server;
+class EvaluateApi : public SharedServerTest<EvaluateApi> {
+ public:
+  static std::vector<std::string> serverArgs() { return {"--max-resolution", "200", "--max-nodes", "5"}; }
 };
-ServerProcess* EvaluateApi::server = nullptr;
 
 TEST_F(EvaluateApi, FuzzyBallVolumesFollowTheAlphaCutRadii) {
   auto r = server->post("/evaluate", json{{"shape", fuzzyBall(0.8, 1.0, 1.2)}, {"resolution", 96}, {"alphas", {0, 0.5, 1}}});

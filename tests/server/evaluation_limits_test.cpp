@@ -8,10 +8,11 @@
 #include <string>
 
 #include "query/part_json.h"
-#include "tests/server/server_process.h"
+#include "tests/server/shared_server.h"
 #include "tests/testing/fuzzy_bench_part.h"
 
 using fsdb::test::ServerProcess;
+using fsdb::test::SharedServerTest;
 using nlohmann::json;
 
 namespace {
@@ -36,14 +37,11 @@ int64_t storeShape(const ServerProcess& server, const std::string& name, const j
   return r.json.value("id", int64_t{0});
 }
 
-class TightLimits : public ::testing::Test {
- protected:
+class TightLimits : public SharedServerTest<TightLimits> {
+ public:
   // 1 MiB holds about 250 leaf pairs: a crisp ball at resolution 32, not at 128.
-  static void SetUpTestSuite() { server = new ServerProcess({"--max-grid-mb", "1", "--max-eval-ms", "300"}); }
-  static void TearDownTestSuite() { delete server; }
-  static ServerProcess* server;
+  static std::vector<std::string> serverArgs() { return {"--max-grid-mb", "1", "--max-eval-ms", "300"}; }
 };
-ServerProcess* TightLimits::server = nullptr;
 
 TEST_F(TightLimits, GridMemoryLimitIs413NamingMaxGridMb) {
   auto ok = server->post("/evaluate", json{{"shape", crispBall()}, {"resolution", 32}});
@@ -75,13 +73,7 @@ TEST_F(TightLimits, EvaluationTimeLimitIs413NamingMaxEvalMs) {
   expectLimit(server->post(at + "/evaluate", json{{"resolution", 64}}), "max_eval_ms=300");
 }
 
-class DefaultLimits : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() { server = new ServerProcess(); }
-  static void TearDownTestSuite() { delete server; }
-  static ServerProcess* server;
-};
-ServerProcess* DefaultLimits::server = nullptr;
+class DefaultLimits : public SharedServerTest<DefaultLimits> {};
 
 TEST_F(DefaultLimits, ExhaustedSearchesAreZeroForACrispPart) {
   auto r = server->post("/evaluate", json{{"shape", crispBall()}, {"resolution", 48}});

@@ -6,9 +6,10 @@
 
 #include <string>
 
-#include "tests/server/server_process.h"
+#include "tests/server/shared_server.h"
 
 using fsdb::test::ServerProcess;
+using fsdb::test::SharedServerTest;
 using nlohmann::json;
 
 namespace {
@@ -30,13 +31,7 @@ size_t count(const std::string& text, const std::string& what) {
   return n;
 }
 
-class StoredFairCurve : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() { server = new ServerProcess(); }
-  static void TearDownTestSuite() { delete server; }
-  static ServerProcess* server;
-};
-ServerProcess* StoredFairCurve::server = nullptr;
+class StoredFairCurve : public SharedServerTest<StoredFairCurve> {};
 
 TEST_F(StoredFairCurve, CreatesVersionsAndFindsByName) {
   auto c = server->post("/curves", json{{"kind", "curve"}, {"name", "loop"}, {"fair", figure7()}});
