@@ -35,13 +35,19 @@ std::vector<FairCandidate> fairCandidates(const std::vector<Vec2>& points, bool 
   if (o.maxCandidates == 0)
     throw Error(errc::kInvalidParameter, "max_candidates must be at least 1", "max_candidates");
   const std::vector<double> base = firstEstimationAngles(points, closed);  // seed 002 Figure 7
-  const std::vector<double> baseGrades = pointFairness(points, base, closed, o.behavior, o.deltaTheta);
   const size_t n = points.size();
+  // Each point's set at the first estimation: its maxima give the candidates and its value at
+  // the point's own angle is the grade every candidate keeps away from its changed angle.
+  std::vector<FairDangerZones> baseZones;
+  std::vector<double> baseGrades;
+  for (size_t j = 0; j < n; ++j) {
+    baseZones.push_back(fairDangerZones(points, base, closed, j, o.behavior));
+    baseGrades.push_back(fairMembership(baseZones[j], base[j], o.deltaTheta));
+  }
   std::vector<FairCandidate> out;
   for (size_t i = 0; i < n; ++i) {
-    const FairDangerZones zones = fairDangerZones(points, base, closed, i, o.behavior);
     // seed 002 §5 (local maxima), §7 (R_alpha).
-    for (const RankedValue& m : fairAngleMaxima(zones, o.angleSamples, o.alphaThreshold, o.deltaTheta)) {
+    for (const RankedValue& m : fairAngleMaxima(baseZones[i], o.angleSamples, o.alphaThreshold, o.deltaTheta)) {
       FairCandidate c{0, i, m.mu, base};
       // A maximum at the first estimation itself (within rounding) is the first-estimation curve.
       c.anglesDeg[i] = directionDistance(m.x, base[i]) < kSameAngleDeg ? base[i] : m.x;

@@ -66,48 +66,48 @@ FuzzyBezierPoint unpack(const CrispPoint& packed, std::size_t d) {
 
 // min over w_k in [lo_k, hi_k] of Σ w_k x_k / Σ w_k (all lo_k ≥ 0, Σ lo_k > 0): the minimiser
 // gives hi to the s smallest x and lo to the rest for some split s (header: rational hull).
-double minWeightedMean(const std::vector<double>& x, const std::vector<double>& lo, const std::vector<double>& hi) {
-  std::vector<std::size_t> order(x.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return x[a] < x[b]; });
+// `order` lists the indices by ascending x; `sign` −1 reads every x negated (the maximum).
+double minWeightedMean(const std::vector<CrispPoint>& ends, std::size_t c, double sign,
+                       const std::vector<std::size_t>& order, const std::vector<double>& lo,
+                       const std::vector<double>& hi) {
   double num = 0, den = 0;
-  for (std::size_t k : order) num += lo[k] * x[k], den += lo[k];
+  for (std::size_t k : order) num += lo[k] * sign * ends[k][c], den += lo[k];
   double best = num / den;
   for (std::size_t k : order) {
-    num += (hi[k] - lo[k]) * x[k];
+    num += (hi[k] - lo[k]) * sign * ends[k][c];
     den += hi[k] - lo[k];
     best = std::min(best, num / den);
   }
   return best;
 }
 
+// The control points by ascending sign · ends[k][c] (the split order of minWeightedMean).
+std::vector<std::size_t> splitOrder(const std::vector<CrispPoint>& ends, std::size_t c, double sign) {
+  std::vector<std::size_t> order(ends.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return sign * ends[a][c] < sign * ends[b][c]; });
+  return order;
+}
+
 // The rational point at u: crisp by the homogeneous de Casteljau and the projection Π, lower /
 // upper as the hull over the cuts (header).
 FuzzyBezierPoint evaluateRational(const BezierCurveCut& cut, double u) {
   const std::size_t n = cut.ends.size(), dim = cut.dimension;
-  std::vector<CrispPoint> homogeneous(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const double w = cut.crispWeights[k];
-    for (std::size_t c = 0; c < dim; ++c) homogeneous[k].push_back(w * cut.ends[k][dim + c]);
-    homogeneous[k].push_back(w);
-  }
-  const CrispPoint h = deCasteljau(homogeneous, u);  // seed 003 §2: de Casteljau on (wP, w)
+  const CrispPoint h = deCasteljau(cut.homogeneous, u);  // seed 003 §2: de Casteljau on (wP, w)
   FuzzyBezierPoint out;
   for (std::size_t c = 0; c < dim; ++c) out.crisp.push_back(h[c] / h[dim]);  // the projection Π
 
-  std::vector<double> wlo(n), whi(n), xlo(n), xhi(n);
+  std::vector<double> wlo(n), whi(n);
   const std::vector<double> basis = bernsteinBasis(n - 1, u);
   for (std::size_t k = 0; k < n; ++k) {
     wlo[k] = basis[k] * cut.weights[k].lo;
     whi[k] = basis[k] * cut.weights[k].hi;
   }
   for (std::size_t c = 0; c < dim; ++c) {
-    for (std::size_t k = 0; k < n; ++k) {
-      xlo[k] = cut.ends[k][c];
-      xhi[k] = -cut.ends[k][2 * dim + c];  // max of the mean = −min of the mean of the negated values
-    }
-    out.lower.push_back(minWeightedMean(xlo, wlo, whi));
-    out.upper.push_back(-minWeightedMean(xhi, wlo, whi));
+    out.lower.push_back(minWeightedMean(cut.ends, c, 1.0, cut.order[c], wlo, whi));
+    // max of the mean = −min of the mean of the negated values
+    out.upper.push_back(-minWeightedMean(cut.ends, 2 * dim + c, -1.0, cut.order[dim + c], wlo, whi));
   }
   return out;
 }
@@ -218,10 +218,18 @@ BezierCurveCut cutCurve(const FuzzyBezierCurve& curve, double alpha) {
   BezierCurveCut cut;
   cut.dimension = curve.controlPoints[0].size();
   for (const FuzzyPoint& p : curve.controlPoints) cut.ends.push_back(packedEnds(p, alpha));  // seed 003 eq. 3
-  for (const FuzzyNumber& w : curve.weights) {
-    cut.weights.push_back(w.alphaCut(alpha));
-    cut.crispWeights.push_back(coreMidpoint(w));
+  if (!curve.isRational()) return cut;
+  const std::size_t dim = cut.dimension;
+  for (std::size_t k = 0; k < curve.weights.size(); ++k) {
+    cut.weights.push_back(curve.weights[k].alphaCut(alpha));
+    const double w = coreMidpoint(curve.weights[k]);
+    CrispPoint h;
+    for (std::size_t c = 0; c < dim; ++c) h.push_back(w * cut.ends[k][dim + c]);
+    h.push_back(w);
+    cut.homogeneous.push_back(std::move(h));
   }
+  for (std::size_t c = 0; c < dim; ++c) cut.order.push_back(splitOrder(cut.ends, c, 1.0));
+  for (std::size_t c = 0; c < dim; ++c) cut.order.push_back(splitOrder(cut.ends, 2 * dim + c, -1.0));
   return cut;
 }
 

@@ -107,7 +107,12 @@ struct BezierCurveCut {
   std::size_t dimension = 0;
   std::vector<CrispPoint> ends;      // per control point: lower ends, core midpoints, upper ends
   std::vector<Interval> weights;     // rational only: the weights' cuts
-  std::vector<double> crispWeights;  // and their core midpoints
+  // Rational only, independent of u so built once per level: the homogeneous crisp points
+  // (w P, w) from the core midpoints, and per coordinate the control points ordered by their
+  // lower ends (order[c]) and by their upper ends descending (order[dimension + c]), the order
+  // the hull's splits run in.
+  std::vector<CrispPoint> homogeneous;
+  std::vector<std::vector<std::size_t>> order;
 };
 struct BezierSurfaceCut {
   std::size_t dimension = 0;

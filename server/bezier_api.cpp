@@ -57,13 +57,11 @@ ApiResponse evaluateCurveRoute(const ApiRequest& req, const BezierJsonLimits& li
                            {"points", std::move(points)}}};
 }
 
+// times, times_u, times_v: the shared integer rule (json_body.h optionalInteger); a value that is
+// not a number at all stays invalid_document.
 int integerField(const json& body, const char* key, int fallback) {
-  if (!body.contains(key)) return fallback;
-  requireNumber(body[key], key);
-  const std::optional<int64_t> n = integralNumber(body[key]);
-  if (!n || *n < 0 || *n > 1000000)
-    throw Error(errc::kInvalidParameter, std::string(key) + " must be a non-negative integer", key);
-  return static_cast<int>(*n);
+  if (body.contains(key)) requireNumber(body[key], key);
+  return static_cast<int>(optionalInteger(body, "", key, fallback, 0, 1000000));
 }
 
 ApiResponse elevateCurveRoute(const ApiRequest& req, const BezierJsonLimits& limits) {
