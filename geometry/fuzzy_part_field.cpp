@@ -254,7 +254,7 @@ bool FuzzyPartField::collapsedExcludes(const PartBox& box, const Vec3& p, bool i
   for (int round = 0; round < 3 && *evaluations < options_.evaluationBudget; ++round) {
     int open[kSlots], n = 0;
     Interval d[kSlots];
-    if (round == 0 && givenSlopes != nullptr) {
+    if (round == 0) {
       // Slopes over a box that holds this one hold over it (listed values may be single values).
       n = givenCount;
       std::copy(given, given + n, open);
@@ -566,17 +566,17 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
     int open[kSlots], openCount = 0;
     for (int j = 0; j < fuzzyCount_; ++j)
       if (width(slot(node.box, fuzzySlots_[j])) > 0.0) open[openCount++] = fuzzySlots_[j];
+    // (Where they cannot be bounded, the collapse tests cannot run either: they start from them.)
     Interval boxSlopes[kSlots];
-    ++evaluations;
-    const bool boxSlopesKnown =
-        openCount > 0 && insideOutsideSlopes(node.box, px, py, pz, open, openCount, boxSlopes);
-    if (boxSlopesKnown && narrowByDominance(&node.box, open, openCount, boxSlopes, inside)) {
-      node.ub = std::min(node.ub, upperBound(node.box));
-      if (prunes(node.ub)) continue;
+    if (openCount > 0) ++evaluations;
+    if (openCount > 0 && insideOutsideSlopes(node.box, px, py, pz, open, openCount, boxSlopes)) {
+      if (narrowByDominance(&node.box, open, openCount, boxSlopes, inside)) {
+        node.ub = std::min(node.ub, upperBound(node.box));
+        if (prunes(node.ub)) continue;
+      }
+      if (collapsedExcludes(node.box, p, inside, &evaluations, open, openCount, boxSlopes))
+        continue;
     }
-    if (collapsedExcludes(node.box, p, inside, &evaluations, open, openCount,
-                          boxSlopesKnown ? boxSlopes : nullptr))
-      continue;
     // The peak of the box: each value clamped towards its core maximises μ̂_i over the box, so a
     // witness there settles the box (m = its bound).
     double peak[kSlots], centre[kSlots];

@@ -142,11 +142,10 @@ class FuzzyPartField : public AlphaFieldSource {
   Search maxMin(const Vec3& p, bool inside) const;
   // Is the box excluded for the search (inside: no θ with F <= 1; else none with F > 1) once its
   // monotone values are collapsed to their ends? Adds its evaluations to *evaluations.
-  // slopes, when not null, holds ∂F/∂θ for the `count` slots `open` over a box that holds `box`
-  // (the first round then takes them instead of computing its own).
+  // slopes holds ∂F/∂θ for the `count` slots `open` over a box that holds `box` (the caller's,
+  // taken by the first round; the later rounds compute their own over the collapsed box).
   bool collapsedExcludes(const PartBox& box, const Vec3& p, bool inside, int* evaluations,
-                         const int* open = nullptr, int count = 0,
-                         const Interval* slopes = nullptr) const;
+                         const int* open, int count, const Interval* slopes) const;
   // Dominance narrowing (see the .cpp): narrows the box to the θ that no other θ of it beats, for
   // slopes d of the `count` slots `open` over the box; true when the box changed.
   bool narrowByDominance(PartBox* box, const int* open, int count, const Interval* d,

@@ -33,7 +33,7 @@ TEST(StoredGraphs, EqualLeavesShareAnIdAndWritesRebuild) {
   TempDir dir;
   auto store = Store::open(dir.file("fsdb.sqlite"));
   const auto create = [&](const json& doc, const std::string& kind) {
-    return store->create(prepareDocument(doc, kind, *store, DocumentLimits{1000}, "")).id;
+    return store->create(prepareDocument(doc, kind, *store, DocumentLimits{}, "")).id;
   };
   const int64_t rod = create({{"name", "rod"}, {"params", {{"a1", 1}, {"a3", 3}}}}, "part");
   const json sphere = {{"part", {{"text", "a sphere"}}}};
@@ -58,7 +58,7 @@ TEST(StoredGraphs, EqualLeavesShareAnIdAndWritesRebuild) {
   EXPECT_EQ(g1->leafDescriptors.size(), 2u);
   EXPECT_EQ(cache.graph(*store, shapes[0], versions, 1000), g1);  // served from the cache
   EXPECT_EQ(cache.builds(), 2u);
-  store->put(rod, prepareDocument({{"name", "rod"}, {"params", {{"a1", 2}, {"a3", 3}}}}, "part", *store, DocumentLimits{1000}, ""));
+  store->put(rod, prepareDocument({{"name", "rod"}, {"params", {{"a1", 2}, {"a3", 3}}}}, "part", *store, DocumentLimits{}, ""));
   versions = StoreVersions::read(*store);
   const auto again = cache.graph(*store, shapes[0], versions, 1000);
   EXPECT_NE(again, g1);  // the rod it reached has a new version
@@ -72,7 +72,7 @@ TEST(StoredGraphs, EqualLeavesShareAnIdAndWritesRebuild) {
 std::unique_ptr<Store> catalogue(const TempDir& dir, int n) {
   auto store = Store::open(dir.file("fsdb.sqlite"));
   const auto create = [&](const json& doc, const std::string& kind) {
-    return store->create(prepareDocument(doc, kind, *store, DocumentLimits{1000}, "")).id;
+    return store->create(prepareDocument(doc, kind, *store, DocumentLimits{}, "")).id;
   };
   create({{"name", "rod"}, {"params", {{"a1", 1}, {"a3", 3}}}}, "part");
   create({{"name", "plate"}, {"params", {{"a1", 2}, {"a2", 2}, {"a3", 0.2}}}}, "part");
