@@ -1,4 +1,4 @@
-// Speed of the structural match (query/common_subgraph.h) per pair of graphs: random trees of 10,
+// Speed of the structural match (query/structural/common_subgraph.h) per pair of graphs: random trees of 10,
 // 20, 40, 80 nodes (the exact tree DP) and small DAGs (the branch and bound, default 100 ms budget;
 // the "complete" counter is the fraction of pairs it finished). Random pairs, and a graph against a
 // copy of itself with noisy leaf similarities (the case a search meets for its best results).
@@ -6,8 +6,8 @@
 
 #include <random>
 
-#include "query/common_subgraph.h"
-#include "query/csg_graph.h"
+#include "query/structural/common_subgraph.h"
+#include "query/structural/csg_graph.h"
 #include "tests/testing/random_csg_graph.h"
 
 namespace {

@@ -1,12 +1,12 @@
-// Speed of reading CSG query texts (query/csg_query_text.h): a phrase list of n operands ("a sphere
+// Speed of reading CSG query texts (query/structural/csg_query_text.h): a phrase list of n operands ("a sphere
 // and a sphere and ...", one n-ary union) and a formula of n names ("cube + cube + ..."), n = 1000,
 // 3000, 9999. Both must grow linearly in n (each noun phrase once read from a single tokenisation).
 #include <benchmark/benchmark.h>
 
 #include <string>
 
-#include "query/csg_query_text.h"
-#include "query/vocabulary.h"
+#include "query/structural/csg_query_text.h"
+#include "query/linguistic/vocabulary.h"
 
 namespace {
 

@@ -1,6 +1,6 @@
-// Structural search speed (issue 6): POST /query/csg's search (server/csg_search.h) over N stored
+// Structural search speed: POST /query/csg's search (server/service/csg_search.h) over N stored
 // trees, pruned (signature and matrix bounds) against unpruned (every tree matched), in one run.
-// Goal: p50 < 200 ms at 10k trees with the stored graphs in memory (server/stored_graphs.h); the
+// Goal: p50 < 200 ms at 10k trees with the stored graphs in memory (server/service/stored_graphs.h); the
 // first query of a process (graphs built from the documents, in parallel) is reported apart as "cold",
 // after the same build done serially ("cold serial build").
 //
@@ -20,10 +20,10 @@
 
 #include "bench/bench_stats.h"
 #include "db/store.h"
-#include "query/vocabulary.h"
-#include "server/csg_search.h"
-#include "server/descriptor_rows.h"
-#include "server/documents.h"
+#include "query/linguistic/vocabulary.h"
+#include "server/service/csg_search.h"
+#include "server/service/descriptor_rows.h"
+#include "server/service/documents.h"
 
 namespace {
 

@@ -3,10 +3,10 @@
 // part's values against it (scoreDescriptors: what each candidate of a search costs).
 #include <benchmark/benchmark.h>
 
-#include "query/descriptors.h"
-#include "query/linguistic_query.h"
-#include "query/part_json.h"
-#include "query/vocabulary.h"
+#include "query/linguistic/descriptors.h"
+#include "query/linguistic/linguistic_query.h"
+#include "query/document/part_json.h"
+#include "query/linguistic/vocabulary.h"
 
 namespace {
 

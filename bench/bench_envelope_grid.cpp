@@ -1,4 +1,4 @@
-// Speed of the voxel envelopes (geometry/envelope_grid.h, issue 3): building the upper/lower
+// Speed of the voxel envelopes (geometry/voxel/envelope_grid.h): building the upper/lower
 // grids of a ball whose support r3 = 1 spans a grid of N = 64, 128, 256 voxels (h = 2/N),
 // fuzzy (tri(0.6, 0.8, 1.0): the shell 0.6..1 is a volume of voxels) and crisp (radius 1: only
 // the surface blocks hold voxels); the volumes at 11 levels; the union of two such balls; and,

@@ -1,4 +1,4 @@
-// Speed of evaluating superquadric parts and CSG assemblies on envelope grids (issue 3): the
+// Speed of evaluating superquadric parts and CSG assemblies on envelope grids: the
 // whole path of POST /evaluate after parsing: FuzzyPartField / CsgField sources sampled by
 // EnvelopeGrid::build (block pruning with interval bounds, TBB), at N voxels along the longest
 // side of the bounding box, for
@@ -8,7 +8,7 @@
 // tapered, twisted part (every value fuzzy) is timed on grids by bench_fuzzy_part_field
 // (BM_DeformedPartGrid).
 // Counters: active voxels, tiles, memory of both grids, time per active voxel.
-// The goals of issue 3: 256/128 time ratio <= 4.5, per-active-voxel cost <= 3x
+// Goals: 256/128 time ratio <= 4.5, per-active-voxel cost <= 3x
 // createLevelSetSphere, the 10-part assembly at 256 in under 1 s.
 #include <benchmark/benchmark.h>
 
@@ -16,8 +16,8 @@
 #include <memory>
 
 #include "bench/grid_bench.h"
-#include "geometry/csg_field.h"
-#include "geometry/fuzzy_part_field.h"
+#include "geometry/field/csg_field.h"
+#include "geometry/field/fuzzy_part_field.h"
 
 namespace fsdb {
 namespace {
@@ -75,7 +75,7 @@ void BM_OpenVdbLevelSetSphere(benchmark::State& state) {
   bench::timeLevelSetSphere(state, 1.0f, Vec3{0, 0, 0}, static_cast<float>(h));
 }
 
-// Resolutions: the issue's 64..512 for the sphere and the assembly (its parts are monotone in
+// Resolutions: 64..512 for the sphere and the assembly (its parts are monotone in
 // their one fuzzy value almost everywhere, so the corner shortcut of fuzzy_part_field.h answers
 // most band voxels without a search).
 BENCHMARK(BM_CrispSpherePart)->Arg(64)->Arg(128)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond)->UseRealTime();

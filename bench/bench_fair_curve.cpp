@@ -1,14 +1,14 @@
-// Candidate generation of seed 002 fair curves (geometry/fair_candidates.h) for 4, 16, 64 points
-// on a closed, slightly irregular loop: first estimation, each point's fuzzy set sampled at 180
-// angles and defuzzified by local maxima, every candidate scored (AND over the points). The
-// "WithCurves" variant also builds and samples the returned curves (32 points a piece), as
-// POST /curves/fair does.
+// Candidate generation of fair curves (Bernardes, Wu & D'Ottaviano;
+// geometry/curves/fair_candidates.h) for 4, 16, 64 points on a closed, slightly irregular loop:
+// first estimation, each point's fuzzy set sampled at 180 angles and defuzzified by local maxima,
+// every candidate scored (AND over the points). The "WithCurves" variant also builds and samples
+// the returned curves (32 points a piece), as POST /curves/fair does.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 
-#include "geometry/fair_candidates.h"
-#include "geometry/fair_curve.h"
+#include "geometry/curves/fair_candidates.h"
+#include "geometry/curves/fair_curve.h"
 
 namespace {
 

@@ -1,11 +1,11 @@
-// Speed of fuzzy Bézier evaluation (geometry/fuzzy_bezier.h): one point of the three curves at
+// Speed of fuzzy Bézier evaluation (geometry/curves/fuzzy_bezier.h): one point of the three curves at
 // one level for polynomial and rational curves of n control points (the cost an HTTP request
 // pays per u value; --max-control-points bounds n), and one point of a 16 x 16 surface.
 #include <benchmark/benchmark.h>
 
 #include <random>
 
-#include "geometry/fuzzy_bezier.h"
+#include "geometry/curves/fuzzy_bezier.h"
 
 namespace {
 

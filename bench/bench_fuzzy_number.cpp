@@ -6,9 +6,9 @@
 #include <cmath>
 #include <vector>
 
-#include "geometry/defuzzify.h"
-#include "geometry/fuzzy_arithmetic.h"
-#include "geometry/fuzzy_similarity.h"
+#include "geometry/fuzzy/defuzzify.h"
+#include "geometry/fuzzy/fuzzy_arithmetic.h"
+#include "geometry/fuzzy/fuzzy_similarity.h"
 
 namespace {
 

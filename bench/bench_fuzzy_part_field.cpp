@@ -1,5 +1,5 @@
-// Speed of the alpha field of one fuzzy superquadric part (geometry/fuzzy_part_field.h; fsdb issue
-// 3): ns per levelsAt at points inside, outside and on the boundary band, for a crisp unit sphere,
+// Speed of the alpha field of one fuzzy superquadric part (geometry/field/fuzzy_part_field.h): ns
+// per levelsAt at points inside, outside and on the boundary band, for a crisp unit sphere,
 // a fuzzy sphere (a1 = tri(0.8, 1, 1.2)) and a fuzzy bent, tapered, twisted, placed part (every
 // value spread by a few percent); and ns per boundsOver on blocks of edge 0.1 around the part.
 // Points and blocks are fixed (seed 1). BM_FuzzyDeformationsGrid: the part with only its four
@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "bench/grid_bench.h"
-#include "geometry/fuzzy_part_field.h"
+#include "geometry/field/fuzzy_part_field.h"
 #include "tests/testing/fuzzy_bench_part.h"
 
 namespace fsdb {
@@ -30,7 +30,7 @@ FuzzyPart fuzzySphere() {
 
 FuzzyPart fuzzyDeformed() { return testing::allValuesFuzzyPart(); }
 
-// The issue's "fuzzy bent, tapered, twisted part": the same part with only its four deformation
+// A "fuzzy bent, tapered, twisted part": the same part with only its four deformation
 // values fuzzy (taper kx, ky, bend kv, twist t: "a slightly bent, tapered, twisted bar"), the
 // other ten crisp at the cores above.
 FuzzyPart fuzzyDeformations() {
@@ -161,8 +161,7 @@ BENCHMARK(BM_DeformedPartGrid)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// The part with only its deformation values fuzzy at N = 64 ... 512 (the resolutions of issue 3's
-// bench list), one iteration each.
+// The part with only its deformation values fuzzy at N = 64 ... 512, one iteration each.
 void BM_FuzzyDeformationsGrid(benchmark::State& state) {
   const FuzzyPartField field(fuzzyDeformations());
   const double h = bench::voxelSizeAcross(field, static_cast<double>(state.range(0)));

@@ -1,4 +1,4 @@
-// Linguistic search speed (issue 5): POST /query/linguistic's search (server/linguistic_search.h)
+// Linguistic search speed: POST /query/linguistic's search (server/service/linguistic_search.h)
 // on catalogues of N random parts, the descriptor index's candidates against the full scan, in
 // one run. Goals: p50 < 50 ms at 1M parts, indexed >= 10x faster than the scan.
 //
@@ -21,11 +21,11 @@
 
 #include "bench/bench_stats.h"
 #include "db/store.h"
-#include "query/linguistic_query.h"
-#include "query/part_json.h"
-#include "query/vocabulary.h"
-#include "server/documents.h"
-#include "server/linguistic_search.h"
+#include "query/linguistic/linguistic_query.h"
+#include "query/document/part_json.h"
+#include "query/linguistic/vocabulary.h"
+#include "server/service/documents.h"
+#include "server/service/linguistic_search.h"
 
 namespace {
 

@@ -10,12 +10,12 @@
 #include <utility>
 #include <vector>
 
-#include "geometry/bezier_operator.h"
-#include "geometry/blending.h"
-#include "geometry/operator_catalog.h"
-#include "geometry/smooth_absolute.h"
-#include "geometry/step_functions.h"
-#include "geometry/tnorms.h"
+#include "geometry/operators/bezier_operator.h"
+#include "geometry/operators/blending.h"
+#include "geometry/operators/operator_catalog.h"
+#include "geometry/operators/smooth_absolute.h"
+#include "geometry/operators/step_functions.h"
+#include "geometry/operators/tnorms.h"
 
 namespace fsdb {
 namespace {

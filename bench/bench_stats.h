@@ -14,7 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "geometry/error.h"
+#include "geometry/core/error.h"
 
 namespace fsdb::bench {
 

@@ -1,5 +1,5 @@
 // Speed of evaluating crisp superquadric parts at world points: the inner loop of voxel
-// evaluation (SPEC §3). Reports ns per call for a plain sphere and for a bent, tapered,
+// evaluation (docs/api.md §3). Reports ns per call for a plain sphere and for a bent, tapered,
 // twisted, placed part, for both the inside-outside value and the pseudo distance. The
 // Prepared variants are what a voxel loop uses; the Placed ones rebuild the rotation per call.
 #include <benchmark/benchmark.h>
@@ -7,8 +7,8 @@
 #include <random>
 #include <vector>
 
-#include "geometry/placed_superquadric.h"
-#include "geometry/superquadric.h"
+#include "geometry/superquadric/placed_superquadric.h"
+#include "geometry/superquadric/superquadric.h"
 
 namespace fsdb {
 namespace {

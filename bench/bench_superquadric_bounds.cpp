@@ -9,8 +9,8 @@
 #include <random>
 #include <vector>
 
-#include "geometry/placed_superquadric.h"
-#include "geometry/superquadric_bounds.h"
+#include "geometry/superquadric/placed_superquadric.h"
+#include "geometry/superquadric/superquadric_bounds.h"
 
 namespace fsdb {
 namespace {

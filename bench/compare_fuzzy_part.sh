@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Base-against-new timing of the alpha-field benches of fsdb issue 3 in one run, alternating the
+# Base-against-new timing of the alpha-field benches in one run, alternating the
 # two builds so that load from other work on the machine hits both alike. Prints one line per run
 # (wall and process CPU from /usr/bin/time, the bench's counters) and then the medians.
 #   bench/compare_fuzzy_part.sh BASE_BUILD NEW_BUILD [REPEATS] [SIZES]

@@ -7,8 +7,8 @@
 
 #include <algorithm>
 
-#include "geometry/envelope_grid.h"
-#include "geometry/envelope_grid_vdb.h"
+#include "geometry/voxel/envelope_grid.h"
+#include "geometry/voxel/envelope_grid_vdb.h"
 
 namespace fsdb::bench {
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 
 #include "db/sqlite.h"
-#include "geometry/error.h"
+#include "geometry/core/error.h"
 
 namespace fsdb {
 

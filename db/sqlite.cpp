@@ -3,7 +3,7 @@
 
 #include <sqlite3.h>
 
-#include "geometry/error.h"
+#include "geometry/core/error.h"
 
 namespace fsdb::sqlite {
 

@@ -13,7 +13,7 @@
 #include "db/descriptor_index.h"
 #include "db/migrations.h"
 #include "db/sqlite.h"
-#include "geometry/error.h"
+#include "geometry/core/error.h"
 
 namespace fsdb {
 

@@ -1,5 +1,6 @@
 #pragma once
-// Store: fsdb's database of parts and shapes (seed 004 §4; SPEC §2, §4) on one SQLite file.
+// Store: fsdb's database of parts and shapes (Zhang, Pham & Chen, §4; docs/api.md §2, §4) on one
+// SQLite file.
 //
 // Model
 // - Every stored thing is an *object*: a system id (INTEGER, AUTOINCREMENT: never reused, not
@@ -10,9 +11,9 @@
 // - References: a shape's tree names parts and shapes ("part":"bolt", "ref":"wheel", or an id).
 //   The store resolves each to an object id inside the write transaction and records the edge
 //   (parent -> child) for the parent's latest version, so a part used by a thousand trees is
-//   stored once (shared subtrees, seed 004 §4). A reference always means the child's latest
-//   version. Unknown references are 422 unknown_reference (path = the reference's JSON path);
-//   an edge that would close a cycle is 422 reference_cycle.
+//   stored once (shared subtrees; Zhang, Pham & Chen, §4). A reference always means the child's
+//   latest version. Unknown references are 422 unknown_reference (path = the reference's JSON
+//   path); an edge that would close a cycle is 422 reference_cycle.
 // - Normalised columns beside the document: per version, the fuzzy parameters of a part
 //   (support and core of each, for SQL prefilters) and the CSG nodes of a shape (for structural
 //   search). The caller (server/, which owns the parsers) computes them; the store only keeps them.
@@ -28,7 +29,7 @@
 //   pool (WAL lets readers run beside the one writer).
 // - Migrations (schema/migrations/NNN_*.sql, compiled into the binary) are applied in order at
 //   open(), each in its own transaction; the applied version is PRAGMA user_version.
-// Errors are fsdb::Error with the codes of geometry/error.h: not_found (404), conflict (409: name
+// Errors are fsdb::Error with the codes of geometry/core/error.h: not_found (404), conflict (409: name
 // taken on create, name change on put), in_use (409: delete of a referenced object without
 // cascade), unknown_reference / reference_cycle (422), storage_error (503: SQLite failures).
 #include <cstdint>
@@ -69,13 +70,13 @@ struct CsgNodeRow {
 // One descriptor of one component in normalised form: the support [supportLo, supportHi] and
 // core [coreLo, coreHi] of the component's fuzzy degree (migration 002, descriptor index).
 struct DescriptorSpan {
-  std::string descriptor;  // "squariness", ... (query/descriptors.h descriptorNames())
+  std::string descriptor;  // "squariness", ... (query/linguistic/descriptors.h descriptorNames())
   double supportLo = 0, coreLo = 0, coreHi = 0, supportHi = 0;
 };
 
 // The descriptor rows of one component of an object: a part has one (component 0), a shape one
 // per leaf of its resolved tree. `values` holds the exact values in the caller's encoding
-// (server/descriptor_rows.h); the store keeps it as given.
+// (server/service/descriptor_rows.h); the store keeps it as given.
 struct DescriptorComponent {
   int component = 0;
   std::vector<DescriptorSpan> spans;
@@ -139,7 +140,7 @@ struct StoreOptions {
 };
 
 // A support test of the descriptor index: which rows of `descriptor` a prefilter wants (the
-// store's side of query/descriptor_prefilter.h SupportTest). A crisp row (support_lo ==
+// store's side of query/linguistic/descriptor_prefilter.h SupportTest). A crisp row (support_lo ==
 // support_hi = x) passes when x is in [lo, hi], each end only when included; a wide row when
 // support_lo <= hi and support_hi >= lo, both strict when wideStrict.
 struct DescriptorOverlap {
@@ -160,7 +161,7 @@ struct DescriptorCandidate {
 // One range scan of the descriptor index (db/descriptor_index.h): the rows of one descriptor and
 // width class with support_lo in [fromLo, toLo] and support_hi >= leastHi. A DescriptorOverlap is
 // the union of one such range per width class (Store::descriptorRanges); the level scan of the
-// linguistic search reads pieces of them, best bound first (server/linguistic_search.h).
+// linguistic search reads pieces of them, best bound first (server/service/linguistic_search.h).
 struct DescriptorRange {
   std::string descriptor;
   int widthClass = 0;
@@ -227,7 +228,7 @@ class Store {
   // Ids of the objects whose latest version reaches `id` through references (not `id` itself).
   std::vector<int64_t> dependents(int64_t id) const;
 
-  // --- The descriptor index (migration 002; issue 5) ---
+  // --- The descriptor index (migration 002) ---
   // Writes keep it in step: create and put replace the object's rows with NewObject::descriptors
   // in the write transaction (delete removes them by cascade). Rows may be stale where the store
   // cannot know them: a put of X marks every object reaching X pending (its components changed),
@@ -248,7 +249,7 @@ class Store {
   // Sorted ids of every live object of `kind` (the full scan's candidates).
   std::vector<int64_t> objectIds(const std::string& kind) const;
   // Every live object of `kind` by id with its name and latest version, in one read (structural
-  // search: which cached graphs are still current, server/csg_search.h).
+  // search: which cached graphs are still current, server/service/csg_search.h).
   std::vector<ObjectVersion> objectVersions(const std::string& kind) const;
   // The objects of `kind` among `ids`, in the order given (ids of other kinds or deleted are skipped).
   std::vector<IndexedObject> indexedObjects(const std::string& kind, const std::vector<int64_t>& ids) const;

@@ -1,5 +1,5 @@
 -- 001_init: the store of db/store.h. Later migrations (002_..., compiled in the same way) add
--- room for the descriptor index and curves of later issues; this one holds objects, their
+-- room for the descriptor index and curves; this one holds objects, their
 -- versions, the reference graph, normalised columns for prefilters and the evaluation cache.
 
 -- One row per live object. AUTOINCREMENT so an id is never reused, even after a delete: a

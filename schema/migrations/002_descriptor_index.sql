@@ -1,5 +1,5 @@
--- 002_descriptor_index: the linguistic descriptor index of issue 5 (SPEC §5, seed 004 §5).
--- For each live part and shape, the fuzzy value of every descriptor (query/descriptors.h:
+-- 002_descriptor_index: the linguistic descriptor index (docs/api.md §5; Zhang, Pham & Chen, §5).
+-- For each live part and shape, the fuzzy value of every descriptor (query/linguistic/descriptors.h:
 -- squariness, roundness, ..., elongation) of every component, so POST /query/linguistic can
 -- prefilter candidates in SQL by support overlap (the derivation principle of SQLf: a fuzzy
 -- condition can only be satisfied to a degree > 0 where the value's support meets the condition's
@@ -43,7 +43,7 @@ CREATE TABLE descriptor_classes (
   PRIMARY KEY (descriptor, width_class)
 ) WITHOUT ROWID;
 
--- The exact descriptor values of each component, encoded by the server (server/descriptor_rows.h),
+-- The exact descriptor values of each component, encoded by the server (server/service/descriptor_rows.h),
 -- so scoring a candidate part reads one row instead of parsing and describing its document.
 CREATE TABLE descriptor_values (
   object_id INTEGER NOT NULL REFERENCES objects (id) ON DELETE CASCADE,

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "db/sqlite.h"
-#include "geometry/error.h"
+#include "geometry/core/error.h"
 #include "tests/db/expect_error.h"
 #include "tests/db/temp_dir.h"
 

@@ -10,7 +10,7 @@
 #include "db/content_hash.h"
 #include "db/migrations.h"
 #include "db/sqlite.h"
-#include "geometry/error.h"
+#include "geometry/core/error.h"
 #include "tests/db/expect_error.h"
 #include "tests/db/temp_dir.h"
 

@@ -1,8 +1,8 @@
 #pragma once
-// Test helpers for AlphaFieldSource (geometry/alpha_field.h): sampleBlock lattices, bounds checks.
+// Test helpers for AlphaFieldSource (geometry/field/alpha_field.h): sampleBlock lattices, bounds checks.
 #include <gtest/gtest.h>
 
-#include "geometry/alpha_field.h"
+#include "geometry/field/alpha_field.h"
 
 // An 8³ lattice of voxel centres from `first`, spacing h.
 inline fsdb::BlockLattice latticeAt(const fsdb::Vec3& first, double h) {
@@ -39,8 +39,8 @@ inline ::testing::AssertionResult levelsWithin(const fsdb::AlphaLevels& v, const
                                        << b.lowerMax << "]";
 }
 
-// Does a point's pair keep lower(α) ⊆ upper(α) for every α, i.e. l <= 1 ⇒ u = 1 (SPEC §3;
-// geometry/node_operator.h)? Nesting in α holds for any pair (upper(α) = {u >= α} shrinks,
+// Does a point's pair keep lower(α) ⊆ upper(α) for every α, i.e. l <= 1 ⇒ u = 1 (docs/api.md §3;
+// geometry/field/node_operator.h)? Nesting in α holds for any pair (upper(α) = {u >= α} shrinks,
 // lower(α) = {l <= α} grows).
 inline ::testing::AssertionResult lowerInsideUpper(const fsdb::AlphaLevels& v) {
   if (v.lower > 1.0f || v.upper == 1.0f) return ::testing::AssertionSuccess();

@@ -1,7 +1,7 @@
 #pragma once
-// FuzzyBall: an analytic AlphaFieldSource (geometry/alpha_field.h) for the voxel tests and
+// FuzzyBall: an analytic AlphaFieldSource (geometry/field/alpha_field.h) for the voxel tests and
 // benches: a ball of centre c and triangular fuzzy radius tri(r1, r2, r3), r1 ≤ r2 ≤ r3.
-// At level α its radius interval is [r1 + α(r2 − r1), r3 − α(r3 − r2)], so (SPEC §3)
+// At level α its radius interval is [r1 + α(r2 − r1), r3 − α(r3 − r2)], so (docs/api.md §3)
 //   upper(α) = ball of radius r3 − α(r3 − r2),  lower(α) = ball of radius r1 + α(r2 − r1),
 // and with d = |p − c|:
 //   u = 1 (d ≤ r2), (r3 − d)/(r3 − r2) (r2 < d < r3), 0 (d ≥ r3);
@@ -11,7 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/alpha_field.h"
+#include "geometry/field/alpha_field.h"
 
 namespace fsdb {
 

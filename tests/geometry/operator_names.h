@@ -1,9 +1,9 @@
 #pragma once
-// The binary operators of the catalogue (geometry/operator_catalog.h) for the node tests.
+// The binary operators of the catalogue (geometry/operators/operator_catalog.h) for the node tests.
 #include <string>
 #include <vector>
 
-#include "geometry/operator_catalog.h"
+#include "geometry/operators/operator_catalog.h"
 
 // Every fuzzy_operator and blend of the catalogue, zadeh included.
 inline std::vector<std::string> binaryOperatorNames() {

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <random>
 
-#include "geometry/superquadric_bounds.h"
-#include "geometry/superquadric_slopes.h"
-#include "random_superquadric.h"
+#include "geometry/superquadric/superquadric_bounds.h"
+#include "geometry/superquadric/superquadric_slopes.h"
+#include "tests/geometry/random_superquadric.h"
 
 namespace fsdb {
 namespace testing {

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <random>
 
-#include "geometry/superquadric.h"
-#include "geometry/vec3.h"
+#include "geometry/superquadric/superquadric.h"
+#include "geometry/core/vec3.h"
 
 namespace fsdb {
 namespace testing {
@@ -23,7 +23,8 @@ inline SuperquadricParams makeParams(double e1, double e2, double a1, double a2,
 }
 
 // Valid parameters with every deformation active. When `injectiveBend` is set, kv is small
-// enough for bendIsInjectiveOnPart; otherwise it may reach 0.95·π/C, the edge of the SPEC range.
+// enough for bendIsInjectiveOnPart; otherwise it may reach 0.95·π/C, the edge of the documented
+// range.
 inline SuperquadricParams randomParams(std::mt19937_64& rng, bool injectiveBend) {
   std::uniform_real_distribution<double> eps(0.1, 4.0), size(0.2, 5.0), ratio(0.2, 3.0),
       taper(-1.0, 1.0), twist(-6.0, 6.0), unit(-0.95, 0.95);

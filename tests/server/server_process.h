@@ -1,6 +1,6 @@
 #pragma once
 // Test helper: runs the real `fsdb serve --port 0` as a child process, reads the port from the
-// first stdout line (SPEC §1), and talks to it with an httplib client. The destructor kills
+// first stdout line (docs/api.md §1), and talks to it with an httplib client. The destructor kills
 // and reaps the child, so a failing test never leaves a server behind. Extra arguments
 // (--db, --token, limits) go after `serve --port 0`; kill9() simulates a crash, and a new
 // ServerProcess with the same --db is a restart; without --db it gets a temporary database.

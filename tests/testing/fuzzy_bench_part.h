@@ -1,8 +1,8 @@
 #pragma once
-// The fuzzy bent, tapered, twisted, placed part of the issue 3 benchmarks
+// The fuzzy bent, tapered, twisted, placed part of the alpha-field benchmarks
 // (bench/bench_fuzzy_part_field.cpp) and of the tests that hold its grid to the definitions: all
 // fourteen values fuzzy, each a symmetric triangle of about ±5 % around its core.
-#include "geometry/fuzzy_part.h"
+#include "geometry/superquadric/fuzzy_part.h"
 
 namespace fsdb::testing {
 

@@ -1,11 +1,11 @@
 #pragma once
-// Random CSG graphs (query/csg_graph.h) and leaf similarity matrices for property tests and the
+// Random CSG graphs (query/structural/csg_graph.h) and leaf similarity matrices for property tests and the
 // matching bench. Always seeded by the caller (std::mt19937), so failures reproduce.
 #include <random>
 #include <vector>
 
-#include "query/common_subgraph.h"
-#include "query/csg_graph.h"
+#include "query/structural/common_subgraph.h"
+#include "query/structural/csg_graph.h"
 
 namespace fsdb::testing {
 

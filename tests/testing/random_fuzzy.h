@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "geometry/fuzzy_number.h"
+#include "geometry/fuzzy/fuzzy_number.h"
 
 namespace fsdb::testing {
 

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "geometry/error.h"
+#include "geometry/core/error.h"
 
 namespace fsdb::test {
 

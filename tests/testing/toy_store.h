@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "query/shape_json.h"
+#include "query/document/shape_json.h"
 
 namespace fsdb::testing {
 

@@ -1,0 +1,22 @@
+#pragma once
+// Similarity of fuzzy numbers (Zhang, Pham & Chen, §5; docs/api.md §5): how well a fuzzy datum
+// satisfies a fuzzy condition, the score behind linguistic and CSG queries.
+//
+//   S(A, B) = min(|A ∩ B| / |A|, |A ∩ B| / |B|),  ∩ = min,  |.| = area under the membership.
+//
+// S is in [0, 1], symmetric, S(A, A) = 1 and S = 0 when the supports do not overlap (or touch
+// only at a point). A crisp value has zero area; the paper's rule then applies: "the
+// similarity measure degenerates to the membership degree to which the crisp value belongs to
+// the condition fuzzy set", S(x, B) = mu_B(x); two crisp values are 1 if equal, else 0. Both
+// rules are the height of A ∩ B (sup of min(mu_A, mu_B)), which is what is used whenever
+// either side has zero area (this also covers memberships made only of vertical spikes).
+#include "geometry/fuzzy/fuzzy_number.h"
+
+namespace fsdb {
+
+// Exact area under min(mu_A, mu_B) (breakpoints of both plus the points where they cross).
+double cardinalityOfIntersection(const FuzzyNumber& a, const FuzzyNumber& b);
+
+double similarity(const FuzzyNumber& a, const FuzzyNumber& b);
+
+}  // namespace fsdb

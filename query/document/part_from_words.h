@@ -1,0 +1,31 @@
+#pragma once
+// Parts described by words (docs/api.md §2: {"kind":"part","text":"a slightly bent cylinder"}): the
+// noun gives the base parameters (vocabulary "nouns.*.params"), each adjective sets the
+// parameters its descriptor reads to the fuzzy degree its words mean, through the inverse of
+// the descriptor function (the "create" rules of schema/vocabulary.json):
+//   squariness  eps1 = eps2 = 1 − 0.95·d      roundness  eps1 = eps2 = 0.05 + 0.95·d
+//   bevelness   eps1 = eps2 = 1 + d            pinchness  eps1 = eps2 = 2 + 2·d
+//   elongation  a2 = 1, a3 = 2d (d < 1/2) or 1 / (2 − 2d), d clamped to [0.02, 0.98]
+//   bendness    kv = d·π / (2C)                taperness  kx = ky = −d (narrowing towards +z)
+//   twistness   t = π·d
+//   size        transform.scale = (d / (1 − d)) / L, d clamped to [0.05, 0.95]
+// with C and L (query/linguistic/descriptors.h) of the part so far (core midpoints). The degree d is the
+// intensity's set ("slightly bent": `slightly`), else the adjective's own "create", else the
+// vocabulary's plain "create" set; low-pole adjectives ("flat", "small") mirror the intensity and
+// plain sets (d → 1 − d; an adjective's own "create" is its degree as written). Adjectives act in
+// the order of the table above (shape, proportions, deformations, size), whatever their order in
+// the text, so a bend is measured on the final length. Affine rules are exact; elongation and
+// size map the set's breakpoints (exact there, linear between).
+// Errors: fsdb::Error(errc::kInvalidParameter, path "text"): the parser's (unknown words with the
+// closest known ones, position, expected words), a noun without a shape ("shape", "part": say
+// which primitive), and parameters outside the ranges of docs/api.md §2.
+#include <string>
+
+#include "geometry/superquadric/fuzzy_part.h"
+
+namespace fsdb {
+class Vocabulary;
+
+FuzzyPart partFromWords(const std::string& text, const Vocabulary& vocabulary);
+
+}  // namespace fsdb

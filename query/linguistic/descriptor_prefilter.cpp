@@ -1,0 +1,245 @@
+// See query/linguistic/descriptor_prefilter.h.
+#include "query/linguistic/descriptor_prefilter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <limits>
+
+namespace fsdb {
+namespace {
+
+using Kind = PrefilterPlan::Kind;
+
+PrefilterPlan leaf(Kind kind) {
+  PrefilterPlan plan;
+  plan.kind = kind;
+  return plan;
+}
+
+// A kAnd / kOr of already simplified children.
+PrefilterPlan combine(Kind kind, std::vector<PrefilterPlan> children) {
+  const Kind absorbing = kind == Kind::kAnd ? Kind::kNone : Kind::kAll;  // decides the whole node
+  const Kind neutral = kind == Kind::kAnd ? Kind::kAll : Kind::kNone;    // drops out
+  PrefilterPlan plan = leaf(kind);
+  for (PrefilterPlan& child : children) {
+    if (child.kind == absorbing) return leaf(absorbing);
+    if (child.kind == neutral) continue;
+    if (child.kind == kind) {  // (a and b) and c: one level
+      for (PrefilterPlan& grandchild : child.children) plan.children.push_back(std::move(grandchild));
+    } else {
+      plan.children.push_back(std::move(child));
+    }
+  }
+  if (plan.children.empty()) return leaf(neutral);
+  if (plan.children.size() == 1) return std::move(plan.children.front());
+  return plan;
+}
+
+PrefilterPlan planOf(const QueryCondition& condition, bool andNeedsAll, bool forParts) {
+  switch (condition.kind) {
+    case QueryCondition::Kind::kDescriptor: {
+      PrefilterPlan plan = leaf(Kind::kOverlap);
+      plan.test = supportTest(condition.descriptor, condition.set);
+      plan.set = condition.set;
+      return plan;
+    }
+    case QueryCondition::Kind::kAnd:
+    case QueryCondition::Kind::kOr: {
+      std::vector<PrefilterPlan> children;
+      for (const QueryCondition& child : condition.children) children.push_back(planOf(child, andNeedsAll, forParts));
+      const bool all = condition.kind == QueryCondition::Kind::kAnd && andNeedsAll;
+      return combine(all ? Kind::kAnd : Kind::kOr, std::move(children));
+    }
+    case QueryCondition::Kind::kNot:
+      return leaf(Kind::kAll);
+    case QueryCondition::Kind::kRelation:
+      return leaf(forParts ? Kind::kNone : Kind::kAll);
+  }
+  return leaf(Kind::kAll);
+}
+
+constexpr double kSlack = 1e-9;  // bounds are raised by this against rounding
+
+double raised(double bound) { return std::min(1.0, bound + kSlack); }
+
+// Children (by id) combined: the intersection with the min of the bounds, or the union with the
+// bounded sum.
+std::vector<Candidate> combineCandidates(const std::vector<Candidate>& a, const std::vector<Candidate>& b, bool all) {
+  std::vector<Candidate> out;
+  size_t i = 0, j = 0;
+  while (i < a.size() || j < b.size()) {
+    if (j == b.size() || (i < a.size() && a[i].id < b[j].id)) {
+      if (!all) out.push_back(a[i]);
+      ++i;
+    } else if (i == a.size() || b[j].id < a[i].id) {
+      if (!all) out.push_back(b[j]);
+      ++j;
+    } else {
+      out.push_back({a[i].id, all ? std::min(a[i].bound, b[j].bound) : std::min(1.0, a[i].bound + b[j].bound)});
+      ++i;
+      ++j;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+SupportTest supportTest(const std::string& descriptor, const FuzzyNumber& set) {
+  const Interval support = set.support();
+  SupportTest test;
+  test.descriptor = descriptor;
+  test.lo = support.lo;
+  test.hi = support.hi;
+  test.loIncluded = set.membership(support.lo) > 0;
+  test.hiIncluded = set.membership(support.hi) > 0;
+  test.wideStrict = set.cardinality() > 0;
+  return test;
+}
+
+bool admits(const SupportTest& test, double slo, double shi) {
+  if (slo == shi) {
+    const double x = slo;
+    return (x > test.lo || (x == test.lo && test.loIncluded)) && (x < test.hi || (x == test.hi && test.hiIncluded));
+  }
+  if (test.wideStrict) return slo < test.hi && shi > test.lo;
+  return slo <= test.hi && shi >= test.lo;
+}
+
+double membershipIntegral(const FuzzyNumber& set, double lo, double hi) {
+  const std::vector<Breakpoint>& p = set.breakpoints();
+  double area = 0;
+  for (size_t k = 1; k < p.size(); ++k) {
+    const double x0 = std::max(lo, p[k - 1].x), x1 = std::min(hi, p[k].x);
+    if (!(x1 > x0)) continue;
+    const double slope = (p[k].mu - p[k - 1].mu) / (p[k].x - p[k - 1].x);
+    const double m0 = p[k - 1].mu + slope * (x0 - p[k - 1].x), m1 = p[k - 1].mu + slope * (x1 - p[k - 1].x);
+    area += 0.5 * (m0 + m1) * (x1 - x0);
+  }
+  return area;
+}
+
+double scoreBound(const PrefilterPlan& leaf, double supportLo, double supportHi, bool pending) {
+  if (pending) return 1;
+  if (supportLo == supportHi) return raised(leaf.set.membership(supportLo));
+  const double setArea = leaf.set.cardinality();
+  if (!(setArea > 0)) return 1;
+  return raised(membershipIntegral(leaf.set, supportLo, supportHi) / setArea * (1 + kSlack));
+}
+
+namespace {
+
+double maxMembership(const FuzzyNumber& set, double lo, double hi) {
+  double m = std::max(set.membership(lo), set.membership(hi));
+  for (const Breakpoint& p : set.breakpoints())
+    if (p.x >= lo && p.x <= hi) m = std::max(m, p.mu);
+  return m;
+}
+
+}  // namespace
+
+std::vector<LevelPiece> levelPieces(const PrefilterPlan& leaf, double maxWidth, double fromLo, double toLo) {
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> cuts;  // each piece starts at fromLo or at a cut in (fromLo, toLo]
+  for (double level : {1.0, 0.9, 0.75, 0.5, 0.25, 0.1}) {
+    const Interval cut = leaf.set.alphaCut(level);
+    for (double end : {cut.lo, std::nextafter(cut.hi, inf)}) {
+      cuts.push_back(end);
+      if (maxWidth > 0) cuts.push_back(end - maxWidth);
+    }
+  }
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  std::vector<LevelPiece> pieces;
+  const double setArea = leaf.set.cardinality();
+  double start = fromLo;
+  auto close = [&](double end) {  // the piece [start, end]
+    LevelPiece piece{start, end, 1};
+    if (maxWidth == 0) {
+      piece.bound = raised(maxMembership(leaf.set, start, end));
+    } else if (setArea > 0) {
+      // The widest support the piece holds ends at end + maxWidth; one ulp more against rounding
+      // of support_hi - support_lo (widthClass).
+      const double reach = std::nextafter(end + maxWidth * (1 + 1e-12), inf);
+      piece.bound = raised(membershipIntegral(leaf.set, start, reach) / setArea * (1 + kSlack));
+    }
+    pieces.push_back(piece);
+  };
+  for (double cut : cuts) {
+    if (!(cut > start) || cut > toLo) continue;
+    close(std::nextafter(cut, -inf));
+    start = cut;
+  }
+  close(toLo);
+  return pieces;
+}
+
+bool aggregationNeedsAll(const std::string& aggregation) {
+  // Every t-norm T has T(0, x) = 0; the names are those of the operator catalogue and the
+  // common spellings of the product.
+  static const std::vector<std::string> tnorms = {"min", "zadeh", "product", "algebraic", "lukasiewicz",
+                                                  "einstein", "hamacher", "dombi", "yager", "weber",
+                                                  "dubois_prade", "drastic"};
+  return std::find(tnorms.begin(), tnorms.end(), aggregation) != tnorms.end();
+}
+
+PrefilterPlan prefilterPlan(const LinguisticQuery& query, const std::string& kind) {
+  return planOf(query.root, aggregationNeedsAll(query.aggregation), kind == "part");
+}
+
+std::vector<Candidate> runPrefilter(const PrefilterPlan& plan, const OverlapSource& overlap, const AllSource& all,
+                                    bool oneRowPerObject) {
+  switch (plan.kind) {
+    case Kind::kAll: {
+      std::vector<Candidate> out;
+      for (int64_t id : all()) out.push_back({id, 1.0});
+      return out;
+    }
+    case Kind::kNone:
+      return {};
+    case Kind::kOverlap: {
+      std::vector<Candidate> rows = overlap(plan);
+      if (oneRowPerObject) return rows;
+      // By id, one candidate per object: the largest bound of its rows (a shape's best component).
+      std::sort(rows.begin(), rows.end(), [](const Candidate& a, const Candidate& b) {
+        return a.id != b.id ? a.id < b.id : a.bound > b.bound;
+      });
+      rows.erase(std::unique(rows.begin(), rows.end(), [](const Candidate& a, const Candidate& b) { return a.id == b.id; }),
+                 rows.end());
+      return rows;
+    }
+    case Kind::kAnd:
+    case Kind::kOr: {
+      const bool intersect = plan.kind == Kind::kAnd;
+      std::vector<Candidate> out = runPrefilter(plan.children.front(), overlap, all);
+      for (size_t i = 1; i < plan.children.size() && !(intersect && out.empty()); ++i)
+        out = combineCandidates(out, runPrefilter(plan.children[i], overlap, all), intersect);
+      return out;
+    }
+  }
+  return {};
+}
+
+nlohmann::json prefilterPlanJson(const PrefilterPlan& plan) {
+  switch (plan.kind) {
+    case Kind::kAll:
+      return {{"all", true}};
+    case Kind::kNone:
+      return {{"none", true}};
+    case Kind::kOverlap:
+      return {{"overlap",
+               {{"descriptor", plan.test.descriptor}, {"lo", plan.test.lo}, {"hi", plan.test.hi},
+                {"lo_included", plan.test.loIncluded}, {"hi_included", plan.test.hiIncluded},
+                {"wide_strict", plan.test.wideStrict}}}};
+    case Kind::kAnd:
+    case Kind::kOr: {
+      nlohmann::json children = nlohmann::json::array();
+      for (const PrefilterPlan& child : plan.children) children.push_back(prefilterPlanJson(child));
+      return {{plan.kind == Kind::kAnd ? "and" : "or", children}};
+    }
+  }
+  return nullptr;
+}
+
+}  // namespace fsdb

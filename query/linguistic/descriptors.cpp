@@ -1,0 +1,158 @@
+#include "query/linguistic/descriptors.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace fsdb {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The parameters a descriptor may read, as one flat vector.
+enum Param { kEps1, kEps2, kA1, kA2, kA3, kKx, kKy, kKv, kT, kScale, kParamCount };
+using Values = std::array<double, kParamCount>;
+
+double clamp01(double x) { return std::min(1.0, std::max(0.0, x)); }
+
+double sq(double e) { return std::max(0.0, 1.0 - e); }
+double ro(double e) { return std::max(0.0, 1.0 - std::fabs(e - 1.0)); }
+double be(double e) { return std::max(0.0, 1.0 - std::fabs(e - 2.0)); }
+double pi(double e) { return clamp01((e - 2.0) / 2.0); }
+
+double elongation(double a2, double a3) {
+  // Half-lengths A : B : C = 1 : a2 : a3 (a1 cancels).
+  std::array<double, 3> s{1.0, a2, a3};
+  std::sort(s.begin(), s.end());
+  return clamp01((1.0 + s[0] / s[1] - s[1] / s[2]) / 2.0);
+}
+
+double degree(int index, const Values& v) {
+  switch (index) {
+    case 0: return (sq(v[kEps1]) + sq(v[kEps2])) / 2.0;
+    case 1: return (ro(v[kEps1]) + ro(v[kEps2])) / 2.0;
+    case 2: return (be(v[kEps1]) + be(v[kEps2])) / 2.0;
+    case 3: return (pi(v[kEps1]) + pi(v[kEps2])) / 2.0;
+    case 4: return clamp01(std::fabs(v[kKv]) * 2.0 * v[kA1] * v[kA3] / kPi);
+    case 5: return clamp01(std::max(std::fabs(v[kKx]), std::fabs(v[kKy])));
+    case 6: return clamp01(std::fabs(v[kT]) / kPi);
+    case 7: {
+      const double l = v[kScale] * v[kA1] * std::cbrt(v[kA2] * v[kA3]);
+      return l / (1.0 + l);
+    }
+    case 8: return elongation(v[kA2], v[kA3]);
+    default: return 0.0;
+  }
+}
+
+// The parameters each descriptor reads and the values where it stops being monotone in them.
+struct Reads {
+  std::vector<Param> params;
+  std::vector<double> critical;  // put in for every param of the list when inside its interval
+};
+
+const Reads& readsOf(int index) {
+  static const std::vector<Reads> table = {
+      {{kEps1, kEps2}, {1.0, 2.0}},         {{kEps1, kEps2}, {1.0, 2.0}},
+      {{kEps1, kEps2}, {1.0, 2.0}},         {{kEps1, kEps2}, {2.0}},
+      {{kKv, kA1, kA3}, {0.0}},             {{kKx, kKy}, {0.0}},
+      {{kT}, {0.0}},                        {{kScale, kA1, kA2, kA3}, {}},
+      {{kA2, kA3}, {1.0}},
+  };
+  return table[index];
+}
+
+Values toValues(const PlacedSuperquadric& p) {
+  const SuperquadricParams& s = p.params;
+  return {s.eps1, s.eps2, s.a1, s.a2, s.a3, s.kx, s.ky, s.kv, s.t, p.placement.scale};
+}
+
+std::array<Interval, kParamCount> toIntervals(const PartBox& b) {
+  const SuperquadricBox& s = b.params;
+  return {s.eps1, s.eps2, s.a1, s.a2, s.a3, s.kx, s.ky, s.kv, s.t, b.placement.scale};
+}
+
+void addIfInside(std::vector<double>* list, const Interval& range, double x) {
+  if (x > range.lo && x < range.hi) list->push_back(x);
+}
+
+}  // namespace
+
+const std::vector<std::string>& descriptorNames() {
+  static const std::vector<std::string> names = {"squariness", "roundness", "bevelness",
+                                                 "pinchness",  "bendness",  "taperness",
+                                                 "twistness",  "size",      "elongation"};
+  return names;
+}
+
+int descriptorIndex(const std::string& name) {
+  const auto& names = descriptorNames();
+  auto it = std::find(names.begin(), names.end(), name);
+  return it == names.end() ? -1 : static_cast<int>(it - names.begin());
+}
+
+double descriptorDegree(int index, const PlacedSuperquadric& part) { return degree(index, toValues(part)); }
+
+Interval descriptorRange(int index, const PartBox& box) {
+  const Reads& reads = readsOf(index);
+  const auto intervals = toIntervals(box);
+  // Candidate values per read parameter: the ends and the critical values inside.
+  std::vector<std::vector<double>> candidates;
+  for (Param p : reads.params) {
+    const Interval& r = intervals[p];
+    std::vector<double> c{r.lo, r.hi};
+    for (double x : reads.critical) addIfInside(&c, r, x);
+    // elongation also turns where a2 = a3 (the sorted order of B and C swaps).
+    if (index == 8) {
+      const Interval& other = intervals[p == kA2 ? kA3 : kA2];
+      addIfInside(&c, r, other.lo);
+      addIfInside(&c, r, other.hi);
+    }
+    candidates.push_back(std::move(c));
+  }
+  Values v{};
+  for (int p = 0; p < kParamCount; ++p) v[p] = intervals[p].lo;
+  Interval range{1.0, 0.0};
+  // Every combination of candidates (at most 4^4 points).
+  std::vector<size_t> at(candidates.size(), 0);
+  while (true) {
+    for (size_t k = 0; k < candidates.size(); ++k) v[reads.params[k]] = candidates[k][at[k]];
+    const double d = degree(index, v);
+    range.lo = std::min(range.lo, d);
+    range.hi = std::max(range.hi, d);
+    size_t k = 0;
+    while (k < at.size() && ++at[k] == candidates[k].size()) at[k++] = 0;
+    if (k == at.size()) break;
+  }
+  return range;
+}
+
+std::vector<DescriptorValue> describePart(const FuzzyPart& part) {
+  const auto& names = descriptorNames();
+  std::vector<DescriptorValue> values;
+  // A crisp part (every value a descriptor reads crisp) has crisp values: one evaluation each.
+  if (part.eps1.isCrisp() && part.eps2.isCrisp() && part.a1.isCrisp() && part.a2.isCrisp() && part.a3.isCrisp() &&
+      part.kx.isCrisp() && part.ky.isCrisp() && part.kv.isCrisp() && part.t.isCrisp() && part.scale.isCrisp()) {
+    const PlacedSuperquadric crisp = part.coreRepresentative();
+    for (size_t i = 0; i < names.size(); ++i)
+      values.push_back({names[i], FuzzyNumber::crisp(descriptorDegree(static_cast<int>(i), crisp))});
+    return values;
+  }
+  std::vector<double> levels = part.breakpointLevels();
+  for (int k = 0; k <= kDescriptorLevels; ++k) levels.push_back(static_cast<double>(k) / kDescriptorLevels);
+  std::sort(levels.begin(), levels.end());
+  levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+  std::vector<PartBox> boxes;
+  boxes.reserve(levels.size());
+  for (double a : levels) boxes.push_back(part.boxAt(a));
+
+  for (size_t i = 0; i < names.size(); ++i) {
+    std::vector<Interval> cuts;
+    cuts.reserve(levels.size());
+    for (const PartBox& box : boxes) cuts.push_back(descriptorRange(static_cast<int>(i), box));
+    values.push_back({names[i], FuzzyNumber::fromAlphaCuts(levels, cuts)});
+  }
+  return values;
+}
+
+}  // namespace fsdb

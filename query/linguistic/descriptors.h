@@ -1,0 +1,67 @@
+#pragma once
+// Shape descriptors (Zhang, Pham & Chen, §5: "squariness, roundness, bevelness, pinchness,
+// bendness, taperness, and twistness, to index shape components"; fsdb adds size and elongation):
+// each a documented function of a crisp part's parameters giving a degree in [0, 1].
+// schema/vocabulary.json publishes the same definitions for users; this header is the reference.
+//
+// With A = a1, B = a1·a2, C = a1·a3 (docs/api.md §2) and, per exponent e in (0, 4],
+//   sq(e) = max(0, 1 − e)          1 at e → 0 (box-like), 0 from e = 1
+//   ro(e) = max(0, 1 − |e − 1|)    1 at e = 1 (ellipsoidal), 0 at 0 and 2
+//   be(e) = max(0, 1 − |e − 2|)    1 at e = 2 (straight edges, sharp vertices: a double pyramid)
+//   pi(e) = clamp((e − 2) / 2)     0 up to e = 2, 1 at e = 4 (concave, pinched faces)
+// the descriptors are
+//   squariness = (sq(eps1) + sq(eps2)) / 2       roundness = (ro(eps1) + ro(eps2)) / 2
+//   bevelness  = (be(eps1) + be(eps2)) / 2       pinchness = (pi(eps1) + pi(eps2)) / 2
+//   bendness   = min(1, |kv|·2C / π)   the total bend angle (curvature × arc length ≈ 2C)
+//                                      relative to a half turn
+//   taperness  = max(|kx|, |ky|)       the taper (|k| <= 1: 1 tapers to a point)
+//   twistness  = min(1, |t| / π)       the total twist 2|t| (t per half-length C) relative to a
+//                                      full turn
+//   size       = L / (1 + L),  L = scale · (A·B·C)^(1/3)   (the mean half-length in world units;
+//                                      a unit sphere is 0.5)
+//   elongation = (1 + s1/s2 − s2/s3) / 2 with s1 <= s2 <= s3 the sorted half-lengths A, B, C:
+//                1 for a needle (s3 >> s2 = s1), 0 for a sheet (s1 << s2 = s3), 0.5 when the
+//                three are equal (and for a part both long and flat).
+// Every function is continuous and piecewise monotone in each parameter.
+//
+// A fuzzy part's descriptor values are fuzzy numbers by the extension principle (Zhang, Pham &
+// Chen, §3.2): the alpha-cut of a value is the image of the parameter box P(α) (FuzzyPart::boxAt).
+// The image is computed exactly at each level: every function above is monotone in each parameter
+// between its critical values (e = 0, 1, 2; kv, kx, ky, t = 0; a2 = 1, a3 = 1, a2 = a3), so the
+// extremes over a box lie on the box's corners with those critical values put in where they fall
+// inside. Levels: FuzzyPart::breakpointLevels() plus k/kDescriptorLevels; linear in α between them
+// (FuzzyNumber::fromAlphaCuts). A crisp part has crisp values.
+#include <string>
+#include <vector>
+
+#include "geometry/fuzzy/fuzzy_number.h"
+#include "geometry/superquadric/fuzzy_part.h"
+#include "geometry/superquadric/superquadric_bounds.h"
+
+namespace fsdb {
+
+// Uniform levels k/16 added to the parts' breakpoint levels.
+inline constexpr int kDescriptorLevels = 16;
+
+// The descriptor names in index order: "squariness","roundness","bevelness","pinchness",
+// "bendness","taperness","twistness","size","elongation".
+const std::vector<std::string>& descriptorNames();
+
+// Index of a name in descriptorNames(), or -1.
+int descriptorIndex(const std::string& name);
+
+struct DescriptorValue {
+  std::string descriptor;  // one of descriptorNames()
+  FuzzyNumber value;       // the part's degree (extension principle through the descriptor's function)
+};
+
+// The degree of descriptor `index` for a crisp part (the functions above).
+double descriptorDegree(int index, const PlacedSuperquadric& part);
+
+// [min, max] of descriptor `index` over a parameter box (exact, see above).
+Interval descriptorRange(int index, const PartBox& box);
+
+// Every descriptor of a part, in descriptorNames() order. Deterministic, pure, thread-safe.
+std::vector<DescriptorValue> describePart(const FuzzyPart& part);
+
+}  // namespace fsdb

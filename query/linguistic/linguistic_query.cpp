@@ -1,0 +1,682 @@
+// The parser of linguistic queries (query/linguistic/linguistic_query.h, schema/query_grammar.ebnf):
+// recursive descent over word tokens, one function per production.
+#include "query/linguistic/linguistic_query.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <set>
+
+#include "geometry/core/closest_names.h"
+#include "geometry/core/error.h"
+#include "geometry/fuzzy/fuzzy_arithmetic.h"
+#include "query/json/fuzzy_json.h"
+#include "query/json/number_phrases.h"
+#include "query/linguistic/vocabulary.h"
+
+namespace fsdb {
+namespace {
+
+using Kind = QueryCondition::Kind;
+
+struct Token {
+  std::string text;  // lower case
+  size_t offset;     // character position in the query text
+  size_t end;
+  bool number = false;
+};
+
+// The words of the grammar itself (the vocabulary supplies the rest).
+const std::vector<std::string>& grammarWords() {
+  static const std::vector<std::string> words = {
+      "find", "show", "search", "for", "get", "list", "a", "an", "the", "any", "some", "all",
+      "that", "which", "is", "are", "has", "have", "and", "or", "not", "to", "of", "with", "score", "at", "least", "most",
+      "using", "min", "product", "mean",
+      "exactly", "about", "around", "approximately", "roughly", "between"};
+  return words;
+}
+
+// The deepest nesting of parentheses and "not" a query may have.
+constexpr int kMaxNesting = 64;
+
+const std::vector<std::string> kApproximately = {"exactly", "about", "around", "approximately", "roughly"};
+
+bool contains(const std::vector<std::string>& list, const std::string& w) {
+  return std::find(list.begin(), list.end(), w) != list.end();
+}
+
+// The tokens of text[from, to) (to <= text.size()), as if the text ended at `to`.
+std::vector<Token> tokenize(const std::string& text, size_t from, size_t to) {
+  std::vector<Token> tokens;
+  size_t i = from;
+  while (i < to) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (std::isspace(c)) {
+      ++i;
+      continue;
+    }
+    Token t;
+    t.offset = i;
+    if (std::isalpha(c)) {
+      while (i < to && (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '-' || text[i] == '\''))
+        t.text += static_cast<char>(std::tolower(static_cast<unsigned char>(text[i++])));
+    } else if (std::isdigit(c) || ((c == '-' || c == '+' || c == '.') && i + 1 < to &&
+                                   (std::isdigit(static_cast<unsigned char>(text[i + 1])) || text[i + 1] == '.'))) {
+      // strtod reads no blank, parenthesis or comma after its first character: it sees the run up
+      // to one of them or `to` (a copy of that run only, so tokenising stays linear in the text).
+      size_t runEnd = i;
+      while (runEnd < to && !std::isspace(static_cast<unsigned char>(text[runEnd])) && text[runEnd] != '(' &&
+             text[runEnd] != ')' && text[runEnd] != ',')
+        ++runEnd;
+      const std::string run = text.substr(i, runEnd - i);
+      char* stop = nullptr;
+      const double value = std::strtod(run.c_str(), &stop);
+      if (stop == run.c_str() || !std::isfinite(value))
+        throw Error(errc::kInvalidParameter, "bad number at character " + std::to_string(i), "text");
+      i += static_cast<size_t>(stop - run.c_str());
+      t.text = text.substr(t.offset, i - t.offset);
+      t.number = true;
+    } else if (c == '(' || c == ')' || c == ',') {
+      t.text = std::string(1, static_cast<char>(c));
+      ++i;
+    } else {
+      throw Error(errc::kInvalidParameter,
+                  "unexpected character '" + std::string(1, static_cast<char>(c)) + "' at character " +
+                      std::to_string(i) + "; a query is words, numbers, parentheses and commas",
+                  "text");
+    }
+    t.end = i;
+    tokens.push_back(t);
+  }
+  return tokens;
+}
+
+std::string joinList(const std::vector<std::string>& words) {
+  std::string out;
+  for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
+  return out;
+}
+
+QueryCondition descriptorCondition(const std::string& descriptor, FuzzyNumber set, std::string text) {
+  QueryCondition c;
+  c.kind = Kind::kDescriptor;
+  c.descriptor = descriptor;
+  c.set = std::move(set);
+  c.text = std::move(text);
+  return c;
+}
+
+// The membership restricted to [0, 1] (the degrees a descriptor can take): pieces crossing 0 or
+// 1 are cut there, the ends become vertical sides. The core must meet [0, 1] (checked before).
+FuzzyNumber restrictedToUnit(const FuzzyNumber& set) {
+  const std::vector<Breakpoint>& p = set.breakpoints();
+  std::vector<Breakpoint> out;
+  for (size_t i = 0; i < p.size(); ++i) {
+    if (i > 0)
+      for (double cut : {0.0, 1.0})
+        if ((p[i - 1].x < cut && p[i].x > cut) || (p[i - 1].x > cut && p[i].x < cut)) {
+          const double t = (cut - p[i - 1].x) / (p[i].x - p[i - 1].x);
+          out.push_back({cut, p[i - 1].mu + t * (p[i].mu - p[i - 1].mu)});
+        }
+    if (p[i].x >= 0.0 && p[i].x <= 1.0) out.push_back(p[i]);
+  }
+  return FuzzyNumber::fromPoints(out);
+}
+
+// The set of a low-pole adjective: d -> 1 - d (exact: negation and a crisp shift).
+FuzzyNumber mirrored(const FuzzyNumber& set) { return add(negate(set), FuzzyNumber::crisp(1.0)); }
+
+// Tokens [begin, begin + n) of a tokenised text, read by a Parser (which may own them).
+struct TokenView {
+  const Token* data = nullptr;
+  size_t n = 0;
+  size_t size() const { return n; }
+  bool empty() const { return n == 0; }
+  const Token& operator[](size_t i) const { return data[i]; }
+};
+
+class Parser {
+ public:
+  Parser(const std::string& text, const Vocabulary& vocabulary, size_t from = 0, size_t to = std::string::npos,
+         bool prefix = false)
+      : Parser(text, vocabulary, TokenView{}, prefix) {
+    owned_ = tokenize(text, from, std::min(to, text.size()));
+    tokens_ = TokenView{owned_.data(), owned_.size()};
+  }
+  // Over tokens of `text` tokenised elsewhere (NounPhraseReader): `tokens` must outlive the parser.
+  Parser(const std::string& text, const Vocabulary& vocabulary, TokenView tokens, bool prefix)
+      : text_(text),
+        v_(vocabulary),
+        tokens_(tokens),
+        prefix_(prefix),
+        intensityWords_(vocabulary.intensityWords()),
+        adjectiveWords_(vocabulary.adjectiveWords()),
+        nounWords_(vocabulary.nounWords()),
+        directionWords_(vocabulary.directionWords()),
+        distanceWords_(vocabulary.distanceWords()) {}
+
+  LinguisticQuery parse() {
+    LinguisticQuery q;
+    if (tokens_.empty()) fail({"a query such as 'find a slightly bent shape'"});
+    if (acceptAny(queryVerbs())) acceptWord("for");
+    const size_t start = pos_;
+    std::string subject;
+    QueryCondition first = nounPhrase(&subject);
+    q.subject = subject;
+    if (startsRelation()) {
+      QueryCondition relation;
+      relation.kind = Kind::kRelation;
+      relation.distance = optionalDistance();
+      relation.directionSets = directionPhrase();
+      relation.direction = relation.directionSets->word;
+      std::string otherSubject;
+      QueryCondition other = nounPhrase(&otherSubject);
+      relation.children = {std::move(first), std::move(other)};
+      relation.text = span(start, pos_);
+      q.root = std::move(relation);
+      q.subject = "shape";
+    } else {
+      q.root = std::move(first);
+    }
+    if (acceptWord("with")) {
+      expectWord("score");
+      if (!at("at")) fail({"'at least' NUMBER"});
+    }
+    if (at("at")) {
+      ++pos_;
+      expectWord("least");
+      if (pos_ >= tokens_.size() || !tokens_[pos_].number) fail({"a number in [0, 1] (the least score)"});
+      const double threshold = std::strtod(tokens_[pos_].text.c_str(), nullptr);
+      if (threshold < 0.0 || threshold > 1.0)
+        throw Error(errc::kInvalidParameter,
+                    "the least score at character " + std::to_string(tokens_[pos_].offset) + " must be in [0, 1]",
+                    "text");
+      q.atLeast = threshold;
+      ++pos_;
+    }
+    // aggregation = "using" ( "min" | "product" | "mean" ): how "and" combines scores
+    if (acceptWord("using")) {
+      if (pos_ >= tokens_.size() || !v_.isAggregation(tokens_[pos_].text))
+        fail({"an aggregation (" + joinList(v_.aggregationNames()) + ")"});
+      q.aggregation = tokens_[pos_++].text;
+    }
+    if (pos_ < tokens_.size())
+      fail({"'and'", "'or'", "'that is'", "'at least' NUMBER", "'using' AGGREGATION",
+            "a distance and a direction (" + joinList(directionWords_) + ")", "the end of the query"});
+    return q;
+  }
+
+  // A noun phrase at the start of the tokens, ending where the phrase ends (parseNounPhraseAt).
+  NounPhraseAt nounPhraseAt() {
+    NounPhraseAt out;
+    if (tokens_.empty()) fail({"a noun phrase such as 'a slightly bent cylinder'"});
+    std::string subject;
+    out.query.root = nounPhrase(&subject);
+    out.query.subject = subject;
+    out.end = tokens_[pos_ - 1].end;
+    return out;
+  }
+
+  // part_description = [ article ] { [ intensity ] adjective [ "," | "and" ] } noun
+  PartDescription partDescription() {
+    PartDescription d;
+    if (tokens_.empty()) fail({"words such as 'a slightly bent cylinder'"});
+    acceptAny(queryArticles());
+    std::string word;
+    while (true) {
+      const size_t start = pos_;
+      const FuzzyNumber* intensity = nullptr;
+      if (size_t n = matchPhrase(intensityWords_, &word)) {
+        intensity = v_.intensity(word);
+        pos_ += n;
+      }
+      const size_t n = matchPhrase(adjectiveWords_, &word);
+      if (n == 0) {
+        if (intensity) fail({"an adjective (" + joinList(adjectiveWords_) + ")"});
+        break;
+      }
+      pos_ += n;
+      d.adjectives.push_back({v_.adjective(word), intensity, span(start, pos_)});
+      if (acceptWord(",") || acceptWord("and")) {
+        std::string next;
+        if (!matchPhrase(intensityWords_, &next) && !matchPhrase(adjectiveWords_, &next))
+          fail({"an intensity (" + joinList(intensityWords_) + ")", "an adjective (" + joinList(adjectiveWords_) + ")"});
+      }
+    }
+    const size_t n = matchPhrase(nounWords_, &word);
+    if (n == 0) {
+      std::vector<std::string> expected = {"a noun (" + joinList(nounWords_) + ")"};
+      if (d.adjectives.empty()) {
+        const std::vector<std::string> starts = conditionStarts();  // 'not', '(', intensity, adjective
+        expected.insert(expected.begin(), starts.begin() + 2, starts.begin() + 4);
+      }
+      fail(expected);
+    }
+    pos_ += n;
+    d.noun = v_.noun(word);
+    if (pos_ < tokens_.size()) fail({"the end of the description (a part is adjectives and one noun)"});
+    return d;
+  }
+
+ private:
+  // --- tokens ---------------------------------------------------------------------------------
+  bool at(const std::string& w) const { return pos_ < tokens_.size() && tokens_[pos_].text == w; }
+  bool acceptWord(const std::string& w) {
+    if (!at(w)) return false;
+    ++pos_;
+    return true;
+  }
+  bool acceptAny(const std::vector<std::string>& words) {
+    for (const std::string& w : words)
+      if (acceptWord(w)) return true;
+    return false;
+  }
+  void expectWord(const std::string& w) {
+    if (!acceptWord(w)) fail({"'" + w + "'"});
+  }
+
+  // The longest phrase of `phrases` (words separated by one space) starting at the current
+  // token: the number of tokens it spans (0: none) and the phrase.
+  size_t matchPhrase(const std::vector<std::string>& phrases, std::string* matched) const {
+    size_t best = 0;
+    for (const std::string& phrase : phrases) {
+      size_t k = 0, i = 0;
+      bool ok = true;
+      while (ok && i < phrase.size()) {
+        size_t j = phrase.find(' ', i);
+        if (j == std::string::npos) j = phrase.size();
+        ok = pos_ + k < tokens_.size() && tokens_[pos_ + k].text == phrase.substr(i, j - i);
+        ++k;
+        i = j + 1;
+      }
+      if (ok && k > best) {
+        best = k;
+        *matched = phrase;
+      }
+    }
+    return best;
+  }
+
+  std::string span(size_t from, size_t to) const {
+    if (to <= from) return "";
+    return text_.substr(tokens_[from].offset, tokens_[to - 1].end - tokens_[from].offset);
+  }
+
+  bool knows(const std::string& word) const {
+    return v_.knowsWord(word) || contains(grammarWords(), word) || descriptorIndex(word) >= 0;
+  }
+
+  [[noreturn]] void fail(const std::vector<std::string>& expected) const {
+    if (pos_ >= tokens_.size())
+      throw Error(errc::kInvalidParameter,
+                  "the query ends too early (character " + std::to_string(text_.size()) +
+                      "); expected " + joinList(expected),
+                  "text");
+    const Token& t = tokens_[pos_];
+    if (!t.number && t.text.size() > 1 && std::isalpha(static_cast<unsigned char>(t.text[0])) && !knows(t.text)) {
+      std::vector<std::string> known(v_.words().begin(), v_.words().end());
+      known.insert(known.end(), grammarWords().begin(), grammarWords().end());
+      known.insert(known.end(), descriptorNames().begin(), descriptorNames().end());
+      throw Error(errc::kInvalidParameter,
+                  "unknown word '" + t.text + "' at character " + std::to_string(t.offset) + "; closest known words: " +
+                      closestNames(t.text, known),
+                  "text");
+    }
+    throw Error(errc::kInvalidParameter,
+                "unexpected '" + t.text + "' at character " + std::to_string(t.offset) + "; expected " + joinList(expected),
+                "text");
+  }
+
+  // --- productions ----------------------------------------------------------------------------
+  // Accepts `w` joining two conditions. In a noun phrase read as a prefix (nounPhraseAt), a `w`
+  // not followed by the start of a condition ends the phrase instead: it joins the next operand
+  // of the caller ("the union of a cylinder that is bent and a cube").
+  bool continues(const std::string& w) {
+    if (!at(w)) return false;
+    ++pos_;
+    if (prefix_ && !startsCondition()) {
+      --pos_;
+      return false;
+    }
+    return true;
+  }
+
+  bool startsCondition() const {
+    if (at("not") || at("(")) return true;
+    if (pos_ < tokens_.size() && descriptorIndex(tokens_[pos_].text) >= 0) return true;
+    std::string m;
+    return matchPhrase(intensityWords_, &m) > 0 || matchPhrase(adjectiveWords_, &m) > 0;
+  }
+
+  std::vector<std::string> conditionStarts() const {
+    return {"'not'", "'('", "an intensity (" + joinList(intensityWords_) + ")",
+            "an adjective (" + joinList(adjectiveWords_) + ")",
+            "a descriptor and its degree (" + joinList(descriptorNames()) + ")"};
+  }
+
+  // noun_phrase = [ article ] [ condition ] noun [ ("that"|"which") ("is"|"are") condition ]
+  QueryCondition nounPhrase(std::string* subject) {
+    const size_t start = pos_;
+    acceptAny(queryArticles());
+    std::vector<QueryCondition> parts;
+    const bool hasModifiers = startsCondition();
+    if (hasModifiers) parts.push_back(condition());
+    std::string word;
+    const size_t nounStart = pos_;
+    const size_t n = matchPhrase(nounWords_, &word);
+    if (n == 0) {
+      std::vector<std::string> expected;
+      if (!hasModifiers) expected = conditionStarts();
+      expected.push_back("a noun (" + joinList(nounWords_) + ")");
+      fail(expected);
+    }
+    pos_ += n;
+    const Noun& noun = *v_.noun(word);
+    *subject = noun.subject;
+    if (!noun.conditions.empty()) {
+      const std::string nounText = span(nounStart, pos_);
+      std::vector<QueryCondition> leaves;
+      for (const NounCondition& c : noun.conditions)
+        leaves.push_back(descriptorCondition(c.descriptor, c.set, nounText + ": " + c.descriptor));
+      if (leaves.size() == 1) {
+        leaves[0].text = nounText;
+        parts.push_back(std::move(leaves[0]));
+      } else {
+        QueryCondition all;
+        all.kind = Kind::kAnd;
+        all.text = nounText;
+        all.children = std::move(leaves);
+        parts.push_back(std::move(all));
+      }
+    }
+    if (acceptWord("that") || acceptWord("which")) {
+      if (!acceptAny({"is", "are", "has", "have"})) fail({"'is'", "'are'", "'has'", "'have'"});
+      if (!startsCondition()) fail(conditionStarts());
+      parts.push_back(condition());
+    } else if (at("with") && !(pos_ + 1 < tokens_.size() && tokens_[pos_ + 1].text == "score")) {
+      ++pos_;
+      if (!startsCondition()) fail(conditionStarts());
+      parts.push_back(condition());
+    }
+    if (parts.size() == 1) return std::move(parts[0]);
+    QueryCondition all;  // empty: "anything" (a bare "shape")
+    all.kind = Kind::kAnd;
+    all.children = std::move(parts);
+    if (all.children.empty()) all.text = span(start, pos_);
+    return all;
+  }
+
+  // condition = conjunct { "or" conjunct }
+  QueryCondition condition() {
+    const size_t start = pos_;
+    std::vector<QueryCondition> alternatives{conjunct()};
+    while (continues("or")) {
+      if (!startsCondition()) fail(conditionStarts());
+      alternatives.push_back(conjunct());
+    }
+    return group(Kind::kOr, std::move(alternatives), start);
+  }
+
+  // conjunct = negation { [ "and" | "," ] negation }
+  QueryCondition conjunct() {
+    const size_t start = pos_;
+    std::vector<QueryCondition> all{negation()};
+    while (true) {
+      if (continues("and") || continues(",")) {
+        if (!startsCondition()) fail(conditionStarts());
+      } else if (!startsCondition()) {
+        break;
+      }
+      all.push_back(negation());
+    }
+    return group(Kind::kAnd, std::move(all), start);
+  }
+
+  // One condition stays itself; several become an and / or labelled with the words they cover.
+  QueryCondition group(Kind kind, std::vector<QueryCondition> children, size_t start) const {
+    if (children.size() == 1) return std::move(children[0]);
+    QueryCondition c;
+    c.kind = kind;
+    c.text = span(start, pos_);
+    c.children = std::move(children);
+    return c;
+  }
+
+  // negation = "not" negation | "(" condition ")" | [ intensity ] adjective
+  QueryCondition negation() {
+    // Deep nesting ("((((..." or "not not not ...") would exhaust the stack: a limit instead.
+    struct Nesting {
+      int& depth;
+      explicit Nesting(int& d) : depth(++d) {}
+      ~Nesting() { --depth; }
+    } nesting(depth_);
+    if (depth_ > kMaxNesting)
+      throw Error(errc::kLimitExceeded,
+                  "the query nests conditions deeper than " + std::to_string(kMaxNesting) + " levels (at character " +
+                      std::to_string(tokens_[pos_].offset) + ")",
+                  "text");
+    const size_t start = pos_;
+    if (acceptWord("not")) {
+      if (!startsCondition()) fail(conditionStarts());
+      QueryCondition c;
+      c.kind = Kind::kNot;
+      c.children.push_back(negation());
+      c.text = span(start, pos_);
+      return c;
+    }
+    if (acceptWord("(")) {
+      if (!startsCondition()) fail(conditionStarts());
+      QueryCondition inner = condition();
+      if (!acceptWord(")")) fail({"')'", "'and'", "'or'"});
+      return inner;
+    }
+    if (pos_ < tokens_.size() && descriptorIndex(tokens_[pos_].text) >= 0) {
+      const std::string descriptor = tokens_[pos_++].text;
+      FuzzyNumber set = degree();
+      return descriptorCondition(descriptor, std::move(set), span(start, pos_));
+    }
+    std::string word;
+    const FuzzyNumber* intensity = nullptr;
+    if (size_t n = matchPhrase(intensityWords_, &word)) {
+      intensity = v_.intensity(word);
+      pos_ += n;
+    }
+    const size_t n = matchPhrase(adjectiveWords_, &word);
+    if (n == 0) fail({"an adjective (" + joinList(adjectiveWords_) + ")"});
+    pos_ += n;
+    const Adjective& adjective = *v_.adjective(word);
+    FuzzyNumber set = intensity ? *intensity : v_.plain();
+    if (adjective.lowPole) set = mirrored(set);
+    return descriptorCondition(adjective.descriptor, set, span(start, pos_));
+  }
+
+  // The start of a distance or a direction phrase after a noun phrase.
+  bool startsRelation() const {
+    if (pos_ >= tokens_.size()) return false;
+    if (tokens_[pos_].number || contains(kApproximately, tokens_[pos_].text) || at("between") || at("to")) return true;
+    std::string m;
+    return matchPhrase(distanceWords_, &m) > 0 || matchPhrase(directionWords_, &m) > 0;
+  }
+
+  // distance = number_phrase | distance_word
+  std::optional<FuzzyNumber> optionalDistance() {
+    std::string word;
+    if (size_t n = matchPhrase(distanceWords_, &word)) {
+      pos_ += n;
+      return *v_.distance(word);
+    }
+    return numberPhrase("distance");
+  }
+
+  // number_phrase (query/json/number_phrases.h): N | ("exactly"|"about"|...) N | "between" N "and" N
+  std::optional<FuzzyNumber> numberPhrase(const char* what) {
+    const size_t start = pos_;
+    if (at("between")) {
+      ++pos_;
+      expectNumber();
+      expectWord("and");
+      expectNumber();
+    } else if (pos_ < tokens_.size() && contains(kApproximately, tokens_[pos_].text)) {
+      ++pos_;
+      expectNumber();
+    } else if (pos_ < tokens_.size() && tokens_[pos_].number) {
+      ++pos_;
+    } else {
+      return std::nullopt;
+    }
+    std::string phrase;
+    for (size_t i = start; i < pos_; ++i) phrase += (i > start ? " " : "") + tokens_[i].text;
+    try {
+      return parseNumberPhrase(phrase);
+    } catch (const Error& e) {
+      throw Error(errc::kInvalidParameter,
+                  std::string("bad ") + what + " '" + phrase + "' at character " + std::to_string(tokens_[start].offset) +
+                      ": " + e.what(),
+                  "text");
+    }
+  }
+
+  // degree = [ "is" ] ( number_phrase | "at" "least" NUMBER | "at" "most" NUMBER ), in [0, 1]:
+  // "bendness at least 0.5" is trap(0.5, 0.5, 1, 1), "roundness about 1" the triangle of about 1
+  // restricted to [0, 1].
+  FuzzyNumber degree() {
+    acceptWord("is");
+    const size_t start = pos_;
+    if (acceptWord("at")) {
+      const bool least = acceptWord("least");
+      if (!least && !acceptWord("most")) fail({"'least'", "'most'"});
+      if (pos_ >= tokens_.size() || !tokens_[pos_].number) fail({"a number in [0, 1]"});
+      const double x = std::strtod(tokens_[pos_].text.c_str(), nullptr);
+      checkDegree(x, start);
+      ++pos_;
+      return least ? FuzzyNumber::trapezoidal(x, x, 1, 1) : FuzzyNumber::trapezoidal(0, 0, x, x);
+    }
+    std::optional<FuzzyNumber> set = numberPhrase("degree");
+    if (!set) fail({"a degree ('about 0.3', '0.5', 'between 0.2 and 0.4', 'at least 0.7', 'at most 0.2')"});
+    checkDegree(set->core().lo, start);
+    checkDegree(set->core().hi, start);
+    return restrictedToUnit(*set);
+  }
+
+  void checkDegree(double x, size_t start) const {
+    if (x < 0.0 || x > 1.0)
+      throw Error(errc::kInvalidParameter,
+                  "a descriptor degree is in [0, 1]; the one at character " + std::to_string(tokens_[start].offset) +
+                      " is not",
+                  "text");
+  }
+
+  void expectNumber() {
+    if (pos_ >= tokens_.size() || !tokens_[pos_].number) fail({"a number"});
+    ++pos_;
+  }
+
+  // direction_phrase = [ "to" "the" ] direction "of" | a phrase of the vocabulary ("above")
+  Direction directionPhrase() {
+    const bool to = acceptWord("to");
+    if (to) acceptWord("the");
+    std::string word;
+    const size_t n = matchPhrase(directionWords_, &word);
+    if (n == 0) fail({"a direction (" + joinList(directionWords_) + ")"});
+    pos_ += n;
+    const Direction& d = *v_.direction(word);
+    if (d.word != word && !to) return d;  // a phrase: "above", "in front of"
+    if (!acceptWord("of")) fail({"'of'"});
+    return d;
+  }
+
+  const std::string& text_;
+  const Vocabulary& v_;
+  std::vector<Token> owned_;  // the tokens when the parser tokenised the text itself
+  TokenView tokens_;
+  size_t pos_ = 0;
+  const bool prefix_;  // nounPhraseAt: the phrase is followed by the caller's words
+  int depth_ = 0;  // nesting of conditions (parentheses, not), bounded by kMaxNesting
+  // The vocabulary's word lists.
+  const std::vector<std::string>&intensityWords_, &adjectiveWords_, &nounWords_, &directionWords_, &distanceWords_;
+};
+
+const char* kindName(Kind k) {
+  switch (k) {
+    case Kind::kDescriptor: return "descriptor";
+    case Kind::kAnd: return "and";
+    case Kind::kOr: return "or";
+    case Kind::kNot: return "not";
+    case Kind::kRelation: return "relation";
+  }
+  return "";
+}
+
+nlohmann::json conditionJson(const QueryCondition& c) {
+  nlohmann::json j = {{"kind", kindName(c.kind)}, {"text", c.text}};
+  if (c.kind == Kind::kDescriptor) {
+    j["descriptor"] = c.descriptor;
+    j["set"] = toJson(c.set);
+  }
+  if (c.kind == Kind::kRelation) {
+    j["direction"] = c.direction;
+    j["distance"] = c.distance ? toJson(*c.distance) : nlohmann::json();
+  }
+  if (c.kind != Kind::kDescriptor) {
+    j["children"] = nlohmann::json::array();
+    for (const QueryCondition& child : c.children) j["children"].push_back(conditionJson(child));
+  }
+  return j;
+}
+
+}  // namespace
+
+LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary) {
+  return Parser(text, vocabulary).parse();
+}
+
+const std::vector<std::string>& queryVerbs() {
+  static const std::vector<std::string> verbs = {"find", "show", "search", "get", "list"};
+  return verbs;
+}
+
+const std::vector<std::string>& queryArticles() {
+  static const std::vector<std::string> articles = {"a", "an", "the", "any", "some", "all"};
+  return articles;
+}
+
+NounPhraseAt parseNounPhraseAt(const std::string& text, size_t from, size_t to, const Vocabulary& vocabulary) {
+  return Parser(text, vocabulary, from, to, true).nounPhraseAt();
+}
+
+struct NounPhraseReader::Tokens {
+  std::vector<Token> tokens;  // of text[from, end) for the `from` of the first call
+};
+
+NounPhraseReader::NounPhraseReader(const std::string& text, const Vocabulary& vocabulary)
+    : text_(text), vocabulary_(vocabulary) {}
+NounPhraseReader::~NounPhraseReader() = default;
+
+NounPhraseAt NounPhraseReader::at(size_t from) {
+  // Tokens never span blanks, parentheses or commas, so tokenising from an earlier position gives
+  // the same tokens from `from` on when `from` starts one; elsewhere the phrase is read on its own.
+  if (!tokens_ || (!tokens_->tokens.empty() && from < tokens_->tokens.front().offset)) {
+    tokens_ = std::make_unique<Tokens>();
+    tokens_->tokens = tokenize(text_, from, text_.size());
+  }
+  const std::vector<Token>& all = tokens_->tokens;
+  const auto first = std::lower_bound(all.begin(), all.end(), from,
+                                      [](const Token& t, size_t offset) { return t.offset < offset; });
+  if (first != all.begin() && std::prev(first)->end > from) return parseNounPhraseAt(text_, from, std::string::npos, vocabulary_);
+  const TokenView view{all.data() + (first - all.begin()), size_t(all.end() - first)};
+  return Parser(text_, vocabulary_, view, true).nounPhraseAt();
+}
+
+PartDescription parsePartDescription(const std::string& text, const Vocabulary& vocabulary) {
+  return Parser(text, vocabulary).partDescription();
+}
+
+nlohmann::json toJson(const LinguisticQuery& query) {
+  return {{"subject", query.subject},
+          {"aggregation", query.aggregation},
+          {"at_least", query.atLeast},
+          {"condition", conditionJson(query.root)}};
+}
+
+}  // namespace fsdb

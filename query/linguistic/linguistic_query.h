@@ -1,0 +1,182 @@
+#pragma once
+// Linguistic queries (Zhang, Pham & Chen, §5: "find a slightly bent shape"; docs/api.md §5):
+// parsing the text into a condition tree over shape descriptors (query/linguistic/descriptors.h)
+// and spatial relations (Zhang, Pham & Chen, §2.2), and scoring a part's descriptor values or a
+// shape's components against it.
+//
+// The grammar is schema/query_grammar.ebnf (a test parses every example listed there). In short:
+//   query       = [ "find" ] phrase [ threshold ] [ "using" ("min"|"product"|"mean") ]
+//   phrase      = noun_phrase [ [ distance ] direction_phrase noun_phrase ]
+//   noun_phrase = [ article ] [ condition ] noun
+//                 [ ("that"|"which") ("is"|"are"|"has"|"have") condition | "with" condition ]
+//   condition   = conjunct { "or" conjunct };  conjunct = negation { ["and"|","] negation }
+//   negation    = "not" negation | "(" condition ")" | descriptor degree | [ intensity ] adjective
+//   degree      = [ "is" ] ( number_phrase | "at least" number | "at most" number )
+//   threshold   = [ "with" "score" ] "at least" number
+// Words are case-insensitive; nouns, adjectives, intensities, directions and distance words come
+// from the Vocabulary (query/linguistic/vocabulary.h), so a user's vocabulary file extends the language.
+//
+// Meaning of the tree:
+//   * descriptor degree ("bendness at least 0.5"): a kDescriptor condition with the set
+//     trap(x, x, 1, 1) (at least), trap(0, 0, x, x) (at most) or the number phrase restricted to
+//     [0, 1] ("roundness about 1").
+//   * [intensity] adjective: a kDescriptor condition on the adjective's descriptor with the
+//     intensity's fuzzy set (plain: μ(d) = d), mirrored d → 1 − d for low-pole adjectives.
+//   * a noun: its conditions (a kDescriptor, or a kAnd of them labelled with the noun);
+//     "shape", "part", ... have none. LinguisticQuery::subject: "part" for part nouns, "shape" for
+//     relations (only shapes have several components), else "any".
+//   * and / or / not: kAnd (scores aggregated by LinguisticQuery::aggregation: min, the default,
+//     product or mean), kOr (max), kNot (1 − the child's score). A kAnd without children is
+//     "anything" (score 1): the condition of a relation's bare noun ("a shape above a cube").
+//   * relations: kRelation, children[0] the subject noun phrase, children[1] the other one,
+//     `direction` a direction word of the vocabulary ("left", "top right"; phrases such as
+//     "above", "in front of" name one), `distance` the fuzzy distance between the centres.
+// Scores: a kDescriptor condition scores S(value, set) of docs/api.md §5
+// (geometry/fuzzy/fuzzy_similarity.h; for a crisp value μ_set(value)). A relation scores, over
+// ordered pairs (i, j) of distinct components, the best min(subject(i), other(j),
+// μ_direction(centre_i − centre_j), S(|centre_i − centre_j|, distance)); centres are the
+// translations' core midpoints for the direction and the fuzzy translations (exact alpha-cuts of
+// the norm) for the distance.
+// explain: every condition with text, in pre-order (the and / or nodes carry the text they
+// cover), with its score for the component (pair) that gave the total.
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/field/boundary_method.h"
+#include "geometry/fuzzy/fuzzy_number.h"
+#include "geometry/superquadric/fuzzy_part.h"
+#include "query/linguistic/descriptors.h"
+#include "query/linguistic/vocabulary.h"
+
+namespace fsdb {
+class Vocabulary;  // query/linguistic/vocabulary.h: Vocabulary::builtin() is the compiled-in schema/vocabulary.json
+
+struct QueryCondition {
+  enum class Kind { kDescriptor, kAnd, kOr, kNot, kRelation };
+  Kind kind = Kind::kDescriptor;
+  std::string text;            // the words it came from ("slightly bent"), for explain
+  // kDescriptor: the part's descriptor value must match the fuzzy set `set` (S of docs/api.md §5)
+  std::string descriptor;
+  FuzzyNumber set;
+  // kAnd / kOr: children (2 or more); kNot: one child.
+  // kRelation: children[0] = the subject part's condition, children[1] = the other part's condition;
+  // direction: a direction word of Zhang, Pham & Chen, §2.2 ("left", "top right"); distance
+  // optional.
+  std::vector<QueryCondition> children;
+  std::string direction;
+  std::optional<FuzzyNumber> distance;
+  // kRelation: the direction's memberships as the parser's vocabulary defines them (when empty,
+  // scoring looks `direction` up in activeVocabulary()).
+  std::optional<Direction> directionSets;
+};
+struct LinguisticQuery {
+  std::string subject = "any";   // "part", "shape" or "any" (from the noun: "shape" = any)
+  QueryCondition root;
+  double atLeast = 0.0;          // "at least 0.7": results below are dropped
+  std::string aggregation = "min";  // how kAnd combines scores (documented choices)
+};
+// The server passes activeVocabulary() (query/linguistic/vocabulary.h), so `fsdb serve --vocabulary FILE`
+// extends the language.
+// Throws fsdb::Error(errc::kInvalidParameter) with path "text" and a message giving the character
+// position and the expected words; unknown words name the closest known ones. Conditions nested
+// deeper than 64 levels (parentheses, "not") are errc::kLimitExceeded, path "text".
+LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary);
+
+// The grammar's opening verbs (each may be followed by "for") and its articles, in the grammar's
+// order; the phrase form of structural queries (query/structural/csg_query_text.h) opens with the same verbs
+// and names operations after the same articles.
+const std::vector<std::string>& queryVerbs();
+const std::vector<std::string>& queryArticles();
+
+// The noun phrase that starts at character `from` of `text` (a leaf of a structural query,
+// query/structural/csg_query_text.h), read up to character `to` at most (npos: the end): the production
+// noun_phrase of the grammar, ending after its noun and relative clause. There an "and", "or" or
+// "," that is not followed by the start of a condition ends the phrase (it is the caller's word:
+// "the union of a cylinder that is bent and a cube"). Returns the phrase as a query (subject,
+// root; no threshold) and the character just after its last word. Errors as parseLinguisticQuery,
+// with positions in `text`; when the words before `to` end too early, the message says so.
+struct NounPhraseAt {
+  LinguisticQuery query;
+  size_t end = 0;
+};
+NounPhraseAt parseNounPhraseAt(const std::string& text, size_t from, size_t to, const Vocabulary& vocabulary);
+
+// parseNounPhraseAt(text, from, npos, vocabulary) for many phrases of one text (the leaves of a
+// phrase-form CSG query): the text is tokenised once, at the first call, from its `from` on, not
+// again at every phrase (which made a list of n operands quadratic). Calls with ascending `from`
+// reuse the tokens; each gives exactly what parseNounPhraseAt gives. `text` and `vocabulary` must
+// outlive the reader.
+class NounPhraseReader {
+ public:
+  NounPhraseReader(const std::string& text, const Vocabulary& vocabulary);
+  ~NounPhraseReader();
+  NounPhraseReader(const NounPhraseReader&) = delete;
+  NounPhraseReader& operator=(const NounPhraseReader&) = delete;
+  NounPhraseAt at(size_t from);
+
+ private:
+  struct Tokens;
+  const std::string& text_;
+  const Vocabulary& vocabulary_;
+  std::unique_ptr<Tokens> tokens_;
+};
+
+// The words of a part described by words ("a slightly bent cylinder", "a long, very twisted
+// box"): [ article ] { [ intensity ] adjective [ "," | "and" ] } noun. The pointers point into
+// `vocabulary`. Errors as parseLinguisticQuery (path "text"). query/document/part_from_words.h turns it
+// into parameters.
+struct AdjectiveUse {
+  const Adjective* adjective;
+  const FuzzyNumber* intensity;  // null: the plain adjective
+  std::string text;              // "slightly bent"
+};
+struct PartDescription {
+  const Noun* noun = nullptr;
+  std::vector<AdjectiveUse> adjectives;
+};
+PartDescription parsePartDescription(const std::string& text, const Vocabulary& vocabulary);
+
+struct ConditionScore {
+  std::string text;
+  double score;
+  std::string component;  // scoreShape: the component path(s) it was scored on ("a, b" for relations)
+};
+struct QueryScore { double score = 0.0; std::vector<ConditionScore> explain; };
+// Score of one part's descriptor values (docs/api.md §5; kRelation conditions score 0 for a lone
+// part).
+QueryScore scoreDescriptors(const LinguisticQuery& query, const std::vector<DescriptorValue>& values);
+
+// One leaf of a stored shape, with its placement resolved (the leaf part's own transform and the
+// leaf transform; references expanded).
+struct ShapeComponent {
+  std::string path;                 // JSON path of the leaf in the shape's document tree
+  FuzzyPart part;                   // parameters and placement (tx, ty, tz, ...)
+  std::vector<DescriptorValue> descriptors;  // describePart(part)
+};
+// Score of a shape: descriptor conditions score the best component (max over components, explain
+// names it); relations score the best ordered pair of distinct components (subject condition,
+// other condition, direction of the offset between their centres, distance).
+QueryScore scoreShape(const LinguisticQuery& query, const std::vector<ShapeComponent>& components);
+
+// The leaves of a parsed CSG tree as components, in pre-order; paths "tree", "tree.children[1]",
+// "tree.children[1].children[0]", ... (positions in the resolved tree: a referenced shape's
+// leaves continue below the leaf that references it).
+std::vector<ShapeComponent> shapeComponents(const CsgTree& tree);
+
+// The fuzzy distance between the centres of two parts (exact alpha-cuts of the norm of the
+// difference of their fuzzy translations).
+FuzzyNumber centreDistance(const FuzzyPart& a, const FuzzyPart& b);
+
+// The parsed query as JSON, for the "parsed" member of POST /query/linguistic:
+// {"subject","aggregation","at_least","condition":{kind, text, descriptor, set, children,
+// direction, distance}}.
+nlohmann::json toJson(const LinguisticQuery& query);
+
+// A score's explain as JSON: [{"text","score","component"}] ("component" only when set), for the
+// "explain" member of a result.
+nlohmann::json explainJson(const QueryScore& score);
+
+}  // namespace fsdb

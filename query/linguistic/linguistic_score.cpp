@@ -1,0 +1,219 @@
+// Scoring of linguistic queries (query/linguistic/linguistic_query.h; docs/api.md §5;
+// Zhang, Pham & Chen, §2.2 and §5).
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/core/error.h"
+#include "geometry/fuzzy/fuzzy_similarity.h"
+#include "query/linguistic/linguistic_query.h"
+#include "query/linguistic/vocabulary.h"
+
+namespace fsdb {
+namespace {
+
+using Kind = QueryCondition::Kind;
+
+struct Context {
+  const LinguisticQuery* query;
+  const std::vector<ShapeComponent>* components;  // null: a lone part (relations score 0)
+  const std::vector<DescriptorValue>* values;     // the component the descriptor conditions read
+  std::string component;                          // its path, for explain
+  std::vector<ConditionScore>* explain;
+};
+
+double aggregate(const std::string& how, const std::vector<double>& scores) {
+  if (scores.empty()) return 1.0;  // "anything"
+  if (how == "min") return *std::min_element(scores.begin(), scores.end());
+  if (how == "product") {
+    double p = 1.0;
+    for (double s : scores) p *= s;
+    return p;
+  }
+  if (how == "mean") {
+    double sum = 0.0;
+    for (double s : scores) sum += s;
+    return sum / static_cast<double>(scores.size());
+  }
+  throw Error(errc::kInvalidParameter, "unknown aggregation '" + how + "'; expected min, product or mean",
+              "aggregation");
+}
+
+const Direction* directionOf(const QueryCondition& c) {
+  if (c.directionSets) return &*c.directionSets;
+  const Direction* d = activeVocabulary().direction(c.direction);
+  if (!d) throw Error(errc::kInvalidParameter, "unknown direction '" + c.direction + "'", "direction");
+  return d;
+}
+
+Vec3 coreCentre(const FuzzyPart& p) { return p.coreRepresentative().placement.translate; }
+
+double score(const QueryCondition& c, Context& ctx);
+
+// The best ordered pair of distinct components for a relation. Each noun phrase is scored once
+// per component; a pair's direction and distance are computed only when its two scores could
+// still beat the best pair so far.
+double relationScore(const QueryCondition& c, Context& ctx) {
+  const size_t slot = ctx.explain->size();
+  ctx.explain->push_back({c.text, 0.0, ""});
+  if (!ctx.components || c.children.size() != 2) return 0.0;
+  const Direction* direction = directionOf(c);
+  const auto& comps = *ctx.components;
+  struct Scored {
+    double score;
+    std::vector<ConditionScore> explain;
+  };
+  std::vector<Scored> subject, other;
+  for (const ShapeComponent& comp : comps) {
+    for (size_t side = 0; side < 2; ++side) {
+      Scored s;
+      Context one{ctx.query, ctx.components, &comp.descriptors, comp.path, &s.explain};
+      s.score = score(c.children[side], one);
+      (side == 0 ? subject : other).push_back(std::move(s));
+    }
+  }
+  std::vector<Vec3> centres;  // once per component, not once per pair
+  for (const ShapeComponent& comp : comps) centres.push_back(coreCentre(comp.part));
+  double best = 0.0;
+  size_t bestI = 0, bestJ = 0;
+  bool found = false;
+  for (size_t i = 0; i < comps.size(); ++i) {
+    for (size_t j = 0; j < comps.size(); ++j) {
+      if (i == j) continue;
+      double s = std::min(subject[i].score, other[j].score);
+      if (found && s <= best) continue;  // cannot win: the first best pair stays (stable ties)
+      s = std::min(s, directionMembership(*direction, centres[i] - centres[j]));
+      if (c.distance && s > 0.0) s = std::min(s, similarity(centreDistance(comps[i].part, comps[j].part), *c.distance));
+      if (!found || s > best) {
+        best = s;
+        bestI = i;
+        bestJ = j;
+        found = true;
+      }
+    }
+  }
+  if (!found) return 0.0;  // fewer than two components
+  (*ctx.explain)[slot] = {c.text, best, comps[bestI].path + ", " + comps[bestJ].path};
+  for (const auto* e : {&subject[bestI].explain, &other[bestJ].explain})
+    ctx.explain->insert(ctx.explain->end(), e->begin(), e->end());
+  return best;
+}
+
+double score(const QueryCondition& c, Context& ctx) {
+  if (c.kind == Kind::kRelation) return relationScore(c, ctx);
+  const size_t slot = ctx.explain->size();
+  if (!c.text.empty()) ctx.explain->push_back({c.text, 0.0, ctx.component});
+  double s = 0.0;
+  switch (c.kind) {
+    case Kind::kDescriptor:
+      if (ctx.values)
+        for (const DescriptorValue& v : *ctx.values)
+          if (v.descriptor == c.descriptor) s = similarity(v.value, c.set);
+      break;
+    case Kind::kAnd: {
+      std::vector<double> scores;
+      for (const QueryCondition& child : c.children) scores.push_back(score(child, ctx));
+      s = aggregate(ctx.query->aggregation, scores);
+      break;
+    }
+    case Kind::kOr:
+      for (const QueryCondition& child : c.children) s = std::max(s, score(child, ctx));
+      break;
+    case Kind::kNot:
+      s = c.children.empty() ? 0.0 : 1.0 - score(c.children[0], ctx);
+      break;
+    case Kind::kRelation:
+      break;
+  }
+  if (!c.text.empty()) (*ctx.explain)[slot].score = s;
+  return s;
+}
+
+// Does the condition read a component's descriptors outside any relation?
+bool readsComponent(const QueryCondition& c) {
+  if (c.kind == Kind::kDescriptor) return true;
+  if (c.kind == Kind::kRelation) return false;
+  for (const QueryCondition& child : c.children)
+    if (readsComponent(child)) return true;
+  return false;
+}
+
+void collectComponents(const CsgTree& node, const std::string& path, std::vector<ShapeComponent>* out) {
+  if (node.leaf) {
+    out->push_back({path, node.part, describePart(node.part)});
+    return;
+  }
+  for (size_t i = 0; i < node.children.size(); ++i)
+    collectComponents(*node.children[i], path + ".children[" + std::to_string(i) + "]", out);
+}
+
+}  // namespace
+
+QueryScore scoreDescriptors(const LinguisticQuery& query, const std::vector<DescriptorValue>& values) {
+  QueryScore result;
+  Context ctx{&query, nullptr, &values, "", &result.explain};
+  result.score = score(query.root, ctx);
+  return result;
+}
+
+QueryScore scoreShape(const LinguisticQuery& query, const std::vector<ShapeComponent>& components) {
+  QueryScore best;
+  if (!readsComponent(query.root) || components.empty()) {
+    Context ctx{&query, &components, nullptr, "", &best.explain};
+    best.score = score(query.root, ctx);
+    return best;
+  }
+  bool first = true;
+  for (const ShapeComponent& component : components) {
+    QueryScore candidate;
+    Context ctx{&query, &components, &component.descriptors, component.path, &candidate.explain};
+    candidate.score = score(query.root, ctx);
+    if (first || candidate.score > best.score) best = std::move(candidate);  // first wins ties
+    first = false;
+  }
+  return best;
+}
+
+nlohmann::json explainJson(const QueryScore& score) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const ConditionScore& c : score.explain) {
+    nlohmann::json e = {{"text", c.text}, {"score", c.score}};
+    if (!c.component.empty()) e["component"] = c.component;
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
+std::vector<ShapeComponent> shapeComponents(const CsgTree& tree) {
+  std::vector<ShapeComponent> out;
+  collectComponents(tree, "tree", &out);
+  return out;
+}
+
+FuzzyNumber centreDistance(const FuzzyPart& a, const FuzzyPart& b) {
+  if (a.tx.isCrisp() && a.ty.isCrisp() && a.tz.isCrisp() && b.tx.isCrisp() && b.ty.isCrisp() && b.tz.isCrisp()) {
+    const Vec3 d = coreCentre(a) - coreCentre(b);
+    return FuzzyNumber::crisp(std::sqrt(dot(d, d)));
+  }
+  std::vector<double> levels = a.breakpointLevels();
+  const std::vector<double> more = b.breakpointLevels();
+  levels.insert(levels.end(), more.begin(), more.end());
+  for (int k = 0; k <= kDescriptorLevels; ++k) levels.push_back(static_cast<double>(k) / kDescriptorLevels);
+  std::sort(levels.begin(), levels.end());
+  levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+  std::vector<Interval> cuts;
+  for (double alpha : levels) {
+    const PlacementBox pa = a.boxAt(alpha).placement, pb = b.boxAt(alpha).placement;
+    double nearest = 0.0, farthest = 0.0;
+    for (const auto& [x, y] : {std::pair{pa.tx, pb.tx}, std::pair{pa.ty, pb.ty}, std::pair{pa.tz, pb.tz}}) {
+      const Interval d = sub(x, y);
+      const double lo = (d.lo <= 0.0 && d.hi >= 0.0) ? 0.0 : std::min(std::fabs(d.lo), std::fabs(d.hi));
+      const double hi = std::max(std::fabs(d.lo), std::fabs(d.hi));
+      nearest += lo * lo;
+      farthest += hi * hi;
+    }
+    cuts.push_back({std::sqrt(nearest), std::sqrt(farthest)});
+  }
+  return FuzzyNumber::fromAlphaCuts(levels, cuts);
+}
+
+}  // namespace fsdb

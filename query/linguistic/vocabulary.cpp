@@ -1,0 +1,364 @@
+#include "query/linguistic/vocabulary.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "geometry/fuzzy/defuzzify.h"
+#include "geometry/core/error.h"
+#include "query/linguistic/descriptors.h"
+#include "query/json/fuzzy_json.h"
+#include "query/json/json_body.h"
+#include "query/linguistic/vocabulary_text.h"
+
+namespace fsdb {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A fuzzy set over a degree must live in [0, 1].
+FuzzyNumber parseDegreeSet(const nlohmann::json& j, const std::string& path) {
+  FuzzyNumber set = parseFuzzyNumber(j, path);
+  const Interval s = set.support();
+  if (s.lo < 0.0 || s.hi > 1.0)
+    throw Error(errc::kInvalidDocument, "a fuzzy set over a descriptor degree must lie in [0, 1]", path);
+  return set;
+}
+
+const nlohmann::json& section(const nlohmann::json& doc, const char* key) {
+  return requireObject(requireField(doc, key, ""), key);
+}
+
+std::string checkedDescriptor(const nlohmann::json& j, const std::string& path) {
+  const std::string& name = requireString(j, path);
+  if (descriptorIndex(name) < 0)
+    throw Error(errc::kInvalidDocument, "unknown descriptor '" + name + "'", path);
+  return name;
+}
+
+void readDirections(const nlohmann::json& doc, std::map<std::string, Direction>* out) {
+  const std::string path = "directions";
+  const auto& d = section(doc, "directions");
+  std::map<std::string, FuzzyNumber> beta, gamma;
+  const std::string bp = joinPath(path, "beta"), gp = joinPath(path, "gamma");
+  for (auto it = requireObject(requireField(d, "beta", path), bp).begin(); it != d["beta"].end(); ++it)
+    beta.emplace(it.key(), parseFuzzyNumber(it.value(), joinPath(bp, it.key())));
+  for (auto it = requireObject(requireField(d, "gamma", path), gp).begin(); it != d["gamma"].end(); ++it) {
+    FuzzyNumber g = parseFuzzyNumber(it.value(), joinPath(gp, it.key()));
+    if (g.support().lo < 0 || g.support().hi > 180)
+      throw Error(errc::kInvalidDocument, "a gamma set must lie in [0, 180] degrees", joinPath(gp, it.key()));
+    gamma.emplace(it.key(), g);
+  }
+  for (const char* kind : {"primary", "secondary"}) {
+    const std::string kp = joinPath(path, kind);
+    const auto& list = requireObject(requireField(d, kind, path), kp);
+    for (auto it = list.begin(); it != list.end(); ++it) {
+      const std::string ep = joinPath(kp, it.key());
+      const auto& e = requireObject(it.value(), ep);
+      rejectUnknownKeys(e, ep, {"beta", "gamma"});
+      Direction dir;
+      dir.word = it.key();
+      if (e.contains("beta")) {
+        const std::string& b = requireString(e["beta"], joinPath(ep, "beta"));
+        if (!beta.count(b)) throw Error(errc::kInvalidDocument, "no beta set '" + b + "'", joinPath(ep, "beta"));
+        dir.beta = beta.at(b);
+      }
+      const std::string& g = requireString(requireField(e, "gamma", ep), joinPath(ep, "gamma"));
+      if (!gamma.count(g)) throw Error(errc::kInvalidDocument, "no gamma set '" + g + "'", joinPath(ep, "gamma"));
+      dir.gamma = gamma.at(g);
+      (*out)[dir.word] = dir;
+    }
+  }
+  if (d.contains("phrases")) {
+    const std::string pp = joinPath(path, "phrases");
+    for (auto it = requireObject(d["phrases"], pp).begin(); it != d["phrases"].end(); ++it) {
+      const std::string& target = requireString(it.value(), joinPath(pp, it.key()));
+      auto found = out->find(target);
+      if (found == out->end())
+        throw Error(errc::kInvalidDocument, "no direction '" + target + "'", joinPath(pp, it.key()));
+      Direction dir = found->second;
+      dir.word = target;  // the phrase means the direction it names
+      (*out)[it.key()] = dir;
+    }
+  }
+}
+
+double wrappedMembership(const FuzzyNumber& beta, double angle) {
+  return std::max({beta.membership(angle), beta.membership(angle - 360.0), beta.membership(angle + 360.0)});
+}
+
+template <typename Map>
+std::vector<std::string> keysOf(const Map& m) {
+  std::vector<std::string> keys;
+  for (const auto& kv : m) keys.push_back(kv.first);
+  return keys;
+}
+
+// The keys of both maps, sorted (words and their synonyms or plurals).
+template <typename Map>
+std::vector<std::string> sortedKeys(const Map& words, const std::map<std::string, std::string>& aliases) {
+  std::vector<std::string> keys = keysOf(words);
+  for (const auto& kv : aliases) keys.push_back(kv.first);
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+}  // namespace
+
+Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
+  Vocabulary v;
+  requireObject(doc, "");
+  v.document_ = doc;
+
+  // descriptors: documentation of the code's functions, in the code's order.
+  const auto& descriptors = requireArray(requireField(doc, "descriptors", ""), "descriptors");
+  if (descriptors.size() != descriptorNames().size())
+    throw Error(errc::kInvalidDocument,
+                "descriptors must document exactly the " + std::to_string(descriptorNames().size()) +
+                    " descriptors of the code, in order",
+                "descriptors");
+  for (size_t i = 0; i < descriptors.size(); ++i) {
+    const std::string p = joinPath("descriptors", i);
+    const std::string& name = requireString(requireField(requireObject(descriptors[i], p), "name", p), joinPath(p, "name"));
+    if (name != descriptorNames()[i])
+      throw Error(errc::kInvalidDocument, "expected descriptor '" + descriptorNames()[i] + "' here", joinPath(p, "name"));
+  }
+
+  const auto& in = section(doc, "intensities");
+  v.plain_ = parseDegreeSet(requireField(in, "plain", "intensities"), "intensities.plain");
+  v.plainCreate_ = parseDegreeSet(requireField(in, "create", "intensities"), "intensities.create");
+  const auto& terms = requireObject(requireField(in, "terms", "intensities"), "intensities.terms");
+  for (auto it = terms.begin(); it != terms.end(); ++it)
+    v.intensities_.emplace(it.key(), parseDegreeSet(it.value(), joinPath("intensities.terms", it.key())));
+  const auto& order = requireArray(requireField(in, "order", "intensities"), "intensities.order");
+  for (size_t i = 0; i < order.size(); ++i) {
+    const std::string& w = requireString(order[i], joinPath("intensities.order", i));
+    if (!v.intensities_.count(w))
+      throw Error(errc::kInvalidDocument, "no intensity term '" + w + "'", joinPath("intensities.order", i));
+    v.intensityOrder_.push_back(w);
+  }
+  if (in.contains("synonyms")) {
+    for (auto it = in["synonyms"].begin(); it != in["synonyms"].end(); ++it) {
+      const std::string p = joinPath("intensities.synonyms", it.key());
+      const std::string& target = requireString(it.value(), p);
+      if (!v.intensities_.count(target)) throw Error(errc::kInvalidDocument, "no intensity term '" + target + "'", p);
+      v.intensitySynonyms_[it.key()] = target;
+    }
+  }
+
+  const auto& adjectives = section(doc, "adjectives");
+  for (auto it = adjectives.begin(); it != adjectives.end(); ++it) {
+    const std::string p = joinPath("adjectives", it.key());
+    const auto& a = requireObject(it.value(), p);
+    rejectUnknownKeys(a, p, {"descriptor", "pole", "create"});
+    Adjective adj;
+    adj.word = it.key();
+    adj.descriptor = checkedDescriptor(requireField(a, "descriptor", p), joinPath(p, "descriptor"));
+    if (a.contains("pole")) {
+      const std::string& pole = requireString(a["pole"], joinPath(p, "pole"));
+      if (pole != "high" && pole != "low")
+        throw Error(errc::kInvalidDocument, "pole must be \"high\" or \"low\"", joinPath(p, "pole"));
+      adj.lowPole = pole == "low";
+    }
+    if (a.contains("create")) adj.create = parseDegreeSet(a["create"], joinPath(p, "create"));
+    v.adjectives_[adj.word] = adj;
+  }
+
+  const auto& nouns = section(doc, "nouns");
+  std::map<std::string, std::string> sameAs;
+  for (auto it = nouns.begin(); it != nouns.end(); ++it) {
+    const std::string p = joinPath("nouns", it.key());
+    const auto& n = requireObject(it.value(), p);
+    rejectUnknownKeys(n, p, {"subject", "plural", "conditions", "params", "same_as"});
+    if (n.contains("plural")) v.plurals_[requireString(n["plural"], joinPath(p, "plural"))] = it.key();
+    if (n.contains("same_as")) {
+      sameAs[it.key()] = requireString(n["same_as"], joinPath(p, "same_as"));
+      continue;
+    }
+    Noun noun;
+    noun.word = it.key();
+    if (n.contains("subject")) {
+      noun.subject = requireString(n["subject"], joinPath(p, "subject"));
+      if (noun.subject != "any" && noun.subject != "part")
+        throw Error(errc::kInvalidDocument, "subject must be \"any\" or \"part\"", joinPath(p, "subject"));
+    }
+    if (n.contains("conditions")) {
+      const std::string cp = joinPath(p, "conditions");
+      for (auto c = requireObject(n["conditions"], cp).begin(); c != n["conditions"].end(); ++c) {
+        checkedDescriptor(c.key(), joinPath(cp, c.key()));
+        noun.conditions.push_back({c.key(), parseDegreeSet(c.value(), joinPath(cp, c.key()))});
+      }
+      // Index order, so conditions read the same whatever the document's key order.
+      std::sort(noun.conditions.begin(), noun.conditions.end(), [](const NounCondition& a, const NounCondition& b) {
+        return descriptorIndex(a.descriptor) < descriptorIndex(b.descriptor);
+      });
+    }
+    if (n.contains("params")) noun.params = requireObject(n["params"], joinPath(p, "params"));
+    v.nouns_[noun.word] = noun;
+  }
+  for (const auto& [word, target] : sameAs) {
+    auto found = v.nouns_.find(target);
+    if (found == v.nouns_.end())
+      throw Error(errc::kInvalidDocument, "same_as names no noun '" + target + "'", joinPath(joinPath("nouns", word), "same_as"));
+    Noun copy = found->second;
+    v.nouns_[word] = copy;  // keeps the canonical word for explain
+  }
+
+  readDirections(doc, &v.directions_);
+
+  const auto& distances = section(doc, "distances");
+  const std::string wp = "distances.words";
+  for (auto it = requireObject(requireField(distances, "words", "distances"), wp).begin();
+       it != distances["words"].end(); ++it)
+    v.distances_.emplace(it.key(), parseFuzzyNumber(it.value(), joinPath(wp, it.key())));
+
+  for (auto it = section(doc, "aggregations").begin(); it != doc["aggregations"].end(); ++it)
+    v.aggregations_.push_back(it.key());
+  for (const char* builtinAggregation : {"min", "product", "mean"})
+    if (std::find(v.aggregations_.begin(), v.aggregations_.end(), builtinAggregation) == v.aggregations_.end())
+      throw Error(errc::kInvalidDocument, std::string("aggregations must document '") + builtinAggregation + "'",
+                  "aggregations");
+  for (const auto& name : v.aggregations_)
+    if (name != "min" && name != "product" && name != "mean")
+      throw Error(errc::kInvalidDocument, "unknown aggregation '" + name + "'; the code knows min, product, mean",
+                  joinPath("aggregations", name));
+
+  v.intensityWords_ = sortedKeys(v.intensities_, v.intensitySynonyms_);
+  v.adjectiveWords_ = keysOf(v.adjectives_);
+  v.nounWords_ = sortedKeys(v.nouns_, v.plurals_);
+  v.directionWords_ = keysOf(v.directions_);
+  v.distanceWords_ = keysOf(v.distances_);
+  for (const auto* list : {&v.intensityWords_, &v.adjectiveWords_, &v.nounWords_, &v.directionWords_, &v.distanceWords_})
+    for (const std::string& phrase : *list) {
+      size_t i = 0;
+      while (i < phrase.size()) {
+        size_t j = phrase.find(' ', i);
+        if (j == std::string::npos) j = phrase.size();
+        if (j > i) v.words_.insert(phrase.substr(i, j - i));
+        i = j + 1;
+      }
+    }
+  return v;
+}
+
+Vocabulary Vocabulary::fromFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(errc::kInvalidParameter, "cannot read vocabulary file '" + path + "'", "vocabulary");
+  std::stringstream text;
+  text << in.rdbuf();
+  nlohmann::json doc = nlohmann::json::parse(text.str(), nullptr, false);
+  if (doc.is_discarded())
+    throw Error(errc::kMalformedJson, "vocabulary file '" + path + "' is not JSON", "vocabulary");
+  try {
+    return fromJson(doc);
+  } catch (const Error& e) {
+    throw Error(e.code(), "vocabulary file '" + path + "': " + e.what(), e.path());
+  }
+}
+
+const Vocabulary& Vocabulary::builtin() {
+  static const Vocabulary v = fromJson(nlohmann::json::parse(builtinVocabularyText()));
+  return v;
+}
+
+const FuzzyNumber* Vocabulary::intensity(const std::string& word) const {
+  auto syn = intensitySynonyms_.find(word);
+  auto it = intensities_.find(syn == intensitySynonyms_.end() ? word : syn->second);
+  return it == intensities_.end() ? nullptr : &it->second;
+}
+
+const Adjective* Vocabulary::adjective(const std::string& word) const {
+  auto it = adjectives_.find(word);
+  return it == adjectives_.end() ? nullptr : &it->second;
+}
+
+const Noun* Vocabulary::noun(const std::string& word) const {
+  auto it = nouns_.find(word);
+  if (it != nouns_.end()) return &it->second;
+  auto p = plurals_.find(word);
+  return p == plurals_.end() ? nullptr : noun(p->second);
+}
+
+const Direction* Vocabulary::direction(const std::string& word) const {
+  auto it = directions_.find(word);
+  return it == directions_.end() ? nullptr : &it->second;
+}
+
+const FuzzyNumber* Vocabulary::distance(const std::string& word) const {
+  auto it = distances_.find(word);
+  return it == distances_.end() ? nullptr : &it->second;
+}
+
+bool Vocabulary::isAggregation(const std::string& name) const {
+  return std::find(aggregations_.begin(), aggregations_.end(), name) != aggregations_.end();
+}
+
+
+
+namespace {
+std::unique_ptr<Vocabulary>& activeSlot() {
+  static std::unique_ptr<Vocabulary> slot;
+  return slot;
+}
+}  // namespace
+
+const Vocabulary& activeVocabulary() {
+  const auto& slot = activeSlot();
+  return slot ? *slot : Vocabulary::builtin();
+}
+
+void setActiveVocabulary(Vocabulary vocabulary) { activeSlot() = std::make_unique<Vocabulary>(std::move(vocabulary)); }
+
+double directionMembership(const Direction& direction, const Vec3& offset) {
+  const double r = std::sqrt(dot(offset, offset));
+  if (!(r > 0.0)) return 0.0;
+  double mu = 1.0;
+  if (direction.gamma) {
+    const double gamma = std::acos(std::max(-1.0, std::min(1.0, offset.y / r))) * 180.0 / kPi;
+    mu = std::min(mu, direction.gamma->membership(gamma));
+  }
+  if (direction.beta) {
+    const double horizontal = std::hypot(offset.x, offset.z);
+    if (!(horizontal > 0.0)) return 0.0;  // straight up or down: no horizontal direction
+    double beta = std::atan2(offset.z, offset.x) * 180.0 / kPi;
+    if (beta < 0) beta += 360.0;
+    mu = std::min(mu, wrappedMembership(*direction.beta, beta));
+  }
+  return mu;
+}
+
+std::vector<RankedDirection> directionCandidates(const Direction& direction) {
+  // Local maxima of each set (Bernardes, Wu & D'Ottaviano, §5); beta folded into [0, 360).
+  std::vector<RankedValue> betas{{0.0, 1.0}}, gammas{{90.0, 1.0}};
+  if (direction.beta) {
+    betas.clear();
+    for (const RankedValue& m : localMaxima(direction.beta->breakpoints())) {
+      double b = std::fmod(m.x, 360.0);
+      if (b < 0) b += 360.0;
+      betas.push_back({b, m.mu});
+    }
+  }
+  if (direction.gamma) gammas = localMaxima(direction.gamma->breakpoints());
+  std::vector<RankedDirection> out;
+  for (const RankedValue& g : gammas) {
+    const double gr = g.x * kPi / 180.0;
+    if (!direction.beta) {
+      // Symmetric about Y (top, bottom): the mean of the directions at angle gamma from +Y.
+      out.push_back({{0.0, std::cos(gr) >= 0.0 ? 1.0 : -1.0, 0.0}, g.mu});
+      continue;
+    }
+    for (const RankedValue& b : betas) {
+      const double br = b.x * kPi / 180.0;
+      out.push_back({{std::sin(gr) * std::cos(br), std::cos(gr), std::sin(gr) * std::sin(br)}, std::min(g.mu, b.mu)});
+    }
+  }
+  // cos(90°) is 6e-17, not 0: snap such rounding so "right" is exactly (1, 0, 0).
+  for (RankedDirection& d : out)
+    for (double* c : {&d.vector.x, &d.vector.y, &d.vector.z})
+      if (std::fabs(*c) < 1e-12) *c = 0.0;
+  std::stable_sort(out.begin(), out.end(), [](const RankedDirection& a, const RankedDirection& b) { return a.mu > b.mu; });
+  return out;
+}
+
+}  // namespace fsdb

@@ -1,0 +1,137 @@
+#pragma once
+// Vocabulary: the words of linguistic queries and of parts described by words (Zhang, Pham & Chen,
+// §2.2, §5), loaded from a JSON document users can read and extend. schema/vocabulary.json is the
+// built-in one, compiled into the binary (Vocabulary::builtin()); `fsdb serve --vocabulary FILE`
+// loads another (Vocabulary::fromFile) and makes it the active one (setActiveVocabulary), which
+// GET /vocabulary serves and every parser of the server uses.
+//
+// The document (schema/vocabulary.json describes each section in words):
+//   descriptors   [{name, function, meaning, create}]: documentation of query/linguistic/descriptors.h; the
+//                 names must be exactly descriptorNames() in order (the functions are code).
+//   intensities   {order, plain, create, terms{word: fuzzy set over the degree}, synonyms{word: word}}
+//                 "very bent" is the term `very` over bendness; plain "bent" is `plain` (μ(d) = d);
+//                 `create` is the degree a plain adjective gives a part made from words.
+//   hedges        {"not": text}: `not X` scores 1 − score(X) (query/linguistic/linguistic_query.h).
+//   adjectives    {word: {descriptor, pole: "high"|"low", create: fuzzy number}}: a low-pole
+//                 adjective ("flat", "small", "straight") mirrors its sets, d → 1 − d.
+//   nouns         {word: {subject: "any"|"part", plural, conditions{descriptor: fuzzy set},
+//                 params{a part's params for parts from words}} or {same_as: word, plural}.
+//   directions    {beta{name: set over degrees}, gamma{name: set over 0..180}, primary{word:
+//                 {beta?, gamma}}, secondary{...}, phrases{word(s): direction}}
+//                 (Zhang, Pham & Chen, §2.2).
+//   distances     {words{word: fuzzy number}}; number phrases (query/json/number_phrases.h) too.
+//   aggregations  {name: text}: the documented ways `and` combines scores (min, product, mean).
+// Words are lower case; a noun or direction may have several words ("double pyramid").
+//
+// Errors: fromJson/fromFile throw fsdb::Error(errc::kInvalidDocument) with the JSON path of the bad
+// entry ("nouns.cube.conditions.squariness.trap[1]", "adjectives.bent.descriptor"): unknown
+// descriptors, bad fuzzy sets, sets leaving [0, 1] for degrees, same_as naming nothing.
+// The object is immutable after construction; any number of threads may read it.
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "geometry/fuzzy/fuzzy_number.h"
+#include "geometry/core/vec3.h"
+
+namespace fsdb {
+
+struct Adjective {
+  std::string word;
+  std::string descriptor;
+  bool lowPole = false;                // the adjective names the low end ("flat", "small")
+  std::optional<FuzzyNumber> create;   // the degree of a part made from the plain adjective
+};
+
+struct NounCondition {
+  std::string descriptor;
+  FuzzyNumber set;
+};
+
+struct Noun {
+  std::string word;                        // the canonical word (same_as resolved)
+  std::string subject = "any";             // "any" or "part"
+  std::vector<NounCondition> conditions;   // empty: no constraint ("shape")
+  nlohmann::json params;                   // null for nouns without a shape ("shape", "part")
+};
+
+// A direction of Zhang, Pham & Chen, §2.2: a set over beta (XZ plane, degrees, period 360) and/or
+// one over gamma (angle from the top, 0..180).
+struct Direction {
+  std::string word;
+  std::optional<FuzzyNumber> beta;
+  std::optional<FuzzyNumber> gamma;
+};
+
+class Vocabulary {
+ public:
+  static const Vocabulary& builtin();  // schema/vocabulary.json as compiled in
+  static Vocabulary fromJson(const nlohmann::json& doc);
+  static Vocabulary fromFile(const std::string& path);
+
+  const nlohmann::json& document() const { return document_; }  // what GET /vocabulary serves
+
+  // Lookups by (lower-case) word; null when unknown. Synonyms and plurals resolve.
+  const FuzzyNumber* intensity(const std::string& word) const;
+  const Adjective* adjective(const std::string& word) const;
+  const Noun* noun(const std::string& word) const;               // singular or plural
+  const Direction* direction(const std::string& word) const;     // a direction word or phrase
+  const FuzzyNumber* distance(const std::string& word) const;
+
+  const FuzzyNumber& plain() const { return plain_; }
+  const FuzzyNumber& plainCreate() const { return plainCreate_; }
+  const std::vector<std::string>& intensityOrder() const { return intensityOrder_; }
+  bool isAggregation(const std::string& name) const;
+
+  // Every word and multi-word phrase of each kind, sorted (for messages, tests and the parser);
+  // listed once, when the vocabulary is loaded.
+  const std::vector<std::string>& intensityWords() const { return intensityWords_; }
+  const std::vector<std::string>& adjectiveWords() const { return adjectiveWords_; }
+  const std::vector<std::string>& nounWords() const { return nounWords_; }  // singular and plural
+  const std::vector<std::string>& directionWords() const { return directionWords_; }
+  const std::vector<std::string>& distanceWords() const { return distanceWords_; }
+  const std::vector<std::string>& aggregationNames() const { return aggregations_; }
+  // Every single word of all those phrases ("double pyramid" gives "double" and "pyramid").
+  bool knowsWord(const std::string& word) const { return words_.count(word) > 0; }
+  const std::set<std::string>& words() const { return words_; }
+
+ private:
+  nlohmann::json document_;
+  FuzzyNumber plain_, plainCreate_;
+  std::vector<std::string> intensityOrder_;
+  std::map<std::string, FuzzyNumber> intensities_;
+  std::map<std::string, std::string> intensitySynonyms_;
+  std::map<std::string, Adjective> adjectives_;
+  std::map<std::string, Noun> nouns_;              // singular
+  std::map<std::string, std::string> plurals_;     // plural -> singular
+  std::map<std::string, Direction> directions_;    // primary, secondary, phrases
+  std::map<std::string, FuzzyNumber> distances_;
+  std::vector<std::string> aggregations_;
+  std::vector<std::string> intensityWords_, adjectiveWords_, nounWords_, directionWords_, distanceWords_;
+  std::set<std::string> words_;
+};
+
+// The vocabulary the server's parsers use: builtin() unless setActiveVocabulary was called (once,
+// at start-up, before any request; not synchronised).
+const Vocabulary& activeVocabulary();
+void setActiveVocabulary(Vocabulary vocabulary);
+
+// Zhang, Pham & Chen, §2.2: the membership of a direction for an offset vector
+// (X right, Y top, Z front): min(μ_beta(β), μ_gamma(γ)) with β = atan2(z, x) in [0, 360) (beta sets
+// are read modulo 360) and γ = the angle from +Y in [0, 180]. A zero offset has no direction: 0.
+double directionMembership(const Direction& direction, const Vec3& offset);
+
+// Ranked crisp unit vectors for a direction (defuzzification by local maxima; Bernardes, Wu &
+// D'Ottaviano, §5): the local maxima of the beta set and of the gamma set (the beta set read on
+// [0, 360)), combined, ranked by min(μ_beta, μ_gamma), best first. "right" gives (1, 0, 0) first.
+struct RankedDirection {
+  Vec3 vector;
+  double mu;
+};
+std::vector<RankedDirection> directionCandidates(const Direction& direction);
+
+}  // namespace fsdb

@@ -1,5 +1,0 @@
-#pragma once
-// The text of schema/vocabulary.json, embedded at build time (query/vocabulary_embed.cpp.in).
-namespace fsdb {
-const char* builtinVocabularyText();
-}

@@ -1,0 +1,182 @@
+// POST /evaluate (inline documents) and the stored-shape forms (docs/api.md §3, §4):
+//   POST /shapes/{id}/evaluate        the same answer for a stored shape, cached by content
+//   GET  /shapes/{id}/membership      the levels of one point
+//   GET  /shapes/{id}/mesh            OBJ or binary STL of lower/upper(α), cached
+//   GET  /shapes/{id}/grid.vdb        both grids as a .vdb file, cached
+// Cache keys hash the shape's document, the documents of everything it references (so any
+// change below a shape changes its keys; the store also drops the rows on every write), and
+// the request's resolution, alphas and method.
+#include <cmath>
+#include <cstdlib>
+
+#include "db/content_hash.h"
+#include "db/store.h"
+#include "geometry/voxel/envelope_mesh.h"
+#include "geometry/core/error.h"
+#include "query/json/json_body.h"
+#include "server/http/api.h"
+#include "server/service/documents.h"
+#include "server/service/evaluation.h"
+#include "server/http/http_server.h"
+#include "server/service/mesh_format.h"
+
+namespace fsdb {
+
+double numberParam(const ApiRequest& req, const std::string& name, std::optional<double> fallback) {
+  if (!req.hasQueryParam(name)) {
+    if (fallback) return *fallback;
+    throw Error(errc::kInvalidParameter, "query parameter " + name + " is required", name);
+  }
+  const std::string text = req.queryParam(name);
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v))
+    throw Error(errc::kInvalidParameter, name + " must be a finite number, got \"" + text + "\"", name);
+  return v;
+}
+
+namespace {
+
+constexpr int kDefaultExportResolution = 64;
+
+int64_t shapeId(const ApiRequest& req) { return positiveInteger(req.pathParams[0], "id"); }
+
+
+// The stored shape, parsed once (the same parse serves the cache key and, on a miss, the
+// evaluation), and a fingerprint of everything it is made of: its document and each referenced
+// object's id and document, in the order the parser resolves them.
+struct StoredShape {
+  StoredObject object;
+  ParsedShape parsed;
+  std::string fingerprint;
+};
+
+StoredShape loadShape(const Store& store, int64_t id, size_t maxNodes) {
+  StoredShape s{store.get("shape", id), {}, ""};
+  std::string parts = s.object.documentJson;
+  const ReferenceResolver base = storeResolver(store);
+  const ReferenceResolver recording = [&](const std::string& kind, const nlohmann::json& key) {
+    auto r = base(kind, key);
+    if (r) parts += "\n" + kind + ":" + std::to_string(r->id) + ":" + r->document.dump();
+    return r;
+  };
+  s.parsed = parseShapeField(nlohmann::json::parse(s.object.documentJson), "", maxNodes, recording);
+  s.fingerprint = contentHash(parts);
+  return s;
+}
+
+std::string cacheKey(const std::string& what, const StoredShape& shape, const std::string& request) {
+  return what + ":" + contentHash(shape.fingerprint + "\n" + request);
+}
+
+int exportResolution(const ApiRequest& req, int maxResolution) {
+  const double r = numberParam(req, "resolution", kDefaultExportResolution);
+  if (r != std::floor(r) || r < 2)
+    throw Error(errc::kInvalidParameter, "resolution must be an integer of at least 2", "resolution");
+  if (r > maxResolution)
+    throw Error(errc::kLimitExceeded,
+                "resolution " + std::to_string(static_cast<long long>(r)) + " exceeds max_resolution=" +
+                    std::to_string(maxResolution),
+                "resolution");
+  return static_cast<int>(r);
+}
+
+ApiResponse bytesResponse(std::string bytes, const std::string& contentType, const std::string& filename,
+                          bool cached) {
+  ApiResponse out{200, nullptr, std::move(bytes), contentType};
+  out.headers.emplace_back("Content-Disposition", "attachment; filename=\"" + filename + "\"");
+  out.headers.emplace_back("X-Fsdb-Cache", cached ? "hit" : "miss");
+  return out;
+}
+
+}  // namespace
+
+void registerEvaluationRoutes(HttpServer& server, Store& store) {
+  const ServerLimits& serverLimits = server.options().limits;
+  const EvaluationLimits limits{serverLimits.maxResolution, serverLimits.maxNodes, serverLimits.maxGridMb,
+                                serverLimits.maxEvalMs};
+  const int maxDepth = server.options().limits.maxJsonDepth;
+
+  server.addRoute("POST", "/evaluate", [limits, &store](const ApiRequest& req) {
+    return ApiResponse{200, evaluateRequest(req.body, limits, storeResolver(store))};
+  });
+
+  // The body ({"resolution","alphas","method"}) may be empty: the defaults of POST /evaluate.
+  server.addRoute("POST", "/shapes/{id}/evaluate", [limits, maxDepth, &store](const ApiRequest& req) {
+    nlohmann::json request = nlohmann::json::object();
+    if (req.rawBody().find_first_not_of(" \t\r\n") != std::string::npos)
+      request = parseJsonBody(req.rawBody(), maxDepth);
+    requireObject(request, "");
+    const StoredShape shape = loadShape(store, shapeId(req), limits.maxNodes);
+    const std::string key = cacheKey("evaluate", shape, request.dump());
+    if (auto hit = store.cachedEvaluation(key)) {
+      nlohmann::json result = nlohmann::json::parse(hit->resultJson);
+      result["cached"] = true;
+      return ApiResponse{200, result};
+    }
+    nlohmann::json result = evaluateParsedShape(request, shape.parsed, limits).result;
+    result["shape_id"] = shape.object.id;
+    result["shape_version"] = shape.object.version;
+    store.storeEvaluation(shape.object.id, key, {result.dump(), ""});
+    result["cached"] = false;
+    return ApiResponse{200, result};
+  }, RouteOptions{false, true});
+
+  // docs/api.md §4: "upper" is the highest α with the point in upper(α). "lower" as docs/api.md
+  // words it (the highest α with the point in lower(α)) is 1 or 0, because lower(α) grows with α;
+  // the informative number is "lower_from", the lowest α from which the point is necessarily
+  // inside (null when never), and "necessity" = 1 − lower_from (Zhang, Pham & Chen, §3.2;
+  // alpha_field.h).
+  server.addRoute("GET", "/shapes/{id}/membership", [limits, &store](const ApiRequest& req) {
+    const Vec3 p{numberParam(req, "x", std::nullopt), numberParam(req, "y", std::nullopt),
+                 numberParam(req, "z", std::nullopt)};
+    const AlphaLevels levels = loadShape(store, shapeId(req), limits.maxNodes).parsed.field->levelsAt(p);
+    const bool everInLower = levels.lower <= 1.0f;
+    return ApiResponse{200,
+                       {{"point", {p.x, p.y, p.z}},
+                        {"upper", levels.upper},
+                        {"lower", everInLower ? 1.0 : 0.0},
+                        {"lower_from", everInLower ? nlohmann::json(levels.lower) : nlohmann::json(nullptr)},
+                        {"necessity", everInLower ? 1.0 - levels.lower : 0.0}}};
+  });
+
+  server.addRoute("GET", "/shapes/{id}/mesh", [limits, &store](const ApiRequest& req) {
+    const double alpha = numberParam(req, "alpha", 0.5);
+    if (alpha < 0.0 || alpha > 1.0) throw Error(errc::kInvalidParameter, "alpha lies in [0, 1]", "alpha");
+    const std::string bound = req.hasQueryParam("bound") ? req.queryParam("bound") : "upper";
+    if (bound != "lower" && bound != "upper")
+      throw Error(errc::kInvalidParameter, "bound must be lower or upper, got \"" + bound + "\"", "bound");
+    const std::string format = req.hasQueryParam("format") ? req.queryParam("format") : "obj";
+    if (format != "obj" && format != "stl")
+      throw Error(errc::kInvalidParameter, "format must be obj or stl, got \"" + format + "\"", "format");
+    const int resolution = exportResolution(req, limits.maxResolution);
+    const StoredShape shape = loadShape(store, shapeId(req), limits.maxNodes);
+    const std::string filename = shape.object.name + "-" + bound + "-" + std::to_string(alpha) + "." + format;
+    const std::string contentType = format == "obj" ? "model/obj" : "model/stl";
+    const std::string key = cacheKey("mesh", shape,
+                                     nlohmann::json{{"alpha", alpha}, {"bound", bound}, {"format", format},
+                                                    {"resolution", resolution}}.dump());
+    if (auto hit = store.cachedEvaluation(key)) return bytesResponse(hit->vdb, contentType, filename, true);
+    const Evaluation e = evaluateParsedShape({{"resolution", resolution}, {"alphas", {alpha}}}, shape.parsed, limits);
+    const TriangleMesh mesh =
+        extractMesh(*e.grid, alpha, bound == "lower" ? EnvelopeBound::kLower : EnvelopeBound::kUpper);
+    std::string bytes = format == "obj" ? toObj(mesh) : toBinaryStl(mesh);
+    store.storeEvaluation(shape.object.id, key, {nlohmann::json{{"triangles", mesh.triangles.size()}}.dump(), bytes});
+    return bytesResponse(std::move(bytes), contentType, filename, false);
+  });
+
+  server.addRoute("GET", "/shapes/{id}/grid.vdb", [limits, &store](const ApiRequest& req) {
+    const int resolution = exportResolution(req, limits.maxResolution);
+    const StoredShape shape = loadShape(store, shapeId(req), limits.maxNodes);
+    const std::string filename = shape.object.name + ".vdb";
+    const std::string key = cacheKey("vdb", shape, std::to_string(resolution));
+    if (auto hit = store.cachedEvaluation(key))
+      return bytesResponse(hit->vdb, "application/octet-stream", filename, true);
+    const Evaluation e = evaluateParsedShape({{"resolution", resolution}, {"alphas", {1.0}}}, shape.parsed, limits);
+    std::string bytes = vdbBytes(*e.grid);
+    store.storeEvaluation(shape.object.id, key, {"{}", bytes});
+    return bytesResponse(std::move(bytes), "application/octet-stream", filename, false);
+  });
+}
+
+}  // namespace fsdb

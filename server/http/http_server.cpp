@@ -1,0 +1,242 @@
+#include "server/http/http_server.h"
+
+#include <httplib.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
+#include <regex>
+#include <thread>
+
+#include "geometry/core/error.h"
+#include "query/json/json_body.h"
+#include "server/service/error_json.h"
+
+namespace fsdb {
+namespace {
+
+// Start time of the request a worker thread is serving; set by the pre-routing handler and
+// read by the logger, both of which run on the thread that serves the request.
+thread_local std::chrono::steady_clock::time_point tRequestStart;
+
+// "/parts/{id}/mesh" -> "^/parts/([^/]+)/mesh$"
+std::string routeRegex(const std::string& openapiPath) {
+  static const std::regex param("\\{[^}/]+\\}");
+  return std::regex_replace(openapiPath, param, "([^/]+)");
+}
+
+void sendJson(httplib::Response& res, int status, const nlohmann::json& body) {
+  res.status = status;
+  // error_handler_t::replace: a stray invalid UTF-8 byte in an echoed string must not turn a
+  // client error into a server exception.
+  res.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), "application/json");
+}
+
+// Compares in time independent of where the strings differ, so the token cannot be guessed
+// byte by byte from response times.
+bool bearerMatches(const std::string& header, const std::string& token) {
+  const std::string prefix = "Bearer ";
+  if (header.size() != prefix.size() + token.size() || header.compare(0, prefix.size(), prefix) != 0) return false;
+  unsigned char diff = 0;
+  for (size_t i = 0; i < token.size(); ++i) diff |= static_cast<unsigned char>(header[prefix.size() + i] ^ token[i]);
+  return diff == 0;
+}
+
+// Reads a POST or PUT body through httplib's ContentReader into *body (see addRoute for why).
+// Multipart bodies are drained and refused (415); a body over maxBody, which httplib checks only
+// against Content-Length and not for chunked transfers, is 413 and closes the connection.
+void readBody(const httplib::Request& req, const httplib::ContentReader& content, size_t maxBody,
+              std::string* body, httplib::Response& res) {
+  if (req.is_multipart_form_data()) {
+    content([](const httplib::MultipartFormData&) { return true; }, [](const char*, size_t) { return true; });
+    throw Error(errc::kUnsupportedMediaType,
+                "multipart/form-data bodies are not accepted; send the document itself "
+                "(Content-Type: application/json, or JSON Lines for bulk imports)",
+                "body");
+  }
+  bool tooLarge = false;
+  size_t discarded = 0;
+  const bool read = content([&](const char* data, size_t n) {
+    if (!tooLarge && body->size() + n <= maxBody) {
+      body->append(data, n);
+      return true;
+    }
+    // Over the limit: drop what was kept and read on without keeping, so that a client still
+    // sending sees the 413 instead of a reset connection; up to 4 × max_body_bytes, then stop
+    // reading (the connection closes).
+    tooLarge = true;
+    std::string().swap(*body);
+    discarded += n;
+    return discarded <= 4 * maxBody;
+  });
+  // httplib sets 413 when the Content-Length is over its payload limit (max_body_bytes too).
+  if (tooLarge || (!read && res.status == 413)) {
+    res.set_header("Connection", "close");
+    throw Error(errc::kLimitExceeded, "request body larger than max_body_bytes=" + std::to_string(maxBody), "body");
+  }
+  if (!read) {
+    res.set_header("Connection", "close");
+    throw Error(errc::kMalformedJson, "the request body ended before its announced length (or its chunks were malformed)",
+                "body");
+  }
+}
+
+void sendError(httplib::Response& res, const Error& e) {
+  sendJson(res, httpStatusFor(e.code()), errorBody(e.code(), e.what(), e.path()));
+}
+
+}  // namespace
+
+std::string ApiRequest::queryParam(const std::string& name) const {
+  return raw.has_param(name.c_str()) ? raw.get_param_value(name.c_str()) : std::string();
+}
+
+bool ApiRequest::hasQueryParam(const std::string& name) const { return raw.has_param(name.c_str()); }
+
+HttpServer::HttpServer(ServerOptions options)
+    : options_(std::move(options)), server_(std::make_unique<httplib::Server>()) {
+  installHandlers();
+}
+
+HttpServer::~HttpServer() = default;
+
+void HttpServer::addRoute(const std::string& method, const std::string& openapiPath, ApiHandler handler,
+                          RouteOptions routeOptions) {
+  routes_.push_back({method, openapiPath});
+  routePatterns_.emplace_back(routeRegex(openapiPath));
+  const int maxDepth = options_.limits.maxJsonDepth;
+  const size_t maxBody = options_.limits.maxBodyBytes;
+  const std::string token = routeOptions.write ? options_.token : std::string();
+  // POST and PUT bodies are read here through httplib's ContentReader, not by httplib itself:
+  // httplib parses a body sent as application/x-www-form-urlencoded (curl -d's default) as a
+  // form and answers 413 when it is over 8 KiB, so every JSON document over 8 KiB sent with
+  // `curl -d` was refused as "larger than max_body_bytes". It also does not bound chunked bodies;
+  // readBody does. (httplib still refuses a Content-Length over max_body_bytes first.)
+  auto wrapped = [handler = std::move(handler), maxDepth, maxBody, token, routeOptions](
+                     const httplib::Request& req, httplib::Response& res, const httplib::ContentReader* content) {
+    ApiRequest api{req, nullptr, {}, {}};
+    try {
+      // The whole body first, as httplib did before any handler ran, so that an early error
+      // never leaves unread bytes on a keep-alive connection.
+      if (content) readBody(req, *content, maxBody, &api.bodyBytes, res);
+      if (!token.empty() && !bearerMatches(req.get_header_value("Authorization"), token)) {
+        res.set_header("WWW-Authenticate", "Bearer");
+        throw Error(errc::kUnauthorized,
+                    "this server requires \"Authorization: Bearer <token>\" for writes (fsdb serve --token)",
+                    "");
+      }
+      for (size_t i = 1; i < req.matches.size(); ++i) api.pathParams.push_back(req.matches[i].str());
+      if (content && !routeOptions.rawBody) api.body = parseJsonBody(api.bodyBytes, maxDepth);
+      ApiResponse out = handler(api);
+      for (const auto& [name, value] : out.headers) res.set_header(name, value);
+      if (out.contentType.empty()) {
+        sendJson(res, out.status, out.json);
+      } else {
+        res.status = out.status;
+        res.set_content(out.rawBody, out.contentType.c_str());
+      }
+    } catch (const Error& e) {
+      sendError(res, e);
+    }
+    // Anything else propagates to the exception handler: a 500 with a JSON body.
+  };
+  const std::string pattern = routeRegex(openapiPath);
+  auto withoutBody = [wrapped](const httplib::Request& req, httplib::Response& res) { wrapped(req, res, nullptr); };
+  auto withBody = [wrapped](const httplib::Request& req, httplib::Response& res,
+                            const httplib::ContentReader& content) { wrapped(req, res, &content); };
+  if (method == "GET") server_->Get(pattern, withoutBody);
+  else if (method == "POST") server_->Post(pattern, withBody);
+  else if (method == "PUT") server_->Put(pattern, withBody);
+  else if (method == "DELETE") server_->Delete(pattern, withoutBody);
+  else throw std::logic_error("unsupported method " + method);
+}
+
+void HttpServer::installHandlers() {
+  auto& s = *server_;
+  s.set_payload_max_length(options_.limits.maxBodyBytes);
+  // httplib's default sets SO_REUSEPORT, which lets a second fsdb bind the same port and
+  // silently share its traffic. SO_REUSEADDR alone allows a quick restart after a stop but
+  // makes a port in use an error (tests/server/http/service_test: RefusesAPortInUse).
+  // TCP_NODELAY (inherited by accepted sockets): httplib writes headers and body separately, and
+  // Nagle's algorithm with the client's delayed ACK then adds ~40 ms to every keep-alive request
+  // (bench/bench_get_part.sh: 75 requests/s without it).
+  s.set_socket_options([](socket_t sock) {
+    int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, reinterpret_cast<const void*>(&yes), sizeof(yes));
+    setsockopt(sock, IPPROTO_TCP, TCP_NODELAY, reinterpret_cast<const void*>(&yes), sizeof(yes));
+  });
+  const int threads = options_.threads > 0 ? options_.threads
+                                           : std::max(2u, std::thread::hardware_concurrency());
+  s.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<size_t>(threads)); };
+
+  s.set_pre_routing_handler([](const httplib::Request&, httplib::Response&) {
+    tRequestStart = std::chrono::steady_clock::now();
+    return httplib::Server::HandlerResponse::Unhandled;
+  });
+
+  // Called for every status >= 400 whose body is still empty: unknown routes, wrong methods and
+  // bodies over the limit, which httplib answers before any handler runs.
+  s.set_error_handler([this](const httplib::Request& req, httplib::Response& res) {
+    if (!res.body.empty()) return;
+    if (res.status == 413) {
+      sendError(res, Error(errc::kLimitExceeded,
+                           "request body larger than max_body_bytes=" +
+                               std::to_string(options_.limits.maxBodyBytes),
+                           "body"));
+      return;
+    }
+    if (res.status == 404) {
+      std::vector<std::string> allowed;
+      for (size_t i = 0; i < routes_.size(); ++i)
+        if (std::regex_match(req.path, routePatterns_[i])) allowed.push_back(routes_[i].method);
+      if (!allowed.empty()) {
+        std::string allow;
+        for (const auto& m : allowed) allow += (allow.empty() ? "" : ", ") + m;
+        res.set_header("Allow", allow);
+        sendError(res, Error("method_not_allowed", req.method + " is not allowed on " + req.path +
+                                                       "; allowed: " + allow, ""));
+        return;
+      }
+      sendError(res, Error(errc::kNotFound, "no endpoint " + req.method + " " + req.path +
+                                                "; GET /openapi.json lists every endpoint", ""));
+      return;
+    }
+    sendJson(res, res.status, errorBody("http_" + std::to_string(res.status), "request failed", ""));
+  });
+
+  s.set_exception_handler([](const httplib::Request& req, httplib::Response& res, std::exception_ptr ep) {
+    std::string what = "unknown exception";
+    try {
+      std::rethrow_exception(ep);
+    } catch (const std::exception& e) {
+      what = e.what();
+    } catch (...) {
+    }
+    spdlog::error("{} {}: internal error: {}", req.method, req.path, what);
+    sendJson(res, 500, errorBody("internal", "internal error: " + what, ""));
+  });
+
+  s.set_logger([](const httplib::Request& req, const httplib::Response& res) {
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - tRequestStart).count();
+    spdlog::info("{} {} {} {}B {:.2f}ms", req.method, req.path, res.status, res.body.size(), ms);
+  });
+}
+
+int HttpServer::bind() {
+  int port = options_.port;
+  if (port == 0) {
+    port = server_->bind_to_any_port(options_.host);
+    if (port < 0) throw std::runtime_error("cannot bind " + options_.host + " on any port");
+  } else if (!server_->bind_to_port(options_.host, port)) {
+    throw std::runtime_error("cannot bind " + options_.host + ":" + std::to_string(port) +
+                             " (in use, or not an address of this machine); try --port 0");
+  }
+  return port;
+}
+
+void HttpServer::listen() { server_->listen_after_bind(); }
+
+void HttpServer::stop() { server_->stop(); }
+
+}  // namespace fsdb

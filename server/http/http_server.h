@@ -1,0 +1,112 @@
+#pragma once
+// fsdb's HTTP server: cpp-httplib underneath, JSON in and out, one error format.
+//
+// Contract:
+// - Every response body is JSON (except exports that name another media type). Every failure is
+//   {"error":{"code","message","path"}} with the status of server/service/error_json.h, including
+//   unknown routes (404), wrong methods (405), oversized bodies (413) and handler exceptions
+//   (500). A bad request never stops the server.
+// - Routes are registered through addRoute(), which records them; routes() is what
+//   GET /openapi.json must describe (a test holds the two equal).
+// - start() binds before it returns, so the caller can print the real port (`--port 0`).
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "server/service/limits.h"
+
+namespace httplib {
+class Server;
+struct Request;
+struct Response;
+}  // namespace httplib
+
+namespace fsdb {
+
+
+struct ServerOptions {
+  std::string host = "127.0.0.1";
+  // --token / FSDB_TOKEN: when set, write routes need "Authorization: Bearer <token>" (401
+  // unauthorized otherwise). Reads never need it.
+  std::string token;
+  int port = 8080;  // 0: pick a free port
+  int threads = 0;  // 0: hardware concurrency (at least 2)
+  // Build the stored shapes' graphs of structural search in the background at start
+  // (server/service/graph_warmup.h); --no-warm-graphs turns it off.
+  bool warmGraphs = true;
+  ServerLimits limits;
+};
+
+// What a handler gets: the parsed JSON body (null for GET and raw-body routes), the raw request
+// for query strings, and the body bytes as received.
+struct ApiRequest {
+  const httplib::Request& raw;
+  nlohmann::json body;
+  std::vector<std::string> pathParams;  // values of the route's {name} segments, in order
+  std::string bodyBytes;  // POST and PUT: the body (read by the server, never by httplib: see addRoute)
+  std::string queryParam(const std::string& name) const;  // "" when absent
+  bool hasQueryParam(const std::string& name) const;
+  const std::string& rawBody() const { return bodyBytes; }  // raw-body routes read it
+};
+
+// What a handler returns: status + JSON, or (for exports) a body with its own media type.
+struct ApiResponse {
+  ApiResponse() = default;
+  ApiResponse(int s, nlohmann::json j, std::string raw = {}, std::string type = {})
+      : status(s), json(std::move(j)), rawBody(std::move(raw)), contentType(std::move(type)) {}
+  int status = 200;
+  nlohmann::json json;
+  std::string rawBody;      // used when contentType is not JSON
+  std::string contentType;  // "" = application/json
+  std::vector<std::pair<std::string, std::string>> headers;  // extra headers (Location, ...)
+};
+
+struct RouteOptions {
+  bool write = false;    // changes the database: needs the bearer token when one is set
+  bool rawBody = false;  // the handler reads raw.body itself (JSON Lines); body stays null
+};
+
+using ApiHandler = std::function<ApiResponse(const ApiRequest&)>;
+
+struct Route {
+  std::string method;       // "GET", "POST", ...
+  std::string openapiPath;  // "/operators/evaluate", "/parts/{id}"
+};
+
+class HttpServer {
+ public:
+  explicit HttpServer(ServerOptions options);
+  ~HttpServer();
+  HttpServer(const HttpServer&) = delete;
+  HttpServer& operator=(const HttpServer&) = delete;
+
+  // Registers a handler. `openapiPath` uses OpenAPI templating ("/parts/{id}"); each {name}
+  // matches one path segment. Handlers throw fsdb::Error for client errors.
+  void addRoute(const std::string& method, const std::string& openapiPath, ApiHandler handler,
+                RouteOptions routeOptions = {});
+  const std::vector<Route>& routes() const { return routes_; }
+  const ServerOptions& options() const { return options_; }
+
+  // Binds host:port (port 0 picks one) and returns the bound port; throws std::runtime_error
+  // when the address cannot be bound.
+  int bind();
+  // Serves until stop(); returns after in-flight requests are answered.
+  void listen();
+  // Thread-safe; stops accepting and makes listen() return.
+  void stop();
+
+ private:
+  void installHandlers();
+
+  ServerOptions options_;
+  std::unique_ptr<httplib::Server> server_;
+  std::vector<Route> routes_;
+  std::vector<std::regex> routePatterns_;  // routes_[i]'s path pattern, compiled once (405 lookup)
+};
+
+}  // namespace fsdb

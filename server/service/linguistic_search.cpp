@@ -1,0 +1,302 @@
+// See server/service/linguistic_search.h.
+#include "server/service/linguistic_search.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <unordered_set>
+
+#include "db/descriptor_index.h"
+#include "geometry/core/error.h"
+#include "query/linguistic/descriptor_prefilter.h"
+#include "query/linguistic/vocabulary.h"
+#include "query/json/json_body.h"
+#include "query/document/part_json.h"
+#include "server/service/descriptor_rows.h"
+
+namespace fsdb {
+namespace {
+
+constexpr size_t kChunk = 1000;  // objects read from the store at a time
+constexpr int kDefaultLimit = 10;
+constexpr int kMaxLimit = 1000;
+
+using Clock = std::chrono::steady_clock;
+
+double millisSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Best first, ties by id.
+bool better(const LinguisticHit& a, const LinguisticHit& b) {
+  if (a.score.score != b.score.score) return a.score.score > b.score.score;
+  return a.id < b.id;
+}
+
+// The same order for candidates: highest bound first, ties by id (the order hits take).
+bool boundFirst(const Candidate& a, const Candidate& b) { return a.bound != b.bound ? a.bound > b.bound : a.id < b.id; }
+
+class Scorer {
+ public:
+  Scorer(const Store& store, const LinguisticQuery& query, const LinguisticSearchOptions& options)
+      : store_(store), query_(query), options_(options), limit_(static_cast<size_t>(std::max(1, options.limit))),
+        cut_(std::max(options.threshold, query.atLeast)), start_(Clock::now()) {}
+
+  // Scores `candidates` of `kind`; bounded: best bound first, stopping where no bound can win.
+  void score(const std::string& kind, std::vector<Candidate> candidates, bool bounded) {
+    candidates_ += candidates.size();
+    const size_t chunkSize = bounded ? kBoundedChunk : kChunk;
+    std::vector<int64_t> chunk;
+    bool stop = false;
+    size_t ordered = 0;  // bounded: candidates[0, ordered) are the best, in order
+    for (size_t next = 0; next < candidates.size() && !stop;) {
+      checkTime();
+      if (bounded && next == ordered) ordered = orderNext(candidates, ordered);
+      chunk.clear();
+      const size_t end = bounded ? ordered : candidates.size();
+      for (; next < end && chunk.size() < chunkSize; ++next) {
+        if (bounded && !canEnter(candidates[next])) {  // sorted: no later one can either
+          stop = true;
+          break;
+        }
+        chunk.push_back(candidates[next].id);
+      }
+      scoreChunk(kind, chunk);
+    }
+  }
+
+  // The level scan of one kOverlap leaf `driver` for parts (one row per object), the plan being
+  // `driver` itself or a kAnd (a t-norm) of which it is a child; see levelPieces
+  // (query/linguistic/descriptor_prefilter.h). Why it returns what scoring every candidate returns:
+  // - every object of the plan's candidates is in exactly one piece or pending (the pieces cut
+  //   the store's ranges of driver.test, whose union is the driver's candidates; a kAnd's
+  //   candidates are a subset), and every other object scores 0 (the prefilter's rules);
+  // - a pending object's bound is 1; a row's is scoreBound of driver, <= its piece's bound; under
+  //   a t-norm T(a, b) <= min(a, b) <= the driver's score, so both bound the plan's score;
+  // - a candidate is scored only when its bound is > the largest bound of the pieces not yet
+  //   read (so no unread object can be better than it, even tied with a smaller id), and the
+  //   scan ends when the best unscored candidate cannot enter (canEnter: its bound is below the
+  //   cut, or the limit-th score beats it or ties with a smaller id) with that bound > every
+  //   unread piece's, or when no unread piece can enter (bound < the limit-th score, strictly, or
+  //   below the cut): then no unscored object can be among the results.
+  void scoreLevels(const Store& store, const std::string& kind, const PrefilterPlan& driver) {
+    struct Piece {
+      DescriptorRange range;
+      double bound;
+    };
+    std::vector<Piece> pieces;
+    const SupportTest& t = driver.test;
+    for (const DescriptorRange& r : store.descriptorRanges({t.descriptor, t.lo, t.hi, t.loIncluded, t.hiIncluded, t.wideStrict})) {
+      const double maxWidth = r.widthClass == kCrispWidthClass ? 0 : std::ldexp(1.0, r.widthClass);
+      for (const LevelPiece& p : levelPieces(driver, maxWidth, r.fromLo, r.toLo))
+        pieces.push_back({{r.descriptor, r.widthClass, p.fromLo, p.toLo, r.leastHi}, p.bound});
+    }
+    std::stable_sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) { return a.bound > b.bound; });
+    const auto worse = [](const Candidate& a, const Candidate& b) { return boundFirst(b, a); };  // heap: best on top
+    std::vector<Candidate> pool;
+    const std::vector<int64_t> pendingIds = store.pendingDescriptorIds(kind);
+    const std::unordered_set<int64_t> pending(pendingIds.begin(), pendingIds.end());
+    for (int64_t id : pendingIds) pool.push_back({id, 1.0});
+    std::make_heap(pool.begin(), pool.end(), worse);
+    candidates_ += pool.size();
+    std::vector<int64_t> chunk;
+    for (size_t next = 0;;) {
+      checkTime();
+      const double unread = next < pieces.size() ? pieces[next].bound : 0;
+      chunk.clear();
+      bool done = false;  // the best unscored candidate cannot enter, nor can any after it
+      while (!pool.empty() && pool.front().bound > unread && chunk.size() < kBoundedChunk) {
+        if (!canEnter(pool.front())) {
+          done = true;
+          break;
+        }
+        chunk.push_back(pool.front().id);
+        std::pop_heap(pool.begin(), pool.end(), worse);
+        pool.pop_back();
+      }
+      if (!chunk.empty()) scoreChunk(kind, chunk);
+      if (done) return;
+      if (!chunk.empty()) continue;
+      if (next == pieces.size() || !canEnter({std::numeric_limits<int64_t>::min(), unread})) return;
+      for (const DescriptorCandidate& row : store.descriptorRangeRows(kind, pieces[next++].range)) {
+        if (pending.count(row.id) != 0) continue;
+        pool.push_back({row.id, scoreBound(driver, row.supportLo, row.supportHi, false)});
+        std::push_heap(pool.begin(), pool.end(), worse);
+        ++candidates_;
+      }
+    }
+  }
+
+  LinguisticSearchResult result() {
+    trim();
+    return {std::move(hits_), candidates_, scored_};
+  }
+
+ private:
+  void scoreChunk(const std::string& kind, const std::vector<int64_t>& chunk) {
+    for (const IndexedObject& object : store_.indexedObjects(kind, chunk)) {
+      try {
+        keep(kind, object, kind == "part" ? scorePart(object) : scoreStoredShape(object));
+      } catch (const Error& e) {
+        if (e.code() != std::string(errc::kNotFound)) throw;  // deleted meanwhile
+      }
+    }
+    scored_ += chunk.size();
+    trim();
+  }
+
+  static constexpr size_t kBoundedChunk = 64;  // small: the bound of the next one may stop it
+
+  // Puts the best of candidates[from, end) in order at its front (a block that grows fourfold,
+  // so a search that stops early selects instead of sorting them all); returns the block's end.
+  size_t orderNext(std::vector<Candidate>& candidates, size_t from) {
+    block_ = block_ == 0 ? 4 * (limit_ + kBoundedChunk) : 4 * block_;
+    const size_t end = std::min(candidates.size(), from + block_);
+    const auto begin = candidates.begin() + static_cast<std::ptrdiff_t>(from);
+    const auto middle = candidates.begin() + static_cast<std::ptrdiff_t>(end);
+    std::nth_element(begin, middle - (end < candidates.size() ? 0 : 1), candidates.end(), boundFirst);
+    std::sort(begin, middle, boundFirst);
+    return end;
+  }
+
+  // Whether a candidate with this bound could still be among the results.
+  bool canEnter(const Candidate& c) const {
+    if (c.bound < cut_ || !(c.bound > 0)) return false;
+    if (hits_.size() < limit_) return true;
+    const LinguisticHit& kth = hits_.back();
+    return c.bound > kth.score.score || (c.bound == kth.score.score && c.id < kth.id);
+  }
+
+  // Keeps the best `limit` hits, sorted.
+  void trim() {
+    const size_t n = std::min(hits_.size(), limit_);
+    std::partial_sort(hits_.begin(), hits_.begin() + static_cast<std::ptrdiff_t>(n), hits_.end(), better);
+    hits_.resize(n);
+  }
+
+  QueryScore scorePart(const IndexedObject& object) {
+    if (!object.pending && !object.components.empty())
+      return scoreDescriptors(query_, decodeDescriptorValues(object.components.front().second));
+    // Rows missing or possibly stale: describe the document, as the rows would.
+    const StoredObject stored = store_.get("part", object.id);
+    return scoreDescriptors(query_, describePart(parsePart(nlohmann::json::parse(stored.documentJson), "")));
+  }
+
+  QueryScore scoreStoredShape(const IndexedObject& object) {
+    // Relations need the components' placements, which the rows do not keep.
+    const StoredObject stored = store_.get("shape", object.id);
+    return scoreShape(query_, storedShapeComponents(store_, stored.documentJson, options_.maxNodes));
+  }
+
+  void keep(const std::string& kind, const IndexedObject& object, QueryScore score) {
+    if (!(score.score > 0) || score.score < cut_) return;
+    hits_.push_back({object.id, kind, object.name, std::move(score)});
+  }
+
+  void checkTime() const {
+    if (options_.maxMillis > 0 && millisSince(start_) > options_.maxMillis)
+      throw Error(errc::kLimitExceeded,
+                  "the query ran longer than max_query_ms=" + std::to_string(static_cast<long long>(options_.maxMillis)) +
+                      " ms; narrow it (a kind, more conditions, a threshold) or raise --max-query-ms",
+                  "text");
+  }
+
+  const Store& store_;
+  const LinguisticQuery& query_;
+  const LinguisticSearchOptions& options_;
+  const size_t limit_;
+  const double cut_;
+  const Clock::time_point start_;
+  std::vector<LinguisticHit> hits_;
+  size_t candidates_ = 0, scored_ = 0;
+  size_t block_ = 0;
+};
+
+nlohmann::json hitJson(const LinguisticHit& hit) {
+  return {{"id", hit.id}, {"kind", hit.kind}, {"name", hit.name}, {"score", hit.score.score},
+          {"explain", explainJson(hit.score)}};
+}
+
+// The leaf that drives a level scan of `plan` (Scorer::scoreLevels): the plan itself when it is
+// one kOverlap, the first kOverlap child of a kAnd (a t-norm: prefilterPlan makes kAnd only
+// then), else none (kOr, kAll: today's path).
+const PrefilterPlan* levelDriver(const PrefilterPlan& plan) {
+  if (plan.kind == PrefilterPlan::Kind::kOverlap) return &plan;
+  if (plan.kind != PrefilterPlan::Kind::kAnd) return nullptr;
+  for (const PrefilterPlan& child : plan.children)
+    if (child.kind == PrefilterPlan::Kind::kOverlap) return &child;
+  return nullptr;
+}
+
+}  // namespace
+
+LinguisticSearchResult searchLinguistic(const Store& store, const LinguisticQuery& query,
+                                        const LinguisticSearchOptions& options) {
+  Scorer scorer(store, query, options);
+  for (const std::string& kind : options.kinds) {
+    if (options.scan) {
+      std::vector<Candidate> everything;
+      for (int64_t id : store.objectIds(kind)) everything.push_back({id, 1.0});
+      scorer.score(kind, std::move(everything), false);
+      continue;
+    }
+    const AllSource all = [&store, &kind] { return store.objectIds(kind); };
+    const OverlapSource overlap = [&store, &kind](const PrefilterPlan& leaf) {
+      const SupportTest& t = leaf.test;
+      std::vector<Candidate> rows;
+      for (const DescriptorCandidate& c : store.descriptorCandidates(
+               kind, {t.descriptor, t.lo, t.hi, t.loIncluded, t.hiIncluded, t.wideStrict}))
+        rows.push_back({c.id, scoreBound(leaf, c.supportLo, c.supportHi, c.pending)});
+      return rows;
+    };
+    const PrefilterPlan plan = prefilterPlan(query, kind);
+    if (const PrefilterPlan* driver = kind == "part" ? levelDriver(plan) : nullptr) {
+      scorer.scoreLevels(store, kind, *driver);
+      continue;
+    }
+    scorer.score(kind, runPrefilter(plan, overlap, all, kind == "part"), true);
+  }
+  return scorer.result();
+}
+
+std::vector<std::string> searchKinds(const LinguisticQuery& query, const std::string& requestKind) {
+  std::vector<std::string> kinds;
+  for (const char* kind : {"part", "shape"})
+    if ((query.subject == "any" || query.subject == kind) && (requestKind.empty() || requestKind == kind))
+      kinds.push_back(kind);
+  return kinds;
+}
+
+nlohmann::json linguisticQueryResponse(const Store& store, const nlohmann::json& request,
+                                       const LinguisticRequestLimits& limits) {
+  const auto start = Clock::now();
+  requireObject(request, "");
+  rejectUnknownKeys(request, "", {"text", "limit", "threshold", "kind", "scan"});
+  const std::string& text = requireString(requireField(request, "text", ""), "text");
+  LinguisticSearchOptions options;
+  options.maxNodes = limits.maxNodes;
+  options.maxMillis = limits.maxQueryMs;
+  options.limit = static_cast<int>(optionalInteger(request, "", "limit", kDefaultLimit, 1, kMaxLimit));
+  options.threshold = optionalNumberIn(request, "", "threshold", 0.0, 0.0, 1.0);
+  std::string kind;
+  if (request.contains("kind")) {
+    kind = requireString(request["kind"], "kind");
+    if (kind != "part" && kind != "shape")
+      throw Error(errc::kInvalidParameter, "kind must be \"part\" or \"shape\", got \"" + kind + "\"", "kind");
+  }
+  options.scan = optionalBoolean(request, "", "scan", false);
+  const LinguisticQuery query = parseLinguisticQuery(text, activeVocabulary());
+  options.kinds = searchKinds(query, kind);
+  const LinguisticSearchResult found = searchLinguistic(store, query, options);
+  nlohmann::json results = nlohmann::json::array();
+  for (const LinguisticHit& hit : found.hits) results.push_back(hitJson(hit));
+  return {{"parsed", toJson(query)},
+          {"results", results},
+          {"candidates", found.candidates},
+          {"scored", found.scored},
+          {"scan", options.scan},
+          {"millis", millisSince(start)}};
+}
+
+}  // namespace fsdb

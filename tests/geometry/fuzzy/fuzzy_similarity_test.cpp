@@ -1,0 +1,101 @@
+#include "geometry/fuzzy/fuzzy_similarity.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "tests/testing/random_fuzzy.h"
+
+namespace fsdb {
+namespace {
+
+using testing::uniform;
+
+FuzzyNumber randomAny(std::mt19937& rng, int i) {
+  switch (i % 4) {
+    case 0: return testing::randomTriOrTrap(rng);
+    case 1: return testing::randomConvexPoints(rng);
+    case 2: return testing::randomPoints(rng);
+    default: return FuzzyNumber::crisp(uniform(rng, -8, 8));
+  }
+}
+
+// Midpoint-rule integral of min(mu_A, mu_B).
+double bruteIntersection(const FuzzyNumber& a, const FuzzyNumber& b) {
+  const double lo = std::min(a.support().lo, b.support().lo);
+  const double hi = std::max(a.support().hi, b.support().hi);
+  const int n = 200000;
+  const double h = (hi - lo) / n;
+  double sum = 0;
+  for (int i = 0; i < n; ++i) {
+    const double x = lo + (i + 0.5) * h;
+    sum += h * std::min(a.membership(x), b.membership(x));
+  }
+  return sum;
+}
+
+TEST(FuzzySimilarity, HandComputedTriangles) {
+  // Overlap of tri(0,1,2) and tri(1,2,3): a triangle on [1, 2] of height 1/2, area 1/4.
+  const FuzzyNumber a = FuzzyNumber::triangular(0, 1, 2), b = FuzzyNumber::triangular(1, 2, 3);
+  EXPECT_DOUBLE_EQ(cardinalityOfIntersection(a, b), 0.25);
+  EXPECT_DOUBLE_EQ(similarity(a, b), 0.25);  // min(0.25 / 1, 0.25 / 1)
+  // tri(1,2,3) lies under tri(0,2,4): the intersection is the small one, area 1; |A| = 2.
+  const FuzzyNumber wide = FuzzyNumber::triangular(0, 2, 4), narrow = FuzzyNumber::triangular(1, 2, 3);
+  EXPECT_DOUBLE_EQ(cardinalityOfIntersection(wide, narrow), 1.0);
+  EXPECT_DOUBLE_EQ(similarity(wide, narrow), 0.5);  // min(1 / 2, 1 / 1)
+}
+
+TEST(FuzzySimilarity, CrispValueAgainstAConditionIsItsMembership) {
+  // Zhang, Pham & Chen, §5: "the similarity measure degenerates to the membership degree".
+  const FuzzyNumber condition = FuzzyNumber::trapezoidal(0, 1, 2, 4);
+  for (double x : {-1.0, 0.5, 1.5, 3.0, 3.5, 4.0}) {
+    EXPECT_DOUBLE_EQ(similarity(FuzzyNumber::crisp(x), condition), condition.membership(x));
+    EXPECT_DOUBLE_EQ(similarity(condition, FuzzyNumber::crisp(x)), condition.membership(x));
+  }
+  EXPECT_EQ(similarity(FuzzyNumber::crisp(2), FuzzyNumber::crisp(2)), 1);
+  EXPECT_EQ(similarity(FuzzyNumber::crisp(2), FuzzyNumber::crisp(2.5)), 0);
+  // A jump counts with its upper side.
+  EXPECT_EQ(similarity(FuzzyNumber::crisp(1), FuzzyNumber::trapezoidal(1, 1, 2, 2)), 1);
+}
+
+TEST(FuzzySimilarity, DisjointOrTouchingSupportsGiveZero) {
+  EXPECT_EQ(similarity(FuzzyNumber::triangular(0, 1, 2), FuzzyNumber::triangular(3, 4, 5)), 0);
+  EXPECT_EQ(similarity(FuzzyNumber::triangular(0, 1, 2), FuzzyNumber::triangular(2, 3, 4)), 0);
+  EXPECT_EQ(cardinalityOfIntersection(FuzzyNumber::triangular(0, 1, 2),
+                                      FuzzyNumber::triangular(3, 4, 5)),
+            0);
+}
+
+TEST(FuzzySimilarity, RandomProperties) {
+  std::mt19937 rng(21);
+  for (int i = 0; i < 400; ++i) {
+    const FuzzyNumber a = randomAny(rng, i), b = randomAny(rng, i / 4 + i);
+    const double s = similarity(a, b);
+    EXPECT_GE(s, 0);
+    EXPECT_LE(s, 1);
+    EXPECT_NEAR(s, similarity(b, a), 1e-12);
+    EXPECT_EQ(similarity(a, a), 1);
+    if (a.support().hi < b.support().lo || b.support().hi < a.support().lo) {
+      EXPECT_EQ(s, 0);
+    }
+    const double common = cardinalityOfIntersection(a, b);
+    EXPECT_LE(common, std::min(a.cardinality(), b.cardinality()) + 1e-12);
+    // The midpoint rule misses up to a grid step at each vertical jump.
+    EXPECT_NEAR(common, bruteIntersection(a, b), 2e-4);
+  }
+}
+
+// Similarity falls as a number slides away from itself.
+TEST(FuzzySimilarity, DecreasesWithDistance) {
+  const FuzzyNumber a = FuzzyNumber::triangular(0, 1, 2);
+  double previous = 1;
+  for (double shift = 0.1; shift <= 2.0; shift += 0.1) {
+    const double s = similarity(a, FuzzyNumber::triangular(shift, 1 + shift, 2 + shift));
+    EXPECT_LT(s, previous);
+    previous = s;
+  }
+}
+
+}  // namespace
+}  // namespace fsdb

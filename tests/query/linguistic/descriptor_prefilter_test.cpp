@@ -1,0 +1,256 @@
+// query/linguistic/descriptor_prefilter.h: the plan of each condition kind, its simplification, and
+// runPrefilter's set algebra against explicit sources.
+#include "query/linguistic/descriptor_prefilter.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "geometry/fuzzy/fuzzy_similarity.h"
+#include "tests/testing/random_fuzzy.h"
+
+namespace fsdb {
+namespace {
+
+QueryCondition descriptor(const std::string& name, double l, double m, double r) {
+  QueryCondition c;
+  c.kind = QueryCondition::Kind::kDescriptor;
+  c.descriptor = name;
+  c.set = FuzzyNumber::triangular(l, m, r);
+  return c;
+}
+
+QueryCondition node(QueryCondition::Kind kind, std::vector<QueryCondition> children) {
+  QueryCondition c;
+  c.kind = kind;
+  c.children = std::move(children);
+  return c;
+}
+
+LinguisticQuery query(QueryCondition root, const std::string& aggregation = "min") {
+  LinguisticQuery q;
+  q.root = std::move(root);
+  q.aggregation = aggregation;
+  return q;
+}
+
+using K = QueryCondition::Kind;
+
+TEST(DescriptorPrefilter, DescriptorIsTheSupportOfItsSet) {
+  const PrefilterPlan plan = prefilterPlan(query(descriptor("bendness", 0.1, 0.25, 0.4)), "part");
+  EXPECT_EQ(prefilterPlanJson(plan), nlohmann::json::parse(R"({"overlap":{"descriptor":"bendness","lo":0.1,"hi":0.4,
+            "lo_included":false,"hi_included":false,"wide_strict":true}})"));
+}
+
+TEST(DescriptorPrefilter, SupportTestEnds) {
+  // The plain set mu(d) = d: a crisp 0 scores 0 and is not admitted; any d > 0 is.
+  const SupportTest plain = supportTest("bendness", FuzzyNumber::fromPoints({{0, 0}, {1, 1}}));
+  EXPECT_FALSE(admits(plain, 0, 0));
+  EXPECT_TRUE(admits(plain, 1e-9, 1e-9));
+  EXPECT_TRUE(admits(plain, 1, 1));  // mu(1) = 1: the end is included
+  EXPECT_TRUE(admits(plain, 0, 0.01));
+  EXPECT_FALSE(admits(plain, -0.5, 0));  // touches at one point: |A∩B| = 0
+  // A crisp set (area 0): S is the height of A∩B, so touching wide values count.
+  const SupportTest crisp = supportTest("size", FuzzyNumber::crisp(0.5));
+  EXPECT_TRUE(admits(crisp, 0.5, 0.5));
+  EXPECT_TRUE(admits(crisp, 0.2, 0.5));
+  EXPECT_FALSE(admits(crisp, 0.2, 0.49));
+}
+
+// The derivation principle: whatever scores > 0 passes the support test, for random values
+// (crisp, triangles, trapezoids, vertical sides) and sets.
+TEST(DescriptorPrefilter, EverythingThatScoresPassesItsSupportTest) {
+  std::mt19937 rng(17);
+  auto random = [&rng](bool maybeCrisp) {
+    const double u = testing::uniform(rng, 0, 1);
+    if (maybeCrisp && u < 0.3) return FuzzyNumber::crisp(std::round(testing::uniform(rng, -8, 8)));
+    if (u < 0.6) return testing::randomTriangular(rng, true);
+    if (u < 0.8) return testing::randomTrapezoidal(rng);
+    return testing::randomConvexPoints(rng);
+  };
+  int positive = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const FuzzyNumber value = random(true), set = random(i % 4 == 0);
+    const Interval s = value.support();
+    const bool passes = admits(supportTest("d", set), s.lo, s.hi);
+    if (similarity(value, set) > 0) {
+      ++positive;
+      EXPECT_TRUE(passes) << "value [" << s.lo << ", " << s.hi << "] set [" << set.support().lo << ", "
+                          << set.support().hi << "]";
+    }
+  }
+  EXPECT_GT(positive, 1000);
+}
+
+TEST(DescriptorPrefilter, AndOrNotRelation) {
+  const QueryCondition bent = descriptor("bendness", 0.1, 0.25, 0.4), big = descriptor("size", 0.6, 0.8, 1.0);
+  QueryCondition relation = node(K::kRelation, {bent, big});
+  relation.direction = "left";
+  const QueryCondition notBig = node(K::kNot, {big});
+
+  EXPECT_EQ(prefilterPlanJson(prefilterPlan(query(node(K::kAnd, {bent, big})), "part")),
+            nlohmann::json({{"and", {prefilterPlanJson(prefilterPlan(query(bent), "part")),
+                                     prefilterPlanJson(prefilterPlan(query(big), "part"))}}}));
+  EXPECT_EQ(prefilterPlanJson(prefilterPlan(query(node(K::kOr, {bent, big})), "part")).begin().key(), "or");
+  // A mean is > 0 when one child is: kAnd needs any child.
+  EXPECT_EQ(prefilterPlanJson(prefilterPlan(query(node(K::kAnd, {bent, big}), "mean"), "part")).begin().key(), "or");
+  // not: no filter; under an and it drops out, under an or it makes everything a candidate.
+  EXPECT_EQ(prefilterPlanJson(prefilterPlan(query(notBig), "part")), nlohmann::json({{"all", true}}));
+  EXPECT_EQ(prefilterPlanJson(prefilterPlan(query(node(K::kAnd, {bent, notBig})), "part")),
+            prefilterPlanJson(prefilterPlan(query(bent), "part")));
+  EXPECT_EQ(prefilterPlanJson(prefilterPlan(query(node(K::kOr, {bent, notBig})), "part")),
+            nlohmann::json({{"all", true}}));
+  // A relation: nothing for lone parts, no filter for shapes.
+  EXPECT_EQ(prefilterPlanJson(prefilterPlan(query(relation), "part")), nlohmann::json({{"none", true}}));
+  EXPECT_EQ(prefilterPlanJson(prefilterPlan(query(relation), "shape")), nlohmann::json({{"all", true}}));
+  EXPECT_EQ(prefilterPlanJson(prefilterPlan(query(node(K::kAnd, {bent, relation})), "part")),
+            nlohmann::json({{"none", true}}));
+  EXPECT_EQ(prefilterPlanJson(prefilterPlan(query(node(K::kOr, {bent, relation})), "part")),
+            prefilterPlanJson(prefilterPlan(query(bent), "part")));
+  // Nested ands flatten.
+  const PrefilterPlan nested =
+      prefilterPlan(query(node(K::kAnd, {bent, node(K::kAnd, {big, descriptor("twistness", 0, 0, 0.2)})})), "shape");
+  EXPECT_EQ(nested.kind, PrefilterPlan::Kind::kAnd);
+  EXPECT_EQ(nested.children.size(), 3u);
+}
+
+TEST(DescriptorPrefilter, AggregationsThatNeedEveryChild) {
+  EXPECT_TRUE(aggregationNeedsAll("min"));
+  EXPECT_TRUE(aggregationNeedsAll("product"));
+  EXPECT_FALSE(aggregationNeedsAll("mean"));
+  EXPECT_FALSE(aggregationNeedsAll("something new"));
+}
+
+std::vector<int64_t> idsOf(const std::vector<Candidate>& candidates) {
+  std::vector<int64_t> ids;
+  for (const Candidate& c : candidates) ids.push_back(c.id);
+  return ids;
+}
+
+TEST(DescriptorPrefilter, RunIntersectsAndUnites) {
+  // bendness rows: crisp values (id 1: 0.5, id 3: 0.25 twice for two components, id 5: 1, id 7:
+  // pending); size rows: wide [0, 1] for 3, 4, 5.
+  struct Row {
+    int64_t id;
+    double lo, hi;
+    bool pending;
+  };
+  const OverlapSource overlap = [](const PrefilterPlan& leaf) {
+    std::vector<Row> rows;
+    if (leaf.test.descriptor == "bendness")
+      rows = {{1, 0.5, 0.5, false}, {3, 0.25, 0.25, false}, {3, 0.75, 0.75, false}, {5, 1, 1, false}, {7, 0, 0, true}};
+    if (leaf.test.descriptor == "size") rows = {{3, 0, 1, false}, {4, 0, 1, false}, {5, 0, 0.5, false}};
+    std::vector<Candidate> out;
+    for (const Row& r : rows) out.push_back({r.id, scoreBound(leaf, r.lo, r.hi, r.pending)});
+    return out;
+  };
+  int allCalls = 0;
+  const AllSource all = [&allCalls] {
+    ++allCalls;
+    return std::vector<int64_t>{1, 2, 3, 4, 5, 6, 7};
+  };
+  const QueryCondition bent = descriptor("bendness", 0, 0.5, 1), big = descriptor("size", 0, 0.5, 1);
+  const std::vector<Candidate> both = runPrefilter(prefilterPlan(query(node(K::kAnd, {bent, big})), "part"), overlap, all);
+  EXPECT_EQ(idsOf(both), (std::vector<int64_t>{3, 5}));
+  // Bounds: 3 = min(max(μ(0.25), μ(0.75)) = 0.5, ∫_0^1 μ / |B| = 1); 5 = min(μ(1) = 0, 0.5).
+  EXPECT_NEAR(both[0].bound, 0.5, 1e-8);
+  EXPECT_NEAR(both[1].bound, 0.0, 1e-8);
+  const std::vector<Candidate> either = runPrefilter(prefilterPlan(query(node(K::kOr, {bent, big})), "part"), overlap, all);
+  EXPECT_EQ(idsOf(either), (std::vector<int64_t>{1, 3, 4, 5, 7}));
+  EXPECT_NEAR(either[0].bound, 1.0, 1e-8);  // μ(0.5) = 1
+  EXPECT_EQ(either[4].bound, 1.0);          // pending
+  EXPECT_EQ(allCalls, 0);
+  // One row per object: a lone overlap comes back as the source gives it (here, 3 twice).
+  EXPECT_EQ(idsOf(runPrefilter(prefilterPlan(query(bent), "part"), overlap, all, true)),
+            (std::vector<int64_t>{1, 3, 3, 5, 7}));
+  const std::vector<Candidate> merged = runPrefilter(prefilterPlan(query(bent), "part"), overlap, all);
+  EXPECT_EQ(idsOf(merged), (std::vector<int64_t>{1, 3, 5, 7}));
+  EXPECT_NEAR(merged[1].bound, 0.5, 1e-8);  // the better of 3's two rows
+  EXPECT_EQ(runPrefilter(prefilterPlan(query(node(K::kNot, {bent})), "part"), overlap, all).size(), 7u);
+  EXPECT_EQ(allCalls, 1);
+  EXPECT_TRUE(runPrefilter(prefilterPlan(query(node(K::kAnd, {bent, descriptor("twistness", 0, 0, 1)})), "part"),
+                           overlap, all)
+                  .empty());
+}
+
+TEST(DescriptorPrefilter, MembershipIntegral) {
+  const FuzzyNumber t = FuzzyNumber::trapezoidal(0, 1, 2, 4);
+  EXPECT_DOUBLE_EQ(membershipIntegral(t, -10, 10), t.cardinality());
+  EXPECT_DOUBLE_EQ(membershipIntegral(t, 0, 1), 0.5);
+  EXPECT_DOUBLE_EQ(membershipIntegral(t, 1.5, 3), 0.5 + 0.75);
+  EXPECT_DOUBLE_EQ(membershipIntegral(t, 5, 6), 0.0);
+  EXPECT_DOUBLE_EQ(membershipIntegral(FuzzyNumber::crisp(1), 0, 2), 0.0);
+}
+
+// Every bound is >= the similarity it bounds, for random values and sets.
+TEST(DescriptorPrefilter, BoundsAreAtLeastTheScores) {
+  std::mt19937 rng(23);
+  int tight = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double u = testing::uniform(rng, 0, 1);
+    const FuzzyNumber value = u < 0.3 ? FuzzyNumber::crisp(testing::uniform(rng, -8, 8))
+                              : u < 0.7 ? testing::randomTriangular(rng, true)
+                                        : testing::randomConvexPoints(rng);
+    const FuzzyNumber set = i % 5 == 0 ? FuzzyNumber::crisp(std::round(testing::uniform(rng, -8, 8)))
+                                       : testing::randomTrapezoidal(rng);
+    const PrefilterPlan leaf = prefilterPlan(query(descriptor("d", 0, 0, 0)), "part");
+    PrefilterPlan plan = leaf;
+    plan.test = supportTest("d", set);
+    plan.set = set;
+    const Interval s = value.support();
+    const double bound = scoreBound(plan, s.lo, s.hi, false);
+    const double score = similarity(value, set);
+    EXPECT_GE(bound, score) << "value [" << s.lo << ", " << s.hi << "]";
+    if (score > 0 && bound < 1) ++tight;
+  }
+  EXPECT_GT(tight, 1000);
+}
+
+// levelPieces: the pieces cover the range exactly, in order, and bound the score of every value
+// whose support starts in them (crisp values: width 0; wide values: width <= maxWidth); the
+// pieces in the set's core and outside it are told apart (bounds below 1 exist).
+TEST(DescriptorPrefilter, LevelPiecesCoverTheRangeAndBoundTheirValues) {
+  std::mt19937 rng(31);
+  int below1 = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const FuzzyNumber set = i % 7 == 0 ? FuzzyNumber::crisp(std::round(testing::uniform(rng, -4, 4)))
+                            : i % 7 == 1 ? FuzzyNumber::trapezoidal(0, 0, 0.1, 0.3)
+                                         : testing::randomTrapezoidal(rng);
+    PrefilterPlan leaf = prefilterPlan(query(descriptor("d", 0, 0, 0)), "part");
+    leaf.test = supportTest("d", set);
+    leaf.set = set;
+    const bool crisp = i % 2 == 0;
+    const double maxWidth = crisp ? 0 : std::ldexp(1.0, std::uniform_int_distribution<int>(-8, 2)(rng));
+    const Interval support = set.support();
+    const double fromLo = support.lo - maxWidth, toLo = support.hi;
+    const std::vector<LevelPiece> pieces = levelPieces(leaf, maxWidth, fromLo, toLo);
+    ASSERT_FALSE(pieces.empty());
+    EXPECT_EQ(pieces.front().fromLo, fromLo);
+    EXPECT_EQ(pieces.back().toLo, toLo);
+    for (size_t k = 0; k < pieces.size(); ++k) {
+      EXPECT_LE(pieces[k].fromLo, pieces[k].toLo);
+      if (k > 0) {
+        EXPECT_EQ(pieces[k].fromLo, std::nextafter(pieces[k - 1].toLo, 1e300));
+      }
+      if (pieces[k].bound < 1) ++below1;
+    }
+    for (int v = 0; v < 20; ++v) {
+      const double lo = testing::uniform(rng, fromLo, toLo);
+      const double width = crisp ? 0 : maxWidth * testing::uniform(rng, 0.01, 0.999);
+      const FuzzyNumber value = crisp ? FuzzyNumber::crisp(lo)
+                                      : FuzzyNumber::triangular(lo, lo + width * testing::uniform(rng, 0, 1), lo + width);
+      const Interval s = value.support();
+      const auto in = std::find_if(pieces.begin(), pieces.end(),
+                                   [&](const LevelPiece& p) { return s.lo >= p.fromLo && s.lo <= p.toLo; });
+      ASSERT_NE(in, pieces.end());
+      EXPECT_GE(in->bound, similarity(value, set)) << "value [" << s.lo << ", " << s.hi << "]";
+      EXPECT_GE(in->bound, scoreBound(leaf, s.lo, s.hi, false));
+    }
+  }
+  EXPECT_GT(below1, 3000);
+}
+
+}  // namespace
+}  // namespace fsdb

@@ -1,0 +1,166 @@
+#include "query/linguistic/descriptors.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace fsdb {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+PlacedSuperquadric crispPart(double eps1, double eps2, double a1 = 1, double a2 = 1, double a3 = 1) {
+  PlacedSuperquadric p;
+  p.params.eps1 = eps1;
+  p.params.eps2 = eps2;
+  p.params.a1 = a1;
+  p.params.a2 = a2;
+  p.params.a3 = a3;
+  return p;
+}
+
+double degreeOf(const std::string& name, const PlacedSuperquadric& p) { return descriptorDegree(descriptorIndex(name), p); }
+
+TEST(Descriptors, NamesInIndexOrder) {
+  EXPECT_EQ(descriptorNames(), (std::vector<std::string>{"squariness", "roundness", "bevelness", "pinchness",
+                                                          "bendness", "taperness", "twistness", "size",
+                                                          "elongation"}));
+  EXPECT_EQ(descriptorIndex("bendness"), 4);
+  EXPECT_EQ(descriptorIndex("bentness"), -1);
+}
+
+TEST(Descriptors, ShapeWordsFromTheExponents) {
+  const auto sphere = crispPart(1, 1), cube = crispPart(0.1, 0.1), octahedron = crispPart(2, 2),
+             star = crispPart(4, 4), cylinder = crispPart(0.1, 1);
+  EXPECT_DOUBLE_EQ(degreeOf("roundness", sphere), 1.0);
+  EXPECT_DOUBLE_EQ(degreeOf("squariness", sphere), 0.0);
+  EXPECT_DOUBLE_EQ(degreeOf("squariness", cube), 0.9);
+  EXPECT_DOUBLE_EQ(degreeOf("roundness", cube), 0.1);
+  EXPECT_DOUBLE_EQ(degreeOf("bevelness", octahedron), 1.0);
+  EXPECT_DOUBLE_EQ(degreeOf("roundness", octahedron), 0.0);
+  EXPECT_DOUBLE_EQ(degreeOf("pinchness", star), 1.0);
+  EXPECT_DOUBLE_EQ(degreeOf("pinchness", octahedron), 0.0);
+  EXPECT_DOUBLE_EQ(degreeOf("squariness", cylinder), 0.45);
+  EXPECT_DOUBLE_EQ(degreeOf("roundness", cylinder), 0.55);
+}
+
+TEST(Descriptors, DeformationsSizeAndElongation) {
+  auto p = crispPart(1, 1, 1, 1, 2);  // C = 2
+  p.params.kv = kPi / 8;              // bend angle kv·2C = π/2
+  EXPECT_DOUBLE_EQ(degreeOf("bendness", p), 0.5);
+  p.params.kv = -kPi / 8;
+  EXPECT_DOUBLE_EQ(degreeOf("bendness", p), 0.5);
+  p.params.kx = -0.3;
+  p.params.ky = 0.6;
+  EXPECT_DOUBLE_EQ(degreeOf("taperness", p), 0.6);
+  p.params.t = kPi / 2;
+  EXPECT_DOUBLE_EQ(degreeOf("twistness", p), 0.5);
+  EXPECT_DOUBLE_EQ(degreeOf("size", crispPart(1, 1)), 0.5);
+  auto big = crispPart(1, 1, 3);
+  EXPECT_DOUBLE_EQ(degreeOf("size", big), 0.75);
+  big.placement.scale = 1.0 / 3.0;
+  EXPECT_NEAR(degreeOf("size", big), 0.5, 1e-12);
+  EXPECT_NEAR(degreeOf("elongation", crispPart(1, 1, 1, 1, 1)), 0.5, 1e-15);
+  EXPECT_NEAR(degreeOf("elongation", crispPart(1, 1, 1, 1, 5)), 0.9, 1e-15);    // a rod
+  EXPECT_NEAR(degreeOf("elongation", crispPart(1, 1, 1, 1, 0.1)), 0.05, 1e-15);  // a plate
+  EXPECT_NEAR(degreeOf("elongation", crispPart(1, 1, 1, 5, 1)), 0.9, 1e-15);    // long along y too
+}
+
+TEST(Descriptors, EveryDegreeInTheUnitInterval) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> eps(0.01, 4), len(0.01, 10), k(-1, 1), u(0, 1);
+  for (int i = 0; i < 2000; ++i) {
+    auto p = crispPart(eps(rng), eps(rng), len(rng), len(rng), len(rng));
+    p.params.kx = k(rng);
+    p.params.ky = k(rng);
+    p.params.kv = k(rng) * u(rng) * kPi / p.params.C();
+    p.params.t = 10 * k(rng);
+    p.placement.scale = len(rng);
+    for (size_t d = 0; d < descriptorNames().size(); ++d) {
+      const double x = descriptorDegree(static_cast<int>(d), p);
+      EXPECT_GE(x, 0.0) << descriptorNames()[d];
+      EXPECT_LE(x, 1.0) << descriptorNames()[d];
+    }
+  }
+}
+
+TEST(Descriptors, CrispPartHasCrispValues) {
+  FuzzyPart part = FuzzyPart::fromCrisp(crispPart(0.5, 1.5, 2, 1, 3));
+  const auto values = describePart(part);
+  ASSERT_EQ(values.size(), descriptorNames().size());
+  for (size_t d = 0; d < values.size(); ++d) {
+    EXPECT_EQ(values[d].descriptor, descriptorNames()[d]);
+    EXPECT_TRUE(values[d].value.isCrisp()) << values[d].descriptor;
+    EXPECT_DOUBLE_EQ(values[d].value.core().lo, descriptorDegree(static_cast<int>(d), part.coreRepresentative()));
+  }
+}
+
+// The general path (levels and boxes) agrees with the crisp fast path: a fuzzy translation is
+// read by no descriptor.
+TEST(Descriptors, FuzzyPlacementOnlyGivesTheCrispValues) {
+  FuzzyPart crisp = FuzzyPart::fromCrisp(crispPart(0.5, 1.5, 2, 1, 3));
+  FuzzyPart moved = crisp;
+  moved.tx = FuzzyNumber::triangular(-1, 0, 1);
+  const auto a = describePart(crisp), b = describePart(moved);
+  for (size_t d = 0; d < a.size(); ++d) EXPECT_EQ(a[d].value, b[d].value) << a[d].descriptor;
+}
+
+// The alpha-cut of a descriptor value is the image of P(α): it holds the degree of every crisp
+// part sampled in the box, and its ends are reached (by the corners and critical values).
+TEST(Descriptors, FuzzyValuesAreTheImageOfTheParameterBox) {
+  FuzzyPart part;
+  part.eps1 = FuzzyNumber::triangular(0.5, 1.0, 2.5);  // crosses the critical values 1 and 2
+  part.eps2 = FuzzyNumber::triangular(0.05, 0.2, 0.4);
+  part.a1 = FuzzyNumber::triangular(0.8, 1, 1.2);
+  part.a2 = FuzzyNumber::triangular(0.5, 1, 3);
+  part.a3 = FuzzyNumber::triangular(0.8, 1.5, 2);  // a2 = a3 inside the box
+  part.kv = FuzzyNumber::triangular(-0.2, 0.1, 0.3);
+  part.kx = FuzzyNumber::triangular(-0.5, 0, 0.2);
+  part.t = FuzzyNumber::triangular(0.5, 1, 2);
+  part.scale = FuzzyNumber::triangular(0.5, 1, 2);
+  part.validate();
+  const auto values = describePart(part);
+  std::mt19937 rng(3);
+  for (double alpha : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+    const PartBox box = part.boxAt(alpha);
+    // Each value at an end of its interval a third of the time each, so corners are sampled too.
+    auto pick = [&rng](const Interval& i) {
+      const int end = std::uniform_int_distribution<int>(0, 2)(rng);
+      return end == 0 ? i.lo : end == 1 ? i.hi : std::uniform_real_distribution<double>(i.lo, i.hi)(rng);
+    };
+    for (size_t d = 0; d < values.size(); ++d) {
+      const Interval cut = values[d].value.alphaCut(alpha);
+      double seenLo = 1e9, seenHi = -1e9;
+      for (int s = 0; s < 3000; ++s) {
+        PlacedSuperquadric p;
+        p.params = {pick(box.params.eps1), pick(box.params.eps2), pick(box.params.a1), pick(box.params.a2),
+                    pick(box.params.a3),   pick(box.params.kx),   pick(box.params.ky), pick(box.params.kv),
+                    pick(box.params.t)};
+        p.placement.scale = pick(box.placement.scale);
+        const double x = descriptorDegree(static_cast<int>(d), p);
+        EXPECT_GE(x, cut.lo - 1e-9) << values[d].descriptor << " alpha " << alpha;
+        EXPECT_LE(x, cut.hi + 1e-9) << values[d].descriptor << " alpha " << alpha;
+        seenLo = std::min(seenLo, x);
+        seenHi = std::max(seenHi, x);
+      }
+      // Sampling comes close to both ends: the cut is not wider than the image.
+      EXPECT_NEAR(seenLo, cut.lo, 0.02) << values[d].descriptor << " alpha " << alpha;
+      EXPECT_NEAR(seenHi, cut.hi, 0.02) << values[d].descriptor << " alpha " << alpha;
+    }
+  }
+  // The critical values are found exactly: roundness reaches 1 where eps1 = 1 is in the box.
+  EXPECT_DOUBLE_EQ(descriptorRange(1, part.boxAt(0)).hi, (1.0 + 0.4) / 2.0);
+  EXPECT_DOUBLE_EQ(descriptorRange(4, part.boxAt(1)).lo, descriptorDegree(4, part.coreRepresentative()));
+  EXPECT_DOUBLE_EQ(descriptorRange(4, part.boxAt(0)).lo, 0.0);  // kv = 0 inside the support
+}
+
+TEST(Descriptors, Deterministic) {
+  FuzzyPart part;
+  part.kv = FuzzyNumber::triangular(0.05, 0.1, 0.15);
+  const auto a = describePart(part), b = describePart(part);
+  for (size_t d = 0; d < a.size(); ++d) EXPECT_EQ(a[d].value, b[d].value);
+}
+
+}  // namespace
+}  // namespace fsdb

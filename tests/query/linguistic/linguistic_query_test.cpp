@@ -1,0 +1,317 @@
+// The parser of linguistic queries: every production of schema/query_grammar.ebnf, the examples
+// listed there, and the errors.
+#include "query/linguistic/linguistic_query.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "geometry/core/error.h"
+#include "geometry/fuzzy/fuzzy_arithmetic.h"
+#include "query/json/fuzzy_json.h"
+#include "query/linguistic/vocabulary.h"
+#include "tests/testing/grammar_examples.h"
+#include "tests/testing/text_error.h"
+
+namespace fsdb {
+namespace {
+
+using Kind = QueryCondition::Kind;
+
+const Vocabulary& v() { return Vocabulary::builtin(); }
+LinguisticQuery parse(const std::string& text) { return parseLinguisticQuery(text, v()); }
+
+std::string errorOf(const std::string& text) {
+  return test::textErrorOf(text, [](const std::string& t) { parse(t); });
+}
+
+void expectLeaf(const QueryCondition& c, const std::string& descriptor, const FuzzyNumber& set, const std::string& text) {
+  EXPECT_EQ(c.kind, Kind::kDescriptor);
+  EXPECT_EQ(c.descriptor, descriptor);
+  EXPECT_EQ(c.set, set);
+  EXPECT_EQ(c.text, text);
+}
+
+TEST(LinguisticQuery, SlightlyBentShape) {
+  const LinguisticQuery q = parse("find a slightly bent shape");
+  EXPECT_EQ(q.subject, "any");
+  EXPECT_EQ(q.aggregation, "min");
+  EXPECT_EQ(q.atLeast, 0.0);
+  expectLeaf(q.root, "bendness", *v().intensity("slightly"), "slightly bent");
+}
+
+// queryVerbs and queryArticles are the grammar's words (schema/query_grammar.ebnf), and each one
+// opens a query (a verb, with or without "for") or a noun phrase (an article) as the grammar says.
+TEST(LinguisticQuery, QueryVerbsAndArticles) {
+  EXPECT_EQ(queryVerbs(), (std::vector<std::string>{"find", "show", "search", "get", "list"}));
+  EXPECT_EQ(queryArticles(), (std::vector<std::string>{"a", "an", "the", "any", "some", "all"}));
+  for (const std::string& verb : queryVerbs())
+    for (const std::string& opening : {verb, verb + " for"}) {
+      const LinguisticQuery q = parse(opening + " a slightly bent shape");
+      expectLeaf(q.root, "bendness", *v().intensity("slightly"), "slightly bent");
+    }
+  for (const std::string& article : queryArticles()) {
+    const LinguisticQuery q = parse("find " + article + " slightly bent shape");
+    expectLeaf(q.root, "bendness", *v().intensity("slightly"), "slightly bent");
+  }
+}
+
+TEST(LinguisticQuery, RelativeClauseWithAnd) {
+  const LinguisticQuery q = parse("find shapes that are very round and slightly tapered");
+  ASSERT_EQ(q.root.kind, Kind::kAnd);
+  EXPECT_EQ(q.root.text, "very round and slightly tapered");
+  ASSERT_EQ(q.root.children.size(), 2u);
+  expectLeaf(q.root.children[0], "roundness", *v().intensity("very"), "very round");
+  expectLeaf(q.root.children[1], "taperness", *v().intensity("slightly"), "slightly tapered");
+  // "which is", commas and juxtaposed adjectives mean the same.
+  for (const char* same : {"find shapes which are very round, slightly tapered", "find very round slightly tapered shapes",
+                           "Find  Shapes That Are VERY round and slightly tapered"}) {
+    const LinguisticQuery p = parse(same);
+    ASSERT_EQ(p.root.kind, Kind::kAnd) << same;
+    EXPECT_EQ(p.root.children[0].set, q.root.children[0].set) << same;
+    EXPECT_EQ(p.root.children[1].descriptor, "taperness") << same;
+  }
+}
+
+TEST(LinguisticQuery, NounConditions) {
+  const LinguisticQuery q = parse("find a very bent cylinder");
+  ASSERT_EQ(q.root.kind, Kind::kAnd);
+  ASSERT_EQ(q.root.children.size(), 2u);
+  expectLeaf(q.root.children[0], "bendness", *v().intensity("very"), "very bent");
+  const QueryCondition& noun = q.root.children[1];
+  EXPECT_EQ(noun.kind, Kind::kAnd);
+  EXPECT_EQ(noun.text, "cylinder");
+  ASSERT_EQ(noun.children.size(), v().noun("cylinder")->conditions.size());
+  for (size_t i = 0; i < noun.children.size(); ++i) {
+    EXPECT_EQ(noun.children[i].descriptor, v().noun("cylinder")->conditions[i].descriptor);
+    EXPECT_EQ(noun.children[i].text, "cylinder: " + noun.children[i].descriptor);
+  }
+  // A noun with one condition is that condition; multi-word and plural nouns.
+  EXPECT_EQ(parse("find an ellipsoid").root.text, "ellipsoid");
+  EXPECT_EQ(parse("find double pyramids").root.text, "double pyramids");
+  EXPECT_EQ(parse("find parts").subject, "part");
+  const LinguisticQuery any = parse("find shapes");
+  EXPECT_EQ(any.root.kind, Kind::kAnd);
+  EXPECT_TRUE(any.root.children.empty());
+}
+
+TEST(LinguisticQuery, PlainAndLowPoleAdjectives) {
+  expectLeaf(parse("find a bent shape").root, "bendness", v().plain(), "bent");
+  const FuzzyNumber mirroredPlain = add(negate(v().plain()), FuzzyNumber::crisp(1));
+  expectLeaf(parse("find a flat shape").root, "elongation", mirroredPlain, "flat");
+  const FuzzyNumber mirroredVery = add(negate(*v().intensity("very")), FuzzyNumber::crisp(1));
+  expectLeaf(parse("find a very small part").root, "size", mirroredVery, "very small");
+  EXPECT_EQ(mirroredVery.membership(0.1), 1.0);
+}
+
+TEST(LinguisticQuery, NotAndOrPrecedence) {
+  // not binds tighter than and, and tighter than or.
+  const LinguisticQuery q = parse("find shapes that are not twisted and bent or very round");
+  ASSERT_EQ(q.root.kind, Kind::kOr);
+  ASSERT_EQ(q.root.children.size(), 2u);
+  const QueryCondition& both = q.root.children[0];
+  ASSERT_EQ(both.kind, Kind::kAnd);
+  EXPECT_EQ(both.text, "not twisted and bent");
+  ASSERT_EQ(both.children[0].kind, Kind::kNot);
+  EXPECT_EQ(both.children[0].text, "not twisted");
+  EXPECT_EQ(both.children[0].children[0].descriptor, "twistness");
+  EXPECT_EQ(q.root.children[1].text, "very round");
+  // Parentheses group.
+  const LinguisticQuery p = parse("find shapes that are not (twisted or bent)");
+  ASSERT_EQ(p.root.kind, Kind::kNot);
+  EXPECT_EQ(p.root.children[0].kind, Kind::kOr);
+  EXPECT_EQ(parse("find a not not bent shape").root.children[0].kind, Kind::kNot);
+}
+
+TEST(LinguisticQuery, DescriptorDegrees) {
+  expectLeaf(parse("find shapes with bendness at least 0.5").root, "bendness", FuzzyNumber::trapezoidal(0.5, 0.5, 1, 1),
+             "bendness at least 0.5");
+  expectLeaf(parse("find shapes that have twistness at most 0.1").root, "twistness",
+             FuzzyNumber::trapezoidal(0, 0, 0.1, 0.1), "twistness at most 0.1");
+  // A number phrase restricted to [0, 1]: "about 1" keeps its left half, cut at 1.
+  expectLeaf(parse("find shapes which have roundness about 1").root, "roundness",
+             FuzzyNumber::fromPoints({{0.9, 0}, {1, 1}}), "roundness about 1");
+  expectLeaf(parse("find shapes with size is between 0.2 and 0.4").root, "size", FuzzyNumber::trapezoidal(0.2, 0.2, 0.4, 0.4),
+             "size is between 0.2 and 0.4");
+  // "at least" after a degree is the threshold; "with score" is never a condition.
+  const LinguisticQuery q = parse("find a cylinder with taperness 0.3 at least 0.5");
+  EXPECT_DOUBLE_EQ(q.atLeast, 0.5);
+  EXPECT_EQ(q.root.children[1].set, FuzzyNumber::crisp(0.3));
+  EXPECT_DOUBLE_EQ(parse("find a bent cylinder with score at least 0.25").atLeast, 0.25);
+  EXPECT_NE(errorOf("find shapes with bendness at least 1.5").find("degree is in [0, 1]"), std::string::npos);
+  EXPECT_NE(errorOf("find shapes with bendness about 2").find("degree is in [0, 1]"), std::string::npos);
+  EXPECT_NE(errorOf("find shapes with bendness very").find("a degree ("), std::string::npos);
+  EXPECT_NE(errorOf("find shapes with bendness at 0.5").find("expected 'least', 'most'"), std::string::npos);
+  EXPECT_NE(errorOf("find shapes with bendnes at least 0.5").find("closest known words: bendness"), std::string::npos);
+}
+
+TEST(LinguisticQuery, Threshold) {
+  EXPECT_DOUBLE_EQ(parse("find a very bent shape at least 0.7").atLeast, 0.7);
+  EXPECT_DOUBLE_EQ(parse("find a very bent shape with score at least 0.25").atLeast, 0.25);
+  EXPECT_NE(errorOf("find a bent shape at least 1.5").find("[0, 1]"), std::string::npos);
+  EXPECT_NE(errorOf("find a bent shape at least").find("a number in [0, 1]"), std::string::npos);
+  EXPECT_NE(errorOf("find a bent shape with score").find("'at least' NUMBER"), std::string::npos);
+}
+
+TEST(LinguisticQuery, Aggregation) {
+  EXPECT_EQ(parse("find a very bent cylinder").aggregation, "min");
+  EXPECT_EQ(parse("find a very bent cylinder using product").aggregation, "product");
+  const LinguisticQuery q = parse("find a very bent cylinder at least 0.3 using mean");
+  EXPECT_EQ(q.aggregation, "mean");
+  EXPECT_DOUBLE_EQ(q.atLeast, 0.3);
+  EXPECT_NE(errorOf("find a very bent cylinder using least").find("an aggregation (mean, min, product)"), std::string::npos);
+  EXPECT_NE(errorOf("find a very bent cylinder using max").find("unknown word 'max'"), std::string::npos);
+}
+
+TEST(LinguisticQuery, Relations) {
+  const LinguisticQuery q = parse("find a cylinder to the left of a cube");
+  EXPECT_EQ(q.subject, "shape");
+  ASSERT_EQ(q.root.kind, Kind::kRelation);
+  EXPECT_EQ(q.root.direction, "left");
+  EXPECT_FALSE(q.root.distance.has_value());
+  ASSERT_EQ(q.root.children.size(), 2u);
+  EXPECT_EQ(q.root.children[0].text, "cylinder");
+  EXPECT_EQ(q.root.children[1].text, "cube");
+  EXPECT_EQ(q.root.text, "a cylinder to the left of a cube");
+  ASSERT_TRUE(q.root.directionSets.has_value());
+
+  const LinguisticQuery d = parse("find a sphere about 3 above a box");
+  EXPECT_EQ(d.root.direction, "top");
+  ASSERT_TRUE(d.root.distance.has_value());
+  EXPECT_EQ(*d.root.distance, FuzzyNumber::triangular(2.7, 3, 3.3));
+  EXPECT_EQ(*parse("find a sphere close to the top right of a box").root.distance, *v().distance("close"));
+  EXPECT_EQ(parse("find a sphere between 2 and 4 in front of a box").root.direction, "front");
+  EXPECT_EQ(parse("find a sphere 2 behind a box").root.distance->core().lo, 2.0);
+  EXPECT_EQ(parse("find a cone left front of a very flat plate").root.direction, "left front");
+  EXPECT_EQ(parse("find a bent shape below shapes").root.children[1].kind, Kind::kAnd);
+}
+
+TEST(LinguisticQuery, OptionalVerbAndArticles) {
+  for (const char* text : {"a slightly bent shape", "show the slightly bent shapes", "search for any slightly bent part",
+                           "slightly bent shapes"})
+    EXPECT_EQ(parse(text).root.descriptor, "bendness") << text;
+}
+
+TEST(LinguisticQuery, ParsedJson) {
+  const nlohmann::json j = toJson(parse("find a sphere about 3 above a bent box at least 0.5"));
+  EXPECT_EQ(j["subject"], "shape");
+  EXPECT_EQ(j["at_least"], 0.5);
+  EXPECT_EQ(j["condition"]["kind"], "relation");
+  EXPECT_EQ(j["condition"]["direction"], "top");
+  EXPECT_EQ(j["condition"]["distance"], nlohmann::json({{"tri", {2.7, 3, 3.3}}}));
+  EXPECT_EQ(j["condition"]["children"][1]["children"][0]["set"], toJson(v().plain()));
+}
+
+TEST(LinguisticQuery, UnknownWordsNameTheClosest) {
+  const std::string e = errorOf("find a slightly bnet shape");
+  EXPECT_NE(e.find("unknown word 'bnet' at character 16"), std::string::npos) << e;
+  EXPECT_NE(e.find("bent"), std::string::npos) << e;
+  const std::string n = errorOf("find a slightly bent cylindr");
+  EXPECT_NE(n.find("'cylindr' at character 21"), std::string::npos) << n;
+  EXPECT_NE(n.find("cylinder"), std::string::npos) << n;
+  EXPECT_NE(errorOf("find a cube to the lfet of a sphere").find("left"), std::string::npos);
+}
+
+TEST(LinguisticQuery, ParseErrorsGivePositionAndExpectedWords) {
+  std::string e = errorOf("find a very shape");
+  EXPECT_NE(e.find("unexpected 'shape' at character 12"), std::string::npos) << e;
+  EXPECT_NE(e.find("expected an adjective (bent, beveled, bevelled"), std::string::npos) << e;
+  e = errorOf("find a slightly bent");
+  EXPECT_NE(e.find("ends too early (character 20)"), std::string::npos) << e;
+  EXPECT_NE(e.find("a noun ("), std::string::npos) << e;
+  e = errorOf("find shapes that are");
+  EXPECT_NE(e.find("an adjective"), std::string::npos) << e;
+  e = errorOf("find shapes that round");
+  EXPECT_NE(e.find("expected 'is', 'are'"), std::string::npos) << e;
+  e = errorOf("find a cube to the left a sphere");
+  EXPECT_NE(e.find("unexpected 'a' at character 24; expected 'of'"), std::string::npos) << e;
+  e = errorOf("find a cube sphere");
+  EXPECT_NE(e.find("unexpected 'sphere' at character 12"), std::string::npos) << e;
+  EXPECT_NE(e.find("the end of the query"), std::string::npos) << e;
+  e = errorOf("find shapes that are (round or bent");
+  EXPECT_NE(e.find("expected ')'"), std::string::npos) << e;
+  e = errorOf("find shapes that are round and");
+  EXPECT_NE(e.find("ends too early"), std::string::npos) << e;
+  e = errorOf("find a bent shape #");
+  EXPECT_NE(e.find("unexpected character '#' at character 18"), std::string::npos) << e;
+  e = errorOf("");
+  EXPECT_NE(e.find("ends too early"), std::string::npos) << e;
+  e = errorOf("find a sphere about above a box");
+  EXPECT_NE(e.find("expected a number"), std::string::npos) << e;
+}
+
+// Deep nesting is a limit, not a stack overflow.
+TEST(LinguisticQuery, NestingLimit) {
+  auto nested = [](int n) {
+    std::string open, close;
+    for (int i = 0; i < n; ++i) open += "(", close += ")";
+    return "find shapes that are " + open + "bent" + close;
+  };
+  EXPECT_NO_THROW(parse(nested(60)));
+  std::string nots = "find shapes that are";
+  for (int i = 0; i < 100000; ++i) nots += " not";
+  for (const std::string& text : {nested(100000), nots + " bent"}) {
+    try {
+      parse(text);
+      ADD_FAILURE();
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), errc::kLimitExceeded);
+      EXPECT_EQ(e.path(), "text");
+    }
+  }
+}
+
+// Every example of schema/query_grammar.ebnf (lines "(* example: ... *)") parses.
+TEST(LinguisticQuery, GrammarExamplesParse) {
+  int examples = 0;
+  for (const std::string& example : testing::grammarExamples("query_grammar.ebnf")) {
+    EXPECT_NO_THROW(parse(example)) << example;
+    ++examples;
+  }
+  EXPECT_GE(examples, 15);
+}
+
+// NounPhraseReader reads what parseNounPhraseAt reads at every position (ascending, then an
+// earlier one again, and a position inside a word), errors included, from one tokenisation.
+TEST(NounPhraseReader, GivesWhatParseNounPhraseAtGives) {
+  const std::string text = "a very bent cylinder that is long and a box, and (a sphere that is 0.5 round) and a cube";
+  auto same = [&](NounPhraseReader& reader, size_t from) {
+    std::string expected, got;
+    size_t expectedEnd = 0, gotEnd = 0;
+    try {
+      NounPhraseAt p = parseNounPhraseAt(text, from, std::string::npos, v());
+      expected = toJson(p.query).dump();
+      expectedEnd = p.end;
+    } catch (const Error& e) {
+      expected = std::string("error: ") + e.what();
+    }
+    try {
+      NounPhraseAt p = reader.at(from);
+      got = toJson(p.query).dump();
+      gotEnd = p.end;
+    } catch (const Error& e) {
+      got = std::string("error: ") + e.what();
+    }
+    EXPECT_EQ(got, expected) << "from " << from;
+    EXPECT_EQ(gotEnd, expectedEnd) << "from " << from;
+  };
+  NounPhraseReader reader(text, v());
+  std::vector<size_t> starts = {0};
+  for (size_t i = 1; i < text.size(); ++i)
+    if (text[i - 1] == ' ' || text[i - 1] == '(') starts.push_back(i);
+  for (size_t from : starts) same(reader, from);
+  same(reader, 0);
+  same(reader, 3);  // inside "very": read on its own
+  NounPhraseReader late(text, v());
+  same(late, text.find("a box"));
+  same(late, 0);  // before the first call's position: tokenised again
+  // A character the linguistic words refuse, after the phrase, is reported as parseNounPhraseAt does.
+  const std::string bad = "a cube and a box # x";
+  NounPhraseReader badReader(bad, v());
+  EXPECT_EQ(test::textErrorOf(bad, [&](const std::string&) { badReader.at(0); }),
+            test::textErrorOf(bad, [&](const std::string& t) { parseNounPhraseAt(t, 0, std::string::npos, v()); }));
+}
+
+}  // namespace
+}  // namespace fsdb

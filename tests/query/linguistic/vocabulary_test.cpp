@@ -1,0 +1,282 @@
+#include "query/linguistic/vocabulary.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "geometry/core/error.h"
+#include "geometry/fuzzy/fuzzy_similarity.h"
+#include "query/linguistic/descriptors.h"
+#include "query/linguistic/linguistic_query.h"
+#include "query/document/part_json.h"
+
+namespace fsdb {
+namespace {
+
+const Vocabulary& v() { return Vocabulary::builtin(); }
+
+nlohmann::json builtinDocument() { return v().document(); }
+
+std::string loadError(const nlohmann::json& doc, std::string* path = nullptr) {
+  try {
+    Vocabulary::fromJson(doc);
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), errc::kInvalidDocument);
+    if (path) *path = e.path();
+    return e.what();
+  }
+  ADD_FAILURE() << "no error";
+  return "";
+}
+
+TEST(Vocabulary, BuiltinIsTheSchemaFile) {
+  std::ifstream in(std::string(FSDB_SOURCE_DIR) + "/schema/vocabulary.json");
+  ASSERT_TRUE(in.good());
+  EXPECT_EQ(nlohmann::json::parse(in), v().document());
+  EXPECT_EQ(Vocabulary::fromFile(std::string(FSDB_SOURCE_DIR) + "/schema/vocabulary.json").document(),
+            v().document());
+}
+
+TEST(Vocabulary, DescriptorsDocumentTheCode) {
+  const auto& docs = v().document()["descriptors"];
+  ASSERT_EQ(docs.size(), descriptorNames().size());
+  for (size_t i = 0; i < docs.size(); ++i) {
+    EXPECT_EQ(docs[i]["name"], descriptorNames()[i]);
+    EXPECT_FALSE(docs[i]["function"].get<std::string>().empty());
+    EXPECT_FALSE(docs[i]["create"].get<std::string>().empty());
+  }
+}
+
+// Every set over a degree is a membership in [0, 1] on [0, 1].
+TEST(Vocabulary, MembershipsInTheUnitInterval) {
+  auto check = [](const FuzzyNumber& set, const std::string& what) {
+    EXPECT_GE(set.support().lo, 0.0) << what;
+    EXPECT_LE(set.support().hi, 1.0) << what;
+    for (int k = 0; k <= 100; ++k) {
+      const double mu = set.membership(k / 100.0);
+      EXPECT_GE(mu, 0.0) << what;
+      EXPECT_LE(mu, 1.0) << what;
+    }
+  };
+  for (const auto& w : v().intensityWords()) check(*v().intensity(w), w);
+  check(v().plain(), "plain");
+  check(v().plainCreate(), "create");
+  for (const auto& w : v().nounWords())
+    for (const auto& c : v().noun(w)->conditions) check(c.set, w + " " + c.descriptor);
+}
+
+// The intensities are ordered: each set's alpha-cut ends never decrease from slightly to
+// extremely, so a larger degree never fits a weaker word better than a stronger one... in the
+// sense of the cuts; and each intensity peaks where the order says.
+TEST(Vocabulary, IntensitiesAreMonotone) {
+  const auto& order = v().intensityOrder();
+  ASSERT_EQ(order, (std::vector<std::string>{"slightly", "somewhat", "moderately", "very", "extremely"}));
+  for (size_t i = 1; i < order.size(); ++i) {
+    const FuzzyNumber& a = *v().intensity(order[i - 1]);
+    const FuzzyNumber& b = *v().intensity(order[i]);
+    for (double alpha : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+      EXPECT_LE(a.alphaCut(alpha).lo, b.alphaCut(alpha).lo) << order[i] << " at " << alpha;
+      EXPECT_LE(a.alphaCut(alpha).hi, b.alphaCut(alpha).hi) << order[i] << " at " << alpha;
+    }
+    EXPECT_LT(a.core().lo, b.core().lo) << order[i];
+  }
+  // The plain adjective (μ(d) = d) is monotone increasing; "not" (1 − μ) decreasing.
+  for (int k = 1; k <= 100; ++k) EXPECT_GE(v().plain().membership(k / 100.0), v().plain().membership((k - 1) / 100.0));
+  // Synonyms resolve.
+  EXPECT_EQ(v().intensity("highly"), v().intensity("very"));
+  EXPECT_EQ(v().intensity("bogus"), nullptr);
+}
+
+TEST(Vocabulary, EveryWordParses) {
+  for (const auto& noun : v().nounWords())
+    EXPECT_NO_THROW(parseLinguisticQuery("find a " + noun, v())) << noun;
+  for (const auto& adj : v().adjectiveWords()) {
+    EXPECT_NO_THROW(parseLinguisticQuery("find a " + adj + " shape", v())) << adj;
+    for (const auto& in : v().intensityWords())
+      EXPECT_NO_THROW(parseLinguisticQuery("find shapes that are " + in + " " + adj, v())) << in << " " << adj;
+  }
+  for (const auto& d : v().directionWords()) {
+    const Direction& dir = *v().direction(d);
+    const std::string phrase = dir.word == d ? "to the " + d + " of" : d;
+    EXPECT_NO_THROW(parseLinguisticQuery("find a cube " + phrase + " a sphere", v())) << d;
+  }
+  for (const auto& w : v().distanceWords())
+    EXPECT_NO_THROW(parseLinguisticQuery("find a cube " + w + " above a sphere", v())) << w;
+}
+
+// Each primitive noun's own parameters satisfy its own conditions (score 1), so a part made
+// from the noun is found by the noun.
+TEST(Vocabulary, NounsFitTheirParameters) {
+  for (const auto& word : v().nounWords()) {
+    const Noun& noun = *v().noun(word);
+    if (noun.params.is_null()) continue;
+    const FuzzyPart part = parsePart({{"params", noun.params}}, "");
+    const auto values = describePart(part);
+    for (const auto& c : noun.conditions) {
+      const double d = values[descriptorIndex(c.descriptor)].value.core().lo;
+      EXPECT_DOUBLE_EQ(c.set.membership(d), 1.0) << word << " " << c.descriptor << " = " << d;
+    }
+  }
+}
+
+TEST(Vocabulary, LookupsResolvePluralsAndSameAs) {
+  ASSERT_NE(v().noun("boxes"), nullptr);
+  EXPECT_EQ(v().noun("boxes")->word, "box");
+  EXPECT_EQ(v().noun("ball")->word, "sphere");
+  EXPECT_EQ(v().noun("double pyramids")->word, "double pyramid");
+  EXPECT_EQ(v().noun("shape")->subject, "any");
+  EXPECT_EQ(v().noun("parts")->subject, "part");
+  EXPECT_EQ(v().noun("gizmo"), nullptr);
+  EXPECT_TRUE(v().adjective("flat")->lowPole);
+  EXPECT_FALSE(v().adjective("bent")->lowPole);
+  EXPECT_EQ(v().direction("above")->word, "top");
+  EXPECT_NE(v().distance("close"), nullptr);
+  EXPECT_TRUE(v().isAggregation("mean"));
+  EXPECT_FALSE(v().isAggregation("max"));
+}
+
+TEST(Vocabulary, ExactlySeedDirections) {
+  const auto& dirs = v().document()["directions"];
+  EXPECT_EQ(dirs["primary"].size(), 6u);
+  EXPECT_EQ(dirs["secondary"].size(), 12u);
+  for (const char* w : {"left", "right", "front", "back", "top", "bottom"}) EXPECT_TRUE(dirs["primary"].contains(w)) << w;
+  for (const char* w : {"top right", "top back", "top left", "top front", "bottom right", "bottom back",
+                        "bottom left", "bottom front", "right front", "right back", "left front", "left back"})
+    EXPECT_TRUE(dirs["secondary"].contains(w)) << w;
+}
+
+TEST(Vocabulary, DirectionMemberships) {
+  const Direction& right = *v().direction("right");
+  EXPECT_DOUBLE_EQ(directionMembership(right, {1, 0, 0}), 1.0);
+  EXPECT_DOUBLE_EQ(directionMembership(right, {-1, 0, 0}), 0.0);
+  EXPECT_DOUBLE_EQ(directionMembership(right, {1, 0, -0.01}), 1.0);  // beta just below 360
+  EXPECT_DOUBLE_EQ(directionMembership(right, {0, 1, 0}), 0.0);
+  EXPECT_DOUBLE_EQ(directionMembership(*v().direction("left"), {-3, 0, 0}), 1.0);
+  EXPECT_DOUBLE_EQ(directionMembership(*v().direction("front"), {0, 0, 2}), 1.0);
+  EXPECT_DOUBLE_EQ(directionMembership(*v().direction("back"), {0, 0, -2}), 1.0);
+  EXPECT_DOUBLE_EQ(directionMembership(*v().direction("top"), {0, 5, 0}), 1.0);
+  EXPECT_DOUBLE_EQ(directionMembership(*v().direction("bottom"), {0.1, -5, 0}), 1.0);
+  EXPECT_DOUBLE_EQ(directionMembership(*v().direction("top right"), {1, 1, 0}), 1.0);
+  EXPECT_DOUBLE_EQ(directionMembership(*v().direction("right front"), {1, 0, 1}), 1.0);
+  EXPECT_DOUBLE_EQ(directionMembership(*v().direction("left back"), {-1, 0, -1}), 1.0);
+  EXPECT_DOUBLE_EQ(directionMembership(right, {0, 0, 0}), 0.0);
+  // Memberships stay in [0, 1] and every direction of space has some direction word.
+  for (int b = 0; b < 36; ++b)
+    for (int g = 0; g <= 18; ++g) {
+      const double beta = b * 10 * M_PI / 180, gamma = g * 10 * M_PI / 180;
+      const Vec3 u{std::sin(gamma) * std::cos(beta), std::cos(gamma), std::sin(gamma) * std::sin(beta)};
+      double best = 0;
+      for (const auto& w : v().directionWords()) {
+        const double mu = directionMembership(*v().direction(w), u);
+        EXPECT_GE(mu, 0.0);
+        EXPECT_LE(mu, 1.0);
+        best = std::max(best, mu);
+      }
+      EXPECT_GT(best, 0.3) << "beta " << b * 10 << " gamma " << g * 10;
+    }
+}
+
+// Defuzzification by local maxima (Bernardes, Wu & D'Ottaviano, §5) gives the direction's crisp
+// vector first.
+TEST(Vocabulary, DirectionCandidates) {
+  auto first = [](const std::string& w) { return directionCandidates(*v().direction(w)).at(0); };
+  auto near = [](const Vec3& a, const Vec3& b) { return std::hypot(a.x - b.x, a.y - b.y, a.z - b.z) < 1e-9; };
+  EXPECT_TRUE(near(first("right").vector, {1, 0, 0}));
+  EXPECT_TRUE(near(first("left").vector, {-1, 0, 0}));
+  EXPECT_TRUE(near(first("front").vector, {0, 0, 1}));
+  EXPECT_TRUE(near(first("top").vector, {0, 1, 0}));
+  EXPECT_TRUE(near(first("bottom").vector, {0, -1, 0}));
+  const double s = std::sqrt(0.5);
+  EXPECT_TRUE(near(first("top right").vector, {s, s, 0}));
+  EXPECT_TRUE(near(first("left back").vector, {-s, 0, -s}));
+  for (const auto& w : v().directionWords()) {
+    const auto c = directionCandidates(*v().direction(w));
+    ASSERT_FALSE(c.empty()) << w;
+    EXPECT_DOUBLE_EQ(c[0].mu, 1.0) << w;
+    EXPECT_NEAR(directionMembership(*v().direction(w), c[0].vector), 1.0, 1e-9) << w;
+  }
+}
+
+TEST(Vocabulary, LoadErrorsNameThePath) {
+  std::string path;
+  auto doc = builtinDocument();
+  doc["adjectives"]["bent"]["descriptor"] = "bentness";
+  EXPECT_NE(loadError(doc, &path).find("unknown descriptor 'bentness'"), std::string::npos);
+  EXPECT_EQ(path, "adjectives.bent.descriptor");
+
+  doc = builtinDocument();
+  doc["nouns"]["cube"]["conditions"]["squariness"] = {{"tri", {0.5, 0.9, 1.5}}};
+  EXPECT_NE(loadError(doc, &path).find("[0, 1]"), std::string::npos);
+  EXPECT_EQ(path, "nouns.cube.conditions.squariness");
+
+  doc = builtinDocument();
+  doc["nouns"]["ball"]["same_as"] = "orb";
+  loadError(doc, &path);
+  EXPECT_EQ(path, "nouns.ball.same_as");
+
+  doc = builtinDocument();
+  doc["intensities"]["terms"]["very"] = {{"tri", {0.9, 0.8, 1}}};
+  loadError(doc, &path);
+  EXPECT_EQ(path, "intensities.terms.very.tri[1]");
+
+  doc = builtinDocument();
+  doc["descriptors"].erase(0);
+  loadError(doc, &path);
+  EXPECT_EQ(path, "descriptors");
+
+  doc = builtinDocument();
+  doc["directions"]["secondary"]["top right"]["gamma"] = "sky";
+  loadError(doc, &path);
+  EXPECT_EQ(path, "directions.secondary.top right.gamma");
+
+  EXPECT_THROW(Vocabulary::fromFile("/nonexistent/vocabulary.json"), Error);
+}
+
+// Users extend the vocabulary with their own words.
+TEST(Vocabulary, ExtendedVocabulary) {
+  auto doc = builtinDocument();
+  doc["nouns"]["egg"] = {{"plural", "eggs"},
+                         {"conditions", {{"roundness", {{"trap", {0.7, 0.9, 1, 1}}}}}},
+                         {"params", {{"eps1", 1}, {"eps2", 1}, {"a1", 1}, {"a3", 1.3}, {"kx", -0.2}, {"ky", -0.2}}}};
+  doc["adjectives"]["wobbly"] = {{"descriptor", "twistness"}};
+  doc["intensities"]["synonyms"]["super"] = "extremely";
+  const Vocabulary custom = Vocabulary::fromJson(doc);
+  const LinguisticQuery q = parseLinguisticQuery("find super wobbly eggs", custom);
+  EXPECT_EQ(q.root.kind, QueryCondition::Kind::kAnd);
+  EXPECT_THROW(parseLinguisticQuery("find super wobbly eggs", v()), Error);
+}
+
+TEST(Vocabulary, ActiveVocabularyDefaultsToBuiltin) { EXPECT_EQ(&activeVocabulary(), &Vocabulary::builtin()); }
+
+}  // namespace
+}  // namespace fsdb
+
+namespace fsdb {
+namespace {
+
+// The demo catalogue's parts carry descriptor words ("slightly bent", "very sharp"): each is a
+// query the part itself satisfies, so the vocabulary and the demo agree.
+TEST(Vocabulary, DemoDescriptorsDescribeTheirParts) {
+  std::ifstream in(std::string(FSDB_SOURCE_DIR) + "/schema/demo/01-parts.jsonl");
+  ASSERT_TRUE(in.good());
+  std::string line;
+  int checked = 0;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    const nlohmann::json doc = nlohmann::json::parse(line);
+    if (!doc.contains("descriptors")) continue;
+    const auto values = describePart(parsePart(doc, ""));
+    for (const auto& words : doc["descriptors"]) {
+      const LinguisticQuery q = parseLinguisticQuery("find a " + words.get<std::string>() + " shape", v());
+      // Fuzzy values score by area (S of docs/api.md §5), so a narrow value inside a wide set stays
+      // below 1.
+      EXPECT_GT(scoreDescriptors(q, values).score, 0.1) << doc["name"] << ": " << words;
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 15);
+}
+
+}  // namespace
+}  // namespace fsdb

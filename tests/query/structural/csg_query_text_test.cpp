@@ -1,0 +1,258 @@
+// Structural query texts (query/structural/csg_query_text.h): both forms, every example of
+// schema/csg_query_grammar.ebnf, the leaves as linguistic conditions, and the errors.
+#include "query/structural/csg_query_text.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+
+#include "geometry/core/error.h"
+#include "query/linguistic/vocabulary.h"
+#include "tests/testing/grammar_examples.h"
+#include "tests/testing/text_error.h"
+
+namespace fsdb {
+namespace {
+
+const Vocabulary& v() { return Vocabulary::builtin(); }
+CsgQuery parse(const std::string& text, const ReferenceResolver& resolver = {}) {
+  return parseCsgQuery(text, v(), resolver, 1000);
+}
+
+// The graph as a string: op(children...) with leaves by their text, children in graph order.
+std::string shape(const CsgQuery& q, int node) {
+  const CsgGraphNode& n = q.graph.nodes[node];
+  if (n.op == CsgGraphOp::Leaf) return "'" + q.leaves[n.leaf].text + "'";
+  std::string out = std::string(csgGraphOpName(n.op)) + "(";
+  for (size_t i = 0; i < n.children.size(); ++i) out += (i ? ", " : "") + shape(q, n.children[i]);
+  return out + ")";
+}
+std::string shape(const CsgQuery& q) { return shape(q, q.graph.root); }
+
+std::string errorOf(const std::string& text, const ReferenceResolver& resolver = {}) {
+  return test::textErrorOf(text, [&](const std::string& t) { parse(t, resolver); });
+}
+
+TEST(CsgQueryText, PhraseOperations) {
+  EXPECT_EQ(shape(parse("the union of a very bent cylinder and a very sharp pyramid")),
+            "union('a very bent cylinder', 'a very sharp pyramid')");
+  EXPECT_EQ(shape(parse("a cube minus a cylinder")), "difference('a cube', 'a cylinder')");
+  EXPECT_EQ(shape(parse("the intersection of a sphere and a box")), "intersection('a sphere', 'a box')");
+  EXPECT_EQ(shape(parse("a sphere and a box")), "union('a sphere', 'a box')");
+  // Lists flatten into one union (associativity, as stored trees do).
+  EXPECT_EQ(shape(parse("a sphere, a box and a cylinder")), "union('a sphere', 'a box', 'a cylinder')");
+  EXPECT_EQ(shape(parse("find a sphere plus a box plus a cone")), "union('a sphere', 'a box', 'a cone')");
+}
+
+// The phrase form opens with the linguistic grammar's verbs and names operations after its articles.
+TEST(CsgQueryText, PhraseVerbsAndArticlesAreTheLinguisticOnes) {
+  for (const std::string& verb : queryVerbs())
+    for (const std::string& opening : {verb, verb + " for"})
+      EXPECT_EQ(shape(parse(opening + " a sphere plus a box")), "union('a sphere', 'a box')") << opening;
+  for (const std::string& article : queryArticles())
+    EXPECT_EQ(shape(parse(article + " union of a sphere and a box")), "union('a sphere', 'a box')") << article;
+}
+
+TEST(CsgQueryText, PhraseNestingAndPrecedence) {
+  EXPECT_EQ(shape(parse("the union of a cube and the difference of a box and a cylinder")),
+            "union('a cube', difference('a box', 'a cylinder'))");
+  // Lists bind tighter than minus; intersected with tighter than lists.
+  EXPECT_EQ(shape(parse("a cube minus a cylinder and a sphere")),
+            "difference('a cube', union('a cylinder', 'a sphere'))");
+  EXPECT_EQ(shape(parse("a sphere intersected with a box and a cone")),
+            "union(intersection('a sphere', 'a box'), 'a cone')");
+  EXPECT_EQ(shape(parse("(a cube plus a sphere) minus a cylinder")),
+            "difference(union('a cube', 'a sphere'), 'a cylinder')");
+  EXPECT_EQ(shape(parse("a cube minus (a cylinder minus a sphere)")),
+            "difference('a cube', difference('a cylinder', 'a sphere'))");
+  // A chain of minus keeps the minuend first and the subtrahends after it.
+  EXPECT_EQ(shape(parse("a cube minus a cylinder minus a sphere")).rfind("difference(", 0), 0u);
+}
+
+TEST(CsgQueryText, LeavesAreNounPhrasesOfTheLinguisticParser) {
+  const CsgQuery q = parse("the union of a cylinder that is bent and sharp and a bent and twisted rod");
+  EXPECT_EQ(shape(q), "union('a cylinder that is bent and sharp', 'a bent and twisted rod')");
+  ASSERT_EQ(q.leaves.size(), 2u);
+  for (const CsgQueryLeaf& leaf : q.leaves) {
+    ASSERT_TRUE(leaf.condition.has_value());
+    EXPECT_EQ(leaf.partId, 0);
+  }
+  // The leaf's condition is what the linguistic parser makes of the same words.
+  EXPECT_EQ(toJson(*q.leaves[1].condition), toJson(parseLinguisticQuery("a bent and twisted rod", v())));
+  EXPECT_EQ(q.form, "phrase");
+  // "parsed" shows the descriptions where they stand.
+  const nlohmann::json parsed = toJson(q);
+  EXPECT_EQ(parsed["tree"]["op"], "union");
+  EXPECT_EQ(parsed["tree"]["children"][0]["text"], "a cylinder that is bent and sharp");
+  EXPECT_EQ(parsed["tree"]["children"][0]["condition"]["kind"], "and");
+  EXPECT_EQ(parsed["nodes"], 3);
+  EXPECT_EQ(parsed["leaves"], 2);
+}
+
+TEST(CsgQueryText, GraphPathsPointIntoTheParsedTree) {
+  const CsgQuery q = parse("the union of a cube and the difference of a box and a cylinder");
+  const nlohmann::json parsed = toJson(q);
+  for (const CsgGraphNode& n : q.graph.nodes) {
+    ASSERT_EQ(n.path.rfind("tree", 0), 0u) << n.path;
+    if (n.op != CsgGraphOp::Leaf) continue;
+    // "tree.children[1].children[0]" → the description at that place.
+    nlohmann::json at = parsed["tree"];
+    std::string rest = n.path.substr(4);
+    while (!rest.empty()) {
+      ASSERT_EQ(rest.rfind(".children[", 0), 0u) << n.path;
+      const size_t close = rest.find(']');
+      at = at["children"][std::stoul(rest.substr(10, close - 10))];
+      rest = rest.substr(close + 1);
+    }
+    EXPECT_EQ(at["text"], q.leaves[n.leaf].text) << n.path;
+  }
+}
+
+// A resolver that knows a stored part "bolt" (id 7) and a stored shape "pair" (id 9) = union of two bolts.
+ReferenceResolver testResolver() {
+  return [](const std::string& kind, const nlohmann::json& key) -> std::optional<ResolvedReference> {
+    const nlohmann::json bolt = {{"kind", "part"}, {"name", "bolt"}, {"params", {{"a1", 2}, {"a3", 4}}}};
+    if (kind == "part" && (key == "bolt" || key == 7)) return ResolvedReference{7, bolt};
+    if (kind == "shape" && (key == "pair" || key == 9))
+      return ResolvedReference{
+          9, {{"kind", "shape"}, {"name", "pair"}, {"tree", {{"op", "intersection"}, {"children", {{{"part", "bolt"}}, {{"part", {{"params", {{"a1", 1}}}}}}}}}}}};
+    return std::nullopt;
+  };
+}
+
+TEST(CsgQueryText, FormulaNamesAreStoredObjectsOrDescriptions) {
+  const CsgQuery q = parse("C = \"very bent cylinder\" + bolt - (cube * pair)", testResolver());
+  EXPECT_EQ(q.form, "formula");
+  EXPECT_EQ(shape(q), "difference(union('very bent cylinder', 'bolt'), intersection('cube', 'bolt', ''))");
+  int parts = 0, descriptions = 0;
+  for (const CsgQueryLeaf& leaf : q.leaves) {
+    if (leaf.condition) ++descriptions;
+    else ++parts;
+  }
+  EXPECT_EQ(descriptions, 2);
+  EXPECT_EQ(parts, 3);
+  for (const CsgQueryLeaf& leaf : q.leaves) {
+    if (leaf.text == "bolt") {
+      EXPECT_EQ(leaf.partId, 7);
+    }
+  }
+  // Without a resolver every name is a description.
+  EXPECT_EQ(shape(parse("cube + cylinder")), "union('cube', 'cylinder')");
+}
+
+// Each stored reference is looked up once per query: the formula asks for every name as a part and
+// as a shape, and building the graph asks again; the answers are remembered (rememberingResolver).
+TEST(CsgQueryText, FormulaLooksUpEachReferenceOnce) {
+  std::map<std::string, int> calls;
+  const ReferenceResolver inner = testResolver();
+  const ReferenceResolver counting = [&](const std::string& kind, const nlohmann::json& key) {
+    ++calls[kind + ' ' + key.dump()];
+    return inner(kind, key);
+  };
+  const CsgQuery q = parse("C = bolt + bolt - (cube * pair)", counting);
+  EXPECT_EQ(shape(q), "difference(union('bolt', 'bolt'), intersection('cube', 'bolt', ''))");
+  EXPECT_FALSE(calls.empty());
+  for (const auto& [what, n] : calls) EXPECT_EQ(n, 1) << what;
+}
+
+TEST(CsgQueryText, FormIsChosenByCharacters) {
+  EXPECT_TRUE(isCsgFormula("A + B"));
+  EXPECT_TRUE(isCsgFormula("A - B"));
+  EXPECT_TRUE(isCsgFormula("A -B"));
+  EXPECT_TRUE(isCsgFormula("\"bent rod\""));
+  EXPECT_TRUE(isCsgFormula("C = A"));
+  EXPECT_FALSE(isCsgFormula("a cube-like box minus a sphere"));
+  EXPECT_FALSE(isCsgFormula("the union of a sphere and a box"));
+}
+
+TEST(CsgQueryText, RoutingOfQueryTexts) {
+  EXPECT_TRUE(isCsgQueryText("the union of a sphere and a box", v()));
+  EXPECT_TRUE(isCsgQueryText("a cube minus a cylinder", v()));
+  EXPECT_TRUE(isCsgQueryText("cube + cylinder", v()));
+  EXPECT_TRUE(isCsgQueryText("a sphere and a box", v()));  // no linguistic query, a CSG list
+  EXPECT_FALSE(isCsgQueryText("find a slightly bent shape", v()));
+  EXPECT_FALSE(isCsgQueryText("find shapes that are bent and round", v()));
+  EXPECT_FALSE(isCsgQueryText("a cube above a sphere", v()));
+  EXPECT_FALSE(isCsgQueryText("find a frobnicated shape", v()));  // the linguistic error is the better one
+}
+
+TEST(CsgQueryText, ErrorsGivePositionsAndExpectedWords) {
+  EXPECT_NE(errorOf("the union of a cube").find("the query ends too early"), std::string::npos);
+  EXPECT_NE(errorOf("the union of a cube").find("'and'"), std::string::npos);
+  const std::string e = errorOf("a cube minus a frobnicated sphere");
+  EXPECT_NE(e.find("unknown word 'frobnicated' at character 15"), std::string::npos) << e;
+  const std::string d = errorOf("the difference of a cube or a sphere");
+  EXPECT_NE(d.find("character"), std::string::npos) << d;
+  EXPECT_NE(errorOf("(a cube minus a sphere").find("')'"), std::string::npos);
+  EXPECT_NE(errorOf("a cube minus").find("noun phrase"), std::string::npos);
+  // Formula: csg_text's column message, or the description's own error at its place in the text.
+  EXPECT_NE(errorOf("cube + \"very frobnicated rod\"").find("unknown word 'frobnicated' at character 13"), std::string::npos);
+  EXPECT_NE(errorOf("\"a cube above a sphere\" + rod").find("is no stored part or shape"), std::string::npos);
+  try {
+    parse("cube + * rod");
+    ADD_FAILURE();
+  } catch (const Error& err) {
+    EXPECT_NE(std::string(err.what()).find("column 8"), std::string::npos) << err.what();
+    EXPECT_EQ(err.path(), "text");
+  }
+}
+
+TEST(CsgQueryText, DeepNestingIsALimit) {
+  std::string text;
+  for (int i = 0; i < 100; ++i) text += "(";
+  text += "a cube";
+  for (int i = 0; i < 100; ++i) text += ")";
+  try {
+    parse(text);
+    ADD_FAILURE();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), errc::kLimitExceeded);
+  }
+}
+
+TEST(CsgQueryText, TooManyNodesIsALimit) {
+  std::string text = "a cube";
+  for (int i = 0; i < 20; ++i) text += " and a sphere";
+  try {
+    parseCsgQuery(text, v(), {}, 10);
+    ADD_FAILURE();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), errc::kLimitExceeded);
+  }
+}
+
+TEST(CsgQueryText, TreeDocuments) {
+  const nlohmann::json tree = {{"op", "difference"},
+                               {"children", {{{"part", "bolt"}}, {{"part", {{"params", {{"a1", 1}}}}}}}}};
+  const CsgQuery q = csgQueryFromDocument(tree, 100, testResolver());
+  EXPECT_EQ(q.form, "tree");
+  EXPECT_EQ(shape(q), "difference('bolt', '')");
+  EXPECT_FALSE(q.leaves[0].condition.has_value());
+  EXPECT_EQ(q.graph.nodes[q.graph.root].path, "tree");
+  EXPECT_EQ(q.tree, tree);
+  const CsgQuery whole = csgQueryFromDocument({{"kind", "shape"}, {"name", "x"}, {"tree", tree}}, 100, testResolver());
+  EXPECT_EQ(shape(whole), shape(q));
+  try {
+    csgQueryFromDocument(
+        {{"op", "union"}, {"children", {{{"part", "bolt"}}, {{"part", {{"params", {{"a1", -1}}}}}}}}}, 100,
+        testResolver());
+    ADD_FAILURE();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.path().rfind("tree.children[1].part", 0), 0u) << e.path();
+  }
+}
+
+// Every example of schema/csg_query_grammar.ebnf parses.
+TEST(CsgQueryText, GrammarExamplesParse) {
+  int examples = 0;
+  for (const std::string& example : testing::grammarExamples("csg_query_grammar.ebnf")) {
+    EXPECT_NO_THROW(parse(example)) << example;
+    EXPECT_TRUE(isCsgQueryText(example, v())) << example;
+    ++examples;
+  }
+  EXPECT_GE(examples, 15);
+}
+
+}  // namespace
+}  // namespace fsdb

@@ -1,0 +1,122 @@
+// The evaluation limits of `fsdb serve` and `fsdb eval` against the real binary: --max-grid-mb
+// and --max-eval-ms answer 413 naming the limit (inline and stored-shape forms, nothing cached),
+// the server keeps serving; "exhausted_searches" counts the fuzzy parts' exhausted searches.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <fstream>
+#include <string>
+
+#include "query/document/part_json.h"
+#include "tests/server/shared_server.h"
+#include "tests/testing/fuzzy_bench_part.h"
+
+using fsdb::test::ServerProcess;
+using fsdb::test::SharedServerTest;
+using nlohmann::json;
+
+namespace {
+
+json crispBall() { return {{"kind", "part"}, {"params", {{"a1", 1}}}}; }
+// All fourteen values fuzzy: the slow part (0.3 s at resolution 20 with 5 exhausted searches, 0.8 s
+// at 32, seconds at 64; one core of the shared build machine).
+json slowPart() { return fsdb::partToJson(fsdb::testing::allValuesFuzzyPart()); }
+
+void expectLimit(const ServerProcess::Reply& r, const std::string& limit) {
+  EXPECT_EQ(r.status, 413) << r.body;
+  EXPECT_EQ(r.json["error"]["code"], "limit_exceeded") << r.body;
+  EXPECT_EQ(r.json["error"]["path"], "resolution") << r.body;
+  const std::string message = r.json["error"]["message"].is_string() ? r.json["error"]["message"].get<std::string>() : "";
+  EXPECT_NE(message.find(limit), std::string::npos) << r.body;
+  EXPECT_NE(message.find("lower the resolution"), std::string::npos) << r.body;
+}
+
+int64_t storeShape(const ServerProcess& server, const std::string& name, const json& part) {
+  auto r = server.post("/shapes", json{{"kind", "shape"}, {"name", name}, {"tree", {{"part", part}}}});
+  EXPECT_EQ(r.status, 201) << r.body;
+  return r.json.value("id", int64_t{0});
+}
+
+class TightLimits : public SharedServerTest<TightLimits> {
+ public:
+  // 1 MiB holds about 250 leaf pairs: a crisp ball at resolution 32, not at 128.
+  static std::vector<std::string> serverArgs() { return {"--max-grid-mb", "1", "--max-eval-ms", "300"}; }
+};
+
+TEST_F(TightLimits, GridMemoryLimitIs413NamingMaxGridMb) {
+  auto ok = server->post("/evaluate", json{{"shape", crispBall()}, {"resolution", 32}});
+  ASSERT_EQ(ok.status, 200) << ok.body;
+  expectLimit(server->post("/evaluate", json{{"shape", crispBall()}, {"resolution", 128}}), "max_grid_mb=1");
+  EXPECT_EQ(server->get("/health").status, 200);
+}
+
+TEST_F(TightLimits, StoredShapeFormsAnswerTheSameAndCacheNothing) {
+  const std::string at = "/shapes/" + std::to_string(storeShape(*server, "big-ball", crispBall()));
+  expectLimit(server->post(at + "/evaluate", json{{"resolution", 128}}), "max_grid_mb=1");
+  expectLimit(server->post(at + "/evaluate", json{{"resolution", 128}}), "max_grid_mb=1");  // not cached
+  expectLimit(server->get(at + "/mesh?resolution=128"), "max_grid_mb=1");
+  expectLimit(server->get(at + "/grid.vdb?resolution=128"), "max_grid_mb=1");
+  auto small = server->post(at + "/evaluate", json{{"resolution", 32}});
+  ASSERT_EQ(small.status, 200) << small.body;
+  EXPECT_EQ(small.json["cached"], false);
+  EXPECT_EQ(server->get("/health").status, 200);
+}
+
+TEST_F(TightLimits, EvaluationTimeLimitIs413NamingMaxEvalMs) {
+  const auto start = std::chrono::steady_clock::now();
+  auto r = server->post("/evaluate", json{{"shape", slowPart()}, {"resolution", 64}});
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  expectLimit(r, "max_eval_ms=300");
+  EXPECT_LT(seconds, 1.5);  // the build stops within a block of the deadline, not after seconds
+  EXPECT_EQ(server->get("/health").status, 200);
+  const std::string at = "/shapes/" + std::to_string(storeShape(*server, "slow", slowPart()));
+  expectLimit(server->post(at + "/evaluate", json{{"resolution", 64}}), "max_eval_ms=300");
+}
+
+class DefaultLimits : public SharedServerTest<DefaultLimits> {};
+
+TEST_F(DefaultLimits, ExhaustedSearchesAreZeroForACrispPart) {
+  auto r = server->post("/evaluate", json{{"shape", crispBall()}, {"resolution", 48}});
+  ASSERT_EQ(r.status, 200) << r.body;
+  EXPECT_EQ(r.json["exhausted_searches"], 0);
+}
+
+TEST_F(DefaultLimits, ExhaustedSearchesCountThisEvaluationAndStayWithTheCachedAnswer) {
+  const json request = {{"shape", slowPart()}, {"resolution", 20}, {"alphas", {0.5}}};
+  auto first = server->post("/evaluate", request);
+  ASSERT_EQ(first.status, 200) << first.body;
+  ASSERT_TRUE(first.json["exhausted_searches"].is_number_unsigned()) << first.body;
+  EXPECT_GT(first.json["exhausted_searches"].get<std::uint64_t>(), 0u);
+  // A fresh field per request: the same request counts the same searches again, not their sum.
+  auto again = server->post("/evaluate", request);
+  EXPECT_EQ(again.json["exhausted_searches"], first.json["exhausted_searches"]);
+
+  const std::string at = "/shapes/" + std::to_string(storeShape(*server, "fuzzy", slowPart())) + "/evaluate";
+  auto miss = server->post(at, json{{"resolution", 20}, {"alphas", {0.5}}});
+  ASSERT_EQ(miss.status, 200) << miss.body;
+  EXPECT_EQ(miss.json["cached"], false);
+  EXPECT_EQ(miss.json["exhausted_searches"], first.json["exhausted_searches"]);
+  auto hit = server->post(at, json{{"resolution", 20}, {"alphas", {0.5}}});
+  EXPECT_EQ(hit.json["cached"], true);
+  EXPECT_EQ(hit.json["exhausted_searches"], first.json["exhausted_searches"]);
+}
+
+TEST(EvalCommandLimits, FlagsDefaultToNoLimitAndStopWhenGiven) {
+  const std::string path = ::testing::TempDir() + "fsdb_eval_limits_ball.json";
+  std::ofstream(path) << crispBall().dump();
+  auto free = fsdb::test::runFsdb({"eval", path, "--resolution", "128"});
+  ASSERT_EQ(free.exitCode, 0) << free.out;
+  EXPECT_EQ(json::parse(free.out)["exhausted_searches"], 0);
+  auto tight = fsdb::test::runFsdb({"eval", path, "--resolution", "128", "--max-grid-mb", "1"}, true);
+  EXPECT_EQ(tight.exitCode, 1);
+  const json error = json::parse(tight.out, nullptr, false);
+  EXPECT_EQ(error["error"]["code"], "limit_exceeded") << tight.out;
+  EXPECT_NE(tight.out.find("max_grid_mb=1"), std::string::npos) << tight.out;
+  const std::string slow = ::testing::TempDir() + "fsdb_eval_limits_slow.json";
+  std::ofstream(slow) << slowPart().dump();
+  auto late = fsdb::test::runFsdb({"eval", slow, "--resolution", "32", "--max-eval-ms", "50"}, true);
+  EXPECT_EQ(late.exitCode, 1);
+  EXPECT_NE(late.out.find("max_eval_ms=50"), std::string::npos) << late.out;
+}
+
+}  // namespace
