@@ -1,0 +1,53 @@
+#pragma once
+// Internal to db/: the rows of one object on one connection, inside the caller's transaction:
+// reference resolution, the cycle check, version rows, reference edges and cache invalidation
+// (the write path that Store::create, put and createBatch share), and reading objects back.
+// Store (db/store.h) is the public face; only db/store.cpp includes this header.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "db/sqlite.h"
+#include "db/store.h"
+
+namespace fsdb::object_rows {
+
+// The ids of the objects whose latest version reaches ?1 (its ancestors in refs; ?1 itself only
+// through a cycle), as a subquery. UNION (not UNION ALL) makes the walk terminate whatever the graph.
+#define FSDB_REACHING_SQL                                                 \
+  "WITH RECURSIVE up(id) AS (SELECT parent_id FROM refs WHERE child_id = ?1" \
+  " UNION SELECT refs.parent_id FROM refs JOIN up ON refs.child_id = up.id) SELECT id FROM up"
+
+// The columns readObject reads, joined for one version.
+constexpr const char* kObjectColumns =
+    "SELECT o.id, o.kind, o.name, o.latest_version, v.version, v.document, v.content_hash,"
+    " v.created_at FROM objects o JOIN versions v ON v.object_id = o.id";
+
+// The objects row of one object.
+struct ObjectRow {
+  int64_t id = 0;
+  std::string kind, name;
+  int latestVersion = 0;
+};
+
+// "part 'bolt' (id 3)": how messages name an object.
+std::string describe(const std::string& kind, const std::string& name, int64_t id);
+// The objects whose latest version reaches id (FSDB_REACHING_SQL), sorted, without id itself.
+std::vector<int64_t> dependentsOf(sqlite::Connection& connection, int64_t id);
+std::optional<ObjectRow> objectRow(sqlite::Connection& connection, int64_t id);
+// Store::create, put and upsert (createBatch's modes), inside the caller's transaction.
+StoredObject createIn(sqlite::Connection& connection, const NewObject& object);
+StoredObject putIn(sqlite::Connection& connection, int64_t id, const NewObject& object);
+StoredObject upsertIn(sqlite::Connection& connection, const NewObject& object);
+// The children that the latest version of id references, sorted.
+std::vector<int64_t> referencesOf(sqlite::Connection& connection, int64_t id);
+// One row of kObjectColumns. References are filled for the latest version by loadObject only
+// (refs holds only the latest version's edges).
+StoredObject readObject(sqlite::Statement& row);
+// The object of `kind` with this id (or, without one, this name) at `version` (else the latest).
+std::optional<StoredObject> loadObject(sqlite::Connection& connection, const std::string& kind,
+                                       std::optional<int64_t> id, const std::string& name,
+                                       std::optional<int> version);
+
+}  // namespace fsdb::object_rows
