@@ -1,5 +1,6 @@
 // The parser of linguistic queries (query/linguistic/linguistic_query.h, schema/query_grammar.ebnf):
-// recursive descent over word tokens, one function per production.
+// recursive descent over word tokens (query_tokens.h), one function per production. The JSON
+// of a parsed query is linguistic_query_json.cpp.
 #include "query/linguistic/linguistic_query.h"
 
 #include <algorithm>
@@ -13,19 +14,16 @@
 #include "geometry/fuzzy/fuzzy_arithmetic.h"
 #include "query/json/fuzzy_json.h"
 #include "query/json/number_phrases.h"
+#include "query/linguistic/query_tokens.h"
 #include "query/linguistic/vocabulary.h"
 
 namespace fsdb {
 namespace {
 
 using Kind = QueryCondition::Kind;
-
-struct Token {
-  std::string text;  // lower case
-  size_t offset;     // character position in the query text
-  size_t end;
-  bool number = false;
-};
+using query_tokens::Token;
+using query_tokens::TokenView;
+using query_tokens::tokenize;
 
 // The words of the grammar itself (the vocabulary supplies the rest).
 const std::vector<std::string>& grammarWords() {
@@ -44,52 +42,6 @@ const std::vector<std::string> kApproximately = {"exactly", "about", "around", "
 
 bool contains(const std::vector<std::string>& list, const std::string& w) {
   return std::find(list.begin(), list.end(), w) != list.end();
-}
-
-// The tokens of text[from, to) (to <= text.size()), as if the text ended at `to`.
-std::vector<Token> tokenize(const std::string& text, size_t from, size_t to) {
-  std::vector<Token> tokens;
-  size_t i = from;
-  while (i < to) {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    if (std::isspace(c)) {
-      ++i;
-      continue;
-    }
-    Token t;
-    t.offset = i;
-    if (std::isalpha(c)) {
-      while (i < to && (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '-' || text[i] == '\''))
-        t.text += static_cast<char>(std::tolower(static_cast<unsigned char>(text[i++])));
-    } else if (std::isdigit(c) || ((c == '-' || c == '+' || c == '.') && i + 1 < to &&
-                                   (std::isdigit(static_cast<unsigned char>(text[i + 1])) || text[i + 1] == '.'))) {
-      // strtod reads no blank, parenthesis or comma after its first character: it sees the run up
-      // to one of them or `to` (a copy of that run only, so tokenising stays linear in the text).
-      size_t runEnd = i;
-      while (runEnd < to && !std::isspace(static_cast<unsigned char>(text[runEnd])) && text[runEnd] != '(' &&
-             text[runEnd] != ')' && text[runEnd] != ',')
-        ++runEnd;
-      const std::string run = text.substr(i, runEnd - i);
-      char* stop = nullptr;
-      const double value = std::strtod(run.c_str(), &stop);
-      if (stop == run.c_str() || !std::isfinite(value))
-        throw Error(errc::kInvalidParameter, "bad number at character " + std::to_string(i), "text");
-      i += static_cast<size_t>(stop - run.c_str());
-      t.text = text.substr(t.offset, i - t.offset);
-      t.number = true;
-    } else if (c == '(' || c == ')' || c == ',') {
-      t.text = std::string(1, static_cast<char>(c));
-      ++i;
-    } else {
-      throw Error(errc::kInvalidParameter,
-                  "unexpected character '" + std::string(1, static_cast<char>(c)) + "' at character " +
-                      std::to_string(i) + "; a query is words, numbers, parentheses and commas",
-                  "text");
-    }
-    t.end = i;
-    tokens.push_back(t);
-  }
-  return tokens;
 }
 
 std::string joinList(const std::vector<std::string>& words) {
@@ -126,15 +78,6 @@ FuzzyNumber restrictedToUnit(const FuzzyNumber& set) {
 
 // The set of a low-pole adjective: d -> 1 - d (exact: negation and a crisp shift).
 FuzzyNumber mirrored(const FuzzyNumber& set) { return add(negate(set), FuzzyNumber::crisp(1.0)); }
-
-// Tokens [begin, begin + n) of a tokenised text, read by a Parser (which may own them).
-struct TokenView {
-  const Token* data = nullptr;
-  size_t n = 0;
-  size_t size() const { return n; }
-  bool empty() const { return n == 0; }
-  const Token& operator[](size_t i) const { return data[i]; }
-};
 
 class Parser {
  public:
@@ -597,34 +540,6 @@ class Parser {
   const std::vector<std::string>&intensityWords_, &adjectiveWords_, &nounWords_, &directionWords_, &distanceWords_;
 };
 
-const char* kindName(Kind k) {
-  switch (k) {
-    case Kind::kDescriptor: return "descriptor";
-    case Kind::kAnd: return "and";
-    case Kind::kOr: return "or";
-    case Kind::kNot: return "not";
-    case Kind::kRelation: return "relation";
-  }
-  return "";
-}
-
-nlohmann::json conditionJson(const QueryCondition& c) {
-  nlohmann::json j = {{"kind", kindName(c.kind)}, {"text", c.text}};
-  if (c.kind == Kind::kDescriptor) {
-    j["descriptor"] = c.descriptor;
-    j["set"] = toJson(c.set);
-  }
-  if (c.kind == Kind::kRelation) {
-    j["direction"] = c.direction;
-    j["distance"] = c.distance ? toJson(*c.distance) : nlohmann::json();
-  }
-  if (c.kind != Kind::kDescriptor) {
-    j["children"] = nlohmann::json::array();
-    for (const QueryCondition& child : c.children) j["children"].push_back(conditionJson(child));
-  }
-  return j;
-}
-
 }  // namespace
 
 LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary) {
@@ -670,13 +585,6 @@ NounPhraseAt NounPhraseReader::at(size_t from) {
 
 PartDescription parsePartDescription(const std::string& text, const Vocabulary& vocabulary) {
   return Parser(text, vocabulary).partDescription();
-}
-
-nlohmann::json toJson(const LinguisticQuery& query) {
-  return {{"subject", query.subject},
-          {"aggregation", query.aggregation},
-          {"at_least", query.atLeast},
-          {"condition", conditionJson(query.root)}};
 }
 
 }  // namespace fsdb
