@@ -44,6 +44,24 @@ bool contains(const std::vector<std::string>& list, const std::string& w) {
   return std::find(list.begin(), list.end(), w) != list.end();
 }
 
+// The tokens without the vocabulary's fillers ("please"), which carry no meaning wherever they
+// stand, and without the comma that sets one off ("small, please"; "please, find ...").
+std::vector<Token> withoutFillers(const std::vector<Token>& tokens, const Vocabulary& vocabulary) {
+  std::vector<Token> out;
+  out.reserve(tokens.size());
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    if (tokens[i].number || !vocabulary.isFiller(tokens[i].text)) {
+      out.push_back(tokens[i]);
+      continue;
+    }
+    if (!out.empty() && out.back().text == ",")
+      out.pop_back();
+    else if (i + 1 < tokens.size() && tokens[i + 1].text == ",")
+      ++i;
+  }
+  return out;
+}
+
 std::string joinList(const std::vector<std::string>& words) {
   std::string out;
   for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
@@ -84,7 +102,7 @@ class Parser {
   Parser(const std::string& text, const Vocabulary& vocabulary, size_t from = 0, size_t to = std::string::npos,
          bool prefix = false)
       : Parser(text, vocabulary, TokenView{}, prefix) {
-    owned_ = tokenize(text, from, std::min(to, text.size()));
+    owned_ = withoutFillers(tokenize(text, from, std::min(to, text.size())), vocabulary);
     tokens_ = TokenView{owned_.data(), owned_.size()};
   }
   // Over tokens of `text` tokenised elsewhere (NounPhraseReader): `tokens` must outlive the parser.
@@ -102,7 +120,7 @@ class Parser {
   LinguisticQuery parse() {
     LinguisticQuery q;
     if (tokens_.empty()) fail({"a query such as 'find a slightly bent shape'"});
-    if (acceptAny(queryVerbs())) acceptWord("for");
+    skipRequest();
     const size_t start = pos_;
     std::string subject;
     QueryCondition first = nounPhrase(&subject);
@@ -219,6 +237,16 @@ class Parser {
     if (!acceptWord(w)) fail({"'" + w + "'"});
   }
 
+  // request = the longest request phrase of the vocabulary ("show me", "I am looking for") or verb,
+  // a verb with an optional "for". Nothing of it is part of the query.
+  void skipRequest() {
+    std::string request, verb;
+    const size_t n = matchPhrase(v_.requestPhrases(), &request);
+    const size_t nVerb = matchPhrase(queryVerbs(), &verb);
+    pos_ += std::max(n, nVerb);
+    if (nVerb > 0 && nVerb >= n) acceptWord("for");  // the verb is the whole request
+  }
+
   // The longest phrase of `phrases` (words separated by one space) starting at the current
   // token: the number of tokens it spans (0: none) and the phrase.
   size_t matchPhrase(const std::vector<std::string>& phrases, std::string* matched) const {
@@ -301,13 +329,19 @@ class Parser {
   // noun_phrase = [ article ] [ condition ] noun [ ("that"|"which") ("is"|"are") condition ]
   QueryCondition nounPhrase(std::string* subject) {
     const size_t start = pos_;
-    acceptAny(queryArticles());
+    const bool article = acceptAny(queryArticles());
     std::vector<QueryCondition> parts;
     const bool hasModifiers = startsCondition();
     if (hasModifiers) parts.push_back(condition());
     std::string word;
     const size_t nounStart = pos_;
     const size_t n = matchPhrase(nounWords_, &word);
+    if (n == 0 && hasModifiers && !article && !prefix_) {
+      // A bare description ("slightly bent", "round and tapered") is a query about any shape. With
+      // an article ("a slightly bent") the noun is still expected: the phrase is unfinished.
+      *subject = "any";
+      return std::move(parts[0]);
+    }
     if (n == 0) {
       std::vector<std::string> expected;
       if (!hasModifiers) expected = conditionStarts();
@@ -317,6 +351,8 @@ class Parser {
     pos_ += n;
     const Noun& noun = *v_.noun(word);
     *subject = noun.subject;
+    // "something twisted": a pronoun takes its adjectives after it.
+    if (noun.pronoun && !hasModifiers && startsCondition()) parts.push_back(condition());
     if (!noun.conditions.empty()) {
       const std::string nounText = span(nounStart, pos_);
       std::vector<QueryCondition> leaves;
@@ -573,7 +609,7 @@ NounPhraseAt NounPhraseReader::at(size_t from) {
   // the same tokens from `from` on when `from` starts one; elsewhere the phrase is read on its own.
   if (!tokens_ || (!tokens_->tokens.empty() && from < tokens_->tokens.front().offset)) {
     tokens_ = std::make_unique<Tokens>();
-    tokens_->tokens = tokenize(text_, from, text_.size());
+    tokens_->tokens = withoutFillers(tokenize(text_, from, text_.size()), vocabulary_);
   }
   const std::vector<Token>& all = tokens_->tokens;
   const auto first = std::lower_bound(all.begin(), all.end(), from,

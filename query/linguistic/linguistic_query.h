@@ -5,10 +5,14 @@
 // shape's components against it.
 //
 // The grammar is schema/query_grammar.ebnf (a test parses every example listed there). In short:
-//   query       = [ "find" ] phrase [ threshold ] [ "using" ("min"|"product"|"mean") ]
+//   query       = [ request ] phrase [ threshold ] [ "using" ("min"|"product"|"mean") ]
+//   request     = a request phrase of the vocabulary ("show me", "I am looking for") | verb [ "for" ]
 //   phrase      = noun_phrase [ [ distance ] direction_phrase noun_phrase ]
 //   noun_phrase = [ article ] [ condition ] noun
 //                 [ ("that"|"which") ("is"|"are"|"has"|"have") condition | "with" condition ]
+//               | [ article ] pronoun [ condition ] [ relative clause ]     ("something twisted")
+//               | condition                     (a bare description: first phrase, no article)
+// The vocabulary's fillers ("please") are skipped wherever they stand.
 //   condition   = conjunct { "or" conjunct };  conjunct = negation { ["and"|","] negation }
 //   negation    = "not" negation | "(" condition ")" | descriptor degree | [ intensity ] adjective
 //   degree      = [ "is" ] ( number_phrase | "at least" number | "at most" number )

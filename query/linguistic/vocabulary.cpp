@@ -1,6 +1,7 @@
 #include "query/linguistic/vocabulary.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -170,7 +171,7 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
   for (auto it = nouns.begin(); it != nouns.end(); ++it) {
     const std::string p = joinPath("nouns", it.key());
     const auto& n = requireObject(it.value(), p);
-    rejectUnknownKeys(n, p, {"subject", "plural", "conditions", "params", "same_as"});
+    rejectUnknownKeys(n, p, {"subject", "plural", "conditions", "params", "same_as", "pronoun"});
     if (n.contains("plural")) v.plurals_[requireString(n["plural"], joinPath(p, "plural"))] = it.key();
     if (n.contains("same_as")) {
       sameAs[it.key()] = requireString(n["same_as"], joinPath(p, "same_as"));
@@ -195,6 +196,11 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
       });
     }
     if (n.contains("params")) noun.params = requireObject(n["params"], joinPath(p, "params"));
+    if (n.contains("pronoun")) {
+      if (!n["pronoun"].is_boolean())
+        throw Error(errc::kInvalidDocument, "pronoun must be true or false", joinPath(p, "pronoun"));
+      noun.pronoun = n["pronoun"].get<bool>();
+    }
     v.nouns_[noun.word] = noun;
   }
   for (const auto& [word, target] : sameAs) {
@@ -224,12 +230,45 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
       throw Error(errc::kInvalidDocument, "unknown aggregation '" + name + "'; the code knows min, product, mean",
                   joinPath("aggregations", name));
 
+  // Optional: vocabulary files written before requests were data still load.
+  if (doc.contains("requests")) {
+    const auto& r = requireObject(doc["requests"], "requests");
+    rejectUnknownKeys(r, "requests", {"about", "phrases", "fillers"});
+    const auto words = [&](const char* key, std::vector<std::string>* out) {
+      if (!r.contains(key)) return;
+      const std::string lp = joinPath("requests", key);
+      if (!r[key].is_array()) throw Error(errc::kInvalidDocument, std::string(key) + " must be a list of words", lp);
+      for (size_t i = 0; i < r[key].size(); ++i) {
+        const std::string ip = lp + "[" + std::to_string(i) + "]";
+        std::string w = requireString(r[key][i], ip);
+        if (w.empty() || w.front() == ' ' || w.back() == ' ' || w.find("  ") != std::string::npos ||
+            std::any_of(w.begin(), w.end(), [](char c) { return std::isupper(static_cast<unsigned char>(c)); }))
+          throw Error(errc::kInvalidDocument, "'" + w + "' must be lower-case words separated by one blank", ip);
+        out->push_back(std::move(w));
+      }
+    };
+    words("phrases", &v.requestPhrases_);
+    std::vector<std::string> fillers;
+    words("fillers", &fillers);
+    for (const std::string& f : fillers) {
+      if (f.find(' ') != std::string::npos)
+        throw Error(errc::kInvalidDocument, "a filler is one word; got '" + f + "'", "requests.fillers");
+      v.fillers_.insert(f);
+    }
+    std::sort(v.requestPhrases_.begin(), v.requestPhrases_.end());
+    v.requestPhrases_.erase(std::unique(v.requestPhrases_.begin(), v.requestPhrases_.end()), v.requestPhrases_.end());
+  }
+
   v.intensityWords_ = sortedKeys(v.intensities_, v.intensitySynonyms_);
   v.adjectiveWords_ = keysOf(v.adjectives_);
   v.nounWords_ = sortedKeys(v.nouns_, v.plurals_);
   v.directionWords_ = keysOf(v.directions_);
   v.distanceWords_ = keysOf(v.distances_);
-  for (const auto* list : {&v.intensityWords_, &v.adjectiveWords_, &v.nounWords_, &v.directionWords_, &v.distanceWords_})
+  const std::vector<std::string> fillerWords(v.fillers_.begin(), v.fillers_.end());
+  const std::initializer_list<const std::vector<std::string>*> lists = {
+      &v.intensityWords_, &v.adjectiveWords_, &v.nounWords_,    &v.directionWords_,
+      &v.distanceWords_,  &v.requestPhrases_, &fillerWords};
+  for (const std::vector<std::string>* list : lists)
     for (const std::string& phrase : *list) {
       size_t i = 0;
       while (i < phrase.size()) {

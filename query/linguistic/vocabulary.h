@@ -15,12 +15,16 @@
 //   adjectives    {word: {descriptor, pole: "high"|"low", create: fuzzy number}}: a low-pole
 //                 adjective ("flat", "small", "straight") mirrors its sets, d → 1 − d.
 //   nouns         {word: {subject: "any"|"part", plural, conditions{descriptor: fuzzy set},
-//                 params{a part's params for parts from words}} or {same_as: word, plural}.
+//                 params{a part's params for parts from words}, pronoun: true for words such as
+//                 "something" that take their adjectives after them} or {same_as: word, plural}.
 //   directions    {beta{name: set over degrees}, gamma{name: set over 0..180}, primary{word:
 //                 {beta?, gamma}}, secondary{...}, phrases{word(s): direction}}
 //                 (Zhang, Pham & Chen, §2.2).
 //   distances     {words{word: fuzzy number}}; number phrases (query/json/number_phrases.h) too.
 //   aggregations  {name: text}: the documented ways `and` combines scores (min, product, mean).
+//   requests      {phrases[], fillers[]} (optional): the request that may open a query ("show me",
+//                 "I am looking for"; the longest that matches is skipped) and the words skipped
+//                 wherever they stand ("please").
 // Words are lower case; a noun or direction may have several words ("double pyramid").
 //
 // Errors: fromJson/fromFile throw fsdb::Error(errc::kInvalidDocument) with the JSON path of the bad
@@ -57,6 +61,7 @@ struct Noun {
   std::string subject = "any";             // "any" or "part"
   std::vector<NounCondition> conditions;   // empty: no constraint ("shape")
   nlohmann::json params;                   // null for nouns without a shape ("shape", "part")
+  bool pronoun = false;                    // takes its adjectives after it: "something twisted"
 };
 
 // A direction of Zhang, Pham & Chen, §2.2: a set over beta (XZ plane, degrees, period 360) and/or
@@ -95,6 +100,10 @@ class Vocabulary {
   const std::vector<std::string>& directionWords() const { return directionWords_; }
   const std::vector<std::string>& distanceWords() const { return distanceWords_; }
   const std::vector<std::string>& aggregationNames() const { return aggregations_; }
+  // The request phrases that may open a query, sorted (the parsers skip the longest that matches),
+  // and whether a word is a filler the parsers skip wherever it stands.
+  const std::vector<std::string>& requestPhrases() const { return requestPhrases_; }
+  bool isFiller(const std::string& word) const { return fillers_.count(word) > 0; }
   // Every single word of all those phrases ("double pyramid" gives "double" and "pyramid").
   bool knowsWord(const std::string& word) const { return words_.count(word) > 0; }
   const std::set<std::string>& words() const { return words_; }
@@ -111,6 +120,8 @@ class Vocabulary {
   std::map<std::string, Direction> directions_;    // primary, secondary, phrases
   std::map<std::string, FuzzyNumber> distances_;
   std::vector<std::string> aggregations_;
+  std::vector<std::string> requestPhrases_;
+  std::set<std::string> fillers_;
   std::vector<std::string> intensityWords_, adjectiveWords_, nounWords_, directionWords_, distanceWords_;
   std::set<std::string> words_;
 };

@@ -25,6 +25,11 @@ bool isWordChar(char c) {
 const std::vector<std::string> kOperationWords = {"union", "intersection", "difference", "minus",
                                                   "without", "plus", "intersected"};
 
+// Two-word joiners of a list (a union), besides "and", "," and "plus".
+const std::pair<const char*, const char*> kUnionPhrases[] = {
+    {"united", "with"}, {"combined", "with"}, {"joined", "with"}, {"joined", "to"}, {"together", "with"},
+    {"along", "with"}};
+
 bool contains(const std::vector<std::string>& list, const std::string& w) {
   return std::find(list.begin(), list.end(), w) != list.end();
 }
@@ -59,11 +64,27 @@ std::vector<Word> words(const std::string& text) {
 class PhraseParser {
  public:
   PhraseParser(const std::string& text, const Vocabulary& vocabulary, std::vector<CsgQueryLeaf>& leaves)
-      : text_(text), words_(words(text)), leaves_(leaves), phrases_(text, vocabulary) {}
+      : text_(text), words_(words(text)), leaves_(leaves), phrases_(text, vocabulary), v_(vocabulary) {
+    // Fillers ("please") carry no meaning wherever they stand; nor does the comma that sets one off
+    // (as the linguistic parser reads them).
+    std::vector<Word> kept;
+    kept.reserve(words_.size());
+    for (size_t i = 0; i < words_.size(); ++i) {
+      if (!v_.isFiller(words_[i].text)) {
+        kept.push_back(std::move(words_[i]));
+      } else if (!kept.empty() && kept.back().text == ",") {
+        kept.pop_back();
+      } else if (i + 1 < words_.size() && words_[i + 1].text == ",") {
+        ++i;
+      }
+    }
+    words_ = std::move(kept);
+  }
 
   nlohmann::json parse() {
     if (words_.empty()) fail({"a query such as 'the union of a bent cylinder and a sphere'"});
-    if (acceptAny(queryVerbs())) accept("for");
+    skipRequest();
+    skipLeadIn();
     nlohmann::json tree = expr();
     if (pos_ < words_.size()) fail({"'minus'", "'and'", "','", "'plus'", "'intersected with'", "the end of the query"});
     return tree;
@@ -155,13 +176,87 @@ class PhraseParser {
     return placeholder(leaves_.size() - 1);
   }
 
-  // "," [ "and" ] | "and" | "plus" before one more operand of a list.
+  // "," [ "and" ] | "and" | "plus" | "united with" | "combined with" | "joined with" | "joined to" |
+  // "together with" | "along with" before one more operand of a list.
   bool joinsList() {
     if (accept(",")) {
       accept("and");
       return true;
     }
-    return accept("and") || accept("plus");
+    if (accept("and") || accept("plus")) return true;
+    for (const auto& [first, second] : kUnionPhrases)
+      if (acceptPair(first, second)) return true;
+    return false;
+  }
+
+  // request = the longest request phrase of the vocabulary ("show me", "I am looking for") or verb,
+  // a verb with an optional "for", as the linguistic parser reads it.
+  void skipRequest() {
+    size_t n = 0, nVerb = 0;
+    for (const std::string& phrase : v_.requestPhrases()) n = std::max(n, phraseLength(phrase));
+    for (const std::string& verb : queryVerbs()) nVerb = std::max(nVerb, phraseLength(verb));
+    pos_ += std::max(n, nVerb);
+    if (nVerb > 0 && nVerb >= n) accept("for");  // the verb is the whole request
+  }
+
+  // lead_in = [ article ] GENERIC ( "which" | "that" ) ( "is" | "are" ) construction
+  //         | [ [ article ] GENERIC ] made_of
+  // GENERIC: a noun without conditions ("shape", "shapes", "something", "parts"); made_of: "made",
+  // "composed", "built", "formed" or "consisting" with "of" or "from". "a shape which is the union
+  // of ..." is the union; "shapes made of a cube and a sphere" the list (a union). Anything else
+  // is no lead-in ("a shape and a sphere" stays a list of two leaves).
+  void skipLeadIn() {
+    const size_t save = pos_;
+    acceptAny(queryArticles());
+    const Noun* noun = pos_ < words_.size() ? v_.noun(words_[pos_].text) : nullptr;
+    if (noun && noun->conditions.empty() && noun->params.is_null()) {
+      ++pos_;
+      if ((accept("which") || accept("that")) && acceptAny({"is", "are"})) {
+        if (madeOf() || startsConstruction()) return;
+      } else if (madeOf()) {
+        return;
+      }
+    }
+    pos_ = save;
+    if (!madeOf()) pos_ = save;
+  }
+
+  bool madeOf() {
+    const size_t save = pos_;
+    if (acceptAny({"made", "composed", "built", "formed", "consisting"}) && acceptAny({"of", "from"})) return true;
+    pos_ = save;
+    return false;
+  }
+
+  // [ article ] ( "union" | "intersection" | "difference" ) "of", or "(".
+  bool startsConstruction() const {
+    size_t i = pos_;
+    if (i < words_.size() && contains(queryArticles(), words_[i].text)) ++i;
+    if (i < words_.size() && words_[i].text == "(") return true;
+    return i + 1 < words_.size() && words_[i + 1].text == "of" &&
+           (words_[i].text == "union" || words_[i].text == "intersection" || words_[i].text == "difference");
+  }
+
+  // How many words of `phrase` (words separated by one blank) stand at the current position; 0
+  // unless all of them do.
+  size_t phraseLength(const std::string& phrase) const {
+    size_t k = 0, i = 0;
+    while (i < phrase.size()) {
+      size_t j = phrase.find(' ', i);
+      if (j == std::string::npos) j = phrase.size();
+      if (pos_ + k >= words_.size() || words_[pos_ + k].text != phrase.substr(i, j - i)) return 0;
+      ++k;
+      i = j + 1;
+    }
+    return k;
+  }
+
+  bool acceptPair(const char* first, const char* second) {
+    if (pos_ + 1 < words_.size() && words_[pos_].text == first && words_[pos_ + 1].text == second) {
+      pos_ += 2;
+      return true;
+    }
+    return false;
   }
 
   // {"op", "children"} taking the operands by move (a braced json list would copy them).
@@ -205,6 +300,7 @@ class PhraseParser {
   std::vector<Word> words_;
   std::vector<CsgQueryLeaf>& leaves_;
   NounPhraseReader phrases_;
+  const Vocabulary& v_;
   size_t pos_ = 0;
   int depth_ = 0;
 };

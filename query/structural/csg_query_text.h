@@ -7,9 +7,12 @@
 //  * phrases: "the union of a very bent cylinder and a very sharp pyramid", "a cube minus a
 //    cylinder", "the intersection of a sphere and a box", "a sphere and a box" (a list is a union),
 //    nested ("the union of a cube and the difference of a box and a cylinder") or parenthesised:
-//      csg_query = [ verb [ "for" ] ] , expr
+//      csg_query = [ request ] , [ lead_in ] , expr      (* request and fillers: the linguistic ones *)
+//      lead_in   = [ article ] GENERIC ( "which" | "that" ) ( "is" | "are" ) [ made_of ] (* before a construction *)
+//                | [ [ article ] GENERIC ] made_of        (* GENERIC: "shape", "something", ...; made_of: "made of", ... *)
 //      expr      = list , { ( "minus" | "without" ) , list }              (* difference, left to right *)
-//      list      = meet , { ( "," [ "and" ] | "and" | "plus" ) , meet }   (* union *)
+//      list      = meet , { ( "," [ "and" ] | "and" | "plus" | "united with" | "combined with" | "joined with"
+//                           | "joined to" | "together with" | "along with" ) , meet }   (* union *)
 //      meet      = item , { "intersected" , "with" , item }             (* intersection *)
 //      item      = "(" , expr , ")"
 //                | [ article ] , ( "union" | "intersection" ) , "of" , item , { ( "," [ "and" ] | "and" ) , item }

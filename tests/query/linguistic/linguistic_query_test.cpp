@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "geometry/core/error.h"
@@ -31,6 +32,48 @@ void expectLeaf(const QueryCondition& c, const std::string& descriptor, const Fu
   EXPECT_EQ(c.descriptor, descriptor);
   EXPECT_EQ(c.set, set);
   EXPECT_EQ(c.text, text);
+}
+
+// The parse as JSON without the words each condition covers: two texts that mean the same query
+// compare equal.
+nlohmann::json meaning(const std::string& text) {
+  nlohmann::json j = toJson(parse(text));
+  std::function<void(nlohmann::json&)> strip = [&](nlohmann::json& c) {
+    c.erase("text");
+    if (c.contains("children"))
+      for (nlohmann::json& child : c["children"]) strip(child);
+  };
+  strip(j["condition"]);
+  return j;
+}
+
+TEST(LinguisticQuery, RequestsAndFillersAreSkipped) {
+  for (const char* text : {"show me the bent shapes", "please find bent shapes", "I am looking for bent shapes",
+                           "i'm looking for bent shapes please", "do you have bent shapes", "find me bent shapes",
+                           "are there any bent shapes", "search for bent shapes", "Kindly show bent shapes"})
+    EXPECT_EQ(meaning(text), meaning("find bent shapes")) << text;
+  // A filler inside the query too.
+  EXPECT_EQ(meaning("find very round, please, slightly tapered shapes"),
+            meaning("find very round, slightly tapered shapes"));
+}
+
+TEST(LinguisticQuery, BareDescriptionsAreQueriesAboutAnyShape) {
+  EXPECT_EQ(meaning("slightly bent"), meaning("find a slightly bent shape"));
+  EXPECT_EQ(parse("slightly bent").subject, "any");
+  EXPECT_EQ(meaning("round and slightly tapered"), meaning("find shapes that are round and slightly tapered"));
+  EXPECT_EQ(meaning("bendness at least 0.5"), meaning("find shapes with bendness at least 0.5"));
+  EXPECT_EQ(meaning("very bent at least 0.7"), meaning("find a very bent shape at least 0.7"));
+  // With an article the noun is still expected: the phrase is unfinished.
+  const std::string e = errorOf("find a slightly bent");
+  EXPECT_NE(e.find("a noun ("), std::string::npos) << e;
+}
+
+TEST(LinguisticQuery, PronounsTakeTheirAdjectivesAfterThem) {
+  EXPECT_EQ(meaning("show me something twisted"), meaning("find shapes that are twisted"));
+  EXPECT_EQ(meaning("anything very round and slightly tapered"),
+            meaning("find a very round, slightly tapered shape"));
+  EXPECT_EQ(meaning("find something that is bent"), meaning("find shapes that are bent"));
+  EXPECT_EQ(parse("something twisted").subject, "any");
 }
 
 TEST(LinguisticQuery, SlightlyBentShape) {

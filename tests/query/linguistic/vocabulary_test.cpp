@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <fstream>
 
@@ -231,6 +233,46 @@ TEST(Vocabulary, LoadErrorsNameThePath) {
   EXPECT_EQ(path, "directions.secondary.top right.gamma");
 
   EXPECT_THROW(Vocabulary::fromFile("/nonexistent/vocabulary.json"), Error);
+}
+
+TEST(Vocabulary, RequestsFillersAndPronouns) {
+  const auto& phrases = v().requestPhrases();
+  EXPECT_TRUE(std::is_sorted(phrases.begin(), phrases.end()));
+  for (const char* phrase : {"show me", "i am looking for", "do you have", "find"})
+    EXPECT_NE(std::find(phrases.begin(), phrases.end(), phrase), phrases.end()) << phrase;
+  EXPECT_TRUE(v().isFiller("please"));
+  EXPECT_FALSE(v().isFiller("round"));
+  EXPECT_TRUE(v().knowsWord("looking"));  // so an unknown word is never suggested in its place
+  EXPECT_TRUE(v().noun("something")->pronoun);
+  EXPECT_FALSE(v().noun("shape")->pronoun);
+  // Vocabulary files written before requests were data still load, with none.
+  auto doc = builtinDocument();
+  doc.erase("requests");
+  const Vocabulary old = Vocabulary::fromJson(doc);
+  EXPECT_TRUE(old.requestPhrases().empty());
+  EXPECT_FALSE(old.isFiller("please"));
+  // Errors name the path.
+  std::string path;
+  doc = builtinDocument();
+  doc["requests"]["phrases"][1] = "Show Me";
+  EXPECT_NE(loadError(doc, &path).find("lower-case words"), std::string::npos);
+  EXPECT_EQ(path, "requests.phrases[1]");
+  doc = builtinDocument();
+  doc["requests"]["fillers"] = {"if you please"};
+  EXPECT_NE(loadError(doc, &path).find("one word"), std::string::npos);
+  EXPECT_EQ(path, "requests.fillers");
+  doc = builtinDocument();
+  doc["requests"]["phrases"] = "find";
+  loadError(doc, &path);
+  EXPECT_EQ(path, "requests.phrases");
+  doc = builtinDocument();
+  doc["requests"]["verbs"] = nlohmann::json::array();
+  loadError(doc, &path);
+  EXPECT_EQ(path, "requests.verbs");
+  doc = builtinDocument();
+  doc["nouns"]["something"]["pronoun"] = "yes";
+  loadError(doc, &path);
+  EXPECT_EQ(path, "nouns.something.pronoun");
 }
 
 // Users extend the vocabulary with their own words.

@@ -46,6 +46,28 @@ TEST(CsgQueryText, PhraseOperations) {
 }
 
 // The phrase form opens with the linguistic grammar's verbs and names operations after its articles.
+TEST(CsgQueryText, DesignersPhrasingsOfAUnion) {
+  const std::string tree = "union('a very bent cylinder', 'a very sharp pyramid')";
+  for (const char* text : {"find a shape which is the union of a very bent cylinder and a very sharp pyramid",
+                           "a very bent cylinder united with a very sharp pyramid",
+                           "a very bent cylinder combined with a very sharp pyramid",
+                           "a very bent cylinder joined with a very sharp pyramid",
+                           "a very bent cylinder joined to a very sharp pyramid",
+                           "a very bent cylinder together with a very sharp pyramid",
+                           "a very bent cylinder along with a very sharp pyramid",
+                           "show me shapes made of a very bent cylinder and a very sharp pyramid",
+                           "please find something that is the union of a very bent cylinder and a very sharp pyramid",
+                           "made of a very bent cylinder and a very sharp pyramid",
+                           "I am looking for a part that is made of a very bent cylinder and a very sharp pyramid",
+                           "objects composed of a very bent cylinder and a very sharp pyramid"})
+    EXPECT_EQ(shape(parse(text)), tree) << text;
+  EXPECT_EQ(shape(parse("find shapes made of a cube and a sphere")), "union('a cube', 'a sphere')");
+  EXPECT_EQ(shape(parse("a shape which is the difference of a cube and a sphere")), "difference('a cube', 'a sphere')");
+  // A generic noun that opens a list without a lead-in stays a leaf.
+  EXPECT_EQ(shape(parse("a shape and a sphere")), "union('a shape', 'a sphere')");
+  EXPECT_EQ(shape(parse("a shape that is bent and a sphere")), "union('a shape that is bent', 'a sphere')");
+}
+
 TEST(CsgQueryText, PhraseVerbsAndArticlesAreTheLinguisticOnes) {
   for (const std::string& verb : queryVerbs())
     for (const std::string& opening : {verb, verb + " for"})
