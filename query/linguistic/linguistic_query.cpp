@@ -375,8 +375,14 @@ class Parser {
       parts.push_back(condition());
     } else if (at("with") && !(pos_ + 1 < tokens_.size() && tokens_[pos_ + 1].text == "score")) {
       ++pos_;
-      if (!startsCondition()) fail(conditionStarts());
-      parts.push_back(condition());
+      if (!startsCondition()) {
+        // Read as a prefix (a CSG operand), "with" before no condition ends the phrase: it joins
+        // the caller's next operand ("a cube with a sphere", "a cube with a cylindrical hole").
+        if (!prefix_) fail(conditionStarts());
+        --pos_;
+      } else {
+        parts.push_back(condition());
+      }
     }
     if (parts.size() == 1) return std::move(parts[0]);
     QueryCondition all;  // empty: "anything" (a bare "shape")

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <map>
 
 #include "geometry/core/error.h"
 #include "query/document/csg_text.h"
@@ -29,6 +30,11 @@ const std::vector<std::string> kOperationWords = {"union", "intersection", "diff
 const std::pair<const char*, const char*> kUnionPhrases[] = {
     {"united", "with"}, {"combined", "with"}, {"joined", "with"}, {"joined", "to"}, {"together", "with"},
     {"along", "with"}};
+
+// After "with Y": Y is cut away from what comes before (one-word phrases have "" second).
+const std::pair<const char*, const char*> kCutOutPhrases[] = {
+    {"cut", "out"},   {"cut", "away"},      {"taken", "out"}, {"carved", "out"},
+    {"hollowed", "out"}, {"removed", ""}, {"subtracted", ""}};
 
 bool contains(const std::vector<std::string>& list, const std::string& w) {
   return std::find(list.begin(), list.end(), w) != list.end();
@@ -92,17 +98,94 @@ class PhraseParser {
 
  private:
   // A chain of minus nests (differences are not associative): each link counts as a nesting level.
+  // subtraction = ( "minus" | "without" | "drilled" [ "through" ] [ "with" | "by" ] ) list
+  //             | "with" hole | "with" meet cut_out      (cut_out: "cut out", "removed", ...)
   nlohmann::json expr() {
     nlohmann::json left = list();
     int links = 0;
-    while (acceptAny({"minus", "without"})) {
+    while (true) {
+      nlohmann::json subtrahend;
+      if (!pendingCut_.is_null()) {
+        subtrahend = std::move(pendingCut_);  // list() met "with Y cut out"
+        pendingCut_ = nullptr;
+      } else if (acceptAny({"minus", "without"}) || acceptDrilled()) {
+        subtrahend = list();
+      } else if (atHole()) {
+        ++pos_;  // "with"
+        subtrahend = hole();
+      } else {
+        break;
+      }
       if (depth_ + ++links > kMaxNesting) tooDeep();
       nlohmann::json operands = nlohmann::json::array();
       operands.push_back(std::move(left));
-      operands.push_back(list());
+      operands.push_back(std::move(subtrahend));
       left = node("difference", std::move(operands));
     }
     return left;
+  }
+
+  // "with" [ article ] [ SHAPE-shaped | ADJECTIVE-FORM ] "hole": the hole is the shape cut out.
+  bool atHole() const {
+    if (!at("with")) return false;
+    size_t i = pos_ + 1;
+    if (i < words_.size() && contains(queryArticles(), words_[i].text)) ++i;
+    if (i < words_.size() && words_[i].text == "hole") return true;
+    return i + 1 < words_.size() && words_[i + 1].text == "hole" && !holeNoun(words_[i].text).empty();
+  }
+
+  // The noun a hole's shape word names: "cylinder-shaped" (any noun of the vocabulary with
+  // "-shaped"), "cylindrical", "round" (a drilled hole), "spherical", "conical", "square",
+  // "rectangular", "cubic"; "" for none.
+  std::string holeNoun(const std::string& word) const {
+    static const std::map<std::string, std::string> kForms = {
+        {"cylindrical", "cylinder"}, {"round", "cylinder"},    {"circular", "cylinder"}, {"spherical", "sphere"},
+        {"conical", "cone"},         {"square", "box"},        {"rectangular", "box"},   {"cubic", "cube"},
+        {"pyramidal", "pyramid"}};
+    const std::string suffix = "-shaped";
+    if (word.size() > suffix.size() && word.compare(word.size() - suffix.size(), suffix.size(), suffix) == 0) {
+      const std::string noun = word.substr(0, word.size() - suffix.size());
+      return v_.noun(noun) ? noun : "";
+    }
+    auto it = kForms.find(word);
+    return it == kForms.end() ? "" : it->second;
+  }
+
+  // hole = [ article ] [ shape word ] "hole", at atHole(): a description leaf of the noun its
+  // shape word names (a cylinder when none: a drilled hole), with the words as written.
+  nlohmann::json hole() {
+    const size_t from = words_[pos_].offset;
+    acceptAny(queryArticles());
+    std::string noun = "cylinder";
+    if (!at("hole")) noun = holeNoun(words_[pos_++].text);
+    const size_t end = words_[pos_].offset + words_[pos_].text.size();
+    ++pos_;  // "hole"
+    CsgQueryLeaf out;
+    out.text = text_.substr(from, end - from);
+    out.condition = parseNounPhraseAt("a " + noun, 0, std::string::npos, v_).query;
+    leaves_.push_back(std::move(out));
+    return placeholder(leaves_.size() - 1);
+  }
+
+  // Words that say the operand before them is cut away: "cut out", "cut away", "removed",
+  // "taken out", "subtracted", "carved out", "hollowed out". Accepts them.
+  bool acceptCutOut() {
+    for (const auto& [first, second] : kCutOutPhrases) {
+      if (second[0] == '\0' ? accept(first) : acceptPair(first, second)) return true;
+    }
+    return false;
+  }
+
+  // "drilled" ( [ "through" ] ( "with" | "by" ) | "through" ): the next list is cut away.
+  bool acceptDrilled() {
+    if (!at("drilled") || !nextIsAny({"with", "through", "by"})) return false;
+    pos_ += 2;
+    if (words_[pos_ - 1].text == "through") acceptAny({"with", "by"});
+    return true;
+  }
+
+  bool nextIsAny(const std::vector<std::string>& ws) const {
+    return pos_ + 1 < words_.size() && contains(ws, words_[pos_ + 1].text);
   }
 
   // A list is one n-ary union (unions flatten in the graph anyway), built without copies: a list of
@@ -110,7 +193,14 @@ class PhraseParser {
   nlohmann::json list() {
     nlohmann::json operands = nlohmann::json::array();
     operands.push_back(meet());
-    while (joinsList()) operands.push_back(meet());
+    while (joinsList()) {
+      nlohmann::json operand = meet();
+      if (joinedByWith_ && acceptCutOut()) {
+        pendingCut_ = std::move(operand);  // "X with Y cut out": expr() subtracts Y
+        break;
+      }
+      operands.push_back(std::move(operand));
+    }
     return operands.size() == 1 ? std::move(operands[0]) : node("union", std::move(operands));
   }
 
@@ -145,6 +235,15 @@ class PhraseParser {
     }
     const size_t save = pos_;
     acceptAny(queryArticles());
+    if (at("part") && nextIsAny({"of"})) {
+      // "the part of X inside Y": their intersection.
+      pos_ += 2;
+      nlohmann::json operands = nlohmann::json::array();
+      operands.push_back(item());
+      if (!acceptAny({"inside", "within", "in"})) fail({"'inside'", "'within'"});
+      operands.push_back(item());
+      return node("intersection", std::move(operands));
+    }
     if (at("union") || at("intersection") || at("difference")) {
       const std::string op = words_[pos_++].text;
       expect("of");
@@ -179,6 +278,7 @@ class PhraseParser {
   // "," [ "and" ] | "and" | "plus" | "united with" | "combined with" | "joined with" | "joined to" |
   // "together with" | "along with" before one more operand of a list.
   bool joinsList() {
+    joinedByWith_ = false;
     if (accept(",")) {
       accept("and");
       return true;
@@ -186,6 +286,12 @@ class PhraseParser {
     if (accept("and") || accept("plus")) return true;
     for (const auto& [first, second] : kUnionPhrases)
       if (acceptPair(first, second)) return true;
+    // "X with Y" is a union unless a hole follows (expr() subtracts it) or Y is "cut out" (list()).
+    if (at("with") && !atHole()) {
+      ++pos_;
+      joinedByWith_ = true;
+      return true;
+    }
     return false;
   }
 
@@ -301,6 +407,8 @@ class PhraseParser {
   std::vector<CsgQueryLeaf>& leaves_;
   NounPhraseReader phrases_;
   const Vocabulary& v_;
+  nlohmann::json pendingCut_;   // "with Y cut out" met by list(), subtracted by expr()
+  bool joinedByWith_ = false;   // the last joinsList() was a "with"
   size_t pos_ = 0;
   int depth_ = 0;
 };

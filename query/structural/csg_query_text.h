@@ -10,11 +10,14 @@
 //      csg_query = [ request ] , [ lead_in ] , expr      (* request and fillers: the linguistic ones *)
 //      lead_in   = [ article ] GENERIC ( "which" | "that" ) ( "is" | "are" ) [ made_of ] (* before a construction *)
 //                | [ [ article ] GENERIC ] made_of        (* GENERIC: "shape", "something", ...; made_of: "made of", ... *)
-//      expr      = list , { ( "minus" | "without" ) , list }              (* difference, left to right *)
+//      expr      = list , { ( "minus" | "without" | "drilled" [ "through" ] [ "with" | "by" ] ) , list
+//                           | "with" hole | "with" meet cut_out }   (* difference, left to right *)
+//      hole      = [ article ] [ shape word ] "hole"   ("cylindrical", "sphere-shaped", ...; none: a cylinder)
 //      list      = meet , { ( "," [ "and" ] | "and" | "plus" | "united with" | "combined with" | "joined with"
-//                           | "joined to" | "together with" | "along with" ) , meet }   (* union *)
+//                           | "joined to" | "together with" | "along with" | "with" ) , meet }   (* union *)
 //      meet      = item , { "intersected" , "with" , item }             (* intersection *)
 //      item      = "(" , expr , ")"
+//                | [ article ] , "part" , "of" , item , ( "inside" | "within" | "in" ) , item   (* intersection *)
 //                | [ article ] , ( "union" | "intersection" ) , "of" , item , { ( "," [ "and" ] | "and" ) , item }
 //                | [ article ] , "difference" , "of" , item , "and" , item
 //                | noun_phrase                                           (* query/linguistic/linguistic_query.h *)

@@ -76,6 +76,13 @@ TEST(LinguisticQuery, PronounsTakeTheirAdjectivesAfterThem) {
   EXPECT_EQ(parse("something twisted").subject, "any");
 }
 
+TEST(LinguisticQuery, SynonymsMeanTheirWords) {
+  EXPECT_EQ(meaning("find a bowed bar"), meaning("find a bent rod"));
+  EXPECT_EQ(meaning("find a bowed block"), meaning("find a curved box"));
+  EXPECT_EQ(meaning("find narrowing bricks"), meaning("find tapered boxes"));
+  EXPECT_EQ(meaning("a tapering ball"), meaning("find a tapered sphere"));
+}
+
 TEST(LinguisticQuery, SlightlyBentShape) {
   const LinguisticQuery q = parse("find a slightly bent shape");
   EXPECT_EQ(q.subject, "any");

@@ -68,6 +68,34 @@ TEST(CsgQueryText, DesignersPhrasingsOfAUnion) {
   EXPECT_EQ(shape(parse("a shape that is bent and a sphere")), "union('a shape that is bent', 'a sphere')");
 }
 
+TEST(CsgQueryText, DesignersPhrasingsOfDifferencesAndIntersections) {
+  for (const char* text : {"a cube with a sphere cut out", "a cube with a sphere removed", "a cube drilled with a sphere",
+                           "a cube drilled through by a sphere", "a cube with a sphere taken out",
+                           "a cube minus a sphere", "a cube without a sphere"})
+    EXPECT_EQ(shape(parse(text)), "difference('a cube', 'a sphere')") << text;
+  // Holes: the shape the hole's word names, a cylinder when none.
+  for (const char* text : {"a cube with a cylindrical hole", "a cube with a cylinder-shaped hole", "a cube with a hole",
+                           "a cube with a round hole"})
+    EXPECT_EQ(shape(parse(text)).rfind("difference('a cube', '", 0), 0u) << text;
+  const CsgQuery holed = parse("a cube with a cylindrical hole");
+  ASSERT_EQ(holed.leaves.size(), 2u);
+  EXPECT_EQ(holed.leaves[1].text, "a cylindrical hole");
+  EXPECT_EQ(toJson(*holed.leaves[1].condition), toJson(*parse("a cylinder").leaves[0].condition));
+  EXPECT_EQ(shape(parse("a box with a sphere-shaped hole")), "difference('a box', 'a sphere-shaped hole')");
+  // "with" alone joins a union; the cut applies to all before it.
+  EXPECT_EQ(shape(parse("a cube with a sphere")), "union('a cube', 'a sphere')");
+  EXPECT_EQ(shape(parse("a cube and a box with a cylinder cut out")),
+            "difference(union('a cube', 'a box'), 'a cylinder')");
+  // A condition after "with" stays the leaf's own.
+  EXPECT_EQ(shape(parse("a box with bendness at least 0.5 minus a cone")),
+            "difference('a box with bendness at least 0.5', 'a cone')");
+  // The part of X inside Y: their intersection.
+  EXPECT_EQ(shape(parse("the part of a sphere inside a cube")), "intersection('a sphere', 'a cube')");
+  EXPECT_EQ(shape(parse("find the part of a very round box within a cylinder")),
+            "intersection('a very round box', 'a cylinder')");
+  EXPECT_NE(errorOf("the part of a sphere and a cube").find("expected 'inside', 'within'"), std::string::npos);
+}
+
 TEST(CsgQueryText, PhraseVerbsAndArticlesAreTheLinguisticOnes) {
   for (const std::string& verb : queryVerbs())
     for (const std::string& opening : {verb, verb + " for"})

@@ -1,7 +1,8 @@
 // Queries in designers' words, verbatim through the real `fsdb serve` on the demo catalogue: each
 // phrasing the query language understands (requests and fillers, bare descriptions, pronouns,
-// "united with", "a shape which is", "made of") answers 200 and ranks exactly as the grammar's own
-// phrasing of the same query (the same ids with the same scores, in the same order).
+// "united with", "a shape which is", "made of", holes, "drilled with", "the part of X inside Y")
+// answers 200 and ranks exactly as the grammar's own phrasing of the same query (the same ids
+// with the same scores, in the same order).
 #include <gtest/gtest.h>
 
 #include <utility>
@@ -49,6 +50,9 @@ TEST(DesignersQueries, CsgPhrasingsRankAsTheGrammarsOwn) {
       {"a very bent cylinder united with a very sharp pyramid",
        "the union of a very bent cylinder and a very sharp pyramid"},
       {"find shapes made of a cube and a sphere", "a cube and a sphere"},
+      {"a cube with a cylindrical hole", "a cube minus a cylinder"},
+      {"a cube drilled with a cylinder", "a cube minus a cylinder"},
+      {"the part of a sphere inside a cube", "the intersection of a sphere and a cube"},
   };
   for (const auto& [said, grammar] : pairs) {
     const auto expected = ranking(server, "/query/csg", grammar);
