@@ -1,5 +1,5 @@
-// POST /query/linguistic and POST /query/csg (docs/api.md §4): server/service/linguistic_search.h
-// and server/service/csg_search.h do the work.
+// POST /query, POST /query/linguistic and POST /query/csg (docs/api.md §4):
+// server/service/query_search.h, linguistic_search.h and csg_search.h do the work.
 #include <memory>
 
 #include "server/http/api.h"
@@ -7,6 +7,7 @@
 #include "server/service/graph_warmup.h"
 #include "server/http/http_server.h"
 #include "server/service/linguistic_search.h"
+#include "server/service/query_search.h"
 
 namespace fsdb {
 
@@ -26,6 +27,10 @@ void registerQueryRoutes(HttpServer& server, const Store& store) {
   if (server.options().warmGraphs) warmup = std::make_shared<GraphWarmup>(store, cache, limits.maxNodes);
   server.addRoute("POST", "/query/csg", [&store, csgLimits, cache, warmup](const ApiRequest& req) {
     return ApiResponse{200, csgQueryResponse(store, req.body, csgLimits, *cache)};
+  });
+  // One search box: the text decides which search runs (the same graph cache as /query/csg).
+  server.addRoute("POST", "/query", [&store, limits, csgLimits, cache, warmup](const ApiRequest& req) {
+    return ApiResponse{200, queryResponse(store, req.body, limits, csgLimits, *cache)};
   });
 }
 

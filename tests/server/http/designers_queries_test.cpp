@@ -2,9 +2,10 @@
 // phrasing the query language understands (requests and fillers, bare descriptions, pronouns,
 // "united with", "a shape which is", "made of", holes, "drilled with", "the part of X inside Y")
 // answers 200 and ranks exactly as the grammar's own phrasing of the same query (the same ids
-// with the same scores, in the same order).
+// with the same scores, in the same order). POST /query runs the search the text calls for.
 #include <gtest/gtest.h>
 
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -66,6 +67,40 @@ TEST(DesignersQueries, CsgPhrasingsRankAsTheGrammarsOwn) {
   ASSERT_FALSE(r.json["results"].empty());
   EXPECT_EQ(r.json["results"][0]["name"], "bent-rod-and-pyramid") << r.body;
   EXPECT_EQ(r.json["parsed"]["tree"]["op"], "union");
+}
+
+// POST /query: one search box; the text decides which search runs, and the answer says which.
+TEST(DesignersQueries, OneSearchBoxRunsTheSearchTheTextCallsFor) {
+  ServerProcess server({"--demo", kDemo});
+  const std::vector<std::tuple<const char*, const char*, const char*>> cases = {
+      {"slightly bent", "linguistic", "/query/linguistic"},
+      {"show me something twisted", "linguistic", "/query/linguistic"},
+      {"find a very bent cylinder", "linguistic", "/query/linguistic"},
+      {"a very bent cylinder united with a very sharp pyramid", "csg", "/query/csg"},
+      {"find a shape which is the union of a very bent cylinder and a very sharp pyramid", "csg", "/query/csg"},
+      {"a cube with a cylindrical hole", "csg", "/query/csg"},
+      {"\"very bent cylinder\" + cube", "csg", "/query/csg"},
+  };
+  for (const auto& [text, search, route] : cases) {
+    auto r = server.post("/query", json{{"text", text}, {"limit", 50}});
+    ASSERT_EQ(r.status, 200) << text << " -> " << r.body;
+    EXPECT_EQ(r.json["search"], search) << text;
+    EXPECT_TRUE(r.json.contains("parsed")) << text;
+    std::vector<std::pair<int64_t, double>> got;
+    for (const json& result : r.json["results"]) got.emplace_back(result["id"].get<int64_t>(), result["score"].get<double>());
+    EXPECT_EQ(got, ranking(server, route, text)) << text;
+  }
+  // Members of the search that runs; errors are that search's.
+  EXPECT_EQ(server.post("/query", json{{"text", "slightly bent"}, {"kind", "part"}}).status, 200);
+  auto missing = server.post("/query", json{{"limit", 3}});
+  EXPECT_EQ(missing.status, 422) << missing.body;
+  EXPECT_EQ(missing.json["error"]["path"], "text");
+  auto unknown = server.post("/query", json{{"text", "find a slightly bnet shape"}});
+  EXPECT_EQ(unknown.status, 422);
+  EXPECT_NE(unknown.json["error"]["message"].get<std::string>().find("unknown word 'bnet'"), std::string::npos)
+      << unknown.body;
+  auto weights = server.post("/query", json{{"text", "slightly bent"}, {"weights", {{"components", 1}}}});
+  EXPECT_EQ(weights.status, 422) << weights.body;
 }
 
 // `fsdb query` sends each to the search its parse calls for.
