@@ -5,6 +5,7 @@
 // with the same scores, in the same order). POST /query runs the search the text calls for.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -101,6 +102,39 @@ TEST(DesignersQueries, OneSearchBoxRunsTheSearchTheTextCallsFor) {
       << unknown.body;
   auto weights = server.post("/query", json{{"text", "slightly bent"}, {"weights", {{"components", 1}}}});
   EXPECT_EQ(weights.status, 422) << weights.body;
+}
+
+// The corpus (designers_corpus.txt): every phrasing runs the same search as the grammar's own
+// and ranks the same ids with the same scores; no pair is vacuous (the grammar's phrasing finds
+// something in the demo catalogue).
+TEST(DesignersQueries, CorpusRanksAsTheGrammarsOwnPhrasings) {
+  ServerProcess server({"--demo", kDemo});
+  std::ifstream in(std::string(FSDB_SOURCE_DIR) + "/tests/server/http/designers_corpus.txt");
+  ASSERT_TRUE(in) << "designers_corpus.txt";
+  const auto answer = [&](const std::string& text) {
+    auto r = server.post("/query", json{{"text", text}, {"limit", 50}});
+    EXPECT_EQ(r.status, 200) << text << " -> " << r.body;
+    std::vector<std::pair<int64_t, double>> ranked;
+    for (const json& result : r.json["results"]) ranked.emplace_back(result["id"].get<int64_t>(), result["score"].get<double>());
+    return std::make_pair(r.json.value("search", std::string()), ranked);
+  };
+  const auto trim = [](std::string t) {
+    t.erase(0, t.find_first_not_of(' '));
+    t.erase(t.find_last_not_of(' ') + 1);
+    return t;
+  };
+  int pairs = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    const size_t bar = line.find(" | ");
+    ASSERT_NE(bar, std::string::npos) << line;
+    const std::string said = trim(line.substr(0, bar)), grammar = trim(line.substr(bar + 3));
+    const auto expected = answer(grammar);
+    EXPECT_FALSE(expected.second.empty()) << "vacuous: " << grammar;
+    EXPECT_EQ(answer(said), expected) << said << "  vs  " << grammar;
+    ++pairs;
+  }
+  EXPECT_GE(pairs, 120);
 }
 
 // `fsdb query` sends each to the search its parse calls for.
