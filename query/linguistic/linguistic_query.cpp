@@ -118,6 +118,7 @@ class Parser {
         distanceWords_(vocabulary.distanceWords()) {}
 
   LinguisticQuery parse() {
+    entry_ = Entry::kQuery;
     LinguisticQuery q;
     if (tokens_.empty()) fail({"a query such as 'find a slightly bent shape'"});
     skipRequest();
@@ -170,6 +171,7 @@ class Parser {
 
   // A noun phrase at the start of the tokens, ending where the phrase ends (parseNounPhraseAt).
   NounPhraseAt nounPhraseAt() {
+    entry_ = Entry::kPrefix;
     NounPhraseAt out;
     if (tokens_.empty()) fail({"a noun phrase such as 'a slightly bent cylinder'"});
     std::string subject;
@@ -181,6 +183,7 @@ class Parser {
 
   // part_description = [ article ] { [ intensity ] adjective [ "," | "and" ] } noun
   PartDescription partDescription() {
+    entry_ = Entry::kPartDescription;
     PartDescription d;
     if (tokens_.empty()) fail({"words such as 'a slightly bent cylinder'"});
     acceptAny(queryArticles());
@@ -291,12 +294,35 @@ class Parser {
       known.insert(known.end(), descriptorNames().begin(), descriptorNames().end());
       throw Error(errc::kInvalidParameter,
                   "unknown word '" + t.text + "' at character " + std::to_string(t.offset) + "; closest known words: " +
-                      closestNames(t.text, known),
+                      closestNames(t.text, known) + didYouMean(t, known),
                   "text");
     }
     throw Error(errc::kInvalidParameter,
                 "unexpected '" + t.text + "' at character " + std::to_string(t.offset) + "; expected " + joinList(expected),
                 "text");
+  }
+
+  // "; did you mean \"...\"?": the text with the unknown word t replaced by the nearest known word
+  // (of the five nearest) with which the whole text reads, or "" when none does. Only for whole
+  // texts (queries and part descriptions), and not again inside such a trial.
+  std::string didYouMean(const Token& t, const std::vector<std::string>& known) const {
+    if (entry_ == Entry::kPrefix || !suggest_) return "";
+    std::vector<std::pair<size_t, std::string>> nearest;
+    for (const std::string& k : known) nearest.emplace_back(editDistance(t.text, k), k);
+    std::sort(nearest.begin(), nearest.end());
+    nearest.erase(std::unique(nearest.begin(), nearest.end()), nearest.end());
+    for (size_t i = 0; i < nearest.size() && i < 5; ++i) {
+      const std::string trial = text_.substr(0, t.offset) + nearest[i].second + text_.substr(t.end);
+      try {
+        Parser parser(trial, v_);
+        parser.suggest_ = false;
+        if (entry_ == Entry::kQuery) parser.parse();
+        else parser.partDescription();
+        return "; did you mean \"" + trial + "\"?";
+      } catch (const Error&) {
+      }
+    }
+    return "";
   }
 
   // --- productions ----------------------------------------------------------------------------
@@ -577,6 +603,9 @@ class Parser {
   TokenView tokens_;
   size_t pos_ = 0;
   const bool prefix_;  // nounPhraseAt: the phrase is followed by the caller's words
+  enum class Entry { kQuery, kPartDescription, kPrefix };
+  Entry entry_ = Entry::kQuery;  // which production the parse started from (didYouMean retries it)
+  bool suggest_ = true;          // false inside a didYouMean trial
   int depth_ = 0;  // nesting of conditions (parentheses, not), bounded by kMaxNesting
   // The vocabulary's word lists.
   const std::vector<std::string>&intensityWords_, &adjectiveWords_, &nounWords_, &directionWords_, &distanceWords_;

@@ -89,6 +89,7 @@ TEST(PartFromWords, AdjectivesActInATableOrder) {
 
 TEST(PartFromWords, Errors) {
   EXPECT_NE(errorOf("a slightly bnet cylinder").find("closest known words: bent"), std::string::npos);
+  EXPECT_NE(errorOf("a slightly bnet cylinder").find("did you mean \"a slightly bent cylinder\"?"), std::string::npos);
   EXPECT_NE(errorOf("a bent shape").find("names no shape"), std::string::npos);
   EXPECT_NE(errorOf("a very cylinder").find("expected an adjective"), std::string::npos);
   EXPECT_NE(errorOf("a bent cylinder above a cube").find("end of the description"), std::string::npos);

@@ -263,6 +263,21 @@ TEST(LinguisticQuery, UnknownWordsNameTheClosest) {
   EXPECT_NE(errorOf("find a cube to the lfet of a sphere").find("left"), std::string::npos);
 }
 
+// An unknown word's error offers a whole query that reads: the text with the word replaced by a
+// near known one.
+TEST(LinguisticQuery, UnknownWordsSuggestAQueryThatWorks) {
+  std::string e = errorOf("find a slightly bnet shape");
+  EXPECT_NE(e.find("unknown word 'bnet' at character 16"), std::string::npos) << e;
+  EXPECT_NE(e.find("did you mean \"find a slightly bent shape\"?"), std::string::npos) << e;
+  e = errorOf("show me somthing twisted");
+  EXPECT_NE(e.find("did you mean \"show me something twisted\"?"), std::string::npos) << e;
+  e = errorOf("find shapes that are very rond");
+  EXPECT_NE(e.find("did you mean \"find shapes that are very round\"?"), std::string::npos) << e;
+  // The suggestion is one that parses.
+  const size_t open = e.find("did you mean \"") + 14;
+  EXPECT_NO_THROW(parse(e.substr(open, e.find("\"?", open) - open)));
+}
+
 TEST(LinguisticQuery, ParseErrorsGivePositionAndExpectedWords) {
   std::string e = errorOf("find a very shape");
   EXPECT_NE(e.find("unexpected 'shape' at character 12"), std::string::npos) << e;
