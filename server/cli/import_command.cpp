@@ -56,9 +56,12 @@ void printErrors(const std::string& file, const nlohmann::json& errors) {
 
 // The kind a line will be imported as: its "kind", or "part" for a line the server will reject
 // anyway (so errors still come back with the line number).
+// The route a line goes to: its own kind when it names shape, curve or surface; parts otherwise
+// (lines without a kind are parts; a bad kind is refused by /parts/bulk with its line number).
 std::string kindOfLine(const BulkLine& line) {
-  if (line.document.is_object() && line.document.contains("kind") && line.document["kind"] == "shape")
-    return "shape";
+  if (line.document.is_object() && line.document.contains("kind"))
+    for (const char* kind : {"shape", "curve", "surface"})
+      if (line.document["kind"] == kind) return kind;
   return "part";
 }
 

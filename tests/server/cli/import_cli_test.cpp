@@ -107,6 +107,32 @@ TEST(ImportCli, ThroughARunningServerGivesTheSameCounts) {
   EXPECT_EQ(runFsdb({"import", file, "--server", "http://127.0.0.1:1", "--token", "tok"}).exitCode, 2);
 }
 
+// Curves and surfaces go to their own bulk routes through a server, as into a file (before, every
+// line that was no shape went to /parts/bulk and failed there).
+TEST(ImportCli, CurvesAndSurfacesThroughAServerAsIntoAFile) {
+  TempDir dir;
+  const std::string file = dir.file("mixed.jsonl");
+  std::string lines;
+  lines += json{{"kind", "part"}, {"name", "P"}, {"params", {{"a1", 1}}}}.dump() + "\n";
+  lines += json{{"kind", "curve"}, {"name", "wave"},
+                {"bezier", {{"control_points", {{0, 0}, {1, {{"tri", {1.5, 2, 2.5}}}}, {3, 0}}}}}}.dump() + "\n";
+  lines += json{{"kind", "surface"}, {"name", "patch"},
+                {"bezier", {{"control_grid", {{{0, 0, 0}, {1, 0, 1}}, {{0, 1, 0}, {1, 1, {{"tri", {0, 0.5, 1}}}}}}}}}}.dump() + "\n";
+  lines += json{{"kind", "curve"}, {"name", "fair"}, {"fair", {{"points", {{0, 0}, {2, 1}, {4, 0}}}}}}.dump() + "\n";
+  writeFile(file, lines);
+  auto direct = runFsdb({"import", file, "--db", dir.file("direct.sqlite")});
+  EXPECT_EQ(lastLine(direct.out), "imported 4, failed 0") << direct.out;
+  ServerProcess server({"--db", dir.file("served.sqlite")});
+  const std::string url = "http://" + server.host() + ":" + std::to_string(server.port());
+  auto served = runFsdb({"import", file, "--server", url});
+  EXPECT_EQ(served.exitCode, 0) << served.out;
+  EXPECT_EQ(lastLine(served.out), "imported 4, failed 0") << served.out;
+  const json health = server.get("/health").json;
+  EXPECT_EQ(health["parts"], 1);
+  EXPECT_EQ(health["curves"], 2);
+  EXPECT_EQ(health["surfaces"], 1);
+}
+
 TEST(ImportCli, IntoTheFileOfARunningServerWhileItWrites) {
   TempDir dir;
   const std::string file = dir.file("many.jsonl"), db = dir.file("shared.sqlite");
