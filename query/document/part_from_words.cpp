@@ -5,6 +5,7 @@
 
 #include "geometry/core/error.h"
 #include "geometry/fuzzy/fuzzy_arithmetic.h"
+#include "query/linguistic/degree_sets.h"
 #include "query/linguistic/descriptors.h"
 #include "query/linguistic/linguistic_query.h"
 #include "query/document/part_json.h"
@@ -56,8 +57,6 @@ void realize(const std::string& descriptor, const FuzzyNumber& d, FuzzyPart* par
   }
 }
 
-FuzzyNumber mirrored(const FuzzyNumber& d) { return affine(d, -1.0, 1.0); }
-
 }  // namespace
 
 FuzzyPart partFromWords(const std::string& text, const Vocabulary& vocabulary) {
@@ -76,7 +75,7 @@ FuzzyPart partFromWords(const std::string& text, const Vocabulary& vocabulary) {
   for (const AdjectiveUse& use : uses) {
     const Adjective& a = *use.adjective;
     FuzzyNumber d = use.intensity ? *use.intensity : a.create ? *a.create : vocabulary.plainCreate();
-    if (a.lowPole && !(a.create && !use.intensity)) d = mirrored(d);
+    if (a.lowPole && !(a.create && !use.intensity)) d = mirroredDegrees(d);
     realize(a.descriptor, d, &part);
   }
   try {

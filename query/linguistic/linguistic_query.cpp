@@ -14,6 +14,7 @@
 #include "geometry/fuzzy/fuzzy_arithmetic.h"
 #include "query/json/fuzzy_json.h"
 #include "query/json/number_phrases.h"
+#include "query/linguistic/degree_sets.h"
 #include "query/linguistic/query_tokens.h"
 #include "query/linguistic/vocabulary.h"
 
@@ -24,6 +25,7 @@ using Kind = QueryCondition::Kind;
 using query_tokens::Token;
 using query_tokens::TokenView;
 using query_tokens::tokenize;
+using query_tokens::withoutFillers;
 
 // The words of the grammar itself (the vocabulary supplies the rest).
 const std::vector<std::string>& grammarWords() {
@@ -44,24 +46,6 @@ bool contains(const std::vector<std::string>& list, const std::string& w) {
   return std::find(list.begin(), list.end(), w) != list.end();
 }
 
-// The tokens without the vocabulary's fillers ("please"), which carry no meaning wherever they
-// stand, and without the comma that sets one off ("small, please"; "please, find ...").
-std::vector<Token> withoutFillers(const std::vector<Token>& tokens, const Vocabulary& vocabulary) {
-  std::vector<Token> out;
-  out.reserve(tokens.size());
-  for (size_t i = 0; i < tokens.size(); ++i) {
-    if (tokens[i].number || !vocabulary.isFiller(tokens[i].text)) {
-      out.push_back(tokens[i]);
-      continue;
-    }
-    if (!out.empty() && out.back().text == ",")
-      out.pop_back();
-    else if (i + 1 < tokens.size() && tokens[i + 1].text == ",")
-      ++i;
-  }
-  return out;
-}
-
 std::string joinList(const std::vector<std::string>& words) {
   std::string out;
   for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
@@ -76,26 +60,6 @@ QueryCondition descriptorCondition(const std::string& descriptor, FuzzyNumber se
   c.text = std::move(text);
   return c;
 }
-
-// The membership restricted to [0, 1] (the degrees a descriptor can take): pieces crossing 0 or
-// 1 are cut there, the ends become vertical sides. The core must meet [0, 1] (checked before).
-FuzzyNumber restrictedToUnit(const FuzzyNumber& set) {
-  const std::vector<Breakpoint>& p = set.breakpoints();
-  std::vector<Breakpoint> out;
-  for (size_t i = 0; i < p.size(); ++i) {
-    if (i > 0)
-      for (double cut : {0.0, 1.0})
-        if ((p[i - 1].x < cut && p[i].x > cut) || (p[i - 1].x > cut && p[i].x < cut)) {
-          const double t = (cut - p[i - 1].x) / (p[i].x - p[i - 1].x);
-          out.push_back({cut, p[i - 1].mu + t * (p[i].mu - p[i - 1].mu)});
-        }
-    if (p[i].x >= 0.0 && p[i].x <= 1.0) out.push_back(p[i]);
-  }
-  return FuzzyNumber::fromPoints(out);
-}
-
-// The set of a low-pole adjective: d -> 1 - d (exact: negation and a crisp shift).
-FuzzyNumber mirrored(const FuzzyNumber& set) { return add(negate(set), FuzzyNumber::crisp(1.0)); }
 
 class Parser {
  public:
@@ -498,7 +462,7 @@ class Parser {
     pos_ += n;
     const Adjective& adjective = *v_.adjective(word);
     FuzzyNumber set = intensity ? *intensity : v_.plain();
-    if (adjective.lowPole) set = mirrored(set);
+    if (adjective.lowPole) set = mirroredDegrees(set);
     return descriptorCondition(adjective.descriptor, set, span(start, pos_));
   }
 
@@ -567,7 +531,7 @@ class Parser {
     if (!set) fail({"a degree ('about 0.3', '0.5', 'between 0.2 and 0.4', 'at least 0.7', 'at most 0.2')"});
     checkDegree(set->core().lo, start);
     checkDegree(set->core().hi, start);
-    return restrictedToUnit(*set);
+    return restrictedToDegrees(*set);
   }
 
   void checkDegree(double x, size_t start) const {

@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "geometry/core/error.h"
+#include "query/linguistic/vocabulary.h"
 
 namespace fsdb::query_tokens {
 
@@ -52,6 +53,22 @@ std::vector<Token> tokenize(const std::string& text, size_t from, size_t to) {
     tokens.push_back(t);
   }
   return tokens;
+}
+
+std::vector<Token> withoutFillers(const std::vector<Token>& tokens, const Vocabulary& vocabulary) {
+  std::vector<Token> out;
+  out.reserve(tokens.size());
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    if (tokens[i].number || !vocabulary.isFiller(tokens[i].text)) {
+      out.push_back(tokens[i]);
+      continue;
+    }
+    if (!out.empty() && out.back().text == ",")
+      out.pop_back();
+    else if (i + 1 < tokens.size() && tokens[i + 1].text == ",")
+      ++i;
+  }
+  return out;
 }
 
 }  // namespace fsdb::query_tokens

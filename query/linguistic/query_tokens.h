@@ -6,6 +6,10 @@
 #include <string>
 #include <vector>
 
+namespace fsdb {
+class Vocabulary;
+}
+
 namespace fsdb::query_tokens {
 
 struct Token {
@@ -28,5 +32,9 @@ struct TokenView {
 // Throws fsdb::Error(errc::kInvalidParameter, path "text") on a bad number or a character that
 // is none of the above, naming its position.
 std::vector<Token> tokenize(const std::string& text, size_t from, size_t to);
+
+// The tokens without the vocabulary's fillers ("please"), which carry no meaning wherever they
+// stand, and without the comma that sets one off ("small, please"; "please, find ...").
+std::vector<Token> withoutFillers(const std::vector<Token>& tokens, const Vocabulary& vocabulary);
 
 }  // namespace fsdb::query_tokens

@@ -1,0 +1,42 @@
+// Fuzzy sets over a descriptor's degree (query/linguistic/degree_sets.h): restriction to [0, 1]
+// cuts pieces at the ends exactly, and mirroring is d → 1 − d, its own inverse up to rounding.
+#include "query/linguistic/degree_sets.h"
+
+#include <gtest/gtest.h>
+
+#include "geometry/fuzzy/fuzzy_arithmetic.h"
+
+namespace fsdb {
+namespace {
+
+TEST(DegreeSets, RestrictionCutsAtZeroAndOne) {
+  // about 1: tri(0.9, 1, 1.1) keeps [0.9, 1] and a vertical side at 1.
+  const FuzzyNumber r = restrictedToDegrees(FuzzyNumber::triangular(0.9, 1.0, 1.1));
+  ASSERT_FALSE(r.breakpoints().empty());
+  EXPECT_DOUBLE_EQ(r.breakpoints().front().x, 0.9);
+  EXPECT_DOUBLE_EQ(r.breakpoints().back().x, 1.0);
+  EXPECT_DOUBLE_EQ(r.membership(0.95), FuzzyNumber::triangular(0.9, 1.0, 1.1).membership(0.95));
+  EXPECT_DOUBLE_EQ(r.membership(1.0), 1.0);
+  // A piece crossing 0: the membership at 0 is the interpolated one.
+  const FuzzyNumber low = restrictedToDegrees(FuzzyNumber::triangular(-0.2, 0.2, 0.6));
+  EXPECT_DOUBLE_EQ(low.breakpoints().front().x, 0.0);
+  EXPECT_NEAR(low.membership(0.0), 0.5, 1e-12);
+  EXPECT_DOUBLE_EQ(low.membership(0.2), 1.0);
+  // A set inside [0, 1] is unchanged.
+  const FuzzyNumber inside = FuzzyNumber::trapezoidal(0.1, 0.2, 0.3, 0.4);
+  EXPECT_EQ(restrictedToDegrees(inside), inside);
+}
+
+TEST(DegreeSets, MirroringIsOneMinusTheDegree) {
+  const FuzzyNumber set = FuzzyNumber::trapezoidal(0.0, 0.1, 0.25, 0.4);
+  const FuzzyNumber m = mirroredDegrees(set);
+  for (double d : {0.0, 0.05, 0.1, 0.3, 0.6, 0.8, 0.95, 1.0}) EXPECT_NEAR(m.membership(d), set.membership(1.0 - d), 1e-12) << d;
+  // Twice is the set again, up to the rounding of 1 − (1 − d).
+  const FuzzyNumber twice = mirroredDegrees(m);
+  for (double d : {0.0, 0.05, 0.1, 0.3, 0.6}) EXPECT_NEAR(twice.membership(d), set.membership(d), 1e-12) << d;
+  // The same set as the affine map 1 − d written with scale (parts from words used it).
+  EXPECT_EQ(m, add(scale(set, -1.0), FuzzyNumber::crisp(1.0)));
+}
+
+}  // namespace
+}  // namespace fsdb
