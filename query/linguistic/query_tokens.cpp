@@ -63,10 +63,12 @@ std::vector<Token> withoutFillers(const std::vector<Token>& tokens, const Vocabu
       out.push_back(tokens[i]);
       continue;
     }
-    if (!out.empty() && out.back().text == ",")
-      out.pop_back();
-    else if (i + 1 < tokens.size() && tokens[i + 1].text == ",")
+    // The comma that sets it off: the one after it ("please, find ..."; "round, please, tapered"),
+    // else the one before it when it ends the text ("small, please").
+    if (i + 1 < tokens.size() && tokens[i + 1].text == ",")
       ++i;
+    else if (i + 1 == tokens.size() && !out.empty() && out.back().text == ",")
+      out.pop_back();
   }
   return out;
 }

@@ -34,7 +34,8 @@ struct TokenView {
 std::vector<Token> tokenize(const std::string& text, size_t from, size_t to);
 
 // The tokens without the vocabulary's fillers ("please"), which carry no meaning wherever they
-// stand, and without the comma that sets one off ("small, please"; "please, find ...").
+// stand, and without the comma that sets one off: the one after it ("please, find ...", "round,
+// please, tapered"), else the one before it when it ends the text ("small, please").
 std::vector<Token> withoutFillers(const std::vector<Token>& tokens, const Vocabulary& vocabulary);
 
 }  // namespace fsdb::query_tokens

@@ -78,10 +78,10 @@ class PhraseParser {
     for (size_t i = 0; i < words_.size(); ++i) {
       if (!v_.isFiller(words_[i].text)) {
         kept.push_back(std::move(words_[i]));
-      } else if (!kept.empty() && kept.back().text == ",") {
-        kept.pop_back();
       } else if (i + 1 < words_.size() && words_[i + 1].text == ",") {
         ++i;
+      } else if (i + 1 == words_.size() && !kept.empty() && kept.back().text == ",") {
+        kept.pop_back();
       }
     }
     words_ = std::move(kept);

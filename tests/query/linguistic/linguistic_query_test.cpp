@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <functional>
 #include <sstream>
 
 #include "geometry/core/error.h"
@@ -13,6 +12,7 @@
 #include "query/json/fuzzy_json.h"
 #include "query/linguistic/vocabulary.h"
 #include "tests/testing/grammar_examples.h"
+#include "tests/testing/query_shapes.h"
 #include "tests/testing/text_error.h"
 
 namespace fsdb {
@@ -34,18 +34,7 @@ void expectLeaf(const QueryCondition& c, const std::string& descriptor, const Fu
   EXPECT_EQ(c.text, text);
 }
 
-// The parse as JSON without the words each condition covers: two texts that mean the same query
-// compare equal.
-nlohmann::json meaning(const std::string& text) {
-  nlohmann::json j = toJson(parse(text));
-  std::function<void(nlohmann::json&)> strip = [&](nlohmann::json& c) {
-    c.erase("text");
-    if (c.contains("children"))
-      for (nlohmann::json& child : c["children"]) strip(child);
-  };
-  strip(j["condition"]);
-  return j;
-}
+nlohmann::json meaning(const std::string& text) { return testing::queryMeaning(parse(text)); }
 
 TEST(LinguisticQuery, RequestsAndFillersAreSkipped) {
   for (const char* text : {"show me the bent shapes", "please find bent shapes", "I am looking for bent shapes",
@@ -54,6 +43,9 @@ TEST(LinguisticQuery, RequestsAndFillersAreSkipped) {
     EXPECT_EQ(meaning(text), meaning("find bent shapes")) << text;
   // A filler inside the query too.
   EXPECT_EQ(meaning("find very round, please, slightly tapered shapes"),
+            meaning("find very round, slightly tapered shapes"));
+  // A comma before a filler that does not end the text stays: it joins what follows.
+  EXPECT_EQ(meaning("find very round, please slightly tapered shapes"),
             meaning("find very round, slightly tapered shapes"));
 }
 

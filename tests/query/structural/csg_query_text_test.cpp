@@ -10,6 +10,7 @@
 #include "geometry/core/error.h"
 #include "query/linguistic/vocabulary.h"
 #include "tests/testing/grammar_examples.h"
+#include "tests/testing/query_shapes.h"
 #include "tests/testing/text_error.h"
 
 namespace fsdb {
@@ -20,15 +21,7 @@ CsgQuery parse(const std::string& text, const ReferenceResolver& resolver = {}) 
   return parseCsgQuery(text, v(), resolver, 1000);
 }
 
-// The graph as a string: op(children...) with leaves by their text, children in graph order.
-std::string shape(const CsgQuery& q, int node) {
-  const CsgGraphNode& n = q.graph.nodes[node];
-  if (n.op == CsgGraphOp::Leaf) return "'" + q.leaves[n.leaf].text + "'";
-  std::string out = std::string(csgGraphOpName(n.op)) + "(";
-  for (size_t i = 0; i < n.children.size(); ++i) out += (i ? ", " : "") + shape(q, n.children[i]);
-  return out + ")";
-}
-std::string shape(const CsgQuery& q) { return shape(q, q.graph.root); }
+std::string shape(const CsgQuery& q) { return testing::csgShape(q); }
 
 std::string errorOf(const std::string& text, const ReferenceResolver& resolver = {}) {
   return test::textErrorOf(text, [&](const std::string& t) { parse(t, resolver); });
@@ -62,6 +55,9 @@ TEST(CsgQueryText, DesignersPhrasingsOfAUnion) {
                            "objects composed of a very bent cylinder and a very sharp pyramid"})
     EXPECT_EQ(shape(parse(text)), tree) << text;
   EXPECT_EQ(shape(parse("find shapes made of a cube and a sphere")), "union('a cube', 'a sphere')");
+  // Fillers: the comma after one goes with it, a comma before one that ends nothing stays.
+  EXPECT_EQ(shape(parse("please, a cube, please a sphere, please")), "union('a cube', 'a sphere')");
+  EXPECT_EQ(shape(parse("a cube, please, a sphere")), "union('a cube', 'a sphere')");
   EXPECT_EQ(shape(parse("a shape which is the difference of a cube and a sphere")), "difference('a cube', 'a sphere')");
   // A generic noun that opens a list without a lead-in stays a leaf.
   EXPECT_EQ(shape(parse("a shape and a sphere")), "union('a shape', 'a sphere')");
