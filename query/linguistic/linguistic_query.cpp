@@ -25,6 +25,7 @@ using Kind = QueryCondition::Kind;
 using query_tokens::Token;
 using query_tokens::TokenView;
 using query_tokens::tokenize;
+using query_tokens::requestLength;
 using query_tokens::withoutFillers;
 
 // The words of the grammar itself (the vocabulary supplies the rest).
@@ -81,6 +82,9 @@ class Parser {
         directionWords_(vocabulary.directionWords()),
         distanceWords_(vocabulary.distanceWords()) {}
 
+  // Errors name no corrected text (didYouMean): for trials and for asking whether a text reads.
+  void noSuggestions() { suggest_ = false; }
+
   LinguisticQuery parse() {
     entry_ = Entry::kQuery;
     LinguisticQuery q;
@@ -135,7 +139,6 @@ class Parser {
 
   // A noun phrase at the start of the tokens, ending where the phrase ends (parseNounPhraseAt).
   NounPhraseAt nounPhraseAt() {
-    entry_ = Entry::kPrefix;
     NounPhraseAt out;
     if (tokens_.empty()) fail({"a noun phrase such as 'a slightly bent cylinder'"});
     std::string subject;
@@ -207,28 +210,18 @@ class Parser {
   // request = the longest request phrase of the vocabulary ("show me", "I am looking for") or verb,
   // a verb with an optional "for". Nothing of it is part of the query.
   void skipRequest() {
-    std::string request, verb;
-    const size_t n = matchPhrase(v_.requestPhrases(), &request);
-    const size_t nVerb = matchPhrase(queryVerbs(), &verb);
-    pos_ += std::max(n, nVerb);
-    if (nVerb > 0 && nVerb >= n) acceptWord("for");  // the verb is the whole request
+    pos_ += requestLength(
+        [this](size_t k) { return pos_ + k < tokens_.size() ? &tokens_[pos_ + k].text : nullptr; }, v_);
   }
 
   // The longest phrase of `phrases` (words separated by one space) starting at the current
   // token: the number of tokens it spans (0: none) and the phrase.
   size_t matchPhrase(const std::vector<std::string>& phrases, std::string* matched) const {
+    const auto wordAt = [this](size_t k) { return pos_ + k < tokens_.size() ? &tokens_[pos_ + k].text : nullptr; };
     size_t best = 0;
     for (const std::string& phrase : phrases) {
-      size_t k = 0, i = 0;
-      bool ok = true;
-      while (ok && i < phrase.size()) {
-        size_t j = phrase.find(' ', i);
-        if (j == std::string::npos) j = phrase.size();
-        ok = pos_ + k < tokens_.size() && tokens_[pos_ + k].text == phrase.substr(i, j - i);
-        ++k;
-        i = j + 1;
-      }
-      if (ok && k > best) {
+      const size_t k = query_tokens::phraseLength(wordAt, phrase);
+      if (k > best) {
         best = k;
         *matched = phrase;
       }
@@ -270,7 +263,7 @@ class Parser {
   // (of the five nearest) with which the whole text reads, or "" when none does. Only for whole
   // texts (queries and part descriptions), and not again inside such a trial.
   std::string didYouMean(const Token& t, const std::vector<std::string>& known) const {
-    if (entry_ == Entry::kPrefix || !suggest_) return "";
+    if (prefix_ || !suggest_) return "";
     std::vector<std::pair<size_t, std::string>> nearest;
     for (const std::string& k : known) nearest.emplace_back(editDistance(t.text, k), k);
     std::sort(nearest.begin(), nearest.end());
@@ -279,7 +272,7 @@ class Parser {
       const std::string trial = text_.substr(0, t.offset) + nearest[i].second + text_.substr(t.end);
       try {
         Parser parser(trial, v_);
-        parser.suggest_ = false;
+        parser.noSuggestions();
         if (entry_ == Entry::kQuery) parser.parse();
         else parser.partDescription();
         return "; did you mean \"" + trial + "\"?";
@@ -567,9 +560,9 @@ class Parser {
   TokenView tokens_;
   size_t pos_ = 0;
   const bool prefix_;  // nounPhraseAt: the phrase is followed by the caller's words
-  enum class Entry { kQuery, kPartDescription, kPrefix };
-  Entry entry_ = Entry::kQuery;  // which production the parse started from (didYouMean retries it)
-  bool suggest_ = true;          // false inside a didYouMean trial
+  enum class Entry { kQuery, kPartDescription };
+  Entry entry_ = Entry::kQuery;  // which production a whole text's parse started from (didYouMean retries it)
+  bool suggest_ = true;          // false inside a didYouMean trial and when only asked whether a text reads
   int depth_ = 0;  // nesting of conditions (parentheses, not), bounded by kMaxNesting
   // The vocabulary's word lists.
   const std::vector<std::string>&intensityWords_, &adjectiveWords_, &nounWords_, &directionWords_, &distanceWords_;
@@ -579,6 +572,17 @@ class Parser {
 
 LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary) {
   return Parser(text, vocabulary).parse();
+}
+
+bool isLinguisticQuery(const std::string& text, const Vocabulary& vocabulary) {
+  try {
+    Parser parser(text, vocabulary);
+    parser.noSuggestions();
+    parser.parse();
+    return true;
+  } catch (const Error&) {
+    return false;
+  }
 }
 
 const std::vector<std::string>& queryVerbs() {

@@ -88,6 +88,9 @@ struct LinguisticQuery {
 // position and the expected words; unknown words name the closest known ones. Conditions nested
 // deeper than 64 levels (parentheses, "not") are errc::kLimitExceeded, path "text".
 LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary);
+// Whether the text is a linguistic query: parseLinguisticQuery would not throw. Cheaper on texts
+// that are not (no "did you mean" is looked for), for routing texts between the two searches.
+bool isLinguisticQuery(const std::string& text, const Vocabulary& vocabulary);
 
 // The grammar's opening verbs (each may be followed by "for") and its articles, in the grammar's
 // order; the phrase form of structural queries (query/structural/csg_query_text.h) opens with the same verbs

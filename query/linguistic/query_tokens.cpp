@@ -1,12 +1,13 @@
 // See query/linguistic/query_tokens.h.
 #include "query/linguistic/query_tokens.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
 
 #include "geometry/core/error.h"
-#include "query/linguistic/vocabulary.h"
+#include "query/linguistic/linguistic_query.h"
 
 namespace fsdb::query_tokens {
 
@@ -55,22 +56,13 @@ std::vector<Token> tokenize(const std::string& text, size_t from, size_t to) {
   return tokens;
 }
 
-std::vector<Token> withoutFillers(const std::vector<Token>& tokens, const Vocabulary& vocabulary) {
-  std::vector<Token> out;
-  out.reserve(tokens.size());
-  for (size_t i = 0; i < tokens.size(); ++i) {
-    if (tokens[i].number || !vocabulary.isFiller(tokens[i].text)) {
-      out.push_back(tokens[i]);
-      continue;
-    }
-    // The comma that sets it off: the one after it ("please, find ..."; "round, please, tapered"),
-    // else the one before it when it ends the text ("small, please").
-    if (i + 1 < tokens.size() && tokens[i + 1].text == ",")
-      ++i;
-    else if (i + 1 == tokens.size() && !out.empty() && out.back().text == ",")
-      out.pop_back();
-  }
-  return out;
+size_t requestLength(const std::function<const std::string*(size_t)>& wordAt, const Vocabulary& vocabulary) {
+  size_t request = 0, verb = 0;
+  for (const std::string& phrase : vocabulary.requestPhrases()) request = std::max(request, phraseLength(wordAt, phrase));
+  for (const std::string& v : queryVerbs()) verb = std::max(verb, phraseLength(wordAt, v));
+  if (verb == 0 || verb < request) return request;
+  const std::string* next = wordAt(verb);  // the verb is the whole request: "search for"
+  return next && *next == "for" ? verb + 1 : verb;
 }
 
 }  // namespace fsdb::query_tokens

@@ -3,12 +3,11 @@
 // numbers as strtod reads them, and the punctuation '(' ')' ','; each with its character offsets,
 // so that errors and parsed phrases can point into the text.
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
-namespace fsdb {
-class Vocabulary;
-}
+#include "query/linguistic/vocabulary.h"
 
 namespace fsdb::query_tokens {
 
@@ -33,9 +32,44 @@ struct TokenView {
 // is none of the above, naming its position.
 std::vector<Token> tokenize(const std::string& text, size_t from, size_t to);
 
-// The tokens without the vocabulary's fillers ("please"), which carry no meaning wherever they
+// The words without the vocabulary's fillers ("please"), which carry no meaning wherever they
 // stand, and without the comma that sets one off: the one after it ("please, find ...", "round,
-// please, tapered"), else the one before it when it ends the text ("small, please").
-std::vector<Token> withoutFillers(const std::vector<Token>& tokens, const Vocabulary& vocabulary);
+// please, tapered"), else the one before it when it ends the text ("small, please"). Word is any
+// type with a `text` (the linguistic parser's Token, the CSG phrase parser's words).
+template <typename Word>
+std::vector<Word> withoutFillers(std::vector<Word> words, const Vocabulary& vocabulary) {
+  std::vector<Word> out;
+  out.reserve(words.size());
+  for (size_t i = 0; i < words.size(); ++i) {
+    if (!vocabulary.isFiller(words[i].text))
+      out.push_back(std::move(words[i]));
+    else if (i + 1 < words.size() && words[i + 1].text == ",")
+      ++i;
+    else if (i + 1 == words.size() && !out.empty() && out.back().text == ",")
+      out.pop_back();
+  }
+  return out;
+}
+
+// How many words of `phrase` (words separated by one blank) stand at wordAt(0), wordAt(1), ...
+// (a const std::string*, null past the end): its length in words, 0 unless all of them do.
+template <typename WordAt>
+size_t phraseLength(const WordAt& wordAt, const std::string& phrase) {
+  size_t k = 0, i = 0;
+  while (i < phrase.size()) {
+    size_t j = phrase.find(' ', i);
+    if (j == std::string::npos) j = phrase.size();
+    const std::string* word = wordAt(k);
+    if (!word || word->compare(0, std::string::npos, phrase, i, j - i) != 0) return 0;
+    ++k;
+    i = j + 1;
+  }
+  return k;
+}
+
+// The request that opens a query ("show me", "I am looking for"): the longest of the vocabulary's
+// request phrases and the query verbs (with the "for" a verb may take), in words; 0 for none.
+// Both parsers skip it, so both read the same requests.
+size_t requestLength(const std::function<const std::string*(size_t)>& wordAt, const Vocabulary& vocabulary);
 
 }  // namespace fsdb::query_tokens

@@ -7,6 +7,7 @@
 
 #include "geometry/core/error.h"
 #include "query/document/csg_text.h"
+#include "query/linguistic/query_tokens.h"
 
 namespace fsdb {
 namespace {
@@ -70,22 +71,11 @@ std::vector<Word> words(const std::string& text) {
 class PhraseParser {
  public:
   PhraseParser(const std::string& text, const Vocabulary& vocabulary, std::vector<CsgQueryLeaf>& leaves)
-      : text_(text), words_(words(text)), leaves_(leaves), phrases_(text, vocabulary), v_(vocabulary) {
-    // Fillers ("please") carry no meaning wherever they stand; nor does the comma that sets one off
-    // (as the linguistic parser reads them).
-    std::vector<Word> kept;
-    kept.reserve(words_.size());
-    for (size_t i = 0; i < words_.size(); ++i) {
-      if (!v_.isFiller(words_[i].text)) {
-        kept.push_back(std::move(words_[i]));
-      } else if (i + 1 < words_.size() && words_[i + 1].text == ",") {
-        ++i;
-      } else if (i + 1 == words_.size() && !kept.empty() && kept.back().text == ",") {
-        kept.pop_back();
-      }
-    }
-    words_ = std::move(kept);
-  }
+      : text_(text),
+        words_(query_tokens::withoutFillers(words(text), vocabulary)),  // as the linguistic parser reads them
+        leaves_(leaves),
+        phrases_(text, vocabulary),
+        v_(vocabulary) {}
 
   nlohmann::json parse() {
     if (words_.empty()) fail({"a query such as 'the union of a bent cylinder and a sphere'"});
@@ -295,14 +285,10 @@ class PhraseParser {
     return false;
   }
 
-  // request = the longest request phrase of the vocabulary ("show me", "I am looking for") or verb,
-  // a verb with an optional "for", as the linguistic parser reads it.
+  // request: as the linguistic parser reads it (query_tokens.h).
   void skipRequest() {
-    size_t n = 0, nVerb = 0;
-    for (const std::string& phrase : v_.requestPhrases()) n = std::max(n, phraseLength(phrase));
-    for (const std::string& verb : queryVerbs()) nVerb = std::max(nVerb, phraseLength(verb));
-    pos_ += std::max(n, nVerb);
-    if (nVerb > 0 && nVerb >= n) accept("for");  // the verb is the whole request
+    pos_ += query_tokens::requestLength(
+        [this](size_t k) { return pos_ + k < words_.size() ? &words_[pos_ + k].text : nullptr; }, v_);
   }
 
   // lead_in = [ article ] GENERIC ( "which" | "that" ) ( "is" | "are" ) construction
@@ -324,7 +310,7 @@ class PhraseParser {
       }
     }
     pos_ = save;
-    if (!madeOf()) pos_ = save;
+    madeOf();  // "made of ..." without a noun; leaves pos_ alone otherwise
   }
 
   bool madeOf() {
@@ -341,20 +327,6 @@ class PhraseParser {
     if (i < words_.size() && words_[i].text == "(") return true;
     return i + 1 < words_.size() && words_[i + 1].text == "of" &&
            (words_[i].text == "union" || words_[i].text == "intersection" || words_[i].text == "difference");
-  }
-
-  // How many words of `phrase` (words separated by one blank) stand at the current position; 0
-  // unless all of them do.
-  size_t phraseLength(const std::string& phrase) const {
-    size_t k = 0, i = 0;
-    while (i < phrase.size()) {
-      size_t j = phrase.find(' ', i);
-      if (j == std::string::npos) j = phrase.size();
-      if (pos_ + k >= words_.size() || words_[pos_ + k].text != phrase.substr(i, j - i)) return 0;
-      ++k;
-      i = j + 1;
-    }
-    return k;
   }
 
   bool acceptPair(const char* first, const char* second) {
@@ -531,11 +503,7 @@ bool isCsgQueryText(const std::string& text, const Vocabulary& vocabulary) {
   if (isCsgFormula(text)) return true;
   for (const Word& w : words(text))
     if (contains(kOperationWords, w.text)) return true;
-  try {
-    parseLinguisticQuery(text, vocabulary);
-    return false;
-  } catch (const Error&) {
-  }
+  if (isLinguisticQuery(text, vocabulary)) return false;
   try {
     std::vector<CsgQueryLeaf> leaves;
     PhraseParser(text, vocabulary, leaves).parse();
