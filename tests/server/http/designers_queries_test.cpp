@@ -19,14 +19,28 @@ namespace {
 
 const std::string kDemo = std::string(FSDB_SOURCE_DIR) + "/schema/demo";
 
-// (id, score) of each result, in rank order.
+// One query's answer, as these tests compare answers.
+struct Answer {
+  int status = 0;
+  std::string body;
+  std::string search;  // POST /query: "linguistic" or "csg"; "" from the specific routes
+  bool parsed = false;
+  std::vector<std::pair<int64_t, double>> ranking;  // (id, score) of each result, in rank order
+};
+
+Answer ask(const ServerProcess& server, const std::string& route, const std::string& text) {
+  auto r = server.post(route, json{{"text", text}, {"limit", 50}});
+  Answer a{r.status, r.body, r.json.value("search", std::string()), r.json.contains("parsed"), {}};
+  for (const json& result : r.json["results"])
+    a.ranking.emplace_back(result["id"].get<int64_t>(), result["score"].get<double>());
+  return a;
+}
+
 std::vector<std::pair<int64_t, double>> ranking(const ServerProcess& server, const std::string& route,
                                                 const std::string& text) {
-  auto r = server.post(route, json{{"text", text}, {"limit", 50}});
-  EXPECT_EQ(r.status, 200) << text << " -> " << r.body;
-  std::vector<std::pair<int64_t, double>> out;
-  for (const json& result : r.json["results"]) out.emplace_back(result["id"].get<int64_t>(), result["score"].get<double>());
-  return out;
+  const Answer a = ask(server, route, text);
+  EXPECT_EQ(a.status, 200) << text << " -> " << a.body;
+  return a.ranking;
 }
 
 TEST(DesignersQueries, LinguisticPhrasingsRankAsTheGrammarsOwn) {
@@ -83,13 +97,11 @@ TEST(DesignersQueries, OneSearchBoxRunsTheSearchTheTextCallsFor) {
       {"\"very bent cylinder\" + cube", "csg", "/query/csg"},
   };
   for (const auto& [text, search, route] : cases) {
-    auto r = server.post("/query", json{{"text", text}, {"limit", 50}});
-    ASSERT_EQ(r.status, 200) << text << " -> " << r.body;
-    EXPECT_EQ(r.json["search"], search) << text;
-    EXPECT_TRUE(r.json.contains("parsed")) << text;
-    std::vector<std::pair<int64_t, double>> got;
-    for (const json& result : r.json["results"]) got.emplace_back(result["id"].get<int64_t>(), result["score"].get<double>());
-    EXPECT_EQ(got, ranking(server, route, text)) << text;
+    const Answer a = ask(server, "/query", text);
+    ASSERT_EQ(a.status, 200) << text << " -> " << a.body;
+    EXPECT_EQ(a.search, search) << text;
+    EXPECT_TRUE(a.parsed) << text;
+    EXPECT_EQ(a.ranking, ranking(server, route, text)) << text;
   }
   // Members of the search that runs; errors are that search's.
   EXPECT_EQ(server.post("/query", json{{"text", "slightly bent"}, {"kind", "part"}}).status, 200);
@@ -112,11 +124,9 @@ TEST(DesignersQueries, CorpusRanksAsTheGrammarsOwnPhrasings) {
   std::ifstream in(std::string(FSDB_SOURCE_DIR) + "/tests/server/http/designers_corpus.txt");
   ASSERT_TRUE(in) << "designers_corpus.txt";
   const auto answer = [&](const std::string& text) {
-    auto r = server.post("/query", json{{"text", text}, {"limit", 50}});
-    EXPECT_EQ(r.status, 200) << text << " -> " << r.body;
-    std::vector<std::pair<int64_t, double>> ranked;
-    for (const json& result : r.json["results"]) ranked.emplace_back(result["id"].get<int64_t>(), result["score"].get<double>());
-    return std::make_pair(r.json.value("search", std::string()), ranked);
+    const Answer a = ask(server, "/query", text);
+    EXPECT_EQ(a.status, 200) << text << " -> " << a.body;
+    return std::make_pair(a.search, a.ranking);
   };
   const auto trim = [](std::string t) {
     t.erase(0, t.find_first_not_of(' '));
