@@ -49,6 +49,13 @@ TEST(LinguisticQuery, RequestsAndFillersAreSkipped) {
             meaning("find very round, slightly tapered shapes"));
 }
 
+TEST(LinguisticQuery, IsLinguisticQueryIsWhetherTheTextParses) {
+  for (const char* text : {"slightly bent", "show me something twisted", "find a sphere about 3 above a box"})
+    EXPECT_TRUE(isLinguisticQuery(text, v())) << text;
+  for (const char* text : {"a cube united with a sphere", "find a slightly bnet shape", "find a slightly bent", ""})
+    EXPECT_FALSE(isLinguisticQuery(text, v())) << text;
+}
+
 TEST(LinguisticQuery, BareDescriptionsAreQueriesAboutAnyShape) {
   EXPECT_EQ(meaning("slightly bent"), meaning("find a slightly bent shape"));
   EXPECT_EQ(parse("slightly bent").subject, "any");

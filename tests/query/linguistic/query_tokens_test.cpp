@@ -1,0 +1,59 @@
+// The tokens of query texts (query/linguistic/query_tokens.h): words, numbers and punctuation with
+// their offsets; fillers dropped with the comma that sets them off; phrases and requests matched
+// word by word.
+#include "query/linguistic/query_tokens.h"
+
+#include <gtest/gtest.h>
+
+#include "geometry/core/error.h"
+
+namespace fsdb::query_tokens {
+namespace {
+
+const Vocabulary& v() { return Vocabulary::builtin(); }
+
+std::string texts(const std::vector<Token>& tokens) {
+  std::string out;
+  for (const Token& t : tokens) out += (out.empty() ? "" : "|") + t.text;
+  return out;
+}
+
+std::vector<Token> tokens(const std::string& text) { return tokenize(text, 0, text.size()); }
+
+// wordAt over the tokens from `pos` on.
+auto wordsFrom(const std::vector<Token>& t, size_t pos) {
+  return [&t, pos](size_t k) { return pos + k < t.size() ? &t[pos + k].text : nullptr; };
+}
+
+TEST(QueryTokens, WordsNumbersAndPunctuationWithOffsets) {
+  const std::vector<Token> t = tokens("Find (bent, 0.5) I'm");
+  EXPECT_EQ(texts(t), "find|(|bent|,|0.5|)|i'm");
+  EXPECT_EQ(t[2].offset, 6u);
+  EXPECT_EQ(t[2].end, 10u);
+  EXPECT_TRUE(t[4].number);
+  EXPECT_THROW(tokens("bent #"), Error);
+}
+
+TEST(QueryTokens, FillersGoWithTheCommaThatSetsThemOff) {
+  EXPECT_EQ(texts(withoutFillers(tokens("please, find round, please, tapered shapes, please"), v())),
+            "find|round|,|tapered|shapes");
+  EXPECT_EQ(texts(withoutFillers(tokens("a cube, please a sphere"), v())), "a|cube|,|a|sphere");
+  EXPECT_EQ(texts(withoutFillers(tokens("kindly show bent"), v())), "show|bent");
+}
+
+TEST(QueryTokens, PhrasesAndRequests) {
+  const std::vector<Token> t = tokens("i am looking for a double pyramid");
+  EXPECT_EQ(phraseLength(wordsFrom(t, 5), "double pyramid"), 2u);
+  EXPECT_EQ(phraseLength(wordsFrom(t, 5), "double cone"), 0u);
+  EXPECT_EQ(phraseLength(wordsFrom(t, 6), "pyramid base"), 0u);  // runs past the end
+  EXPECT_EQ(requestLength(wordsFrom(t, 0), v()), 4u);
+  const std::vector<Token> verb = tokens("search for bent shapes");
+  EXPECT_EQ(requestLength(wordsFrom(verb, 0), v()), 2u);  // a verb with its "for"
+  const std::vector<Token> longest = tokens("show me bent shapes");
+  EXPECT_EQ(requestLength(wordsFrom(longest, 0), v()), 2u);  // "show me" before "show"
+  const std::vector<Token> none = tokens("bent shapes");
+  EXPECT_EQ(requestLength(wordsFrom(none, 0), v()), 0u);
+}
+
+}  // namespace
+}  // namespace fsdb::query_tokens
