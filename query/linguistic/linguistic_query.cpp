@@ -467,14 +467,16 @@ class Parser {
     return matchPhrase(distanceWords_, &m) > 0 || matchPhrase(directionWords_, &m) > 0;
   }
 
-  // distance = number_phrase | distance_word
+  // distance = number_phrase [ "unit" | "units" ] | distance_word   ("about 2 units above a cube")
   std::optional<FuzzyNumber> optionalDistance() {
     std::string word;
     if (size_t n = matchPhrase(distanceWords_, &word)) {
       pos_ += n;
       return *v_.distance(word);
     }
-    return numberPhrase("distance");
+    std::optional<FuzzyNumber> d = numberPhrase("distance");
+    if (d && !acceptWord("units")) acceptWord("unit");
+    return d;
   }
 
   // number_phrase (query/json/number_phrases.h): N | ("exactly"|"about"|...) N | "between" N "and" N

@@ -177,6 +177,13 @@ std::vector<ShapeComponent> shapeComponents(const CsgTree& tree);
 // difference of their fuzzy translations).
 FuzzyNumber centreDistance(const FuzzyPart& a, const FuzzyPart& b);
 
+// How well `subject` is placed against `other` as a relation says (Zhang, Pham & Chen, §2.2):
+// min(μ_direction(centre_subject − centre_other), S(centreDistance, distance) when a distance is
+// given), centres the translations' core midpoints. Relations of linguistic queries and of CSG
+// texts (query/structural/csg_relations.h) are both scored by it.
+double relationMembership(const Direction& direction, const std::optional<FuzzyNumber>& distance,
+                          const FuzzyPart& subject, const FuzzyPart& other);
+
 // The parsed query as JSON, for the "parsed" member of POST /query/linguistic:
 // {"subject","aggregation","at_least","condition":{kind, text, descriptor, set, children,
 // direction, distance}}.

@@ -71,8 +71,6 @@ double relationScore(const QueryCondition& c, Context& ctx) {
       (side == 0 ? subject : other).push_back(std::move(s));
     }
   }
-  std::vector<Vec3> centres;  // once per component, not once per pair
-  for (const ShapeComponent& comp : comps) centres.push_back(coreCentre(comp.part));
   double best = 0.0;
   size_t bestI = 0, bestJ = 0;
   bool found = false;
@@ -81,8 +79,7 @@ double relationScore(const QueryCondition& c, Context& ctx) {
       if (i == j) continue;
       double s = std::min(subject[i].score, other[j].score);
       if (found && s <= best) continue;  // cannot win: the first best pair stays (stable ties)
-      s = std::min(s, directionMembership(*direction, centres[i] - centres[j]));
-      if (c.distance && s > 0.0) s = std::min(s, similarity(centreDistance(comps[i].part, comps[j].part), *c.distance));
+      s = std::min(s, relationMembership(*direction, c.distance, comps[i].part, comps[j].part));
       if (!found || s > best) {
         best = s;
         bestI = i;
@@ -214,6 +211,14 @@ FuzzyNumber centreDistance(const FuzzyPart& a, const FuzzyPart& b) {
     cuts.push_back({std::sqrt(nearest), std::sqrt(farthest)});
   }
   return FuzzyNumber::fromAlphaCuts(levels, cuts);
+}
+
+double relationMembership(const Direction& direction, const std::optional<FuzzyNumber>& distance,
+                          const FuzzyPart& subject, const FuzzyPart& other) {
+  double s = directionMembership(direction, coreCentre(subject) - coreCentre(other));
+  // The distance's alpha-cuts cost more than the direction: skip them when the pair already fails.
+  if (distance && s > 0.0) s = std::min(s, similarity(centreDistance(subject, other), *distance));
+  return s;
 }
 
 }  // namespace fsdb

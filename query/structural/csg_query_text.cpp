@@ -3,10 +3,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <map>
 
 #include "geometry/core/error.h"
 #include "query/document/csg_text.h"
+#include "query/json/fuzzy_json.h"
+#include "query/json/number_phrases.h"
 #include "query/linguistic/query_tokens.h"
 
 namespace fsdb {
@@ -154,6 +157,7 @@ class PhraseParser {
     out.text = text_.substr(from, end - from);
     out.condition = parseNounPhraseAt("a " + noun, 0, std::string::npos, v_).query;
     leaves_.push_back(std::move(out));
+    head_ = leaves_.size() - 1;
     return placeholder(leaves_.size() - 1);
   }
 
@@ -182,8 +186,10 @@ class PhraseParser {
   // thousands of operands is one node, not a left-deep chain copied at every link.
   nlohmann::json list() {
     nlohmann::json operands = nlohmann::json::array();
+    previousHead_ = kNone;
     operands.push_back(meet());
     while (joinsList()) {
+      previousHead_ = head_;  // "a cube and a sphere to its right": its = the cube
       nlohmann::json operand = meet();
       if (joinedByWith_ && acceptCutOut()) {
         pendingCut_ = std::move(operand);  // "X with Y cut out": expr() subtracts Y
@@ -200,6 +206,7 @@ class PhraseParser {
     while (at("intersected")) {
       ++pos_;
       expect("with");
+      previousHead_ = head_;
       operands.push_back(item());
     }
     return operands.size() == 1 ? std::move(operands[0]) : node("intersection", std::move(operands));
@@ -221,7 +228,7 @@ class PhraseParser {
     if (accept("(")) {
       nlohmann::json inner = expr();
       if (!accept(")")) fail({"')'", "'minus'", "'and'", "'plus'", "'intersected with'"});
-      return inner;
+      return inner;  // head_: expr's (a single leaf in parentheses keeps its head)
     }
     const size_t save = pos_;
     acceptAny(queryArticles());
@@ -229,8 +236,10 @@ class PhraseParser {
       // "the part of X inside Y": their intersection.
       pos_ += 2;
       nlohmann::json operands = nlohmann::json::array();
+      previousHead_ = kNone;
       operands.push_back(item());
       if (!acceptAny({"inside", "within", "in"})) fail({"'inside'", "'within'"});
+      previousHead_ = kNone;
       operands.push_back(item());
       return node("intersection", std::move(operands));
     }
@@ -238,20 +247,196 @@ class PhraseParser {
       const std::string op = words_[pos_++].text;
       expect("of");
       nlohmann::json operands = nlohmann::json::array();
+      previousHead_ = kNone;
       operands.push_back(item());
       if (op == "difference") {
         expect("and");
+        previousHead_ = head_;
         operands.push_back(item());
         return node(op, std::move(operands));
       }
       if (!joinsList()) fail({"'and'", "','"});
-      do operands.push_back(item());
-      while (joinsList());
+      do {
+        previousHead_ = head_;  // "the union of a cube and a sphere to its right": its = the cube
+        operands.push_back(item());
+      } while (joinsList());
       return node(op, std::move(operands));
     }
     pos_ = save;
-    return leaf();
+    return relatedLeaf();
   }
+
+  // noun_phrase [ relation ]: "a sphere on top of a cylinder" is the union of both, the sphere
+  // placed against the cylinder; "a sphere to its right" is the sphere placed against the operand
+  // before it (previousHead_). head_ is the subject leaf either way.
+  nlohmann::json relatedLeaf() {
+    nlohmann::json subject = leaf();
+    const size_t subjectLeaf = leaves_.size() - 1;
+    const size_t before = previousHead_;
+    std::optional<RelationWords> words = relationWords();
+    head_ = subjectLeaf;
+    if (!words) return subject;
+    CsgRelation relation{kNone, words->direction, words->distance, text_.substr(words->from, words->end - words->from)};
+    if (!words->object) {
+      if (before == kNone)
+        throw Error(errc::kInvalidParameter,
+                    "'" + relation.text + "' at character " + std::to_string(words->from) +
+                        " places this part against the part before it, but none comes before it in its list; "
+                        "name the other part, as in 'a sphere to the right of a cube'",
+                    "text");
+      relation.to = before;
+      leaves_[subjectLeaf].relation = std::move(relation);
+      head_ = subjectLeaf;
+      return subject;
+    }
+    previousHead_ = kNone;
+    const size_t objectAt = offset();
+    nlohmann::json object = item();  // may be placed itself: "a cone on top of a cube on top of a box"
+    if (head_ == kNone)
+      throw Error(errc::kInvalidParameter,
+                  "'" + relation.text + "' at character " + std::to_string(words->from) +
+                      " places a part against one other part, but the words at character " + std::to_string(objectAt) +
+                      " make an operation of several; name one part, as in 'a sphere on top of a cylinder'",
+                  "text");
+    relation.to = head_;
+    leaves_[subjectLeaf].relation = std::move(relation);
+    nlohmann::json operands = nlohmann::json::array();
+    operands.push_back(std::move(subject));
+    operands.push_back(std::move(object));
+    nlohmann::json out = node("union", std::move(operands));
+    head_ = subjectLeaf;
+    return out;
+  }
+
+  struct RelationWords {
+    Direction direction;
+    std::optional<FuzzyNumber> distance;
+    bool object = false;  // an object follows ("of a cube"); false: the operand before
+    size_t from = 0, end = 0;  // characters of the words in text_
+  };
+
+  // relation (header grammar) after a noun phrase, or nothing (pos_ unchanged) when the words
+  // there are no relation.
+  std::optional<RelationWords> relationWords() {
+    const size_t save = pos_;
+    if (pos_ >= words_.size()) return std::nullopt;
+    RelationWords r;
+    r.from = words_[pos_].offset;
+    r.distance = distanceWords();
+    const Direction* d = nullptr;
+    bool needsOf = false, mayHaveObject = false;
+    std::string word;
+    if (atAny({"to", "on", "at"}) && pos_ + 1 < words_.size() &&
+        (words_[pos_ + 1].text == "its" || words_[pos_ + 1].text == "the") &&
+        (d = directionWordAt(pos_ + 2, &word)) != nullptr) {
+      // "to its right", "on the left side", "to the top right of ..."
+      const bool its = words_[pos_ + 1].text == "its";
+      pos_ += 2 + countWords(word);
+      accept("side");
+      if (!its && accept("of")) r.object = objectFollows();
+    } else if (at("on") && pos_ + 1 < words_.size() && words_[pos_ + 1].text == "top" &&
+               !(pos_ + 2 < words_.size() && words_[pos_ + 2].text == "of")) {
+      d = v_.direction("top");  // "with a sphere on top"
+      pos_ += 2;
+    } else if ((d = directionWordAt(pos_, &word)) != nullptr) {
+      pos_ += countWords(word);
+      needsOf = d->word == word;   // a direction word: "right of a cube"
+      mayHaveObject = !needsOf;    // a phrase: "above a cube", "on top of it", "above" (the one before)
+      if (needsOf) {
+        if (!accept("of")) {
+          pos_ = save;
+          return std::nullopt;
+        }
+        r.object = objectFollows();
+      } else if (mayHaveObject) {
+        r.object = objectFollows();
+      }
+    }
+    if (!d) {
+      pos_ = save;
+      return std::nullopt;
+    }
+    r.direction = *d;
+    r.end = words_[pos_ - 1].offset + words_[pos_ - 1].text.size();
+    return r;
+  }
+
+  // After a relation's "of" or phrase: "it" (consumed: the operand before) or the start of an
+  // item (true), else nothing (false: the operand before, "with a sphere above").
+  bool objectFollows() {
+    if (accept("it")) return false;
+    if (pos_ >= words_.size()) return false;
+    static const std::vector<std::string> kEnds = {",",        ")",      "and",    "plus",     "minus",  "without",
+                                                   "with",     "united", "combined", "joined", "together",
+                                                   "along",    "intersected", "drilled", "cut", "removed"};
+    return !contains(kEnds, words_[pos_].text);
+  }
+
+  // distance = number_phrase [ "unit" | "units" ] | DISTANCE_WORD; nothing (pos_ unchanged) when
+  // the words are none.
+  std::optional<FuzzyNumber> distanceWords() {
+    if (pos_ >= words_.size()) return std::nullopt;
+    if (const FuzzyNumber* word = v_.distance(words_[pos_].text)) {
+      ++pos_;
+      return *word;
+    }
+    const size_t save = pos_;
+    size_t n = 0;
+    if (at("between") && isNumberAt(pos_ + 1) && pos_ + 3 < words_.size() && words_[pos_ + 2].text == "and" &&
+        isNumberAt(pos_ + 3))
+      n = 4;
+    else if (atAny({"exactly", "about", "around", "approximately", "roughly"}) && isNumberAt(pos_ + 1))
+      n = 2;
+    else if (isNumberAt(pos_))
+      n = 1;
+    if (n == 0) return std::nullopt;
+    std::string phrase;
+    for (size_t i = 0; i < n; ++i) phrase += (i ? " " : "") + words_[pos_ + i].text;
+    pos_ += n;
+    try {
+      FuzzyNumber d = parseNumberPhrase(phrase);
+      if (!accept("units")) accept("unit");
+      return d;
+    } catch (const Error& e) {
+      pos_ = save;
+      throw Error(errc::kInvalidParameter,
+                  "bad distance '" + phrase + "' at character " + std::to_string(words_[save].offset) + ": " + e.what(),
+                  "text");
+    }
+  }
+
+  bool isNumberAt(size_t i) const {
+    if (i >= words_.size()) return false;
+    const std::string& w = words_[i].text;
+    char* end = nullptr;
+    std::strtod(w.c_str(), &end);
+    return !w.empty() && end == w.c_str() + w.size() && (std::isdigit(static_cast<unsigned char>(w[0])) || w[0] == '-' ||
+                                                         w[0] == '.');
+  }
+
+  // The longest direction word or phrase of the vocabulary at word i ("top right", "in front of").
+  const Direction* directionWordAt(size_t i, std::string* which) const {
+    const Direction* best = nullptr;
+    size_t bestLength = 0;
+    for (const std::string& phrase : v_.directionWords()) {
+      const size_t n = countWords(phrase);
+      if (n <= bestLength || i + n > words_.size()) continue;
+      std::string joined;
+      for (size_t k = 0; k < n; ++k) joined += (k ? " " : "") + words_[i + k].text;
+      if (joined == phrase) {
+        best = v_.direction(phrase);
+        bestLength = n;
+        *which = phrase;
+      }
+    }
+    return best;
+  }
+
+  static size_t countWords(const std::string& phrase) {
+    return size_t(std::count(phrase.begin(), phrase.end(), ' ')) + 1;
+  }
+
+  bool atAny(const std::vector<std::string>& ws) const { return pos_ < words_.size() && contains(ws, words_[pos_].text); }
 
   nlohmann::json leaf() {
     if (pos_ >= words_.size()) fail({"a noun phrase such as 'a slightly bent cylinder'", "'('", "'the union of'"});
@@ -337,8 +522,10 @@ class PhraseParser {
     return false;
   }
 
-  // {"op", "children"} taking the operands by move (a braced json list would copy them).
-  static nlohmann::json node(const std::string& op, nlohmann::json operands) {
+  // {"op", "children"} taking the operands by move (a braced json list would copy them). An
+  // operation has no head leaf (head_ = kNone) unless its caller says so.
+  nlohmann::json node(const std::string& op, nlohmann::json operands) {
+    head_ = kNone;
     nlohmann::json out = nlohmann::json::object();
     out["op"] = op;
     out["children"] = std::move(operands);
@@ -374,6 +561,7 @@ class PhraseParser {
   }
 
   static constexpr int kMaxNesting = 64;
+  static constexpr size_t kNone = std::string::npos;
   const std::string& text_;
   std::vector<Word> words_;
   std::vector<CsgQueryLeaf>& leaves_;
@@ -383,6 +571,8 @@ class PhraseParser {
   bool joinedByWith_ = false;   // the last joinsList() was a "with"
   size_t pos_ = 0;
   int depth_ = 0;
+  size_t head_ = kNone;          // the leaf the last item is about (a leaf, or the subject of a relation)
+  size_t previousHead_ = kNone;  // the head of the operand before the current one in its list
 };
 
 // The formula form: query/document/csg_text.h parses it; names that are no stored object are descriptions,
@@ -430,14 +620,17 @@ size_t placeholderIndex(const std::string& name) {
 
 // The graph of `doc` and the leaves: placeholders become `descriptions[k]`, parts stay parts.
 CsgQuery graphOf(const std::string& form, const nlohmann::json& doc, const std::string& path, size_t maxNodes,
-                 const ReferenceResolver& resolver, const std::vector<CsgQueryLeaf>& descriptions) {
+                 const ReferenceResolver& resolver, const std::vector<CsgQueryLeaf>& descriptions,
+                 std::vector<size_t>* leafOfDescription = nullptr) {
   ShapeGraph g = shapeGraph(doc, path, maxNodes, resolver);
   CsgQuery q;
   q.form = form;
   q.graph = std::move(g.graph);
+  std::vector<size_t> leafOf(descriptions.size(), std::string::npos);  // description -> graph leaf
   for (CsgGraphLeaf& leaf : g.leaves) {
     const size_t k = leaf.partId == 0 ? placeholderIndex(leaf.name) : std::string::npos;
     if (k != std::string::npos && k < descriptions.size()) {
+      leafOf[k] = q.leaves.size();
       q.leaves.push_back(descriptions[k]);
       continue;
     }
@@ -447,19 +640,42 @@ CsgQuery graphOf(const std::string& form, const nlohmann::json& doc, const std::
     part.partId = leaf.partId;
     q.leaves.push_back(std::move(part));
   }
+  // Relations name descriptions; the graph numbers its leaves in its own order.
+  for (CsgQueryLeaf& leaf : q.leaves)
+    if (leaf.relation) leaf.relation->to = leafOf.at(leaf.relation->to);
+  if (leafOfDescription) *leafOfDescription = std::move(leafOf);
   return q;
 }
 
-// The query tree as "parsed" shows it: placeholders replaced by the description.
-nlohmann::json shownTree(nlohmann::json tree, const std::vector<CsgQueryLeaf>& descriptions) {
+// The graph path of each leaf ("tree.children[1]"), by CsgGraphNode::leaf.
+std::vector<std::string> leafPaths(const CsgGraph& graph) {
+  std::vector<std::string> out(size_t(graph.leafCount));
+  for (const CsgGraphNode& n : graph.nodes)
+    if (n.op == CsgGraphOp::Leaf && out[size_t(n.leaf)].empty()) out[size_t(n.leaf)] = n.path;
+  return out;
+}
+
+// The query tree as "parsed" shows it: placeholders replaced by the description, with its
+// relation ("to": the graph path of the other leaf).
+nlohmann::json shownTree(nlohmann::json tree, const CsgQuery& query, const std::vector<size_t>& leafOf,
+                         const std::vector<std::string>& paths) {
   if (tree.contains("children")) {
-    for (nlohmann::json& c : tree["children"]) c = shownTree(std::move(c), descriptions);
+    for (nlohmann::json& c : tree["children"]) c = shownTree(std::move(c), query, leafOf, paths);
     return tree;
   }
   if (tree.contains("part") && tree["part"].is_object() && tree["part"].contains("name")) {
     const size_t k = placeholderIndex(tree["part"]["name"].get<std::string>());
-    if (k < descriptions.size())
-      return {{"text", descriptions[k].text}, {"condition", toJson(*descriptions[k].condition)["condition"]}};
+    if (k < leafOf.size()) {
+      const CsgQueryLeaf& leaf = query.leaves.at(leafOf[k]);
+      nlohmann::json out = {{"text", leaf.text}, {"condition", toJson(*leaf.condition)["condition"]}};
+      if (leaf.relation) {
+        out["relation"] = {{"text", leaf.relation->text},
+                           {"direction", leaf.relation->direction.word},
+                           {"to", paths.at(leaf.relation->to)}};
+        if (leaf.relation->distance) out["relation"]["distance"] = toJson(*leaf.relation->distance);
+      }
+      return out;
+    }
   }
   return tree;
 }
@@ -476,8 +692,9 @@ CsgQuery parseCsgQuery(const std::string& text, const Vocabulary& vocabulary, co
   nlohmann::json tree =
       formula ? formulaTree(text, vocabulary, remembered, descriptions) : PhraseParser(text, vocabulary, descriptions).parse();
   const nlohmann::json doc = {{"kind", "shape"}, {"name", "query"}, {"tree", tree}};
-  CsgQuery q = graphOf(formula ? "formula" : "phrase", doc, "", maxNodes, remembered, descriptions);
-  q.tree = shownTree(std::move(tree), descriptions);
+  std::vector<size_t> leafOf;
+  CsgQuery q = graphOf(formula ? "formula" : "phrase", doc, "", maxNodes, remembered, descriptions, &leafOf);
+  q.tree = shownTree(std::move(tree), q, leafOf, leafPaths(q.graph));
   return q;
 }
 

@@ -20,7 +20,16 @@
 //                | [ article ] , "part" , "of" , item , ( "inside" | "within" | "in" ) , item   (* intersection *)
 //                | [ article ] , ( "union" | "intersection" ) , "of" , item , { ( "," [ "and" ] | "and" ) , item }
 //                | [ article ] , "difference" , "of" , item , "and" , item
-//                | noun_phrase                                           (* query/linguistic/linguistic_query.h *)
+//                | noun_phrase , [ relation ]                            (* query/linguistic/linguistic_query.h *)
+//      relation  = [ distance ] , ( ( "to" | "on" | "at" ) , "the" , DIRECTION , [ "side" ] , "of" , object
+//                                 | DIRECTION , "of" , object | PHRASE , object     (PHRASE: "above", "on top of", ...)
+//                                 | ( "to" | "on" | "at" ) , ( "its" | "the" ) , DIRECTION , [ "side" ]
+//                                 | "on" , "top" | PHRASE )      (* no object: the operand before this one *)
+//      distance  = number_phrase , [ "unit" | "units" ] | DISTANCE_WORD    ("about 2 units", "close")
+//      object    = "it" (* the operand before *) | item (* its head leaf: "a cube" of "a cube on top of a box" *)
+//    "Y on top of X" is the union of Y and X with Y placed against X; "X and Y to its right" places Y
+//    against X, the operand before it in the same list (an operation has no single part to point at:
+//    an error then names the relation's words).
 //    A noun phrase ends after its noun and relative clause (parseNounPhraseAt), so "and" joins
 //    operands unless a condition follows it ("a bent and twisted rod" is one leaf). "union of"
 //    lists take every following item; "difference of" takes exactly two (use "minus" for more).
@@ -51,11 +60,23 @@
 
 namespace fsdb {
 
+// A spatial relation of a description leaf (Zhang, Pham & Chen, §2.2): "a sphere on top of a
+// cylinder", "a cube and a sphere about 2 units to its right". The leaf's centre lies in
+// `direction` from the centre of leaf `to`, at `distance` (none: any distance); scored by
+// query/structural/csg_relations.h.
+struct CsgRelation {
+  size_t to = 0;                         // the leaf it is placed against (index into CsgQuery::leaves)
+  Direction direction;                   // the direction's sets, from the parser's vocabulary
+  std::optional<FuzzyNumber> distance;   // between the two centres
+  std::string text;                      // the words: "about 2 units to its right"
+};
+
 struct CsgQueryLeaf {
   std::string text;                           // a description's words, or the part's name
   std::optional<LinguisticQuery> condition;   // set: a description
   FuzzyPart part;                             // otherwise: the part (its leaf transform applied)
   int64_t partId = 0;                         // a stored part's id, 0 for inline parts and descriptions
+  std::optional<CsgRelation> relation;        // phrase form only: where this leaf lies against another
 };
 
 struct CsgQuery {

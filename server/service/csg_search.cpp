@@ -8,6 +8,7 @@
 
 #include "geometry/core/error.h"
 #include "query/structural/csg_bound.h"
+#include "query/structural/csg_relations.h"
 #include "query/json/json_body.h"
 #include "query/linguistic/vocabulary.h"
 #include "server/service/documents.h"
@@ -97,6 +98,7 @@ class Search {
     hit.match = largestCommonSubgraph(query_.graph, stored.shape.graph, leaf,
                                       {options_.leafThreshold, options_.timeBudgetMs},
                                       [this] { checkTime(); });  // max_query_ms holds inside one long match too
+    hit.relations = scoreRelations(query_, stored.shape, leaf, hit.match, transform);  // may improve the mapping
     hit.score = scoreCommonSubgraph(query_.graph, stored.shape.graph, hit.match, transform, options_.weights);
     if (!(hit.score.score > 0) || hit.score.score < options_.threshold) return;
     hit.stored = handle;
@@ -164,6 +166,29 @@ nlohmann::json mappingJson(const CsgQuery& query, const CsgHit& hit) {
   return out;
 }
 
+// Each relation of the query on this hit: its words, the stored leaves it was checked on, its membership.
+nlohmann::json relationsJson(const CsgQuery& query, const CsgHit& hit) {
+  std::vector<std::string> storedPaths(size_t(hit.stored->shape.graph.leafCount)), queryPaths(query.leaves.size());
+  for (const CsgGraphNode& n : hit.stored->shape.graph.nodes)
+    if (n.op == CsgGraphOp::Leaf && storedPaths[size_t(n.leaf)].empty()) storedPaths[size_t(n.leaf)] = n.path;
+  for (const CsgGraphNode& n : query.graph.nodes)
+    if (n.op == CsgGraphOp::Leaf && queryPaths[size_t(n.leaf)].empty()) queryPaths[size_t(n.leaf)] = n.path;
+  const auto storedPath = [&](int leaf) { return leaf < 0 ? nlohmann::json(nullptr) : nlohmann::json(storedPaths[size_t(leaf)]); };
+  nlohmann::json out = nlohmann::json::array();
+  for (const RelationScore& r : hit.relations) {
+    const CsgQueryLeaf& leaf = query.leaves[size_t(r.queryLeaf)];
+    out.push_back({{"text", leaf.relation->text},
+                   {"subject", leaf.text},
+                   {"object", query.leaves[leaf.relation->to].text},
+                   {"query_path", queryPaths[size_t(r.queryLeaf)]},
+                   {"to", queryPaths[leaf.relation->to]},
+                   {"stored_path", storedPath(r.storedLeaf)},
+                   {"stored_to", storedPath(r.storedReference)},
+                   {"score", r.score}});
+  }
+  return out;
+}
+
 CsgWeights parseWeights(const nlohmann::json& request) {
   CsgWeights w;
   if (!request.contains("weights")) return w;
@@ -213,7 +238,8 @@ nlohmann::json csgQueryResponse(const Store& store, const nlohmann::json& reques
           : csgQueryFromDocument(request["tree"], limits.maxNodes, resolver);
   const CsgSearchResult found = searchCsg(store, query, options, cache);
   nlohmann::json results = nlohmann::json::array();
-  for (const CsgHit& hit : found.hits)
+  const bool relations = hasRelations(query);
+  for (const CsgHit& hit : found.hits) {
     results.push_back({{"id", hit.id},
                        {"name", hit.stored->name},
                        {"score", hit.score.score},
@@ -222,6 +248,8 @@ nlohmann::json csgQueryResponse(const Store& store, const nlohmann::json& reques
                        {"structure", hit.score.structure},
                        {"complete", hit.match.complete},
                        {"mapping", mappingJson(query, hit)}});
+    if (relations) results.back()["relations"] = relationsJson(query, hit);
+  }
   return {{"parsed", toJson(query)},  {"results", results},      {"candidates", found.candidates},
           {"bounded", found.bounded}, {"matched", found.matched}, {"prune", options.prune},
           {"millis", millisSince(start)}};

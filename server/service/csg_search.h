@@ -9,7 +9,9 @@
 //   (query/structural/common_subgraph.h) between the query graph and the shape's graph (server/service/stored_graphs.h),
 //   with leaf similarity: a description leaf of the query scores scoreDescriptors of its condition on
 //   the stored leaf's descriptor values; a part leaf partSimilarity; transform similarity:
-//   transformSimilarity for part leaves and 1 for descriptions (they say nothing of placement).
+//   transformSimilarity for part leaves, 1 for descriptions (they say nothing of placement) and, for a
+//   description with a spatial relation ("a sphere on top of a cylinder"), the relation's
+//   membership on the match (query/structural/csg_relations.h; the bounds read it as 1).
 // - Results have score > 0 and >= threshold, descending, ties by ascending id, at most `limit`.
 // - Pruning (prune = true, the default) is exact: candidates go best signature bound first
 //   (query/structural/csg_bound.h: node counts only), and the scan stops at the first whose bound cannot enter
@@ -33,6 +35,7 @@
 #include "db/store.h"
 #include "query/structural/common_subgraph.h"
 #include "query/structural/csg_query_text.h"
+#include "query/structural/csg_relations.h"
 #include "query/structural/csg_similarity.h"
 #include "server/service/stored_graphs.h"
 
@@ -54,6 +57,7 @@ struct CsgHit {
   int64_t id = 0;
   CsgScore score;
   CommonSubgraph match;
+  std::vector<RelationScore> relations;  // the query's spatial relations on this match (csg_relations.h)
   std::shared_ptr<const StoredGraph> stored;
 };
 
@@ -76,7 +80,9 @@ struct CsgRequestLimits {
 // The whole request {"text" | "tree", "weights":{"components","transforms","structure"}, "limit",
 // "threshold", "leaf_threshold", "time_budget_ms", "prune"} -> {"parsed", "results":[{"id","name",
 // "score","components","transforms","structure","complete","mapping":[{"query_node","query_path",
-// "stored_node","stored_path","op","similarity"}]}], "candidates","bounded","matched","prune","millis"}.
+// "stored_node","stored_path","op","similarity"}], "relations" (texts with relations only):
+// [{"text" (the relation's words), "subject", "object" (the two leaves' words), "query_path", "to",
+// "stored_path", "stored_to" (null: unmatched), "score"}]}], "candidates","bounded","matched","prune","millis"}.
 // Validation names the field (invalid_document / invalid_parameter); texts are parsed with the
 // active vocabulary and names resolved against the store. Shared by POST /query/csg and `fsdb query --db`.
 nlohmann::json csgQueryResponse(const Store& store, const nlohmann::json& request, const CsgRequestLimits& limits,

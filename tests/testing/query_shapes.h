@@ -2,6 +2,7 @@
 // How the query tests compare parses: a linguistic query's meaning (its JSON without the words
 // each condition covers, so two texts that mean the same query compare equal) and a CSG query's
 // graph as a string, op(children...) with leaves by their text, children in graph order.
+#include <cstdio>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -22,9 +23,25 @@ inline nlohmann::json queryMeaning(const LinguisticQuery& query) {
   return j;
 }
 
+// A leaf with a relation shows it: 'a sphere'<top 'a cylinder'>, 'a sphere'<right 'a cube' ~2> (the
+// distance's core midpoint).
 inline std::string csgShape(const CsgQuery& q, int node) {
   const CsgGraphNode& n = q.graph.nodes[node];
-  if (n.op == CsgGraphOp::Leaf) return "'" + q.leaves[n.leaf].text + "'";
+  if (n.op == CsgGraphOp::Leaf) {
+    const CsgQueryLeaf& leaf = q.leaves[n.leaf];
+    std::string out = "'" + leaf.text + "'";
+    if (leaf.relation) {
+      out += "<" + leaf.relation->direction.word + " '" + q.leaves[leaf.relation->to].text + "'";
+      if (leaf.relation->distance) {
+        const Interval core = leaf.relation->distance->core();
+        char buf[32];
+        std::snprintf(buf, sizeof buf, " ~%g", (core.lo + core.hi) / 2);
+        out += buf;
+      }
+      out += ">";
+    }
+    return out;
+  }
   std::string out = std::string(csgGraphOpName(n.op)) + "(";
   for (size_t i = 0; i < n.children.size(); ++i) out += (i ? ", " : "") + csgShape(q, n.children[i]);
   return out + ")";

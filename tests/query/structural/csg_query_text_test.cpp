@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 
 
@@ -223,6 +224,66 @@ TEST(CsgQueryText, RoutingOfQueryTexts) {
   EXPECT_FALSE(isCsgQueryText("find a frobnicated shape", v()));  // the linguistic error is the better one
 }
 
+// Spatial relations (Zhang, Pham & Chen, §2.2): "Y on top of X" is the union of both with Y placed
+// against X; "X and Y to its right" places Y against the operand before it.
+TEST(CsgQueryText, SpatialRelations) {
+  const std::string onTop = "union('a sphere'<top 'a cylinder'>, 'a cylinder')";
+  for (const char* text : {"a sphere on top of a cylinder", "a sphere above a cylinder", "find a sphere over a cylinder",
+                           "a cylinder with a sphere on top", "a cylinder with a sphere on top of it",
+                           "a cylinder and a sphere above it", "a cylinder and a sphere on its top"}) {
+    const std::string got = shape(parse(text));
+    // The union is unordered: both orders of the operands are the same graph.
+    EXPECT_TRUE(got == onTop || got == "union('a cylinder', 'a sphere'<top 'a cylinder'>)") << text << ": " << got;
+  }
+  EXPECT_EQ(shape(parse("the union of a cube and a sphere to its right")), "union('a cube', 'a sphere'<right 'a cube'>)");
+  EXPECT_EQ(shape(parse("a cube and a sphere about 2 units to its right")),
+            "union('a cube', 'a sphere'<right 'a cube' ~2>)");
+  EXPECT_EQ(shape(parse("a sphere about 2 units to the right of a cube")),
+            "union('a sphere'<right 'a cube' ~2>, 'a cube')");
+  EXPECT_EQ(shape(parse("a sphere right of a cube")), "union('a sphere'<right 'a cube'>, 'a cube')");
+  EXPECT_EQ(shape(parse("a sphere to the left of a cube")), "union('a sphere'<left 'a cube'>, 'a cube')");
+  EXPECT_EQ(shape(parse("a sphere in front of a cube")), "union('a sphere'<front 'a cube'>, 'a cube')");
+  EXPECT_EQ(shape(parse("a sphere behind a cube")), "union('a sphere'<back 'a cube'>, 'a cube')");
+  EXPECT_EQ(shape(parse("a sphere below a cube")), "union('a sphere'<bottom 'a cube'>, 'a cube')");
+  EXPECT_EQ(shape(parse("a sphere 3 units below a cube")), "union('a sphere'<bottom 'a cube' ~3>, 'a cube')");
+  EXPECT_EQ(shape(parse("a sphere close to the top right of a cube")),
+            "union('a sphere'<top right 'a cube' ~0.5>, 'a cube')");
+  EXPECT_EQ(shape(parse("a cube with a sphere on the left side")), "union('a cube', 'a sphere'<left 'a cube'>)");
+  // A chain: each object is the head of what follows it.
+  EXPECT_EQ(shape(parse("a cone on top of a cylinder on top of a box")),
+            "union('a cone'<top 'a cylinder'>, 'a cylinder'<top 'a box'>, 'a box')");
+  // Relations inside operations, and an operation after a relation.
+  EXPECT_EQ(shape(parse("a sphere on top of a cube minus a cylinder")),
+            "difference(union('a sphere'<top 'a cube'>, 'a cube'), 'a cylinder')");
+  EXPECT_EQ(shape(parse("the union of a box, a sphere above it and a cone to its left")),
+            "union('a box', 'a sphere'<top 'a box'>, 'a cone'<left 'a sphere'>)");
+  // Direction words that are no relation stay what they were.
+  EXPECT_EQ(shape(parse("a cube and a sphere")), "union('a cube', 'a sphere')");
+}
+
+TEST(CsgQueryText, SpatialRelationsInTheParsedTree) {
+  const CsgQuery q = parse("a cube and a sphere about 2 units to its right");
+  const nlohmann::json parsed = toJson(q);
+  const nlohmann::json& leaf = parsed["tree"]["children"][1];
+  EXPECT_EQ(leaf["text"], "a sphere");
+  EXPECT_EQ(leaf["relation"]["text"], "about 2 units to its right");
+  EXPECT_EQ(leaf["relation"]["direction"], "right");
+  EXPECT_EQ(leaf["relation"]["to"], "tree.children[0]");
+  EXPECT_EQ(leaf["relation"]["distance"], nlohmann::json({{"tri", {1.8, 2, 2.2}}}));
+  EXPECT_FALSE(parsed["tree"]["children"][0].contains("relation"));
+}
+
+TEST(CsgQueryText, SpatialRelationErrorsNameTheWords) {
+  const std::string first = errorOf("a sphere to its right");
+  EXPECT_NE(first.find("'to its right' at character 9"), std::string::npos) << first;
+  EXPECT_NE(first.find("none comes before it"), std::string::npos) << first;
+  const std::string composite = errorOf("a sphere on top of the union of a cube and a box");
+  EXPECT_NE(composite.find("'on top of' at character 9"), std::string::npos) << composite;
+  EXPECT_NE(composite.find("one part"), std::string::npos) << composite;
+  const std::string afterOperation = errorOf("(a cube minus a box) and a sphere to its right");
+  EXPECT_NE(afterOperation.find("none comes before it"), std::string::npos) << afterOperation;
+}
+
 TEST(CsgQueryText, ErrorsGivePositionsAndExpectedWords) {
   EXPECT_NE(errorOf("the union of a cube").find("the query ends too early"), std::string::npos);
   EXPECT_NE(errorOf("the union of a cube").find("'and'"), std::string::npos);
@@ -289,12 +350,19 @@ TEST(CsgQueryText, TreeDocuments) {
   }
 }
 
-// Every example of schema/csg_query_grammar.ebnf parses.
+// Every example of schema/csg_query_grammar.ebnf parses, and `fsdb query` and POST /query send it
+// to the structural search, except a relation between two noun phrases: that is a linguistic
+// query as well (schema/query_grammar.ebnf), and the one search box reads it as one.
 TEST(CsgQueryText, GrammarExamplesParse) {
+  const std::vector<std::string> linguistic = {"a sphere on top of a cylinder",
+                                               "a sphere about 3 units to the right of a cube",
+                                               "a sphere close to the top right of a cube"};
   int examples = 0;
   for (const std::string& example : testing::grammarExamples("csg_query_grammar.ebnf")) {
     EXPECT_NO_THROW(parse(example)) << example;
-    EXPECT_TRUE(isCsgQueryText(example, v())) << example;
+    const bool either = std::find(linguistic.begin(), linguistic.end(), example) != linguistic.end();
+    EXPECT_EQ(isCsgQueryText(example, v()), !either) << example;
+    EXPECT_EQ(isLinguisticQuery(example, v()), either) << example;
     ++examples;
   }
   EXPECT_GE(examples, 15);

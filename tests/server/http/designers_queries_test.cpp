@@ -5,6 +5,7 @@
 // with the same scores, in the same order). POST /query runs the search the text calls for.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <tuple>
 #include <utility>
@@ -82,6 +83,59 @@ TEST(DesignersQueries, CsgPhrasingsRankAsTheGrammarsOwn) {
   ASSERT_FALSE(r.json["results"].empty());
   EXPECT_EQ(r.json["results"][0]["name"], "bent-rod-and-pyramid") << r.body;
   EXPECT_EQ(r.json["parsed"]["tree"]["op"], "union");
+}
+
+// Spatial relations (Zhang, Pham & Chen, §2.2), verbatim: the demo shape built for each sentence
+// ranks first, and the same parts placed otherwise rank below it on the relation alone.
+TEST(DesignersQueries, SpatialRelationsRankTheDescribedPlacementFirst) {
+  ServerProcess server({"--demo", kDemo});
+  const auto names = [&](const std::string& route, const std::string& text) {
+    auto r = server.post(route, json{{"text", text}, {"limit", 50}});
+    EXPECT_EQ(r.status, 200) << text << " -> " << r.body;
+    std::vector<std::string> out;
+    for (const json& result : r.json["results"]) out.push_back(result["name"]);
+    return std::make_pair(out, r.json);
+  };
+  const auto rankOf = [](const std::vector<std::string>& list, const std::string& name) {
+    return std::find(list.begin(), list.end(), name) - list.begin();
+  };
+  {
+    const auto [csg, body] = names("/query/csg", "a sphere on top of a cylinder");
+    ASSERT_FALSE(csg.empty());
+    EXPECT_EQ(csg[0], "sphere-on-cylinder") << body.dump();
+    EXPECT_LT(rankOf(csg, "sphere-on-cylinder"), rankOf(csg, "sphere-beside-cylinder")) << body.dump();
+    // Same parts, same structure: the transform term alone tells them apart.
+    const json& top = body["results"][0];
+    const json& beside = body["results"][rankOf(csg, "sphere-beside-cylinder")];
+    EXPECT_DOUBLE_EQ(top["components"].get<double>(), beside["components"].get<double>());
+    EXPECT_GT(top["transforms"].get<double>(), beside["transforms"].get<double>());
+    EXPECT_EQ(top["relations"][0]["text"], "on top of");
+    EXPECT_EQ(top["relations"][0]["subject"], "a sphere");
+    EXPECT_EQ(top["relations"][0]["object"], "a cylinder");
+    EXPECT_DOUBLE_EQ(top["relations"][0]["score"].get<double>(), 1.0);
+    EXPECT_EQ(body["parsed"]["tree"]["children"][0]["relation"]["direction"], "top") << body["parsed"].dump();
+  }
+  // The one search box reads it as a linguistic relation (any two components of a shape).
+  const Answer box = ask(server, "/query", "a sphere on top of a cylinder");
+  EXPECT_EQ(box.status, 200) << box.body;
+  EXPECT_EQ(box.search, "linguistic");
+  ASSERT_FALSE(box.ranking.empty());
+  EXPECT_EQ(names("/query/linguistic", "a sphere on top of a cylinder").first.at(0), "sphere-on-cylinder");
+  for (const char* text : {"the union of a cube and a sphere to its right",
+                           "a cube and a sphere about 2.5 units to its right", "a cube with a sphere on its right side",
+                           "find a sphere to the right of a cube"}) {
+    const auto [csg, body] = names("/query/csg", text);
+    ASSERT_FALSE(csg.empty()) << text;
+    EXPECT_EQ(csg[0], "cube-and-sphere-to-its-right") << text << ": " << body.dump();
+    EXPECT_EQ(ask(server, "/query", text).status, 200) << text;
+  }
+  EXPECT_EQ(ask(server, "/query", "the union of a cube and a sphere to its right").search, "csg");
+  EXPECT_EQ(names("/query/csg", "a box with a sphere about 3 units above it").first.at(0), "ball-on-box");
+  // The relation names what it could not place.
+  auto bad = server.post("/query/csg", json{{"text", "a sphere to its right"}});
+  EXPECT_EQ(bad.status, 422) << bad.body;
+  EXPECT_NE(bad.json["error"]["message"].get<std::string>().find("'to its right' at character 9"), std::string::npos)
+      << bad.body;
 }
 
 // POST /query: one search box; the text decides which search runs, and the answer says which.
