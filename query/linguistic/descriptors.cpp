@@ -41,6 +41,8 @@ double degree(int index, const Values& v) {
       return l / (1.0 + l);
     }
     case 8: return elongation(v[kA2], v[kA3]);
+    case 9: return sq(v[kEps2]);   // the traverse section alone (eps2: Zhang, Pham & Chen, §2.1)
+    case 10: return ro(v[kEps2]);
     default: return 0.0;
   }
 }
@@ -57,7 +59,8 @@ const Reads& readsOf(int index) {
       {{kEps1, kEps2}, {1.0, 2.0}},         {{kEps1, kEps2}, {2.0}},
       {{kKv, kA1, kA3}, {0.0}},             {{kKx, kKy}, {0.0}},
       {{kT}, {0.0}},                        {{kScale, kA1, kA2, kA3}, {}},
-      {{kA2, kA3}, {1.0}},
+      {{kA2, kA3}, {1.0}},                  {{kEps2}, {1.0}},
+      {{kEps2}, {1.0, 2.0}},
   };
   return table[index];
 }
@@ -79,9 +82,9 @@ void addIfInside(std::vector<double>* list, const Interval& range, double x) {
 }  // namespace
 
 const std::vector<std::string>& descriptorNames() {
-  static const std::vector<std::string> names = {"squariness", "roundness", "bevelness",
-                                                 "pinchness",  "bendness",  "taperness",
-                                                 "twistness",  "size",      "elongation"};
+  static const std::vector<std::string> names = {
+      "squariness", "roundness", "bevelness",  "pinchness",          "bendness",         "taperness",
+      "twistness",  "size",      "elongation", "section-squariness", "section-roundness"};
   return names;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Shape descriptors (Zhang, Pham & Chen, §5: "squariness, roundness, bevelness, pinchness,
-// bendness, taperness, and twistness, to index shape components"; fsdb adds size and elongation):
+// bendness, taperness, and twistness, to index shape components"; fsdb adds size, elongation and
+// the traverse section's squariness and roundness):
 // each a documented function of a crisp part's parameters giving a degree in [0, 1].
 // schema/vocabulary.json publishes the same definitions for users; this header is the reference.
 //
@@ -22,6 +23,11 @@
 //   elongation = (1 + s1/s2 − s2/s3) / 2 with s1 <= s2 <= s3 the sorted half-lengths A, B, C:
 //                1 for a needle (s3 >> s2 = s1), 0 for a sheet (s1 << s2 = s3), 0.5 when the
 //                three are equal (and for a part both long and flat).
+//   section-squariness = sq(eps2)   section-roundness = ro(eps2)
+//                the traverse (cross) section alone: eps2 shapes the section across the z axis
+//                (Zhang, Pham & Chen, §2.1: "squareness along the west-east direction"), so a
+//                cylinder has a round section and a pyramid a squarish one ("a very sharp shape
+//                with squarish traverse section", §1).
 // Every function is continuous and piecewise monotone in each parameter.
 //
 // A fuzzy part's descriptor values are fuzzy numbers by the extension principle (Zhang, Pham &
@@ -44,8 +50,12 @@ namespace fsdb {
 inline constexpr int kDescriptorLevels = 16;
 
 // The descriptor names in index order: "squariness","roundness","bevelness","pinchness",
-// "bendness","taperness","twistness","size","elongation".
+// "bendness","taperness","twistness","size","elongation","section-squariness","section-roundness".
 const std::vector<std::string>& descriptorNames();
+
+// How many descriptors there were before the two section descriptors (vocabulary files of then
+// document only these).
+inline constexpr size_t kDescriptorsBeforeSections = 9;
 
 // Index of a name in descriptorNames(), or -1.
 int descriptorIndex(const std::string& name);

@@ -216,8 +216,9 @@ class Parser {
 
   // The longest phrase of `phrases` (words separated by one space) starting at the current
   // token: the number of tokens it spans (0: none) and the phrase.
-  size_t matchPhrase(const std::vector<std::string>& phrases, std::string* matched) const {
-    const auto wordAt = [this](size_t k) { return pos_ + k < tokens_.size() ? &tokens_[pos_ + k].text : nullptr; };
+  size_t matchPhrase(const std::vector<std::string>& phrases, std::string* matched, size_t skip = 0) const {
+    const size_t from = pos_ + skip;  // `skip` tokens ahead of the current one
+    const auto wordAt = [this, from](size_t k) { return from + k < tokens_.size() ? &tokens_[from + k].text : nullptr; };
     size_t best = 0;
     for (const std::string& phrase : phrases) {
       const size_t k = query_tokens::phraseLength(wordAt, phrase);
@@ -297,7 +298,7 @@ class Parser {
   }
 
   bool startsCondition() const {
-    if (at("not") || at("(")) return true;
+    if (at("not") || at("(") || startsArticleSection()) return true;
     if (pos_ < tokens_.size() && descriptorIndex(tokens_[pos_].text) >= 0) return true;
     std::string m;
     return matchPhrase(intensityWords_, &m) > 0 || matchPhrase(adjectiveWords_, &m) > 0;
@@ -411,7 +412,19 @@ class Parser {
     return c;
   }
 
-  // negation = "not" negation | "(" condition ")" | [ intensity ] adjective
+  // "a" | "an", [ intensity ], adjective, section word: "a square cross-section", "a very round
+  // traverse section" (the article opens only a section).
+  bool startsArticleSection() const {
+    if (!at("a") && !at("an")) return false;
+    std::string m;
+    size_t k = 1;
+    k += matchPhrase(intensityWords_, &m, k);
+    const size_t n = matchPhrase(adjectiveWords_, &m, k);
+    return n > 0 && matchPhrase(v_.sectionWords(), &m, k + n) > 0;
+  }
+
+  // negation = "not" negation | "(" condition ")" | [ intensity ] adjective [ section ]
+  //          | ( "a" | "an" ) [ intensity ] adjective section
   QueryCondition negation() {
     // Deep nesting ("((((..." or "not not not ...") would exhaust the stack: a limit instead.
     struct Nesting {
@@ -445,6 +458,8 @@ class Parser {
       return descriptorCondition(descriptor, std::move(set), span(start, pos_));
     }
     std::string word;
+    const bool article = startsArticleSection();
+    if (article) ++pos_;
     const FuzzyNumber* intensity = nullptr;
     if (size_t n = matchPhrase(intensityWords_, &word)) {
       intensity = v_.intensity(word);
@@ -456,7 +471,29 @@ class Parser {
     const Adjective& adjective = *v_.adjective(word);
     FuzzyNumber set = intensity ? *intensity : v_.plain();
     if (adjective.lowPole) set = mirroredDegrees(set);
-    return descriptorCondition(adjective.descriptor, set, span(start, pos_));
+    std::string descriptor = adjective.descriptor;
+    // section = a section word of the vocabulary: the adjective describes the traverse section alone.
+    std::string sectionWord;
+    if (const size_t k = matchPhrase(v_.sectionWords(), &sectionWord)) {
+      const std::string* section = v_.sectionDescriptor(descriptor);
+      if (!section)
+        throw Error(errc::kInvalidParameter,
+                    "'" + span(start, pos_ + k) + "' at character " + std::to_string(tokens_[start].offset) +
+                        ": a section is described by its shape (" + joinList(sectionAdjectives()) + "); '" + word +
+                        "' says nothing of it",
+                    "text");
+      descriptor = *section;
+      pos_ += k;
+    }
+    return descriptorCondition(descriptor, set, span(start, pos_));
+  }
+
+  // The adjectives whose descriptor has a section descriptor ("round", "square", ...).
+  std::vector<std::string> sectionAdjectives() const {
+    std::vector<std::string> out;
+    for (const std::string& a : adjectiveWords_)
+      if (v_.sectionDescriptor(v_.adjective(a)->descriptor)) out.push_back(a);
+    return out;
   }
 
   // The start of a distance or a direction phrase after a noun phrase.

@@ -113,11 +113,13 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
   v.document_ = doc;
 
   // descriptors: documentation of the code's functions, in the code's order.
+  // Files written before the section descriptors document the first nine and still load.
   const auto& descriptors = requireArray(requireField(doc, "descriptors", ""), "descriptors");
-  if (descriptors.size() != descriptorNames().size())
+  if (descriptors.size() != descriptorNames().size() && descriptors.size() != kDescriptorsBeforeSections)
     throw Error(errc::kInvalidDocument,
-                "descriptors must document exactly the " + std::to_string(descriptorNames().size()) +
-                    " descriptors of the code, in order",
+                "descriptors must document the " + std::to_string(descriptorNames().size()) +
+                    " descriptors of the code, in order (or the first " +
+                    std::to_string(kDescriptorsBeforeSections) + ", as files before section descriptors did)",
                 "descriptors");
   for (size_t i = 0; i < descriptors.size(); ++i) {
     const std::string p = joinPath("descriptors", i);
@@ -230,6 +232,31 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
       throw Error(errc::kInvalidDocument, "unknown aggregation '" + name + "'; the code knows min, product, mean",
                   joinPath("aggregations", name));
 
+  // Optional: the words of a traverse (cross) section and the section descriptor each adjective's
+  // descriptor has ("with squarish traverse section": squariness -> section-squariness).
+  if (doc.contains("sections")) {
+    const auto& sec = requireObject(doc["sections"], "sections");
+    rejectUnknownKeys(sec, "sections", {"about", "words", "descriptors"});
+    const auto& words = requireArray(requireField(sec, "words", "sections"), "sections.words");
+    for (size_t i = 0; i < words.size(); ++i) {
+      const std::string ip = "sections.words[" + std::to_string(i) + "]";
+      std::string w = requireString(words[i], ip);
+      if (w.empty() || w.front() == ' ' || w.back() == ' ' || w.find("  ") != std::string::npos ||
+          std::any_of(w.begin(), w.end(), [](char c) { return std::isupper(static_cast<unsigned char>(c)); }))
+        throw Error(errc::kInvalidDocument, "'" + w + "' must be lower-case words separated by one blank", ip);
+      v.sectionWords_.push_back(std::move(w));
+    }
+    const auto& map = requireObject(requireField(sec, "descriptors", "sections"), "sections.descriptors");
+    for (auto it = map.begin(); it != map.end(); ++it) {
+      const std::string ip = joinPath("sections.descriptors", it.key());
+      const std::string& to = requireString(it.value(), ip);
+      if (descriptorIndex(it.key()) < 0)
+        throw Error(errc::kInvalidDocument, "unknown descriptor '" + it.key() + "'", ip);
+      if (descriptorIndex(to) < 0) throw Error(errc::kInvalidDocument, "unknown descriptor '" + to + "'", ip);
+      v.sectionDescriptors_[it.key()] = to;
+    }
+  }
+
   // Optional: vocabulary files written before requests were data still load.
   if (doc.contains("requests")) {
     const auto& r = requireObject(doc["requests"], "requests");
@@ -267,7 +294,7 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
   const std::vector<std::string> fillerWords(v.fillers_.begin(), v.fillers_.end());
   const std::initializer_list<const std::vector<std::string>*> lists = {
       &v.intensityWords_, &v.adjectiveWords_, &v.nounWords_,    &v.directionWords_,
-      &v.distanceWords_,  &v.requestPhrases_, &fillerWords};
+      &v.distanceWords_,  &v.requestPhrases_, &fillerWords, &v.sectionWords_};
   for (const std::vector<std::string>* list : lists)
     for (const std::string& phrase : *list) {
       size_t i = 0;

@@ -7,7 +7,8 @@
 //
 // The document (schema/vocabulary.json describes each section in words):
 //   descriptors   [{name, function, meaning, create}]: documentation of query/linguistic/descriptors.h; the
-//                 names must be exactly descriptorNames() in order (the functions are code).
+//                 names must be exactly descriptorNames() in order (the functions are code), or its
+//                 first kDescriptorsBeforeSections (files written before the section descriptors).
 //   intensities   {order, plain, create, terms{word: fuzzy set over the degree}, synonyms{word: word}}
 //                 "very bent" is the term `very` over bendness; plain "bent" is `plain` (μ(d) = d);
 //                 `create` is the degree a plain adjective gives a part made from words.
@@ -22,6 +23,8 @@
 //                 (Zhang, Pham & Chen, §2.2).
 //   distances     {words{word: fuzzy number}}; number phrases (query/json/number_phrases.h) too.
 //   aggregations  {name: text}: the documented ways `and` combines scores (min, product, mean).
+//   sections      {words[], descriptors{descriptor: section descriptor}} (optional): "with squarish
+//                 traverse section" is squariness read as section-squariness (query/linguistic/descriptors.h).
 //   requests      {phrases[], fillers[]} (optional): the request that may open a query ("show me",
 //                 "I am looking for"; the longest that matches is skipped) and the words skipped
 //                 wherever they stand ("please").
@@ -105,6 +108,14 @@ class Vocabulary {
   const std::vector<std::string>& requestPhrases() const { return requestPhrases_; }
   bool isFiller(const std::string& word) const { return fillers_.count(word) > 0; }
   // Every single word of all those phrases ("double pyramid" gives "double" and "pyramid").
+  // The words of a traverse section ("traverse section", "cross-section") and the descriptor of
+  // the section an adjective's descriptor turns into after them (nullptr: none; "with squarish
+  // traverse section" reads squariness as section-squariness).
+  const std::vector<std::string>& sectionWords() const { return sectionWords_; }
+  const std::string* sectionDescriptor(const std::string& descriptor) const {
+    auto it = sectionDescriptors_.find(descriptor);
+    return it == sectionDescriptors_.end() ? nullptr : &it->second;
+  }
   bool knowsWord(const std::string& word) const { return words_.count(word) > 0; }
   const std::set<std::string>& words() const { return words_; }
 
@@ -122,6 +133,8 @@ class Vocabulary {
   std::vector<std::string> aggregations_;
   std::vector<std::string> requestPhrases_;
   std::set<std::string> fillers_;
+  std::vector<std::string> sectionWords_;
+  std::map<std::string, std::string> sectionDescriptors_;
   std::vector<std::string> intensityWords_, adjectiveWords_, nounWords_, directionWords_, distanceWords_;
   std::set<std::string> words_;
 };

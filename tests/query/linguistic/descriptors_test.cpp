@@ -25,7 +25,9 @@ double degreeOf(const std::string& name, const PlacedSuperquadric& p) { return d
 TEST(Descriptors, NamesInIndexOrder) {
   EXPECT_EQ(descriptorNames(), (std::vector<std::string>{"squariness", "roundness", "bevelness", "pinchness",
                                                           "bendness", "taperness", "twistness", "size",
-                                                          "elongation"}));
+                                                          "elongation", "section-squariness", "section-roundness"}));
+  EXPECT_EQ(descriptorIndex("section-roundness"), 10);
+  EXPECT_EQ(descriptorNames().size(), kDescriptorsBeforeSections + 2);
   EXPECT_EQ(descriptorIndex("bendness"), 4);
   EXPECT_EQ(descriptorIndex("bentness"), -1);
 }
@@ -108,6 +110,30 @@ TEST(Descriptors, FuzzyPlacementOnlyGivesTheCrispValues) {
 
 // The alpha-cut of a descriptor value is the image of P(α): it holds the degree of every crisp
 // part sampled in the box, and its ends are reached (by the corners and critical values).
+// The traverse section reads eps2 alone (Zhang, Pham & Chen, §2.1): a cylinder's section is round
+// and a pyramid's or a box's square, whatever their profiles.
+TEST(Descriptors, SectionDescriptorsReadTheTraverseSectionAlone) {
+  const auto cylinder = crispPart(0.1, 1), box = crispPart(0.1, 0.1), sphere = crispPart(1, 1),
+             squareBarrel = crispPart(1, 0.1), octahedron = crispPart(2, 2);
+  EXPECT_DOUBLE_EQ(degreeOf("section-roundness", cylinder), 1.0);
+  EXPECT_DOUBLE_EQ(degreeOf("section-squariness", cylinder), 0.0);
+  EXPECT_DOUBLE_EQ(degreeOf("section-squariness", box), 0.9);
+  EXPECT_DOUBLE_EQ(degreeOf("section-roundness", box), 0.1);
+  EXPECT_DOUBLE_EQ(degreeOf("section-roundness", sphere), 1.0);
+  // The profile (eps1) does not move them.
+  EXPECT_DOUBLE_EQ(degreeOf("section-squariness", squareBarrel), degreeOf("section-squariness", box));
+  EXPECT_DOUBLE_EQ(degreeOf("section-roundness", octahedron), 0.0);
+  // Fuzzy eps2 across the peak of ro at 1: the exact image, core 1.
+  FuzzyPart part;
+  part.eps2 = FuzzyNumber::triangular(0.5, 1.0, 1.5);
+  part.validate();
+  const auto values = describePart(part);
+  const FuzzyNumber& round = values[size_t(descriptorIndex("section-roundness"))].value;
+  EXPECT_NEAR(round.core().lo, 1.0, 1e-12);
+  EXPECT_NEAR(round.support().lo, 0.5, 1e-12);
+  EXPECT_NEAR(round.support().hi, 1.0, 1e-12);
+}
+
 TEST(Descriptors, FuzzyValuesAreTheImageOfTheParameterBox) {
   FuzzyPart part;
   part.eps1 = FuzzyNumber::triangular(0.5, 1.0, 2.5);  // crosses the critical values 1 and 2

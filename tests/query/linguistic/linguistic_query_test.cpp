@@ -236,6 +236,42 @@ TEST(LinguisticQuery, Relations) {
   EXPECT_EQ(parse("find a bent shape below shapes").root.children[1].kind, Kind::kAnd);
 }
 
+TEST(LinguisticQuery, DistancesInUnits) {
+  EXPECT_EQ(meaning("find a sphere about 3 units above a box"), meaning("find a sphere about 3 above a box"));
+  EXPECT_EQ(meaning("a sphere 1 unit to the right of a cube"), meaning("a sphere 1 to the right of a cube"));
+  EXPECT_NE(errorOf("a sphere units above a box").find("'units'"), std::string::npos);
+}
+
+// Traverse sections (Zhang, Pham & Chen, §1: "very sharp with squarish traverse section"): an
+// adjective before a section word describes the section alone, through the vocabulary's section
+// descriptors.
+TEST(LinguisticQuery, TraverseSections) {
+  const LinguisticQuery q = parse("find a very sharp shape with squarish traverse section");
+  ASSERT_EQ(q.root.kind, Kind::kAnd);
+  ASSERT_EQ(q.root.children.size(), 2u);
+  expectLeaf(q.root.children[0], "taperness", *v().intensity("very"), "very sharp");
+  expectLeaf(q.root.children[1], "section-squariness", v().plain(), "squarish traverse section");
+  // Section words and articles: the same condition.
+  const nlohmann::json square = meaning("find shapes with squarish traverse section");
+  for (const char* text : {"find shapes with a squarish cross-section", "find shapes with squarish cross section",
+                           "find shapes that have a squarish section", "find shapes with squarish traverse sections",
+                           "shapes with a squarish traverse-section"})
+    EXPECT_EQ(meaning(text), square) << text;
+  expectLeaf(parse("a rod with a very round cross-section").root.children[1], "section-roundness",
+             *v().intensity("very"), "a very round cross-section");
+  expectLeaf(parse("a shape with a circular cross-section").root, "section-roundness", v().plain(),
+             "a circular cross-section");
+  // Without a section word the adjective means the whole shape, as before.
+  expectLeaf(parse("a squarish shape").root, "squariness", v().plain(), "squarish");
+  // An adjective that says nothing of a section is an error naming the words and the ones that do.
+  const std::string e = errorOf("a shape with a bent cross-section");
+  EXPECT_NE(e.find("'a bent cross-section' at character 13"), std::string::npos) << e;
+  EXPECT_NE(e.find("square"), std::string::npos) << e;
+  EXPECT_NE(e.find("round"), std::string::npos) << e;
+  // "a" opens only a section: "a cube with a sphere" stays a noun phrase with its caller's words.
+  EXPECT_EQ(parseNounPhraseAt("a cube with a sphere", 0, std::string::npos, v()).end, 6u);
+}
+
 TEST(LinguisticQuery, OptionalVerbAndArticles) {
   for (const char* text : {"a slightly bent shape", "show the slightly bent shapes", "search for any slightly bent part",
                            "slightly bent shapes"})

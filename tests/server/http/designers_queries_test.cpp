@@ -138,6 +138,30 @@ TEST(DesignersQueries, SpatialRelationsRankTheDescribedPlacementFirst) {
       << bad.body;
 }
 
+// Traverse sections (Zhang, Pham & Chen, §1, Figure 1), verbatim: pyramids first for the squarish
+// section, the cone for the round one; whole-shape squariness would not tell them apart this way.
+TEST(DesignersQueries, TraverseSectionsVerbatim) {
+  ServerProcess server({"--demo", kDemo});
+  const auto first = [&](const std::string& text) {
+    const Answer a = ask(server, "/query", text);
+    EXPECT_EQ(a.status, 200) << text << " -> " << a.body;
+    EXPECT_EQ(a.search, "linguistic") << text;
+    const json body = json::parse(a.body);
+    std::vector<std::string> names;
+    for (const json& r : body["results"])
+      if (r["score"].get<double>() == body["results"][0]["score"].get<double>()) names.push_back(r["name"]);
+    return names;
+  };
+  // The sharp pyramids of the demo, alone or as a component (tower: a cube and a pyramid).
+  EXPECT_EQ(first("find a very sharp shape with squarish traverse section"),
+            (std::vector<std::string>{"pyramid", "sharp-pyramid", "bent-rod-and-pyramid", "tower"}));
+  EXPECT_EQ(first("find a very sharp shape with round traverse section"), std::vector<std::string>{"cone"});
+  EXPECT_EQ(ranking(server, "/query/linguistic", "find a very sharp shape with a squarish cross-section"),
+            ranking(server, "/query/linguistic", "find a very sharp shape with squarish traverse section"));
+  auto parsed = server.post("/query/linguistic", json{{"text", "find a very sharp shape with squarish traverse section"}});
+  EXPECT_EQ(parsed.json["parsed"]["condition"]["children"][1]["descriptor"], "section-squariness") << parsed.body;
+}
+
 // POST /query: one search box; the text decides which search runs, and the answer says which.
 TEST(DesignersQueries, OneSearchBoxRunsTheSearchTheTextCallsFor) {
   ServerProcess server({"--demo", kDemo});

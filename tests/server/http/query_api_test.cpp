@@ -126,6 +126,33 @@ TEST(QueryApi, ADatabaseFromBeforeTheIndexIsBackfilled) {
   EXPECT_EQ(pending->columnInt(0), 0);  // the backfill at startup cleared it
 }
 
+// A database indexed before the section descriptors (schema version 2): migration 003 marks its
+// objects pending, and the startup backfill gives them rows for every descriptor.
+TEST(QueryApi, ADatabaseFromBeforeTheSectionDescriptorsIsBackfilled) {
+  TempDir dir;
+  const std::string db = dir.file("v2.sqlite");
+  {
+    fsdb::sqlite::Connection c(db);
+    const auto all = fsdb::embeddedMigrations();
+    ASSERT_EQ(fsdb::applyMigrations(c, {all[0], all[1]}), 2);
+    // Written by a version-2 server after its own backfill: not pending, and no section rows.
+    c.exec("INSERT INTO objects (kind, name, latest_version) VALUES ('part', 'old-box', 1)");
+    auto s = c.prepare("INSERT INTO versions VALUES (1, 1, ?1, 'h', '2026-01-01T00:00:00.000Z')");
+    s->bind(1, json{{"kind", "part"}, {"name", "old-box"}, {"params", {{"a1", 1}, {"eps1", 0.1}, {"eps2", 0.1}}}}.dump());
+    s->run();
+  }
+  ServerProcess server({"--db", db});
+  EXPECT_EQ(names(query(server, {{"text", "find parts with a squarish cross-section"}})),
+            std::vector<std::string>{"old-box"});
+  fsdb::sqlite::Connection c(db);
+  auto rows = c.prepare("SELECT COUNT(*) FROM descriptor_index WHERE descriptor = 'section-squariness'");
+  ASSERT_TRUE(rows->step());
+  EXPECT_EQ(rows->columnInt(0), 1);
+  auto pending = c.prepare("SELECT COUNT(*) FROM descriptor_pending");
+  ASSERT_TRUE(pending->step());
+  EXPECT_EQ(pending->columnInt(0), 0);
+}
+
 TEST(QueryApi, Errors) {
   ServerProcess server;
   auto expectError = [&server](const std::string& body, int status, const std::string& code, const std::string& path) {

@@ -1,0 +1,8 @@
+-- 003_section_descriptors: the two descriptors of the traverse section, section-squariness and
+-- section-roundness (query/linguistic/descriptors.h), join the descriptor index. Every part and
+-- shape is marked pending, as 002 did, so the server recomputes its rows (all descriptors) at
+-- startup; until then the prefilter returns pending objects as candidates and scoring describes
+-- their documents, so no answer misses them.
+UPDATE descriptor_clock SET generation = generation + 1;
+INSERT OR REPLACE INTO descriptor_pending (object_id, generation)
+  SELECT id, (SELECT generation FROM descriptor_clock) FROM objects WHERE kind IN ('part', 'shape');
