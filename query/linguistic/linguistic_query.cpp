@@ -344,11 +344,13 @@ class Parser {
         leaves.push_back(descriptorCondition(c.descriptor, c.set, nounText + ": " + c.descriptor));
       if (leaves.size() == 1) {
         leaves[0].text = nounText;
+        leaves[0].noun = noun.word;
         parts.push_back(std::move(leaves[0]));
       } else {
         QueryCondition all;
         all.kind = Kind::kAnd;
         all.text = nounText;
+        all.noun = noun.word;
         all.children = std::move(leaves);
         parts.push_back(std::move(all));
       }
@@ -371,6 +373,7 @@ class Parser {
     if (parts.size() == 1) return std::move(parts[0]);
     QueryCondition all;  // empty: "anything" (a bare "shape")
     all.kind = Kind::kAnd;
+    all.nounPhrase = true;
     all.children = std::move(parts);
     if (all.children.empty()) all.text = span(start, pos_);
     return all;

@@ -75,6 +75,12 @@ struct QueryCondition {
   // kRelation: the direction's memberships as the parser's vocabulary defines them (when empty,
   // scoring looks `direction` up in activeVocabulary()).
   std::optional<Direction> directionSets;
+  // How the words were built, for printing the query back (query/linguistic/query_print.h); no
+  // part of the meaning (toJson leaves them out): the noun whose conditions this node holds
+  // ("cylinder"), and whether a kAnd joins the parts of one noun phrase (its modifiers, noun and
+  // relative clause).
+  std::string noun;
+  bool nounPhrase = false;
 };
 struct LinguisticQuery {
   std::string subject = "any";   // "part", "shape" or "any" (from the noun: "shape" = any)

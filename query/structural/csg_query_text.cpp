@@ -505,13 +505,14 @@ class PhraseParser {
     return false;
   }
 
-  // [ article ] ( "union" | "intersection" | "difference" ) "of", or "(".
+  // [ article ] ( "union" | "intersection" | "difference" | "part" ) "of", or "(".
   bool startsConstruction() const {
     size_t i = pos_;
     if (i < words_.size() && contains(queryArticles(), words_[i].text)) ++i;
     if (i < words_.size() && words_[i].text == "(") return true;
     return i + 1 < words_.size() && words_[i + 1].text == "of" &&
-           (words_[i].text == "union" || words_[i].text == "intersection" || words_[i].text == "difference");
+           (words_[i].text == "union" || words_[i].text == "intersection" || words_[i].text == "difference" ||
+            words_[i].text == "part");
   }
 
   bool acceptPair(const char* first, const char* second) {

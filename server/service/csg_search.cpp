@@ -8,6 +8,7 @@
 
 #include "geometry/core/error.h"
 #include "query/structural/csg_bound.h"
+#include "query/structural/csg_query_print.h"
 #include "query/structural/csg_relations.h"
 #include "query/json/json_body.h"
 #include "query/linguistic/vocabulary.h"
@@ -250,7 +251,16 @@ nlohmann::json csgQueryResponse(const Store& store, const nlohmann::json& reques
                        {"mapping", mappingJson(query, hit)}});
     if (relations) results.back()["relations"] = relationsJson(query, hit);
   }
-  return {{"parsed", toJson(query)},  {"results", results},      {"candidates", found.candidates},
+  nlohmann::json parsed = toJson(query);
+  // How a text was read, in the phrase form's own words (query/structural/csg_query_print.h);
+  // stored parts of a formula have no phrase (the formula names them).
+  if (request.contains("text")) {
+    try {
+      parsed["read_as"] = csgQueryText(query, activeVocabulary());
+    } catch (const Error&) {
+    }
+  }
+  return {{"parsed", std::move(parsed)},  {"results", results},      {"candidates", found.candidates},
           {"bounded", found.bounded}, {"matched", found.matched}, {"prune", options.prune},
           {"millis", millisSince(start)}};
 }

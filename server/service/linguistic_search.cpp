@@ -10,6 +10,7 @@
 #include "db/descriptor_index.h"
 #include "geometry/core/error.h"
 #include "query/linguistic/descriptor_prefilter.h"
+#include "query/linguistic/query_print.h"
 #include "query/linguistic/vocabulary.h"
 #include "query/json/json_body.h"
 #include "query/document/part_json.h"
@@ -291,7 +292,14 @@ nlohmann::json linguisticQueryResponse(const Store& store, const nlohmann::json&
   const LinguisticSearchResult found = searchLinguistic(store, query, options);
   nlohmann::json results = nlohmann::json::array();
   for (const LinguisticHit& hit : found.hits) results.push_back(hitJson(hit));
-  return {{"parsed", toJson(query)},
+  nlohmann::json parsed = toJson(query);
+  // How the text was read, in the grammar's own words (query/linguistic/query_print.h).
+  try {
+    parsed["read_as"] = linguisticQueryText(query, activeVocabulary());
+  } catch (const Error&) {
+    // A vocabulary whose words cannot say a condition it parsed: the structure alone is shown.
+  }
+  return {{"parsed", std::move(parsed)},
           {"results", results},
           {"candidates", found.candidates},
           {"scored", found.scored},

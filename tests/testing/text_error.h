@@ -1,6 +1,7 @@
 #pragma once
 // The message of the invalid_parameter error at path "text" that parsing a query text throws, for
-// the parser tests (linguistic and CSG texts); a test failure when it throws none or another.
+// the parser tests (linguistic and CSG texts; "query" for the printers); a test failure when it
+// throws none or another.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -9,17 +10,24 @@
 
 namespace fsdb::test {
 
-template <class Parse>
-std::string textErrorOf(const std::string& text, Parse parse) {
+// The message of the invalid_parameter error at `path` that `run()` throws; `what` names the
+// attempt in failures.
+template <class Run>
+std::string invalidParameterOf(const std::string& path, const std::string& what, Run run) {
   try {
-    parse(text);
+    run();
   } catch (const Error& e) {
-    EXPECT_EQ(e.code(), errc::kInvalidParameter) << text;
-    EXPECT_EQ(e.path(), "text") << text;
+    EXPECT_EQ(e.code(), errc::kInvalidParameter) << what;
+    EXPECT_EQ(e.path(), path) << what;
     return e.what();
   }
-  ADD_FAILURE() << "no error for \"" << text << "\"";
+  ADD_FAILURE() << "no error for \"" << what << "\"";
   return "";
+}
+
+template <class Parse>
+std::string textErrorOf(const std::string& text, Parse parse) {
+  return invalidParameterOf("text", text, [&] { parse(text); });
 }
 
 }  // namespace fsdb::test

@@ -90,6 +90,7 @@ TEST(CsgQueryText, DesignersPhrasingsOfDifferencesAndIntersections) {
   EXPECT_EQ(shape(parse("the part of a sphere inside a cube")), "intersection('a sphere', 'a cube')");
   EXPECT_EQ(shape(parse("find the part of a very round box within a cylinder")),
             "intersection('a very round box', 'a cylinder')");
+  EXPECT_EQ(shape(parse("a shape which is the part of a sphere inside a cube")), "intersection('a sphere', 'a cube')");
   EXPECT_NE(errorOf("the part of a sphere and a cube").find("expected 'inside', 'within'"), std::string::npos);
 }
 

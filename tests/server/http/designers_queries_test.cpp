@@ -162,6 +162,29 @@ TEST(DesignersQueries, TraverseSectionsVerbatim) {
   EXPECT_EQ(parsed.json["parsed"]["condition"]["children"][1]["descriptor"], "section-squariness") << parsed.body;
 }
 
+// Every answer to a text says how it was read, in the grammar's own words; those words, sent
+// back, run the same search with the same ranking.
+TEST(DesignersQueries, AnswersSayHowTheTextWasRead) {
+  ServerProcess server({"--demo", kDemo});
+  const std::vector<std::pair<const char*, const char*>> cases = {
+      {"show me something twisted, please", "find a shape that is twisted"},
+      {"find a very sharp shape with squarish traverse section", "find a very sharp shape that is squarish traverse section"},
+      {"a sphere on top of a cylinder", "find a sphere to the top of a cylinder"},
+      {"a cube with a cylindrical hole", "find the difference of the cube and the cylinder"},
+      {"the union of a cube and a sphere to its right", "find the union of the cube and the sphere to its right"},
+      {"find a shape which is the union of a very bent cylinder and a very sharp pyramid",
+       "find the union of the very bent cylinder and the very sharp pyramid"},
+  };
+  for (const auto& [text, readAs] : cases) {
+    const Answer said = ask(server, "/query", text);
+    ASSERT_EQ(said.status, 200) << text << " -> " << said.body;
+    EXPECT_EQ(json::parse(said.body)["parsed"]["read_as"], readAs) << text;
+    const Answer again = ask(server, "/query", readAs);
+    EXPECT_EQ(again.search, said.search) << readAs;
+    EXPECT_EQ(again.ranking, said.ranking) << text << " vs " << readAs;
+  }
+}
+
 // POST /query: one search box; the text decides which search runs, and the answer says which.
 TEST(DesignersQueries, OneSearchBoxRunsTheSearchTheTextCallsFor) {
   ServerProcess server({"--demo", kDemo});

@@ -1,0 +1,174 @@
+// See query/linguistic/query_print.h.
+#include "query/linguistic/query_print.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#include "geometry/core/error.h"
+#include "query/json/fuzzy_json.h"
+#include "query/json/number_phrases.h"
+#include "query/linguistic/degree_sets.h"
+#include "query/linguistic/descriptors.h"
+
+namespace fsdb {
+namespace {
+
+using Kind = QueryCondition::Kind;
+
+[[noreturn]] void unprintable(const std::string& what) {
+  throw Error(errc::kInvalidParameter, "no words of the vocabulary say " + what, "query");
+}
+
+std::string firstWord(const std::string& text) { return text.substr(0, text.find(' ')); }
+
+class Printer {
+ public:
+  explicit Printer(const Vocabulary& v) : v_(v) {}
+
+  // [ intensity ] adjective [ section ]: the words as written when they say it (a synonym stays
+  // itself), else the first that do; or a descriptor degree as written.
+  std::string leaf(const QueryCondition& c) const {
+    if (descriptorIndex(firstWord(c.text)) >= 0 && firstWord(c.text) == c.descriptor) return c.text;
+    std::string first;
+    for (const std::string& word : v_.adjectiveWords()) {
+      const Adjective& a = *v_.adjective(word);
+      const std::string* section = v_.sectionDescriptor(a.descriptor);
+      const bool whole = a.descriptor == c.descriptor;
+      const bool ofSection = section && *section == c.descriptor && !v_.sectionWords().empty();
+      if (!whole && !ofSection) continue;
+      const auto matches = [&](const FuzzyNumber& set) { return (a.lowPole ? mirroredDegrees(set) : set) == c.set; };
+      std::vector<std::string> intensities;
+      if (matches(v_.plain())) intensities.push_back("");
+      for (const std::string& intensity : v_.intensityWords())
+        if (matches(*v_.intensity(intensity))) intensities.push_back(intensity + " ");
+      for (const std::string& intensity : intensities) {
+        const std::string words = intensity + word;
+        if (!ofSection) {
+          if (words == c.text) return words;
+          if (first.empty()) first = words;
+          continue;
+        }
+        for (const std::string& section : v_.sectionWords())
+          for (const char* article : {"", "a ", "an "})
+            if (article + words + " " + section == c.text) return words + " " + section;
+        if (first.empty()) first = words + " " + v_.sectionWords().front();
+      }
+    }
+    if (first.empty()) unprintable("the condition on " + c.descriptor + " of '" + c.text + "'");
+    return first;
+  }
+
+  std::string operand(const QueryCondition& c) const {
+    return c.kind == Kind::kDescriptor ? leaf(c) : "(" + condition(c) + ")";
+  }
+
+  std::string condition(const QueryCondition& c) const {
+    switch (c.kind) {
+      case Kind::kDescriptor: return leaf(c);
+      case Kind::kNot: return "not " + operand(c.children.at(0));
+      case Kind::kAnd:
+      case Kind::kOr: {
+        if (c.children.empty()) unprintable("'anything' as a condition");
+        std::string out;
+        for (const QueryCondition& child : c.children)
+          out += (out.empty() ? "" : c.kind == Kind::kAnd ? " and " : " or ") + operand(child);
+        return out;
+      }
+      case Kind::kRelation: break;
+    }
+    unprintable("a relation inside a condition");
+  }
+
+  // "a" [ modifiers ] noun [ "that is" clause ]
+  std::string nounPhrase(const QueryCondition& root, const std::string& subject, const std::string& article) const {
+    std::vector<const QueryCondition*> parts;
+    if (root.nounPhrase) {
+      for (const QueryCondition& c : root.children) parts.push_back(&c);
+    } else {
+      parts.push_back(&root);
+    }
+    size_t nounAt = parts.size();
+    for (size_t i = 0; i < parts.size(); ++i)
+      if (!parts[i]->noun.empty()) nounAt = i;
+    std::string noun = subject == "part" ? "part" : "shape";
+    const QueryCondition* modifiers = nullptr;
+    const QueryCondition* clause = nullptr;
+    if (nounAt < parts.size()) {
+      noun = parts[nounAt]->noun;
+      if (nounAt > 1 || parts.size() - nounAt > 2) unprintable("a noun phrase of more than three parts");
+      if (nounAt == 1) modifiers = parts[0];
+      if (nounAt + 1 < parts.size()) clause = parts[nounAt + 1];
+    } else {
+      // No noun conditions: one condition is the clause ("a shape that is bent"), two are the
+      // modifiers and the clause; none ("anything") is the bare noun.
+      if (parts.size() > 2) unprintable("a noun phrase of more than two conditions");
+      const bool anything = parts.size() == 1 && parts[0]->kind == Kind::kAnd && parts[0]->children.empty();
+      if (parts.size() == 1 && !anything) clause = parts[0];
+      if (parts.size() == 2) {
+        modifiers = parts[0];
+        clause = parts[1];
+      }
+    }
+    std::string out = article + " ";
+    if (modifiers) out += modifierText(*modifiers) + " ";
+    out += noun;
+    if (clause) out += " that is " + condition(*clause);
+    return out;
+  }
+
+ private:
+  // Before a noun, an "or" or a "not" is one parenthesised condition, so the noun ends it.
+  std::string modifierText(const QueryCondition& c) const {
+    return c.kind == Kind::kAnd || c.kind == Kind::kDescriptor ? condition(c) : "(" + condition(c) + ")";
+  }
+
+  const Vocabulary& v_;
+};
+
+}  // namespace
+
+std::string numberText(double x) {
+  char buf[40];
+  for (int precision = 1; precision <= 17; ++precision) {
+    std::snprintf(buf, sizeof buf, "%.*g", precision, x);
+    if (std::strtod(buf, nullptr) == x) break;
+  }
+  return buf;
+}
+
+std::string distanceText(const FuzzyNumber& d, const Vocabulary& vocabulary) {
+  for (const std::string& word : vocabulary.distanceWords())
+    if (*vocabulary.distance(word) == d) return word;
+  const Interval core = d.core(), support = d.support();
+  if (d.isCrisp()) return numberText(core.lo);
+  const std::string about = "about " + numberText(core.lo);
+  if (core.lo == core.hi && parseNumberPhrase(about) == d) return about;
+  if (core.lo == support.lo && core.hi == support.hi) {
+    const std::string between = "between " + numberText(core.lo) + " and " + numberText(core.hi);
+    if (parseNumberPhrase(between) == d) return between;
+  }
+  unprintable("the distance " + toJson(d).dump());
+}
+
+std::string nounPhraseText(const LinguisticQuery& phrase, const Vocabulary& vocabulary, const std::string& article) {
+  return Printer(vocabulary).nounPhrase(phrase.root, phrase.subject, article);
+}
+
+std::string linguisticQueryText(const LinguisticQuery& query, const Vocabulary& vocabulary) {
+  const Printer p(vocabulary);
+  std::string out = "find ";
+  if (query.root.kind == Kind::kRelation) {
+    const QueryCondition& r = query.root;
+    out += p.nounPhrase(r.children.at(0), "any", "a");
+    if (r.distance) out += " " + distanceText(*r.distance, vocabulary);
+    out += " to the " + r.direction + " of " + p.nounPhrase(r.children.at(1), "any", "a");
+  } else {
+    out += p.nounPhrase(query.root, query.subject, "a");
+  }
+  if (query.atLeast > 0) out += " at least " + numberText(query.atLeast);
+  if (query.aggregation != "min") out += " using " + query.aggregation;
+  return out;
+}
+
+}  // namespace fsdb

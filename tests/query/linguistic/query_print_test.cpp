@@ -1,0 +1,75 @@
+// Printing linguistic queries back (query/linguistic/query_print.h): the canonical phrasing of
+// each construction, and that it reads back to the same query.
+#include "query/linguistic/query_print.h"
+
+#include <gtest/gtest.h>
+
+#include "geometry/core/error.h"
+#include "query/linguistic/vocabulary.h"
+#include "tests/testing/query_shapes.h"
+#include "tests/testing/text_error.h"
+
+namespace fsdb {
+namespace {
+
+const Vocabulary& v() { return Vocabulary::builtin(); }
+std::string printed(const std::string& text) { return linguisticQueryText(parseLinguisticQuery(text, v()), v()); }
+
+TEST(QueryPrint, CanonicalPhrasing) {
+  EXPECT_EQ(printed("find a slightly bent shape"), "find a shape that is slightly bent");
+  EXPECT_EQ(printed("slightly bent"), "find a shape that is slightly bent");
+  EXPECT_EQ(printed("show me something twisted, please"), "find a shape that is twisted");
+  EXPECT_EQ(printed("I need a very round part"), "find a part that is very round");
+  EXPECT_EQ(printed("retrieve the tapered cylinders"), "find a tapered cylinder");
+  EXPECT_EQ(printed("a very bent cylinder"), "find a very bent cylinder");
+  EXPECT_EQ(printed("a cylinder which is bent and twisted"), "find a cylinder that is bent and twisted");
+  EXPECT_EQ(printed("a bent cylinder which is twisted"), "find a bent cylinder that is twisted");
+  EXPECT_EQ(printed("find shapes that are not (bent or twisted) and very round at least 0.5"),
+            "find a shape that is (not (bent or twisted)) and very round at least 0.5");
+  EXPECT_EQ(printed("find parts with bendness at least 0.3 using product"),
+            "find a part that is bendness at least 0.3 using product");
+  EXPECT_EQ(printed("find a very sharp shape with squarish traverse section"),
+            "find a very sharp shape that is squarish traverse section");
+  EXPECT_EQ(printed("shapes with a square cross-section"), "find a shape that is square cross-section");
+  EXPECT_EQ(printed("find a sphere about 3 units above a box"), "find a sphere about 3 to the top of a box");
+  EXPECT_EQ(printed("find a cone close to the top right of a plate"), "find a cone close to the top right of a plate");
+  EXPECT_EQ(printed("a ball between 2 and 4 behind shapes"), "find a sphere between 2 and 4 to the back of a shape");
+  EXPECT_EQ(printed("anything"), "find a shape");
+}
+
+TEST(QueryPrint, PrintedTextsMeanTheQuery) {
+  for (const char* text :
+       {"find a slightly bent shape", "show me something twisted", "a (bent or twisted) very flat box",
+        "find shapes that are not round and not (bent and tapered)", "find a cylinder with a very round cross-section",
+        "a rod that is roundness about 1", "find a small sphere far in front of a large box at least 0.2 using mean",
+        "find shapes with bendness between 0.2 and 0.4"}) {
+    const LinguisticQuery q = parseLinguisticQuery(text, v());
+    const std::string once = linguisticQueryText(q, v());
+    EXPECT_EQ(testing::queryMeaning(parseLinguisticQuery(once, v())), testing::queryMeaning(q)) << text << " -> " << once;
+    EXPECT_EQ(printed(once), once) << "a printed text prints as itself: " << once;
+  }
+}
+
+TEST(QueryPrint, NumbersAndDistances) {
+  EXPECT_EQ(numberText(0.1), "0.1");
+  EXPECT_EQ(numberText(3), "3");
+  EXPECT_EQ(numberText(1.0 / 3), "0.3333333333333333");
+  EXPECT_EQ(distanceText(FuzzyNumber::crisp(2.5), v()), "2.5");
+  EXPECT_EQ(distanceText(FuzzyNumber::triangular(2.7, 3, 3.3), v()), "about 3");
+  EXPECT_EQ(distanceText(FuzzyNumber::trapezoidal(2, 2, 4, 4), v()), "between 2 and 4");
+  EXPECT_EQ(distanceText(*v().distance("near"), v()), "close");  // the first word with that set
+  EXPECT_THROW(distanceText(FuzzyNumber::triangular(1, 2, 5), v()), Error);
+}
+
+TEST(QueryPrint, WhatNoWordsSayIsAnError) {
+  LinguisticQuery q;
+  q.root.kind = QueryCondition::Kind::kDescriptor;
+  q.root.descriptor = "bendness";
+  q.root.set = FuzzyNumber::triangular(0.11, 0.12, 0.13);
+  q.root.text = "made by hand";
+  const std::string e = test::invalidParameterOf("query", "a hand-made set", [&] { linguisticQueryText(q, v()); });
+  EXPECT_NE(e.find("bendness"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace fsdb
