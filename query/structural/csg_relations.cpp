@@ -42,6 +42,7 @@ std::vector<RelationScore> scoreRelations(const CsgQuery& query, const ShapeGrap
     const size_t r = query.leaves[q].relation->to;
     if (r != q) involving[r].push_back(q);
   }
+  // Unchecked relations count 0 here: moves only ever raise the sum of the checked ones.
   const auto membership = [&](size_t q) {
     const CsgRelation& rel = *query.leaves[q].relation;
     const int s = storedOf[q], r = storedOf[rel.to];
@@ -102,8 +103,13 @@ std::vector<RelationScore> scoreRelations(const CsgQuery& query, const ShapeGrap
     r.queryLeaf = int(q);
     r.storedLeaf = storedOf[q];
     r.storedReference = storedOf[query.leaves[q].relation->to];
-    r.score = membership(q);
-    if (r.storedLeaf >= 0) transform.values[q * size_t(transform.cols) + size_t(r.storedLeaf)] = r.score;
+    r.checked = r.storedLeaf >= 0 && r.storedReference >= 0;
+    if (r.checked) {
+      r.score = membership(q);
+      transform.values[q * size_t(transform.cols) + size_t(r.storedLeaf)] = r.score;
+    } else if (r.storedLeaf >= 0) {
+      r.score = transform.at(int(q), r.storedLeaf);
+    }
     out.push_back(r);
   }
   return out;

@@ -8,8 +8,11 @@
 //  * A query leaf q with a relation (CsgQueryLeaf::relation: q's centre lies in a direction, at a
 //    distance, from the centre of leaf r) has as its transform similarity
 //    relationMembership(direction, distance, part of M(q), part of M(r))
-//    (query/linguistic/linguistic_query.h) when both q and r are matched; 0 when r is not (the
-//    relation cannot hold in the stored tree). Other leaves keep the given transform similarity.
+//    (query/linguistic/linguistic_query.h) when both q and r are matched. When r is not, the
+//    relation constrains nothing the stored tree has (the missing part already costs in the
+//    component and structure terms), and q keeps the given transform similarity, as a description
+//    without a relation does (1). So which of several equal single matches the subgraph search
+//    keeps does not move the score. Other leaves keep the given transform similarity.
 //  * The mapping is the largest common subgraph's: its objective has no transforms, for relations
 //    as for absolute placements. Then each leaf in a relation (subject or reference), in query
 //    order, may move to an unmatched stored leaf with the same parents and a leaf similarity at
@@ -29,7 +32,8 @@ struct RelationScore {
   int queryLeaf = 0;          // the related leaf (index into CsgQuery::leaves)
   int storedLeaf = -1;        // M(q): its stored leaf, -1 when unmatched
   int storedReference = -1;   // M(r), -1 when unmatched
-  double score = 0;           // the membership (0 when either is unmatched)
+  bool checked = false;       // both matched: `score` is the membership
+  double score = 0;           // the membership; unchecked: the transform similarity q keeps (0 when q is unmatched)
 };
 
 // Whether any leaf of the query has a relation.

@@ -185,6 +185,7 @@ nlohmann::json relationsJson(const CsgQuery& query, const CsgHit& hit) {
                    {"to", queryPaths[leaf.relation->to]},
                    {"stored_path", storedPath(r.storedLeaf)},
                    {"stored_to", storedPath(r.storedReference)},
+                   {"checked", r.checked},
                    {"score", r.score}});
   }
   return out;

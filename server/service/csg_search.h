@@ -82,7 +82,7 @@ struct CsgRequestLimits {
 // "score","components","transforms","structure","complete","mapping":[{"query_node","query_path",
 // "stored_node","stored_path","op","similarity"}], "relations" (texts with relations only):
 // [{"text" (the relation's words), "subject", "object" (the two leaves' words), "query_path", "to",
-// "stored_path", "stored_to" (null: unmatched), "score"}]}], "candidates","bounded","matched","prune","millis"}.
+// "stored_path", "stored_to" (null: unmatched), "checked" (both matched), "score"}]}], "candidates","bounded","matched","prune","millis"}.
 // Validation names the field (invalid_document / invalid_parameter); texts are parsed with the
 // active vocabulary and names resolved against the store. Shared by POST /query/csg and `fsdb query --db`.
 nlohmann::json csgQueryResponse(const Store& store, const nlohmann::json& request, const CsgRequestLimits& limits,

@@ -80,14 +80,19 @@ TEST(CsgRelations, DistancesAreFuzzyNumbers) {
   EXPECT_DOUBLE_EQ(left.relations[0].score, 0.0);
 }
 
-TEST(CsgRelations, AnUnmatchedReferenceScoresZero) {
+TEST(CsgRelations, AnUnmatchedReferenceChecksNothing) {
   // An untwisted cylinder is no very twisted box at all (similarity 0): the sphere matches, its
   // reference cannot.
   const CsgQuery q = query("a sphere on top of a very twisted box");
   const Scored s = score(q, stored({placed("a sphere", {0, 3, 0}), placed("a cylinder", {0, 0, 0})}));
   ASSERT_EQ(s.relations.size(), 1u);
   EXPECT_EQ(s.relations[0].storedReference, -1);
-  EXPECT_DOUBLE_EQ(s.relations[0].score, 0.0);
+  EXPECT_FALSE(s.relations[0].checked);
+  // The sphere keeps the transform similarity of a description (1); the missing box costs in
+  // components and structure.
+  EXPECT_DOUBLE_EQ(s.relations[0].score, 1.0);
+  EXPECT_DOUBLE_EQ(s.score.transforms, 0.5);  // 1 over max(2, 2) leaves
+  EXPECT_LT(s.score.components, 1.0);
 }
 
 TEST(CsgRelations, AnEqualSiblingThatTheWordsDescribeIsPreferred) {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <tuple>
 #include <utility>
@@ -217,35 +218,40 @@ TEST(DesignersQueries, OneSearchBoxRunsTheSearchTheTextCallsFor) {
   EXPECT_EQ(weights.status, 422) << weights.body;
 }
 
-// The corpus (designers_corpus.txt): every phrasing runs the same search as the grammar's own
-// and ranks the same ids with the same scores; no pair is vacuous (the grammar's phrasing finds
-// something in the demo catalogue).
-TEST(DesignersQueries, CorpusRanksAsTheGrammarsOwnPhrasings) {
-  ServerProcess server({"--demo", kDemo});
+// The corpus (designers_corpus.txt) on the catalogue built for it: every phrasing runs the same
+// search as the grammar's own and ranks the same ids with the same scores, and the object the
+// line names ranks first.
+TEST(DesignersQueries, CorpusRanksTheIntendedShapeFirst) {
+  ServerProcess server({"--demo", std::string(FSDB_SOURCE_DIR) + "/tests/server/http/designers_catalogue"});
   std::ifstream in(std::string(FSDB_SOURCE_DIR) + "/tests/server/http/designers_corpus.txt");
   ASSERT_TRUE(in) << "designers_corpus.txt";
-  const auto answer = [&](const std::string& text) {
-    const Answer a = ask(server, "/query", text);
-    EXPECT_EQ(a.status, 200) << text << " -> " << a.body;
-    return std::make_pair(a.search, a.ranking);
-  };
   const auto trim = [](std::string t) {
     t.erase(0, t.find_first_not_of(' '));
     t.erase(t.find_last_not_of(' ') + 1);
     return t;
   };
-  int pairs = 0;
+  int lines = 0, alone = 0;
   for (std::string line; std::getline(in, line);) {
     if (line.empty() || line[0] == '#') continue;
-    const size_t bar = line.find(" | ");
-    ASSERT_NE(bar, std::string::npos) << line;
-    const std::string said = trim(line.substr(0, bar)), grammar = trim(line.substr(bar + 3));
-    const auto expected = answer(grammar);
-    EXPECT_FALSE(expected.second.empty()) << "vacuous: " << grammar;
-    EXPECT_EQ(answer(said), expected) << said << "  vs  " << grammar;
-    ++pairs;
+    const size_t bar = line.find(" | "), bar2 = line.find(" | ", bar + 3);
+    ASSERT_NE(bar2, std::string::npos) << "said | grammar | first: " << line;
+    const std::string said = trim(line.substr(0, bar)), grammar = trim(line.substr(bar + 3, bar2 - bar - 3)),
+                      first = trim(line.substr(bar2 + 3));
+    const Answer expected = ask(server, "/query", grammar), got = ask(server, "/query", said);
+    ASSERT_EQ(got.status, 200) << said << " -> " << got.body;
+    ASSERT_EQ(expected.status, 200) << grammar << " -> " << expected.body;
+    EXPECT_EQ(got.search, expected.search) << said << "  vs  " << grammar;
+    EXPECT_EQ(got.ranking, expected.ranking) << said << "  vs  " << grammar;
+    const json results = json::parse(got.body)["results"];
+    ASSERT_FALSE(results.empty()) << said;
+    EXPECT_EQ(results[0]["name"], first) << said << " -> " << got.body.substr(0, 600);
+    if (results.size() == 1 || results[1]["score"].get<double>() < results[0]["score"].get<double>()) ++alone;
+    ++lines;
   }
-  EXPECT_GE(pairs, 120);
+  EXPECT_GE(lines, 150);
+  // Reported, not asserted: how many rank first alone rather than first of a tie by id.
+  RecordProperty("first_alone", alone);
+  std::printf("corpus: %d phrasings, %d first alone, %d first of a tie (ascending id)\n", lines, alone, lines - alone);
 }
 
 // `fsdb query` sends each to the search its parse calls for.
