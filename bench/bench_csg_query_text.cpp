@@ -2,7 +2,9 @@
 // a phrase list of n operands ("a sphere and a sphere and ...", one n-ary union) and a formula of n
 // names ("cube + cube + ..."), n = 1000, 3000, 9999; and designers' phrasings of about 1000 and
 // 10000 words: a CSG text with a request, a lead-in, fillers and "united with" joiners, and a
-// linguistic bare description of comma-separated conditions. All must grow linearly (each noun
+// linguistic bare description of comma-separated conditions, a CSG text of spatial relations ("a box, a
+// cylinder about 2 units above it and a cone to its right, ..."), and printing that one back
+// (parsed.read_as). All must grow linearly (each noun
 // phrase once read from a single tokenisation); the goal is a 10,000-word text in under 1 s.
 #include <benchmark/benchmark.h>
 
@@ -10,6 +12,7 @@
 
 #include "query/linguistic/linguistic_query.h"
 #include "query/linguistic/vocabulary.h"
+#include "query/structural/csg_query_print.h"
 #include "query/structural/csg_query_text.h"
 
 namespace {
@@ -57,9 +60,39 @@ void BM_DesignersLinguisticText(benchmark::State& state) {
   state.counters["words_per_s"] = benchmark::Counter(double(state.range(0)), benchmark::Counter::kIsIterationInvariantRate);
 }
 
+// About `words` words of spatial relations: "a box, a cylinder about 2 units above it and a cone to
+// its right, a box, ..." (each operand placed against the one before it).
+std::string relationText(int64_t words) {
+  const std::string group = "a box, a cylinder about 2 units above it and a cone to its right";  // 16 words
+  std::string text = group;
+  for (int64_t w = 16; w + 17 <= words; w += 17) text += ", " + group;
+  return text;
+}
+
+void BM_DesignersRelationText(benchmark::State& state) {
+  const std::string text = relationText(state.range(0));
+  for (auto _ : state) {
+    CsgQuery q = parseCsgQuery(text, Vocabulary::builtin(), {}, 1000000);
+    benchmark::DoNotOptimize(q);
+  }
+  state.counters["words_per_s"] = benchmark::Counter(double(state.range(0)), benchmark::Counter::kIsIterationInvariantRate);
+}
+
+// Printing the parse of the relation text back (parsed.read_as): query/structural/csg_query_print.h.
+void BM_ReadAsRelationText(benchmark::State& state) {
+  const CsgQuery q = parseCsgQuery(relationText(state.range(0)), Vocabulary::builtin(), {}, 1000000);
+  for (auto _ : state) {
+    std::string text = csgQueryText(q, Vocabulary::builtin());
+    benchmark::DoNotOptimize(text);
+  }
+  state.counters["words_per_s"] = benchmark::Counter(double(state.range(0)), benchmark::Counter::kIsIterationInvariantRate);
+}
+
 BENCHMARK(BM_PhraseList)->Arg(1000)->Arg(3000)->Arg(9999)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DesignersCsgText)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DesignersLinguisticText)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DesignersRelationText)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ReadAsRelationText)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Formula)->Arg(1000)->Arg(3000)->Arg(9999)->Unit(benchmark::kMillisecond);
 
 }  // namespace

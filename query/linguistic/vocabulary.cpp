@@ -232,6 +232,27 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
       throw Error(errc::kInvalidDocument, "unknown aggregation '" + name + "'; the code knows min, product, mean",
                   joinPath("aggregations", name));
 
+  // Optional: the shape words of holes ("a cube with a cylindrical hole") and the plain hole's noun.
+  if (doc.contains("holes")) {
+    const auto& h = requireObject(doc["holes"], "holes");
+    rejectUnknownKeys(h, "holes", {"about", "words", "plain"});
+    const auto& words = requireObject(requireField(h, "words", "holes"), "holes.words");
+    const auto known = [&](const std::string& noun, const std::string& path) {
+      if (!v.nouns_.count(noun))
+        throw Error(errc::kInvalidDocument, "'" + noun + "' is no noun of the vocabulary", path);
+    };
+    for (auto it = words.begin(); it != words.end(); ++it) {
+      const std::string ip = joinPath("holes.words", it.key());
+      const std::string& noun = requireString(it.value(), ip);
+      known(noun, ip);
+      v.holeNouns_[it.key()] = noun;
+    }
+    if (h.contains("plain")) {
+      v.plainHoleNoun_ = requireString(h["plain"], "holes.plain");
+      known(v.plainHoleNoun_, "holes.plain");
+    }
+  }
+
   // Optional: the words of a traverse (cross) section and the section descriptor each adjective's
   // descriptor has ("with squarish traverse section": squariness -> section-squariness).
   if (doc.contains("sections")) {

@@ -23,6 +23,8 @@
 //                 (Zhang, Pham & Chen, §2.2).
 //   distances     {words{word: fuzzy number}}; number phrases (query/json/number_phrases.h) too.
 //   aggregations  {name: text}: the documented ways `and` combines scores (min, product, mean).
+//   holes         {words{word: noun}, plain: noun} (optional): the shape words of holes in structural
+//                 queries ("a cube with a cylindrical hole"), and the noun of a hole without one.
 //   sections      {words[], descriptors{descriptor: section descriptor}} (optional): "with squarish
 //                 traverse section" is squariness read as section-squariness (query/linguistic/descriptors.h).
 //   requests      {phrases[], fillers[]} (optional): the request that may open a query ("show me",
@@ -116,6 +118,13 @@ class Vocabulary {
     auto it = sectionDescriptors_.find(descriptor);
     return it == sectionDescriptors_.end() ? nullptr : &it->second;
   }
+  // The noun a hole's shape word names in structural queries ("cylindrical": cylinder), or
+  // nullptr; and the noun of a hole without a word ("a cube with a hole"; empty: none).
+  const std::string* holeNoun(const std::string& word) const {
+    auto it = holeNouns_.find(word);
+    return it == holeNouns_.end() ? nullptr : &it->second;
+  }
+  const std::string& plainHoleNoun() const { return plainHoleNoun_; }
   bool knowsWord(const std::string& word) const { return words_.count(word) > 0; }
   const std::set<std::string>& words() const { return words_; }
 
@@ -134,6 +143,8 @@ class Vocabulary {
   std::vector<std::string> requestPhrases_;
   std::set<std::string> fillers_;
   std::vector<std::string> sectionWords_;
+  std::map<std::string, std::string> holeNouns_;
+  std::string plainHoleNoun_;
   std::map<std::string, std::string> sectionDescriptors_;
   std::vector<std::string> intensityWords_, adjectiveWords_, nounWords_, directionWords_, distanceWords_;
   std::set<std::string> words_;

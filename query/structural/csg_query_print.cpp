@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <unordered_map>
 
 #include "geometry/core/error.h"
 #include "query/linguistic/query_print.h"
@@ -41,31 +42,36 @@ class Printer {
     }
     if (n.op == CsgGraphOp::Union && chain)
       if (auto printed = asChain(n)) return *printed;
-    // Operands in order, each leaf placed against another operand's head right after it.
-    std::vector<int> order;
-    std::vector<bool> done(n.children.size(), false);
-    std::vector<int> heads(n.children.size());
-    std::vector<Printed> printed(n.children.size());
-    for (size_t i = 0; i < n.children.size(); ++i) heads[i] = headOf(n.children[i]);
+    // Operands in order, each leaf placed against another operand's head right after it. Each leaf
+    // is placed against at most one other and has at most one placed against it (the parser's
+    // "its" and "of" each name one operand), so the operands form chains; one pass over maps.
+    const size_t count = n.children.size();
+    std::vector<bool> done(count, false);
+    std::unordered_map<int, size_t> childOfHead;      // head leaf -> the child it heads
+    std::unordered_map<int, size_t> placedAgainst;    // head leaf -> the child placed against it
+    for (size_t i = 0; i < count; ++i) {
+      const int head = headOf(n.children[i]);
+      if (head != kNoHead) childOfHead[head] = i;
+    }
+    for (size_t i = 0; i < count; ++i)
+      if (const CsgRelation* r = relationOf(n.children[i])) {
+        if (!childOfHead.count(int(r->to))) unprintable("a relation whose other part is no operand beside it");
+        if (!placedAgainst.emplace(int(r->to), i).second) unprintable("two parts placed against one");
+      }
     std::string text = n.op == CsgGraphOp::Union ? "the union of " : "the intersection of ";
     bool first = true;
-    for (size_t i = 0; i < n.children.size(); ++i) {
-      if (done[i] || placedAgainstSibling(n, i, heads)) continue;
-      size_t at = i;
-      while (true) {
+    for (size_t i = 0; i < count; ++i) {
+      if (done[i] || relationOf(n.children[i])) continue;  // placed operands follow what they are placed against
+      for (size_t at = i;;) {
         done[at] = true;
         const Printed p = node(n.children[at]);
-        const bool placed = relationOf(n.children[at]) != nullptr;
-        text += (first ? "" : " and ") + p.operand() + (placed ? " " + itsWords(*relationOf(n.children[at])) : "");
+        const CsgRelation* r = relationOf(n.children[at]);
+        text += (first ? "" : " and ") + p.operand() + (r ? " " + itsWords(*r) : "");
         first = false;
-        // The operand placed against this one's head comes next.
-        size_t next = n.children.size();
-        for (size_t j = 0; j < n.children.size(); ++j)
-          if (!done[j] && relationOf(n.children[j]) && int(relationOf(n.children[j])->to) == heads[at] &&
-              heads[at] != kNoHead)
-            next = j;
-        if (next == n.children.size()) break;
-        at = next;
+        const int head = headOf(n.children[at]);
+        const auto next = head == kNoHead ? placedAgainst.end() : placedAgainst.find(head);
+        if (next == placedAgainst.end() || done[next->second]) break;
+        at = next->second;
       }
     }
     if (std::find(done.begin(), done.end(), false) != done.end()) unprintable("relations that form a cycle");
@@ -84,15 +90,6 @@ class Printer {
     if (n.op != CsgGraphOp::Leaf) return nullptr;
     const auto& r = q_.leaves[size_t(n.leaf)].relation;
     return r ? &*r : nullptr;
-  }
-
-  // Whether child i is a leaf placed against the head of another child (it is printed after that one).
-  bool placedAgainstSibling(const CsgGraphNode& n, size_t i, const std::vector<int>& heads) const {
-    const CsgRelation* r = relationOf(n.children[i]);
-    if (!r) return false;
-    for (size_t j = 0; j < n.children.size(); ++j)
-      if (j != i && heads[j] == int(r->to)) return true;
-    unprintable("a relation whose other part is no operand beside it");
   }
 
   // The head a child's printed form has: a leaf is its own, a union that is one chain its subject.

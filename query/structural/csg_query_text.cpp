@@ -123,25 +123,20 @@ class PhraseParser {
     if (!at("with")) return false;
     size_t i = pos_ + 1;
     if (i < words_.size() && contains(queryArticles(), words_[i].text)) ++i;
-    if (i < words_.size() && words_[i].text == "hole") return true;
+    if (i < words_.size() && words_[i].text == "hole") return !v_.plainHoleNoun().empty();
     return i + 1 < words_.size() && words_[i + 1].text == "hole" && !holeNoun(words_[i].text).empty();
   }
 
   // The noun a hole's shape word names: "cylinder-shaped" (any noun of the vocabulary with
-  // "-shaped"), "cylindrical", "round" (a drilled hole), "spherical", "conical", "square",
-  // "rectangular", "cubic"; "" for none.
+  // "-shaped"), or a word of the vocabulary's holes ("cylindrical", "spherical", ...); "" for none.
   std::string holeNoun(const std::string& word) const {
-    static const std::map<std::string, std::string> kForms = {
-        {"cylindrical", "cylinder"}, {"round", "cylinder"},    {"circular", "cylinder"}, {"spherical", "sphere"},
-        {"conical", "cone"},         {"square", "box"},        {"rectangular", "box"},   {"cubic", "cube"},
-        {"pyramidal", "pyramid"}};
     const std::string suffix = "-shaped";
     if (word.size() > suffix.size() && word.compare(word.size() - suffix.size(), suffix.size(), suffix) == 0) {
       const std::string noun = word.substr(0, word.size() - suffix.size());
       return v_.noun(noun) ? noun : "";
     }
-    auto it = kForms.find(word);
-    return it == kForms.end() ? "" : it->second;
+    const std::string* noun = v_.holeNoun(word);
+    return noun ? *noun : "";
   }
 
   // hole = [ article ] [ shape word ] "hole", at atHole(): a description leaf of the noun its
@@ -149,7 +144,7 @@ class PhraseParser {
   nlohmann::json hole() {
     const size_t from = words_[pos_].offset;
     acceptAny(queryArticles());
-    std::string noun = "cylinder";
+    std::string noun = v_.plainHoleNoun();  // "a cube with a hole": drilled
     if (!at("hole")) noun = holeNoun(words_[pos_++].text);
     const size_t end = words_[pos_].offset + words_[pos_].text.size();
     ++pos_;  // "hole"

@@ -275,6 +275,40 @@ TEST(Vocabulary, RequestsFillersAndPronouns) {
   EXPECT_EQ(path, "nouns.something.pronoun");
 }
 
+// Sections and holes are data; files written before them (and before the section descriptors)
+// still load, without them.
+TEST(Vocabulary, SectionsAndHoles) {
+  EXPECT_EQ(*v().sectionDescriptor("squariness"), "section-squariness");
+  EXPECT_EQ(v().sectionDescriptor("bendness"), nullptr);
+  EXPECT_EQ(v().sectionWords().front(), "traverse section");
+  EXPECT_TRUE(v().knowsWord("traverse"));
+  EXPECT_EQ(*v().holeNoun("cylindrical"), "cylinder");
+  EXPECT_EQ(v().holeNoun("wobbly"), nullptr);
+  EXPECT_EQ(v().plainHoleNoun(), "cylinder");
+  auto doc = builtinDocument();
+  doc.erase("sections");
+  doc.erase("holes");
+  doc["descriptors"].erase(doc["descriptors"].size() - 1);
+  doc["descriptors"].erase(doc["descriptors"].size() - 1);
+  const Vocabulary old = Vocabulary::fromJson(doc);
+  EXPECT_TRUE(old.sectionWords().empty());
+  EXPECT_EQ(old.holeNoun("cylindrical"), nullptr);
+  EXPECT_THROW(parseLinguisticQuery("a shape with a square cross-section", old), Error);
+  std::string path;
+  doc = builtinDocument();
+  doc["sections"]["descriptors"]["roundness"] = "section-wobbliness";
+  EXPECT_NE(loadError(doc, &path).find("section-wobbliness"), std::string::npos);
+  EXPECT_EQ(path, "sections.descriptors.roundness");
+  doc = builtinDocument();
+  doc["holes"]["words"]["oval"] = "egg";
+  EXPECT_NE(loadError(doc, &path).find("'egg' is no noun"), std::string::npos);
+  EXPECT_EQ(path, "holes.words.oval");
+  doc = builtinDocument();
+  doc["sections"]["words"][0] = "Cross Section";
+  loadError(doc, &path);
+  EXPECT_EQ(path, "sections.words[0]");
+}
+
 // Users extend the vocabulary with their own words.
 TEST(Vocabulary, ExtendedVocabulary) {
   auto doc = builtinDocument();

@@ -225,6 +225,19 @@ TEST(CsgQueryText, RoutingOfQueryTexts) {
   EXPECT_FALSE(isCsgQueryText("find a frobnicated shape", v()));  // the linguistic error is the better one
 }
 
+// The shape words of holes are the vocabulary's: a user's file adds its own.
+TEST(CsgQueryText, HoleWordsAreVocabularyData) {
+  auto doc = v().document();
+  doc["holes"]["words"]["ball-like"] = "sphere";
+  doc["holes"]["plain"] = "cone";
+  const Vocabulary custom = Vocabulary::fromJson(doc);
+  EXPECT_EQ(testing::csgShape(parseCsgQuery("a cube with a ball-like hole", custom, {}, 100)),
+            "difference('a cube', 'a ball-like hole')");
+  const CsgQuery plain = parseCsgQuery("a cube with a hole", custom, {}, 100);
+  EXPECT_EQ(plain.leaves[1].condition->root.noun, "cone");
+  EXPECT_NE(errorOf("a cube with a ball-like hole").find("ball-like"), std::string::npos);
+}
+
 // Spatial relations (Zhang, Pham & Chen, §2.2): "Y on top of X" is the union of both with Y placed
 // against X; "X and Y to its right" places Y against the operand before it.
 TEST(CsgQueryText, SpatialRelations) {
