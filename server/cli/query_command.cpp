@@ -28,6 +28,9 @@ void printError(const nlohmann::json& error) {
 }
 
 void printTable(const nlohmann::json& answer) {
+  // How the text was read, in the grammar's own words (parsed.read_as), so a surprise is seen.
+  if (answer.contains("parsed") && answer["parsed"].contains("read_as"))
+    std::cout << "read as: " << answer["parsed"]["read_as"].get<std::string>() << "\n";
   const nlohmann::json& results = answer["results"];
   if (results.empty()) {
     std::cout << "no results\n";

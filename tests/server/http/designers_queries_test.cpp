@@ -263,6 +263,9 @@ TEST(DesignersQueries, FsdbQueryRoutesThem) {
     EXPECT_EQ(r.exitCode, 0) << text << r.out;
     EXPECT_NE(r.out.find("rank"), std::string::npos) << r.out;
   }
+  EXPECT_NE(fsdb::test::runFsdb({"query", "show me something twisted", "--server", url})
+                .out.find("read as: find a shape that is twisted"),
+            std::string::npos);
   const auto csg = fsdb::test::runFsdb({"query", "a very bent cylinder united with a very sharp pyramid", "--server", url});
   EXPECT_EQ(csg.exitCode, 0) << csg.out;
   EXPECT_NE(csg.out.find("bent-rod-and-pyramid"), std::string::npos) << csg.out;
