@@ -225,7 +225,7 @@ TEST(QueryCli, DatabaseFileAndServer) {
 
   const auto none = runFsdb({"query", "find an extremely twisted part", "--db", db});
   EXPECT_EQ(none.exitCode, 0);
-  EXPECT_EQ(none.out, "no results\n");
+  EXPECT_EQ(none.out, "read as: find a part that is extremely twisted\nno results\n");
 
   const auto refused = runFsdb({"query", "find a slighly bent part", "--db", db}, true);
   EXPECT_EQ(refused.exitCode, 1) << refused.out;
