@@ -322,8 +322,20 @@ class Parser {
     const size_t n = matchPhrase(nounWords_, &word);
     if (n == 0 && hasModifiers && !article && !prefix_) {
       // A bare description ("slightly bent", "round and tapered") is a query about any shape. With
-      // an article ("a slightly bent") the noun is still expected: the phrase is unfinished.
+      // an article ("a slightly bent") the noun is still expected: the phrase is unfinished. It
+      // may take a "with" clause as a noun does: "very sharp with squarish traverse section"
+      // (Zhang, Pham & Chen, §1), read as "a very sharp shape with squarish traverse section".
       *subject = "any";
+      if (at("with") && !(pos_ + 1 < tokens_.size() && tokens_[pos_ + 1].text == "score")) {
+        ++pos_;
+        if (!startsCondition()) fail(conditionStarts());
+        parts.push_back(condition());
+        QueryCondition all;
+        all.kind = Kind::kAnd;
+        all.nounPhrase = true;
+        all.children = std::move(parts);
+        return all;
+      }
       return std::move(parts[0]);
     }
     if (n == 0) {

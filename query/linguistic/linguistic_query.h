@@ -11,7 +11,7 @@
 //   noun_phrase = [ article ] [ condition ] noun
 //                 [ ("that"|"which") ("is"|"are"|"has"|"have") condition | "with" condition ]
 //               | [ article ] pronoun [ condition ] [ relative clause ]     ("something twisted")
-//               | condition                     (a bare description: first phrase, no article)
+//               | condition [ "with" condition ]  (a bare description: first phrase, no article)
 // The vocabulary's fillers ("please") are skipped wherever they stand.
 //   condition   = conjunct { "or" conjunct };  conjunct = negation { ["and"|","] negation }
 //   negation    = "not" negation | "(" condition ")" | descriptor degree | [ intensity ] adjective

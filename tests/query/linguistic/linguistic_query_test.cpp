@@ -261,6 +261,11 @@ TEST(LinguisticQuery, TraverseSections) {
              *v().intensity("very"), "a very round cross-section");
   expectLeaf(parse("a shape with a circular cross-section").root, "section-roundness", v().plain(),
              "a circular cross-section");
+  // The seed's own words for Figure 1, a bare description with a "with" clause.
+  EXPECT_EQ(meaning("very sharp with squarish traverse section"),
+            meaning("find a very sharp shape with squarish traverse section"));
+  EXPECT_EQ(meaning("show me something very sharp with a square cross-section"),
+            meaning("find a very sharp shape with squarish traverse section"));
   // Without a section word the adjective means the whole shape, as before.
   expectLeaf(parse("a squarish shape").root, "squariness", v().plain(), "squarish");
   // An adjective that says nothing of a section is an error naming the words and the ones that do.
