@@ -24,8 +24,9 @@ bool endsWith(const std::string& s, const std::string& suffix) {
 
 int runEval(const std::string& file, const EvalOptions& options) {
   try {
-    if (!options.meshPath.empty() && !endsWith(options.meshPath, ".obj") && !endsWith(options.meshPath, ".stl"))
-      throw Error(errc::kInvalidParameter, "--mesh takes a file ending in .obj or .stl", "--mesh");
+    if (!options.meshPath.empty() && !endsWith(options.meshPath, ".obj") && !endsWith(options.meshPath, ".stl") &&
+        !endsWith(options.meshPath, ".glb"))
+      throw Error(errc::kInvalidParameter, "--mesh takes a file ending in .obj, .stl or .glb", "--mesh");
     if (options.meshBound != "lower" && options.meshBound != "upper")
       throw Error(errc::kInvalidParameter, "--mesh-bound is lower or upper", "--mesh-bound");
     std::unique_ptr<Store> store;
@@ -58,11 +59,23 @@ int runEval(const std::string& file, const EvalOptions& options) {
         evaluateShape(request, limits, store ? storeResolver(*store) : ReferenceResolver{});
     nlohmann::json result = evaluation.result;
     if (!options.meshPath.empty()) {
-      const EnvelopeBound bound = options.meshBound == "lower" ? EnvelopeBound::kLower : EnvelopeBound::kUpper;
-      const TriangleMesh mesh = extractMesh(*evaluation.grid, options.meshAlpha, bound);
-      writeBinaryFile(options.meshPath, endsWith(options.meshPath, ".stl") ? toBinaryStl(mesh) : toObj(mesh), "--mesh");
-      result["mesh"] = {{"path", options.meshPath}, {"alpha", options.meshAlpha}, {"bound", options.meshBound},
-                        {"vertices", mesh.vertices.size()}, {"triangles", mesh.triangles.size()}};
+      if (endsWith(options.meshPath, ".glb")) {
+        // Both bounds at --mesh-alpha, as two named meshes (--mesh-bound does not apply).
+        const std::vector<NamedMesh> both = {
+            {"lower", extractMesh(*evaluation.grid, options.meshAlpha, EnvelopeBound::kLower)},
+            {"upper", extractMesh(*evaluation.grid, options.meshAlpha, EnvelopeBound::kUpper)}};
+        writeBinaryFile(options.meshPath, toGlb(both), "--mesh");
+        result["mesh"] = {{"path", options.meshPath}, {"alpha", options.meshAlpha}, {"bound", "both"}};
+        for (const NamedMesh& m : both)
+          result["mesh"][m.first] = {{"vertices", m.second.vertices.size()}, {"triangles", m.second.triangles.size()}};
+      } else {
+        const EnvelopeBound bound = options.meshBound == "lower" ? EnvelopeBound::kLower : EnvelopeBound::kUpper;
+        const TriangleMesh mesh = extractMesh(*evaluation.grid, options.meshAlpha, bound);
+        writeBinaryFile(options.meshPath, endsWith(options.meshPath, ".stl") ? toBinaryStl(mesh) : toObj(mesh),
+                        "--mesh");
+        result["mesh"] = {{"path", options.meshPath}, {"alpha", options.meshAlpha}, {"bound", options.meshBound},
+                          {"vertices", mesh.vertices.size()}, {"triangles", mesh.triangles.size()}};
+      }
     }
     if (!options.vdbPath.empty()) {
       writeBinaryFile(options.vdbPath, vdbBytes(*evaluation.grid), "--vdb");

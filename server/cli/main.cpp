@@ -204,6 +204,13 @@ int main(int argc, char** argv) {
   serveCmd->add_option("--max-fair-curve-points", serve.limits.fairCurve.maxCurvePoints,
                        "most curve points (candidates x pieces x samples) of one fair-curve answer")
       ->check(CLI::PositiveNumber)->capture_default_str();
+  serveCmd->add_option("--cors", serve.corsOrigin,
+                       "allow pages from ORIGIN (http(s)://host[:port], or *) to call the API; off by default")
+      ->check([](const std::string& origin) {
+        return fsdb::validCorsOrigin(origin) ? std::string()
+                                             : "--cors takes an origin such as http://localhost:5173 (scheme, host, "
+                                               "optional port, no path) or *; got '" + origin + "'";
+      });
   serveCmd->add_flag_callback("--no-warm-graphs", [&serve]() { serve.warmGraphs = false; },
                               "do not build the graphs of structural search at start (the first query does)");
   serveCmd->add_option("--max-query-ms", serve.limits.maxQueryMs,
@@ -221,7 +228,8 @@ int main(int argc, char** argv) {
       ->required();
   evalCmd->add_option("--resolution", eval.resolution, "voxels along the longest side")->check(CLI::Range(2, 4096));
   evalCmd->add_option("--alphas", eval.alphas, "levels, comma separated")->delimiter(',');
-  evalCmd->add_option("--mesh", eval.meshPath, "write the surface of lower/upper(alpha) to OUT.obj or OUT.stl");
+  evalCmd->add_option("--mesh", eval.meshPath,
+                      "write the surface of lower/upper(alpha) to OUT.obj or OUT.stl, or both to OUT.glb");
   evalCmd->add_option("--mesh-alpha", eval.meshAlpha, "the level of --mesh")->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   evalCmd->add_option("--mesh-bound", eval.meshBound, "lower or upper")

@@ -1,7 +1,7 @@
 // POST /evaluate (inline documents) and the stored-shape forms (docs/api.md §3, §4):
 //   POST /shapes/{id}/evaluate        the same answer for a stored shape, cached by content
 //   GET  /shapes/{id}/membership      the levels of one point
-//   GET  /shapes/{id}/mesh            OBJ or binary STL of lower/upper(α), cached
+//   GET  /shapes/{id}/mesh            OBJ or binary STL of lower/upper(α), or GLB of both, cached
 //   GET  /shapes/{id}/grid.vdb        both grids as a .vdb file, cached
 // Cache keys hash the shape's document, the documents of everything it references (so any
 // change below a shape changes its keys; the store also drops the rows on every write), and
@@ -147,21 +147,33 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
     if (bound != "lower" && bound != "upper")
       throw Error(errc::kInvalidParameter, "bound must be lower or upper, got \"" + bound + "\"", "bound");
     const std::string format = req.hasQueryParam("format") ? req.queryParam("format") : "obj";
-    if (format != "obj" && format != "stl")
-      throw Error(errc::kInvalidParameter, "format must be obj or stl, got \"" + format + "\"", "format");
+    if (format != "obj" && format != "stl" && format != "glb")
+      throw Error(errc::kInvalidParameter, "format must be obj, stl or glb, got \"" + format + "\"", "format");
+    const bool glb = format == "glb";  // both bounds in one file: `bound` does not apply
     const int resolution = exportResolution(req, limits.maxResolution);
     const StoredShape shape = loadShape(store, shapeId(req), limits.maxNodes);
-    const std::string filename = shape.object.name + "-" + bound + "-" + std::to_string(alpha) + "." + format;
-    const std::string contentType = format == "obj" ? "model/obj" : "model/stl";
+    const std::string filename =
+        shape.object.name + "-" + (glb ? std::string() : bound + "-") + std::to_string(alpha) + "." + format;
+    const std::string contentType = glb ? "model/gltf-binary" : format == "obj" ? "model/obj" : "model/stl";
     const std::string key = cacheKey("mesh", shape,
-                                     nlohmann::json{{"alpha", alpha}, {"bound", bound}, {"format", format},
-                                                    {"resolution", resolution}}.dump());
+                                     nlohmann::json{{"alpha", alpha}, {"bound", glb ? "both" : bound},
+                                                    {"format", format}, {"resolution", resolution}}.dump());
     if (auto hit = store.cachedEvaluation(key)) return bytesResponse(hit->vdb, contentType, filename, true);
     const Evaluation e = evaluateParsedShape({{"resolution", resolution}, {"alphas", {alpha}}}, shape.parsed, limits);
-    const TriangleMesh mesh =
-        extractMesh(*e.grid, alpha, bound == "lower" ? EnvelopeBound::kLower : EnvelopeBound::kUpper);
-    std::string bytes = format == "obj" ? toObj(mesh) : toBinaryStl(mesh);
-    store.storeEvaluation(shape.object.id, key, {nlohmann::json{{"triangles", mesh.triangles.size()}}.dump(), bytes});
+    std::string bytes;
+    size_t triangles = 0;
+    if (glb) {
+      std::vector<NamedMesh> both = {{"lower", extractMesh(*e.grid, alpha, EnvelopeBound::kLower)},
+                                     {"upper", extractMesh(*e.grid, alpha, EnvelopeBound::kUpper)}};
+      for (const NamedMesh& m : both) triangles += m.second.triangles.size();
+      bytes = toGlb(both);
+    } else {
+      const TriangleMesh mesh =
+          extractMesh(*e.grid, alpha, bound == "lower" ? EnvelopeBound::kLower : EnvelopeBound::kUpper);
+      triangles = mesh.triangles.size();
+      bytes = format == "obj" ? toObj(mesh) : toBinaryStl(mesh);
+    }
+    store.storeEvaluation(shape.object.id, key, {nlohmann::json{{"triangles", triangles}}.dump(), bytes});
     return bytesResponse(std::move(bytes), contentType, filename, false);
   });
 

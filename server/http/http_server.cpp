@@ -10,6 +10,7 @@
 
 #include "geometry/core/error.h"
 #include "query/json/json_body.h"
+#include "server/http/response_encoding.h"
 #include "server/service/error_json.h"
 
 namespace fsdb {
@@ -81,6 +82,25 @@ void readBody(const httplib::Request& req, const httplib::ContentReader& content
   }
 }
 
+// A GET's 200: its ETag, 304 when the client has it, gzip for binary exports the client accepts.
+void conditionalAndEncoded(const httplib::Request& req, httplib::Response& res) {
+  const std::string tag = entityTag(res.body);
+  res.set_header("ETag", tag);
+  if (req.has_header("If-None-Match") && ifNoneMatchHits(req.get_header_value("If-None-Match"), tag)) {
+    res.status = 304;
+    res.body.clear();
+    return;
+  }
+  const std::string type = res.get_header_value("Content-Type");
+  if (compressedHere(type)) {
+    res.set_header("Vary", "Accept-Encoding");
+    if (acceptsGzip(req.get_header_value("Accept-Encoding"))) {
+      res.body = gzipBody(res.body);
+      res.set_header("Content-Encoding", "gzip");
+    }
+  }
+}
+
 void sendError(httplib::Response& res, const Error& e) {
   sendJson(res, httpStatusFor(e.code()), errorBody(e.code(), e.what(), e.path()));
 }
@@ -135,6 +155,7 @@ void HttpServer::addRoute(const std::string& method, const std::string& openapiP
         res.status = out.status;
         res.set_content(out.rawBody, out.contentType.c_str());
       }
+      if (req.method == "GET" && res.status == 200) conditionalAndEncoded(req, res);
     } catch (const Error& e) {
       sendError(res, e);
     }
@@ -168,6 +189,19 @@ void HttpServer::installHandlers() {
   const int threads = options_.threads > 0 ? options_.threads
                                            : std::max(2u, std::thread::hardware_concurrency());
   s.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<size_t>(threads)); };
+
+  if (!options_.corsOrigin.empty()) {
+    // Every answer, errors included, names the origin; a preflight is answered for any path.
+    s.set_default_headers({{"Access-Control-Allow-Origin", options_.corsOrigin},
+                           {"Vary", "Origin"},
+                           {"Access-Control-Expose-Headers", "ETag, Location, Content-Disposition, X-Fsdb-Cache"}});
+    s.Options(".*", [](const httplib::Request&, httplib::Response& res) {
+      res.status = 204;
+      res.set_header("Access-Control-Allow-Methods", "GET, POST, PUT, DELETE, OPTIONS");
+      res.set_header("Access-Control-Allow-Headers", "Content-Type, Authorization, If-None-Match, If-Match");
+      res.set_header("Access-Control-Max-Age", "600");
+    });
+  }
 
   s.set_pre_routing_handler([](const httplib::Request&, httplib::Response&) {
     tRequestStart = std::chrono::steady_clock::now();
@@ -221,6 +255,11 @@ void HttpServer::installHandlers() {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - tRequestStart).count();
     spdlog::info("{} {} {} {}B {:.2f}ms", req.method, req.path, res.status, res.body.size(), ms);
   });
+}
+
+bool validCorsOrigin(const std::string& origin) {
+  static const std::regex form("https?://[A-Za-z0-9.-]+(:[0-9]{1,5})?");
+  return origin == "*" || std::regex_match(origin, form);
 }
 
 int HttpServer::bind() {

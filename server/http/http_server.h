@@ -9,6 +9,10 @@
 // - Routes are registered through addRoute(), which records them; routes() is what
 //   GET /openapi.json must describe (a test holds the two equal).
 // - start() binds before it returns, so the caller can print the real port (`--port 0`).
+// - A GET answered 200 carries a weak ETag of its body and is 304 without a body when
+//   If-None-Match names it (server/http/response_encoding.h); binary exports (meshes, grids) are
+//   gzipped when the client accepts it (JSON and SVG by cpp-httplib itself).
+// - CORS is off unless ServerOptions::corsOrigin is set.
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
@@ -39,8 +43,14 @@ struct ServerOptions {
   // Build the stored shapes' graphs of structural search in the background at start
   // (server/service/graph_warmup.h); --no-warm-graphs turns it off.
   bool warmGraphs = true;
+  // --cors ORIGIN: answers carry Access-Control-Allow-Origin: ORIGIN and OPTIONS preflights are
+  // answered, so a page served from ORIGIN may call the API; empty (the default): no CORS.
+  std::string corsOrigin;
   ServerLimits limits;
 };
+
+// Whether `origin` may follow --cors: "*" or scheme://host[:port] (http or https, no path).
+bool validCorsOrigin(const std::string& origin);
 
 // What a handler gets: the parsed JSON body (null for GET and raw-body routes), the raw request
 // for query strings, and the body bytes as received.

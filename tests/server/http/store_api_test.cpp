@@ -228,6 +228,24 @@ TEST_F(StoreApi, MembershipAndExports) {
   std::memcpy(&triangles, stl.body.data() + 80, 4);
   EXPECT_GT(triangles, 0u);
   EXPECT_EQ(stl.body.size(), 84u + 50u * triangles);
+  // GLB: lower and upper at one α as two named meshes (`bound` does not apply).
+  auto glb = server.get(at + "/mesh?alpha=0.5&format=glb&resolution=24");
+  ASSERT_EQ(glb.status, 200) << glb.body.substr(0, 200);
+  EXPECT_EQ(glb.contentType, "model/gltf-binary");
+  ASSERT_GE(glb.body.size(), 20u);
+  EXPECT_EQ(glb.body.substr(0, 4), "glTF");
+  uint32_t jsonLength = 0;
+  std::memcpy(&jsonLength, glb.body.data() + 12, 4);
+  const json gltf = json::parse(glb.body.substr(20, jsonLength));
+  ASSERT_EQ(gltf["meshes"].size(), 2u);
+  EXPECT_EQ(gltf["meshes"][0]["name"], "lower");
+  EXPECT_EQ(gltf["meshes"][1]["name"], "upper");
+  // The fuzzy radius: upper(0.5) reaches 1.1, lower(0.5) 0.9 (within a voxel of 2.4 / 24).
+  const double upperMax = gltf["accessors"][gltf["meshes"][1]["primitives"][0]["attributes"]["POSITION"].get<size_t>()]["max"][0];
+  const double lowerMax = gltf["accessors"][gltf["meshes"][0]["primitives"][0]["attributes"]["POSITION"].get<size_t>()]["max"][0];
+  EXPECT_GT(upperMax, lowerMax);
+  EXPECT_NEAR(upperMax, 1.1, 0.15);
+  EXPECT_NEAR(lowerMax, 0.9, 0.15);
   auto vdb = server.get(at + "/grid.vdb?resolution=24");
   ASSERT_EQ(vdb.status, 200) << vdb.body.substr(0, 200);
   EXPECT_EQ(vdb.contentType, "application/octet-stream");
