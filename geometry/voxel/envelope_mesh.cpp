@@ -23,6 +23,20 @@ constexpr float kInside = -0.5f, kOutside = 0.5f;
 
 }  // namespace
 
+std::vector<Vec3> vertexNormals(const TriangleMesh& mesh) {
+  std::vector<Vec3> normals(mesh.vertices.size(), Vec3{0, 0, 0});
+  for (const auto& t : mesh.triangles) {
+    // The cross product's length is twice the triangle's area: the weights.
+    const Vec3 n = cross(mesh.vertices[t[1]] - mesh.vertices[t[0]], mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+    for (std::uint32_t i : t) normals[i] = normals[i] + n;
+  }
+  for (Vec3& n : normals) {
+    const double len = norm(n);
+    n = len > 0 ? n / len : Vec3{0, 0, 0};
+  }
+  return normals;
+}
+
 TriangleMesh extractMesh(const EnvelopeGrid& grid, double alpha, EnvelopeBound bound) {
   if (!(alpha >= 0.0 && alpha <= 1.0)) throw Error(errc::kInvalidParameter, "alpha must lie in [0, 1]", "alpha");
   initializeOpenVdb();

@@ -29,6 +29,10 @@ struct TriangleMesh {
   std::vector<std::array<std::uint32_t, 3>> triangles;
 };
 
+// Unit normals per vertex: the area-weighted mean of the normals of its triangles (their winding
+// gives the side); (0, 0, 0) for a vertex of no triangle or of degenerate ones only.
+std::vector<Vec3> vertexNormals(const TriangleMesh& mesh);
+
 // Throws fsdb::Error(invalid_parameter, "alpha") unless 0 <= alpha <= 1.
 TriangleMesh extractMesh(const EnvelopeGrid& grid, double alpha, EnvelopeBound bound);
 

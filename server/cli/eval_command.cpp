@@ -7,6 +7,7 @@
 #include "query/json/json_body.h"
 #include "server/service/documents.h"
 #include "geometry/voxel/envelope_mesh.h"
+#include "geometry/voxel/smooth_mesh.h"
 #include "server/service/evaluation.h"
 #include "server/cli/file_io.h"
 #include "server/service/mesh_format.h"
@@ -62,15 +63,15 @@ int runEval(const std::string& file, const EvalOptions& options) {
       if (endsWith(options.meshPath, ".glb")) {
         // Both bounds at --mesh-alpha, as two named meshes (--mesh-bound does not apply).
         const std::vector<NamedMesh> both = {
-            {"lower", extractMesh(*evaluation.grid, options.meshAlpha, EnvelopeBound::kLower)},
-            {"upper", extractMesh(*evaluation.grid, options.meshAlpha, EnvelopeBound::kUpper)}};
+            {"lower", extractSmoothMesh(*evaluation.grid, *evaluation.source, options.meshAlpha, EnvelopeBound::kLower)},
+            {"upper", extractSmoothMesh(*evaluation.grid, *evaluation.source, options.meshAlpha, EnvelopeBound::kUpper)}};
         writeBinaryFile(options.meshPath, toGlb(both), "--mesh");
         result["mesh"] = {{"path", options.meshPath}, {"alpha", options.meshAlpha}, {"bound", "both"}};
         for (const NamedMesh& m : both)
           result["mesh"][m.first] = {{"vertices", m.second.vertices.size()}, {"triangles", m.second.triangles.size()}};
       } else {
         const EnvelopeBound bound = options.meshBound == "lower" ? EnvelopeBound::kLower : EnvelopeBound::kUpper;
-        const TriangleMesh mesh = extractMesh(*evaluation.grid, options.meshAlpha, bound);
+        const TriangleMesh mesh = extractSmoothMesh(*evaluation.grid, *evaluation.source, options.meshAlpha, bound);
         writeBinaryFile(options.meshPath, endsWith(options.meshPath, ".stl") ? toBinaryStl(mesh) : toObj(mesh),
                         "--mesh");
         result["mesh"] = {{"path", options.meshPath}, {"alpha", options.meshAlpha}, {"bound", options.meshBound},

@@ -12,6 +12,7 @@
 #include "db/content_hash.h"
 #include "db/store.h"
 #include "geometry/voxel/envelope_mesh.h"
+#include "geometry/voxel/smooth_mesh.h"
 #include "geometry/core/error.h"
 #include "query/json/json_body.h"
 #include "server/http/api.h"
@@ -157,19 +158,20 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
     const std::string contentType = glb ? "model/gltf-binary" : format == "obj" ? "model/obj" : "model/stl";
     const std::string key = cacheKey("mesh", shape,
                                      nlohmann::json{{"alpha", alpha}, {"bound", glb ? "both" : bound},
-                                                    {"format", format}, {"resolution", resolution}}.dump());
+                                                    {"format", format}, {"resolution", resolution},
+                                                    {"surface", "smooth"}}.dump());
     if (auto hit = store.cachedEvaluation(key)) return bytesResponse(hit->vdb, contentType, filename, true);
     const Evaluation e = evaluateParsedShape({{"resolution", resolution}, {"alphas", {alpha}}}, shape.parsed, limits);
     std::string bytes;
     size_t triangles = 0;
     if (glb) {
-      std::vector<NamedMesh> both = {{"lower", extractMesh(*e.grid, alpha, EnvelopeBound::kLower)},
-                                     {"upper", extractMesh(*e.grid, alpha, EnvelopeBound::kUpper)}};
+      std::vector<NamedMesh> both = {{"lower", extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kLower)},
+                                     {"upper", extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kUpper)}};
       for (const NamedMesh& m : both) triangles += m.second.triangles.size();
       bytes = toGlb(both);
     } else {
-      const TriangleMesh mesh =
-          extractMesh(*e.grid, alpha, bound == "lower" ? EnvelopeBound::kLower : EnvelopeBound::kUpper);
+      const TriangleMesh mesh = extractSmoothMesh(*e.grid, *e.source, alpha,
+                                                  bound == "lower" ? EnvelopeBound::kLower : EnvelopeBound::kUpper);
       triangles = mesh.triangles.size();
       bytes = format == "obj" ? toObj(mesh) : toBinaryStl(mesh);
     }

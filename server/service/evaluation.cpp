@@ -157,7 +157,7 @@ Evaluation evaluate(const nlohmann::json& request, const EvaluationLimits& limit
             {"tiles", stats.activeTiles},
             {"tile_voxels", stats.tileVoxels},
             {"memory_bytes", stats.memoryBytes}}}};
-  return {std::move(result), std::move(grid)};
+  return {std::move(result), std::move(grid), shape.field};
 }
 
 }  // namespace

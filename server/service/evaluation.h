@@ -48,6 +48,7 @@ struct EvaluationLimits {
 struct Evaluation {
   nlohmann::json result;
   std::shared_ptr<const EnvelopeGrid> grid;
+  std::shared_ptr<const AlphaFieldSource> source;  // what the grid sampled: smooth meshes read it exactly
 };
 // `resolver` resolves references to stored parts and shapes (none: references are refused).
 Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& limits,

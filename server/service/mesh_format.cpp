@@ -26,20 +26,6 @@ void put(std::string& out, T v) {
   out.append(b, sizeof(T));
 }
 
-// Unit normals per vertex: each triangle adds its (area-weighted) normal to its three vertices.
-std::vector<Vec3> vertexNormals(const TriangleMesh& mesh) {
-  std::vector<Vec3> normals(mesh.vertices.size(), Vec3{0, 0, 0});
-  for (const auto& t : mesh.triangles) {
-    const Vec3 n = cross(mesh.vertices[t[1]] - mesh.vertices[t[0]], mesh.vertices[t[2]] - mesh.vertices[t[0]]);
-    for (std::uint32_t i : t) normals[i] = normals[i] + n;
-  }
-  for (Vec3& n : normals) {
-    const double len = norm(n);
-    n = len > 0 ? n / len : Vec3{0, 0, 1};  // a vertex of degenerate triangles only
-  }
-  return normals;
-}
-
 }  // namespace
 
 std::string toGlb(const std::vector<NamedMesh>& meshes) {
@@ -83,8 +69,11 @@ std::string toGlb(const std::vector<NamedMesh>& meshes) {
         hi[k] = std::max(hi[k], f[k]);
       }
     }
-    for (const Vec3& n : vertexNormals(mesh))
-      for (double c : {n.x, n.y, n.z}) put(normals, static_cast<float>(c));
+    // glTF wants unit normals: a vertex of degenerate triangles only gets +z.
+    for (const Vec3& n : vertexNormals(mesh)) {
+      const Vec3 unit = norm(n) > 0 ? n : Vec3{0, 0, 1};
+      for (double c : {unit.x, unit.y, unit.z}) put(normals, static_cast<float>(c));
+    }
     for (const auto& t : mesh.triangles)
       for (std::uint32_t i : t) put(indices, i);
     constexpr int kFloat = 5126, kUnsignedInt = 5125, kArrayBuffer = 34962, kElementArrayBuffer = 34963;

@@ -4,12 +4,14 @@
 #include <gtest/gtest.h>
 #include <openvdb/io/Stream.h>
 
+#include <cmath>
 #include <map>
 #include <sstream>
 #include <utility>
 
 #include "geometry/voxel/envelope_grid_vdb.h"
 #include "geometry/core/error.h"
+#include "tests/geometry/mesh_checks.h"
 #include "tests/geometry/fuzzy_ball.h"
 
 namespace fsdb {
@@ -17,25 +19,8 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Signed volume by the divergence theorem: positive when the triangles face outwards.
-double signedVolume(const TriangleMesh& m) {
-  double v = 0;
-  for (const auto& t : m.triangles) v += dot(m.vertices[t[0]], cross(m.vertices[t[1]], m.vertices[t[2]])) / 6.0;
-  return v;
-}
-
-// Closed and consistently oriented: every directed edge appears once and its reverse once.
-bool closedAndOriented(const TriangleMesh& m) {
-  std::map<std::pair<uint32_t, uint32_t>, int> directed;
-  for (const auto& t : m.triangles)
-    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
-  for (const auto& [e, n] : directed) {
-    if (n != 1) return false;
-    auto rev = directed.find({e.second, e.first});
-    if (rev == directed.end() || rev->second != 1) return false;
-  }
-  return !m.triangles.empty();
-}
+using testing::closedAndOriented;
+using testing::signedVolume;
 
 class EnvelopeMesh : public ::testing::Test {
  protected:
@@ -83,6 +68,33 @@ TEST_F(EnvelopeMesh, VdbBytesReadBackAsTheTwoGrids) {
   ASSERT_TRUE(byName.count("upper") && byName.count("lower"));
   EXPECT_EQ(byName["upper"]->activeVoxelCount(), upperGrid(*grid)->activeVoxelCount());
   EXPECT_EQ(byName["lower"]->background(), kNeverInside);
+}
+
+}  // namespace
+}  // namespace fsdb
+
+namespace fsdb {
+namespace {
+
+// vertexNormals: the area-weighted mean of a vertex's triangle normals, unit length; zero for a
+// vertex of no triangle.
+TEST(VertexNormals, AreAreaWeightedUnitMeans) {
+  TriangleMesh m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {5, 5, 5}};
+  m.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};  // a tetrahedron, outward
+  const std::vector<Vec3> n = vertexNormals(m);
+  ASSERT_EQ(n.size(), 5u);
+  // At the origin: the three axis faces, -x, -y, -z, equal areas.
+  const double s = 1 / std::sqrt(3.0);
+  EXPECT_NEAR(n[0].x, -s, 1e-12);
+  EXPECT_NEAR(n[0].y, -s, 1e-12);
+  EXPECT_NEAR(n[0].z, -s, 1e-12);
+  // At (1, 0, 0): -z and -y (area 1/2 each) and the slanted face (1, 1, 1)/√3 (area √3/2): sum (1, 0, 0)/2.
+  EXPECT_NEAR(n[1].x, 1, 1e-12);
+  EXPECT_NEAR(n[1].y, 0, 1e-12);
+  EXPECT_NEAR(n[1].z, 0, 1e-12);
+  EXPECT_EQ(n[4].x, 0);
+  EXPECT_EQ(norm(n[4]), 0);
 }
 
 }  // namespace
