@@ -20,6 +20,8 @@
 #include "server/service/evaluation.h"
 #include "server/http/http_server.h"
 #include "server/service/mesh_format.h"
+#include "server/service/png_format.h"
+#include "server/service/thumbnail.h"
 
 namespace fsdb {
 
@@ -42,6 +44,9 @@ constexpr int kDefaultExportResolution = 64;
 
 int64_t shapeId(const ApiRequest& req) { return positiveInteger(req.pathParams[0], "id"); }
 
+// Voxels across a thumbnail's shape: enough for 128 pixels once the vertices are on the surface.
+constexpr int kThumbnailResolution = 48;
+
 
 // The stored shape, parsed once (the same parse serves the cache key and, on a miss, the
 // evaluation), and a fingerprint of everything it is made of: its document and each referenced
@@ -52,8 +57,8 @@ struct StoredShape {
   std::string fingerprint;
 };
 
-StoredShape loadShape(const Store& store, int64_t id, size_t maxNodes) {
-  StoredShape s{store.get("shape", id), {}, ""};
+StoredShape loadShape(const Store& store, int64_t id, size_t maxNodes, const std::string& kind = "shape") {
+  StoredShape s{store.get(kind, id), {}, ""};
   std::string parts = s.object.documentJson;
   const ReferenceResolver base = storeResolver(store);
   const ReferenceResolver recording = [&](const std::string& kind, const nlohmann::json& key) {
@@ -83,9 +88,11 @@ int exportResolution(const ApiRequest& req, int maxResolution) {
 }
 
 ApiResponse bytesResponse(std::string bytes, const std::string& contentType, const std::string& filename,
-                          bool cached) {
+                          bool cached, bool inlineView = false) {
   ApiResponse out{200, nullptr, std::move(bytes), contentType};
-  out.headers.emplace_back("Content-Disposition", "attachment; filename=\"" + filename + "\"");
+  // Pictures open in the browser; mesh and grid files download.
+  out.headers.emplace_back("Content-Disposition",
+                           std::string(inlineView ? "inline" : "attachment") + "; filename=\"" + filename + "\"");
   out.headers.emplace_back("X-Fsdb-Cache", cached ? "hit" : "miss");
   return out;
 }
@@ -178,6 +185,28 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
     store.storeEvaluation(shape.object.id, key, {nlohmann::json{{"triangles", triangles}}.dump(), bytes});
     return bytesResponse(std::move(bytes), contentType, filename, false);
   });
+
+  // Thumbnails of stored shapes and parts: lower(α) solid and upper(α) translucent
+  // (server/service/thumbnail.h), from smooth meshes at 48 voxels across, cached by content.
+  for (const std::string kind : {"shape", "part"}) {
+    server.addRoute("GET", "/" + kind + "s/{id}/thumbnail.png", [limits, &store, kind](const ApiRequest& req) {
+      const double alpha = numberParam(req, "alpha", 0.5);
+      if (alpha < 0.0 || alpha > 1.0) throw Error(errc::kInvalidParameter, "alpha lies in [0, 1]", "alpha");
+      const double size = numberParam(req, "size", 128);
+      if (size != std::floor(size) || size < 16 || size > 512)
+        throw Error(errc::kInvalidParameter, "size is an integer in [16, 512]", "size");
+      const StoredShape shape = loadShape(store, shapeId(req), limits.maxNodes, kind);
+      const std::string filename = shape.object.name + ".png";
+      const std::string key = cacheKey("thumbnail", shape, nlohmann::json{{"alpha", alpha}, {"size", size}}.dump());
+      if (auto hit = store.cachedEvaluation(key)) return bytesResponse(hit->vdb, "image/png", filename, true, true);
+      const Evaluation e = evaluateParsedShape({{"resolution", kThumbnailResolution}, {"alphas", {alpha}}}, shape.parsed, limits);
+      std::string bytes = toPng(renderThumbnail(extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kLower),
+                                                extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kUpper),
+                                                static_cast<int>(size)));
+      store.storeEvaluation(shape.object.id, key, {"{}", bytes});
+      return bytesResponse(std::move(bytes), "image/png", filename, false, true);
+    });
+  }
 
   server.addRoute("GET", "/shapes/{id}/grid.vdb", [limits, &store](const ApiRequest& req) {
     const int resolution = exportResolution(req, limits.maxResolution);

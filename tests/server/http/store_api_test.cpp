@@ -246,6 +246,19 @@ TEST_F(StoreApi, MembershipAndExports) {
   EXPECT_GT(upperMax, lowerMax);
   EXPECT_NEAR(upperMax, 1.1, 0.15);
   EXPECT_NEAR(lowerMax, 0.9, 0.15);
+  // Thumbnails: a PNG, cached by content; parts have them too.
+  auto png = server.get(at + "/thumbnail.png?size=64");
+  ASSERT_EQ(png.status, 200) << png.body.substr(0, 200);
+  EXPECT_EQ(png.contentType, "image/png");
+  EXPECT_EQ(png.body.substr(1, 3), "PNG");
+  EXPECT_EQ(server.get(at + "/thumbnail.png?size=64").body, png.body);
+  auto partPng = server.get("/parts/" + std::to_string(server.get("/parts").json["items"][0]["id"].get<int64_t>()) +
+                            "/thumbnail.png");
+  EXPECT_EQ(partPng.status, 200) << partPng.body.substr(0, 200);
+  EXPECT_EQ(partPng.contentType, "image/png");
+  EXPECT_EQ(server.get(at + "/thumbnail.png?size=8").status, 422);
+  EXPECT_EQ(server.get(at + "/thumbnail.png?alpha=-1").status, 422);
+  EXPECT_EQ(server.get("/shapes/999999/thumbnail.png").status, 404);
   auto vdb = server.get(at + "/grid.vdb?resolution=24");
   ASSERT_EQ(vdb.status, 200) << vdb.body.substr(0, 200);
   EXPECT_EQ(vdb.contentType, "application/octet-stream");
