@@ -204,6 +204,11 @@ int main(int argc, char** argv) {
   serveCmd->add_option("--max-fair-curve-points", serve.limits.fairCurve.maxCurvePoints,
                        "most curve points (candidates x pieces x samples) of one fair-curve answer")
       ->check(CLI::PositiveNumber)->capture_default_str();
+#ifdef FSDB_WEB_DIR
+  serve.webRoot = FSDB_WEB_DIR;  // the build's studio page (web/build-web)
+#endif
+  serveCmd->add_option("--web", serve.webRoot, "the studio page's folder, served at / (default: the build's)")
+      ->capture_default_str();
   serveCmd->add_option("--cors", serve.corsOrigin,
                        "allow pages from ORIGIN (http(s)://host[:port], or *) to call the API; off by default")
       ->check([](const std::string& origin) {

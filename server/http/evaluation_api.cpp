@@ -148,7 +148,8 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
                         {"necessity", everInLower ? 1.0 - levels.lower : 0.0}}};
   });
 
-  server.addRoute("GET", "/shapes/{id}/mesh", [limits, &store](const ApiRequest& req) {
+  for (const std::string kind : {"shape", "part"})
+  server.addRoute("GET", "/" + kind + "s/{id}/mesh", [limits, &store, kind](const ApiRequest& req) {
     const double alpha = numberParam(req, "alpha", 0.5);
     if (alpha < 0.0 || alpha > 1.0) throw Error(errc::kInvalidParameter, "alpha lies in [0, 1]", "alpha");
     const std::string bound = req.hasQueryParam("bound") ? req.queryParam("bound") : "upper";
@@ -159,7 +160,7 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
       throw Error(errc::kInvalidParameter, "format must be obj, stl or glb, got \"" + format + "\"", "format");
     const bool glb = format == "glb";  // both bounds in one file: `bound` does not apply
     const int resolution = exportResolution(req, limits.maxResolution);
-    const StoredShape shape = loadShape(store, shapeId(req), limits.maxNodes);
+    const StoredShape shape = loadShape(store, shapeId(req), limits.maxNodes, kind);
     const std::string filename =
         shape.object.name + "-" + (glb ? std::string() : bound + "-") + std::to_string(alpha) + "." + format;
     const std::string contentType = glb ? "model/gltf-binary" : format == "obj" ? "model/obj" : "model/stl";

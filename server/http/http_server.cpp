@@ -5,6 +5,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <regex>
 #include <thread>
 
@@ -101,6 +105,39 @@ void conditionalAndEncoded(const httplib::Request& req, httplib::Response& res) 
   }
 }
 
+// A file of the studio page (the route's pattern admits no "..": segments are names).
+void serveStatic(const std::string& root, const httplib::Request& req, httplib::Response& res) {
+  const std::string relative = req.path == "/" ? "index.html" : req.path.substr(1);
+  if (relative.find("..") != std::string::npos) {
+    sendJson(res, 404, errorBody(errc::kNotFound, "no file " + req.path, ""));
+    return;
+  }
+  std::ifstream in(std::filesystem::path(root) / relative, std::ios::binary);
+  if (!in) {
+    sendJson(res, 404, errorBody(errc::kNotFound, "no file " + req.path + " in the studio page", ""));
+    return;
+  }
+  std::string body((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  res.status = 200;
+  const auto endsWith = [&](const char* suffix) {
+    const size_t n = std::strlen(suffix);
+    return relative.size() >= n && relative.compare(relative.size() - n, n, suffix) == 0;
+  };
+  if (endsWith(".js")) {
+    if (acceptsGzip(req.get_header_value("Accept-Encoding"))) {
+      body = gzipBody(body);
+      res.set_header("Content-Encoding", "gzip");
+    }
+    res.set_header("Vary", "Accept-Encoding");
+    res.set_content(std::move(body), "application/x-javascript");
+  } else {
+    res.set_content(std::move(body), endsWith(".css") ? "text/css" : endsWith(".html") ? "text/html; charset=utf-8"
+                                                                                    : "application/octet-stream");
+  }
+  res.set_header("Cache-Control", "no-cache");  // revalidated: a rebuilt page shows at once
+  conditionalAndEncoded(req, res);
+}
+
 void sendError(httplib::Response& res, const Error& e) {
   sendJson(res, httpStatusFor(e.code()), errorBody(e.code(), e.what(), e.path()));
 }
@@ -186,8 +223,11 @@ void HttpServer::installHandlers() {
     setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, reinterpret_cast<const void*>(&yes), sizeof(yes));
     setsockopt(sock, IPPROTO_TCP, TCP_NODELAY, reinterpret_cast<const void*>(&yes), sizeof(yes));
   });
+  // At least 8: a keep-alive connection holds its worker until it closes, and a browser opens
+  // six at once for one page; with two workers the third file of the studio page waited for a
+  // keep-alive timeout (5 s).
   const int threads = options_.threads > 0 ? options_.threads
-                                           : std::max(2u, std::thread::hardware_concurrency());
+                                           : std::max(8u, std::thread::hardware_concurrency());
   s.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<size_t>(threads)); };
 
   if (!options_.corsOrigin.empty()) {
@@ -201,6 +241,19 @@ void HttpServer::installHandlers() {
       res.set_header("Access-Control-Allow-Headers", "Content-Type, Authorization, If-None-Match, If-Match");
       res.set_header("Access-Control-Max-Age", "600");
     });
+  }
+
+  // The studio page: its own paths only (/, the page's files, /vendor/...), so no API path is
+  // shadowed. Not cpp-httplib's mount point: that compresses JavaScript with brotli at its
+  // highest quality on every request (seconds for three.js); here scripts go out gzipped once
+  // (as application/x-javascript, a JavaScript type httplib leaves alone) and the small text
+  // files as httplib encodes them.
+  if (!options_.webRoot.empty()) {
+    if (!std::filesystem::is_directory(options_.webRoot))
+      spdlog::warn("no studio page: '{}' is not a folder (fsdb serve --web DIR)", options_.webRoot);
+    else
+      s.Get(R"(/|/index\.html|/studio\.(js|css)|/vendor/[A-Za-z0-9_.-]+(/[A-Za-z0-9_.-]+)*)",
+            [root = options_.webRoot](const httplib::Request& req, httplib::Response& res) { serveStatic(root, req, res); });
   }
 
   s.set_pre_routing_handler([](const httplib::Request&, httplib::Response&) {

@@ -39,13 +39,16 @@ struct ServerOptions {
   // unauthorized otherwise). Reads never need it.
   std::string token;
   int port = 8080;  // 0: pick a free port
-  int threads = 0;  // 0: hardware concurrency (at least 2)
+  int threads = 0;  // 0: hardware concurrency (at least 8: browsers keep six connections open)
   // Build the stored shapes' graphs of structural search in the background at start
   // (server/service/graph_warmup.h); --no-warm-graphs turns it off.
   bool warmGraphs = true;
   // --cors ORIGIN: answers carry Access-Control-Allow-Origin: ORIGIN and OPTIONS preflights are
   // answered, so a page served from ORIGIN may call the API; empty (the default): no CORS.
   std::string corsOrigin;
+  // --web DIR: the studio page's folder, served at / (files only: a path no file has goes on to
+  // the API routes); empty: no page.
+  std::string webRoot;
   ServerLimits limits;
 };
 

@@ -1,0 +1,341 @@
+// The fsdb studio: one search box over POST /query, ranked thumbnails, a 3D view of lower(α)
+// solid and upper(α) translucent (GLB from GET /{kind}s/{id}/mesh?format=glb) with an α slider,
+// the fuzzy volume over α, the CSG tree with each part's parameters, membership at a clicked
+// point, browsing with paging, parts from words and a JSON Lines import with progress.
+import * as THREE from 'three';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
+
+const $ = (id) => document.getElementById(id);
+
+async function api(path, options = {}) {
+  const response = await fetch(path, {
+    ...options,
+    headers: options.body && typeof options.body === 'string' ? { 'Content-Type': 'application/json' } : {},
+  });
+  const body = await response.json().catch(() => null);
+  if (!response.ok) {
+    const e = body && body.error;
+    throw new Error(e ? `${e.message}${e.path ? ` (${e.path})` : ''}` : `HTTP ${response.status}`);
+  }
+  return body;
+}
+
+function status(text, error = false) {
+  $('status').textContent = text;
+  $('status').style.color = error ? '#b00' : '';
+}
+
+// ---- results ------------------------------------------------------------------------------
+let nextPage = null;  // () => Promise, for "More"
+
+function card(item) {
+  const li = document.createElement('li');
+  li.dataset.kind = item.kind;
+  li.dataset.id = item.id;
+  const picture = item.kind === 'curve'
+    ? Object.assign(document.createElement('img'), { src: `/curves/${item.id}/svg`, className: 'svg' })
+    : item.kind === 'surface'
+      ? Object.assign(document.createElement('div'), { className: 'svg', textContent: 'surface' })
+      : Object.assign(document.createElement('img'), { src: `/${item.kind}s/${item.id}/thumbnail.png`, loading: 'lazy' });
+  picture.alt = item.name;
+  li.append(picture);
+  const name = document.createElement('div');
+  name.className = 'name';
+  name.textContent = item.name || `#${item.id}`;
+  if (item.score !== undefined) {
+    const score = document.createElement('span');
+    score.className = 'score';
+    score.textContent = item.score.toFixed(3);
+    name.append(score);
+  }
+  li.append(name);
+  if (item.explain && item.explain.length) {
+    const list = document.createElement('ul');
+    list.className = 'explain';
+    for (const e of item.explain) {
+      const row = document.createElement('li');
+      row.textContent = `${e.text}: ${e.score.toFixed(2)}`;
+      list.append(row);
+    }
+    li.append(list);
+  }
+  if (item.kind === 'part' || item.kind === 'shape') li.addEventListener('click', () => open(item.kind, item.id, li));
+  return li;
+}
+
+function show(items, append = false) {
+  if (!append) $('results').replaceChildren();
+  for (const item of items) $('results').append(card(item));
+}
+
+async function search(text) {
+  status('Searching…');
+  $('more').hidden = true;
+  try {
+    const answer = await api('/query', { method: 'POST', body: JSON.stringify({ text, limit: 12 }) });
+    $('read-as').textContent = answer.parsed && answer.parsed.read_as ? `Read as: ${answer.parsed.read_as}` : '';
+    const items = answer.results.map((r) => ({
+      ...r,
+      kind: r.kind || 'shape',
+      explain: r.explain || [
+        { text: 'components', score: r.components }, { text: 'transforms', score: r.transforms },
+        { text: 'structure', score: r.structure },
+        ...(r.relations || []).map((x) => ({ text: `${x.subject} ${x.text} ${x.object}`, score: x.score })),
+      ],
+    }));
+    show(items);
+    status(`${items.length} result${items.length === 1 ? '' : 's'} (${answer.search} search, ${answer.millis.toFixed(1)} ms)`);
+  } catch (e) {
+    $('results').replaceChildren();
+    $('read-as').textContent = '';
+    status(e.message, true);
+  }
+}
+
+async function browse(kind, after = null, append = false) {
+  try {
+    const page = await api(`/${kind}?limit=24${after === null ? '' : `&after=${after}`}`);
+    $('read-as').textContent = '';
+    show(page.items.map((o) => ({ id: o.id, name: o.name, kind: o.kind })), append);
+    status(`${kind}: ${$('results').children.length} shown`);
+    $('more').hidden = page.next_after === null;
+    nextPage = () => browse(kind, page.next_after, true);
+  } catch (e) {
+    status(e.message, true);
+  }
+}
+
+// ---- the 3D view ----------------------------------------------------------------------------
+const renderer = new THREE.WebGLRenderer({ canvas: $('canvas'), antialias: true, preserveDrawingBuffer: true });
+renderer.setPixelRatio(window.devicePixelRatio);
+const scene = new THREE.Scene();
+scene.background = new THREE.Color(0xffffff);
+scene.add(new THREE.HemisphereLight(0xffffff, 0x8090a0, 1.6));
+const sun = new THREE.DirectionalLight(0xffffff, 1.8);
+sun.position.set(-2, 5, 3);
+scene.add(sun);
+const camera = new THREE.PerspectiveCamera(40, 1, 0.01, 1000);
+const controls = new OrbitControls(camera, renderer.domElement);
+const materials = {
+  lower: new THREE.MeshStandardMaterial({ color: 0x4673cd, roughness: 0.6 }),
+  upper: new THREE.MeshStandardMaterial({ color: 0xeb8232, roughness: 0.6, transparent: true, opacity: 0.35, depthWrite: false }),
+};
+let model = null;
+let current = null;  // {kind, id, name, document}
+let fitted = false;
+
+// Drawn on demand (a move of the camera, a new mesh, a resize), not in a loop: an idle page
+// costs no CPU, which a software-rendered WebGL would otherwise burn.
+function render() {
+  renderer.render(scene, camera);
+}
+controls.addEventListener('change', render);
+
+function resize() {
+  const box = $('canvas-box');
+  renderer.setSize(box.clientWidth, box.clientHeight, false);
+  camera.aspect = box.clientWidth / Math.max(1, box.clientHeight);
+  camera.updateProjectionMatrix();
+  render();
+}
+window.addEventListener('resize', resize);
+
+async function loadMesh() {
+  const alpha = Number($('alpha').value);
+  const { kind, id } = current;
+  const response = await fetch(`/${kind}s/${id}/mesh?format=glb&alpha=${alpha}&resolution=64`);
+  if (!response.ok) throw new Error((await response.json()).error.message);
+  const gltf = await new GLTFLoader().parseAsync(await response.arrayBuffer(), '');
+  if (current.id !== id) return;  // another object was opened meanwhile
+  if (model) scene.remove(model);
+  model = gltf.scene;
+  model.traverse((o) => {
+    if (o.isMesh) {
+      o.material = materials[o.name] || materials.lower;
+      o.renderOrder = o.name === 'upper' ? 1 : 0;
+    }
+  });
+  scene.add(model);
+  if (!fitted) {
+    const box = new THREE.Box3().setFromObject(model);
+    const centre = box.getCenter(new THREE.Vector3());
+    const radius = box.getSize(new THREE.Vector3()).length() / 2 || 1;
+    controls.target.copy(centre);
+    camera.position.copy(centre).add(new THREE.Vector3(1, 0.9, 1.6).normalize().multiplyScalar(radius * 3));
+    camera.near = radius / 100;
+    camera.far = radius * 100;
+    camera.updateProjectionMatrix();
+    controls.update();
+    fitted = true;
+  }
+  render();
+  $('canvas').dataset.alpha = String(alpha);  // for the page test: the mesh of this level is shown
+}
+
+let alphaTimer = null;
+$('alpha').addEventListener('input', () => {
+  $('alpha-value').textContent = Number($('alpha').value).toFixed(2);
+  clearTimeout(alphaTimer);
+  alphaTimer = setTimeout(() => loadMesh().catch((e) => status(e.message, true)), 120);
+});
+
+$('canvas').addEventListener('click', async (event) => {
+  if (!model || !current) return;
+  const rect = $('canvas').getBoundingClientRect();
+  const pointer = new THREE.Vector2(((event.clientX - rect.left) / rect.width) * 2 - 1,
+    -((event.clientY - rect.top) / rect.height) * 2 + 1);
+  const ray = new THREE.Raycaster();
+  ray.setFromCamera(pointer, camera);
+  const hit = ray.intersectObject(model, true)[0];
+  if (!hit) return;
+  const p = hit.point;
+  const where = `(${p.x.toFixed(2)}, ${p.y.toFixed(2)}, ${p.z.toFixed(2)})`;
+  if (current.kind !== 'shape') {
+    $('membership').textContent = `${where}: membership is answered for stored shapes`;
+    return;
+  }
+  try {
+    const m = await api(`/shapes/${current.id}/membership?x=${p.x}&y=${p.y}&z=${p.z}`);
+    $('membership').textContent = `${where} on ${hit.object.name}: possibly inside up to α = ${m.upper.toFixed(2)}, ` +
+      (m.lower <= 1 ? `necessarily inside from α = ${m.lower.toFixed(2)}` : 'never necessarily inside');
+  } catch (e) {
+    $('membership').textContent = e.message;
+  }
+});
+
+// ---- fuzzy volume and structure -------------------------------------------------------------
+async function chart() {
+  const alphas = Array.from({ length: 11 }, (_, i) => i / 10);
+  const request = { resolution: 32, alphas };
+  const answer = current.kind === 'shape'
+    ? await api(`/shapes/${current.id}/evaluate`, { method: 'POST', body: JSON.stringify(request) })
+    : await api('/evaluate', { method: 'POST', body: JSON.stringify({ ...request, shape: current.document }) });
+  const levels = answer.alphas;
+  const top = Math.max(...levels.map((l) => l.upper_volume), 1e-12);
+  const x = (a) => 40 + a * 260, y = (v) => 160 - (v / top) * 140;
+  const line = (key) => levels.map((l, i) => `${i ? 'L' : 'M'}${x(l.alpha).toFixed(1)},${y(l[key]).toFixed(1)}`).join(' ');
+  $('chart').innerHTML = `
+    <path d="M40,20 L40,160 L300,160" fill="none" stroke="#99a"/>
+    <text x="4" y="24" font-size="10">${top.toPrecision(3)}</text><text x="20" y="163" font-size="10">0</text>
+    <text x="36" y="174" font-size="10">α = 0</text><text x="290" y="174" font-size="10">1</text>
+    <path d="${line('upper_volume')}" fill="none" stroke="#eb8232" stroke-width="2"/>
+    <path d="${line('lower_volume')}" fill="none" stroke="#4673cd" stroke-width="2"/>
+    <text x="200" y="34" font-size="10" fill="#eb8232">vol upper(α)</text>
+    <text x="200" y="48" font-size="10" fill="#4673cd">vol lower(α)</text>`;
+}
+
+function fuzzyText(v) {
+  if (typeof v !== 'object' || v === null) return String(v);
+  if (v.tri) return `tri(${v.tri.join(', ')})`;
+  if (v.trap) return `trap(${v.trap.join(', ')})`;
+  if (v.about !== undefined) return `about ${v.about}`;
+  return JSON.stringify(v);
+}
+
+function treeNode(node) {
+  const li = document.createElement('li');
+  if (node.op) {
+    li.innerHTML = `<span class="op">${node.op}</span>`;
+    const ul = document.createElement('ul');
+    for (const child of node.children || []) ul.append(treeNode(child));
+    li.append(ul);
+  } else if (node.ref !== undefined) {
+    li.textContent = `shape ${JSON.stringify(node.ref)}`;
+  } else {
+    const part = node.part;
+    const params = typeof part === 'object' ? part.params || {} : null;
+    li.innerHTML = `part <b>${typeof part === 'object' ? part.name || part.text || 'inline' : part}</b>`;
+    if (params) {
+      const p = document.createElement('div');
+      p.className = 'params';
+      p.textContent = Object.entries(params).map(([k, v]) => `${k} = ${fuzzyText(v)}`).join(' · ');
+      li.append(p);
+    }
+    if (node.transform) {
+      const t = document.createElement('div');
+      t.className = 'params';
+      t.textContent = `transform ${JSON.stringify(node.transform)}`;
+      li.append(t);
+    }
+  }
+  return li;
+}
+
+function tree() {
+  const doc = current.document;
+  const ul = document.createElement('ul');
+  ul.append(doc.kind === 'part' ? treeNode({ part: doc }) : doc.tree ? treeNode(doc.tree) : Object.assign(document.createElement('li'), { textContent: doc.csg }));
+  $('tree').replaceChildren(ul);
+}
+
+async function open(kind, id, li) {
+  for (const other of document.querySelectorAll('#results > li.selected')) other.classList.remove('selected');
+  if (li) li.classList.add('selected');
+  try {
+    const stored = await api(`/${kind}s/${id}`);
+    current = { kind, id, name: stored.name, document: stored.document };
+    $('view').hidden = false;
+    $('title').textContent = `${kind} ${stored.name} (#${id}, version ${stored.version})`;
+    resize();
+    fitted = false;
+    await loadMesh();
+    tree();
+    await chart();
+  } catch (e) {
+    status(e.message, true);
+  }
+}
+
+// ---- forms ----------------------------------------------------------------------------------
+$('search').addEventListener('submit', (event) => {
+  event.preventDefault();
+  const text = $('query').value.trim();
+  if (text) search(text);
+});
+for (const button of document.querySelectorAll('[data-browse]'))
+  button.addEventListener('click', () => browse(button.dataset.browse));
+$('more').addEventListener('click', () => nextPage && nextPage());
+
+$('create').addEventListener('submit', async (event) => {
+  event.preventDefault();
+  const text = $('words').value.trim();
+  if (!text) return;
+  try {
+    const name = `${text.replace(/[^a-z0-9]+/gi, '-').replace(/^-|-$/g, '').toLowerCase()}-${Date.now().toString(36)}`;
+    const created = await api('/parts', { method: 'POST', body: JSON.stringify({ kind: 'part', name, text }) });
+    show([{ id: created.id, name, kind: 'part' }]);
+    status(`created part ${name}`);
+    await open('part', created.id, $('results').firstChild);
+  } catch (e) {
+    status(e.message, true);
+  }
+});
+
+$('file').addEventListener('change', () => {
+  const file = $('file').files[0];
+  if (!file) return;
+  const xhr = new XMLHttpRequest();
+  $('progress').hidden = false;
+  xhr.upload.onprogress = (e) => { if (e.lengthComputable) $('progress').value = e.loaded / e.total; };
+  xhr.onload = () => {
+    $('progress').value = 1;
+    const body = JSON.parse(xhr.responseText || '{}');
+    $('import-status').textContent = xhr.status === 200
+      ? `imported ${body.imported}, failed ${body.failed}${body.errors && body.errors.length ? ` (line ${body.errors[0].line}: ${body.errors[0].error.message})` : ''}`
+      : (body.error ? body.error.message : `HTTP ${xhr.status}`);
+  };
+  xhr.onerror = () => { $('import-status').textContent = 'the upload failed'; };
+  xhr.open('POST', '/parts/bulk?mode=create');
+  xhr.setRequestHeader('Content-Type', 'application/x-ndjson');
+  xhr.send(file);
+});
+
+// A query in the address (?q=...) runs at once; otherwise the shapes are listed.
+const initial = new URLSearchParams(location.search).get('q');
+if (initial) {
+  $('query').value = initial;
+  search(initial);
+} else {
+  browse('shapes');
+}
