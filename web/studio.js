@@ -64,9 +64,18 @@ function card(item) {
   return li;
 }
 
+// The name filter hides the cards whose name does not contain its text (the shown pages).
+function applyFilter() {
+  const text = $('filter').value.trim().toLowerCase();
+  for (const li of $('results').children)
+    li.hidden = text !== '' && !li.querySelector('.name').textContent.toLowerCase().includes(text);
+}
+$('filter').addEventListener('input', applyFilter);
+
 function show(items, append = false) {
   if (!append) $('results').replaceChildren();
   for (const item of items) $('results').append(card(item));
+  applyFilter();
 }
 
 async function search(text) {
@@ -170,7 +179,7 @@ async function loadMesh() {
     fitted = true;
   }
   render();
-  $('canvas').dataset.alpha = String(alpha);  // for the page test: the mesh of this level is shown
+  $('canvas').dataset.shown = `${kind}/${id}@${alpha}`;  // for the page test: what the view shows
 }
 
 let alphaTimer = null;
@@ -246,12 +255,19 @@ function treeNode(node) {
     const part = node.part;
     const params = typeof part === 'object' ? part.params || {} : null;
     li.innerHTML = `part <b>${typeof part === 'object' ? part.name || part.text || 'inline' : part}</b>`;
+    const p = document.createElement('div');
+    p.className = 'params';
+    const paramText = (ps) => Object.entries(ps).map(([k, v]) => `${k} = ${fuzzyText(v)}`).join(' · ');
     if (params) {
-      const p = document.createElement('div');
-      p.className = 'params';
-      p.textContent = Object.entries(params).map(([k, v]) => `${k} = ${fuzzyText(v)}`).join(' · ');
-      li.append(p);
+      p.textContent = paramText(params);
+    } else {
+      // A stored part named by the tree: its parameters from the store.
+      api(`/parts?name=${encodeURIComponent(part)}`).then((page) => {
+        const doc = page.items.length ? page.items[page.items.length - 1].document : null;
+        p.textContent = doc ? (doc.params ? paramText(doc.params) : doc.text || '') : '';
+      }).catch(() => {});
     }
+    li.append(p);
     if (node.transform) {
       const t = document.createElement('div');
       t.className = 'params';

@@ -1,7 +1,8 @@
 #!/usr/bin/env node
 // ctest studio_page: the studio page in headless Chromium (Debian's chromium, driven by
 // playwright-core pinned in web/package-lock.json). It starts `fsdb serve` on a free port with
-// the demo catalogue, loads /, searches "a very bent cylinder", waits for ranked thumbnails,
+// the demo catalogue, loads /, filters the shapes by name and opens one (a stored part's
+// parameters in its structure), searches "a very bent cylinder", waits for ranked thumbnails,
 // opens the first result, moves the α slider, and takes screenshots that must not be blank and
 // must change with α. Any console error or failed request fails the test.
 // Usage: node studio_test.js FSDB_BINARY SOURCE_DIR WEB_DIR OUT_DIR   (NODE_PATH: web-deps/node_modules)
@@ -76,6 +77,14 @@ async function main() {
     await page.reload({ waitUntil: 'load' });
     await page.waitForFunction(() => [...document.querySelectorAll('#results img')].every((i) => i.complete && i.naturalWidth > 0));
     const loadMillis = Date.now() - started;
+    // Browsing: the name filter, and a stored part's parameters in the structure of a shape.
+    await page.fill('#filter', 'snowman');
+    const visible = await page.$$eval('#results > li', (items) => items.filter((li) => !li.hidden).map((li) => li.dataset.id));
+    if (visible.length !== 1) throw new Error(`the filter shows ${visible.length} cards`);
+    await page.click('#results > li:not([hidden])');
+    await page.waitForFunction(() => document.querySelector('#tree').textContent.includes('a1 = 2'));
+    await page.fill('#filter', '');
+
     await page.fill('#query', 'a very bent cylinder');
     await page.press('#query', 'Enter');
     await page.waitForFunction(() => document.querySelector('#status').textContent.includes('linguistic search'));
@@ -91,18 +100,21 @@ async function main() {
     await page.screenshot({ path: path.join(out, 'studio-search.png') });
 
     // The first shape among the results (the view shows shapes and parts alike).
+    const first = await page.$eval('#results > li', (li) => `${li.dataset.kind}/${li.dataset.id}`);
+    const shown = (alpha) => page.waitForFunction((want) => document.querySelector('#canvas').dataset.shown === want,
+      `${first}@${alpha}`);
     await page.click('#results > li');
     await page.waitForSelector('#view:not([hidden])');
-    await page.waitForFunction(() => document.querySelector('#canvas').dataset.alpha === '0.5');
+    await shown('0.5');
     await page.waitForSelector('#chart path[stroke="#eb8232"]');
     await page.waitForTimeout(300);
     const atHalf = await page.locator('#canvas-box').screenshot({ path: path.join(out, 'studio-alpha-0.5.png') });
     await page.locator('#alpha').fill('1');
-    await page.waitForFunction(() => document.querySelector('#canvas').dataset.alpha === '1');
+    await shown('1');
     await page.waitForTimeout(300);
     const atOne = await page.locator('#canvas-box').screenshot({ path: path.join(out, 'studio-alpha-1.png') });
     await page.locator('#alpha').fill('0');
-    await page.waitForFunction(() => document.querySelector('#canvas').dataset.alpha === '0');
+    await shown('0');
     await page.waitForTimeout(300);
     const atZero = await page.locator('#canvas-box').screenshot({ path: path.join(out, 'studio-alpha-0.png') });
     await page.screenshot({ path: path.join(out, 'studio-view.png') });
