@@ -17,7 +17,7 @@ build: configure
 
 serve: build
 	mkdir -p data
-	$(BUILD)/fsdb serve --host $(HOST) --port $(PORT) --db data/fsdb.sqlite --demo schema/demo
+	$(BUILD)/fsdb serve --host $(HOST) --port $(PORT) --db data/fsdb.sqlite --demo schema/demo --warm-thumbnails
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j$(JOBS)

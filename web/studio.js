@@ -200,14 +200,10 @@ $('canvas').addEventListener('click', async (event) => {
   if (!hit) return;
   const p = hit.point;
   const where = `(${p.x.toFixed(2)}, ${p.y.toFixed(2)}, ${p.z.toFixed(2)})`;
-  if (current.kind !== 'shape') {
-    $('membership').textContent = `${where}: membership is answered for stored shapes`;
-    return;
-  }
   try {
-    const m = await api(`/shapes/${current.id}/membership?x=${p.x}&y=${p.y}&z=${p.z}`);
+    const m = await api(`/${current.kind}s/${current.id}/membership?x=${p.x}&y=${p.y}&z=${p.z}`);
     $('membership').textContent = `${where} on ${hit.object.name}: possibly inside up to α = ${m.upper.toFixed(2)}, ` +
-      (m.lower <= 1 ? `necessarily inside from α = ${m.lower.toFixed(2)}` : 'never necessarily inside');
+      (m.lower_from !== null ? `necessarily inside from α = ${m.lower_from.toFixed(2)}` : 'never necessarily inside');
   } catch (e) {
     $('membership').textContent = e.message;
   }

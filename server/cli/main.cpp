@@ -1,5 +1,6 @@
 // The fsdb executable: `fsdb serve`, `fsdb import`, `fsdb eval`, `fsdb query` (docs/api.md §1).
 #include <CLI/CLI.hpp>
+#include <httplib.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
@@ -118,6 +119,31 @@ int runServe(const fsdb::ServerOptions& options, const std::string& dbPath, cons
   spdlog::info("fsdb {} serving {} routes, max body {} bytes", FSDB_VERSION, server.routes().size(),
                options.limits.maxBodyBytes);
 
+  // The thumbnails, requested from this server's own routes (the same cache, limits and log as a
+  // browser's requests) by one background client; requests wait until listen() starts.
+  std::thread thumbnails;
+  if (options.warmThumbnails) {
+    std::vector<std::pair<std::string, int64_t>> objects;
+    for (const char* kind : {"shape", "part"}) {
+      fsdb::ListQuery query;
+      query.kind = kind;
+      query.limit = 1000;
+      for (std::vector<fsdb::StoredObject> page; !(page = store->list(query)).empty(); query.afterId = page.back().id)
+        for (const fsdb::StoredObject& o : page) objects.emplace_back(kind, o.id);
+    }
+    thumbnails = std::thread([objects, port, host = options.host == "0.0.0.0" ? std::string("127.0.0.1") : options.host]() {
+      httplib::Client client(host, port);
+      client.set_read_timeout(120, 0);
+      size_t drawn = 0;
+      for (const auto& [kind, id] : objects) {
+        auto r = client.Get(("/" + kind + "s/" + std::to_string(id) + "/thumbnail.png").c_str());
+        if (!r) return;  // the server stopped
+        if (r->status == 200 && r->get_header_value("X-Fsdb-Cache") == "miss") ++drawn;
+      }
+      spdlog::info("thumbnails: {} drawn, {} objects", drawn, objects.size());
+    });
+  }
+
   std::thread waiter([&server, signals]() {
     int sig = 0;
     sigwait(&signals, &sig);
@@ -127,6 +153,7 @@ int runServe(const fsdb::ServerOptions& options, const std::string& dbPath, cons
   server.listen();
   // listen() can only return after stop(), which only the waiter calls.
   waiter.join();
+  if (thumbnails.joinable()) thumbnails.join();  // its next request fails at once: the server is down
   try {
     store->checkpoint();  // the WAL folded into the main file: the .sqlite is whole on its own
   } catch (const fsdb::Error& e) {
@@ -209,6 +236,8 @@ int main(int argc, char** argv) {
 #endif
   serveCmd->add_option("--web", serve.webRoot, "the studio page's folder, served at / (default: the build's)")
       ->capture_default_str();
+  serveCmd->add_flag("--warm-thumbnails", serve.warmThumbnails,
+                     "draw every stored object's thumbnail in the background after the start (the studio's first view)");
   serveCmd->add_option("--cors", serve.corsOrigin,
                        "allow pages from ORIGIN (http(s)://host[:port], or *) to call the API; off by default")
       ->check([](const std::string& origin) {

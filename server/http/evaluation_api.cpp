@@ -1,6 +1,6 @@
 // POST /evaluate (inline documents) and the stored-shape forms (docs/api.md §3, §4):
 //   POST /shapes/{id}/evaluate        the same answer for a stored shape, cached by content
-//   GET  /shapes/{id}/membership      the levels of one point
+//   GET  /shapes/{id}/membership      the levels of one point (and /parts/{id}/membership)
 //   GET  /shapes/{id}/mesh            OBJ or binary STL of lower/upper(α), or GLB of both, cached
 //   GET  /shapes/{id}/grid.vdb        both grids as a .vdb file, cached
 // Cache keys hash the shape's document, the documents of everything it references (so any
@@ -135,10 +135,11 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
   // the informative number is "lower_from", the lowest α from which the point is necessarily
   // inside (null when never), and "necessity" = 1 − lower_from (Zhang, Pham & Chen, §3.2;
   // alpha_field.h).
-  server.addRoute("GET", "/shapes/{id}/membership", [limits, &store](const ApiRequest& req) {
+  for (const std::string kind : {"shape", "part"})
+  server.addRoute("GET", "/" + kind + "s/{id}/membership", [limits, &store, kind](const ApiRequest& req) {
     const Vec3 p{numberParam(req, "x", std::nullopt), numberParam(req, "y", std::nullopt),
                  numberParam(req, "z", std::nullopt)};
-    const AlphaLevels levels = loadShape(store, shapeId(req), limits.maxNodes).parsed.field->levelsAt(p);
+    const AlphaLevels levels = loadShape(store, shapeId(req), limits.maxNodes, kind).parsed.field->levelsAt(p);
     const bool everInLower = levels.lower <= 1.0f;
     return ApiResponse{200,
                        {{"point", {p.x, p.y, p.z}},

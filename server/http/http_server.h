@@ -49,6 +49,10 @@ struct ServerOptions {
   // --web DIR: the studio page's folder, served at / (files only: a path no file has goes on to
   // the API routes); empty: no page.
   std::string webRoot;
+  // --warm-thumbnails: after the start, draw the thumbnail (α 0.5, 128 pixels) of every stored
+  // shape and part that has none cached, in the background, as a browser would ask for them, so
+  // the studio page's first view finds them ready (`make serve` turns it on).
+  bool warmThumbnails = false;
   ServerLimits limits;
 };
 
