@@ -76,7 +76,8 @@ void BM_VoxelMesh(benchmark::State& state) {
 void BM_OpenVdbLevelSetSphere(benchmark::State& state) {
   openvdb::initialize();
   const double h = 2.0 / double(state.range(0));
-  const auto grid = openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(1.0f, openvdb::Vec3f(0, 0, 0), float(h), 3.0f);
+  const auto grid =
+      openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(1.0f, openvdb::Vec3f(0, 0, 0), float(h), 3.0f);
   std::vector<openvdb::Vec3s> points;
   std::vector<openvdb::Vec4I> quads;
   for (auto _ : state) {

@@ -26,10 +26,10 @@
 namespace fsdb {
 
 struct SmoothMeshStats {
-  std::uint64_t vertices = 0;    // vertices of the mesh
-  std::uint64_t moved = 0;       // vertices placed on a sign change
-  std::uint64_t unmoved = 0;     // vertices with no sign change in reach (left where they were)
-  std::uint64_t evaluations = 0; // levelsAt calls
+  std::uint64_t vertices = 0;     // vertices of the mesh
+  std::uint64_t moved = 0;        // vertices placed on a sign change
+  std::uint64_t unmoved = 0;      // vertices with no sign change in reach (left where they were)
+  std::uint64_t evaluations = 0;  // levelsAt calls
 };
 
 TriangleMesh extractSmoothMesh(const EnvelopeGrid& grid, const AlphaFieldSource& source, double alpha,

@@ -29,7 +29,8 @@ std::string linguisticQueryText(const LinguisticQuery& query, const Vocabulary& 
 
 // The noun phrase alone (a leaf of a structural query: parseNounPhraseAt's query), with `article`
 // ("a", "the").
-std::string nounPhraseText(const LinguisticQuery& phrase, const Vocabulary& vocabulary, const std::string& article = "a");
+std::string nounPhraseText(const LinguisticQuery& phrase, const Vocabulary& vocabulary,
+                           const std::string& article = "a");
 
 // A fuzzy distance as words that read back to it: a distance word of the vocabulary, "about m",
 // "between a and b", or a crisp number.

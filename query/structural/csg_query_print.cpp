@@ -47,8 +47,8 @@ class Printer {
     // "its" and "of" each name one operand), so the operands form chains; one pass over maps.
     const size_t count = n.children.size();
     std::vector<bool> done(count, false);
-    std::unordered_map<int, size_t> childOfHead;      // head leaf -> the child it heads
-    std::unordered_map<int, size_t> placedAgainst;    // head leaf -> the child placed against it
+    std::unordered_map<int, size_t> childOfHead;    // head leaf -> the child it heads
+    std::unordered_map<int, size_t> placedAgainst;  // head leaf -> the child placed against it
     for (size_t i = 0; i < count; ++i) {
       const int head = headOf(n.children[i]);
       if (head != kNoHead) childOfHead[head] = i;

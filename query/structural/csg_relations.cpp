@@ -9,7 +9,8 @@
 namespace fsdb {
 
 bool hasRelations(const CsgQuery& query) {
-  return std::any_of(query.leaves.begin(), query.leaves.end(), [](const CsgQueryLeaf& l) { return l.relation.has_value(); });
+  return std::any_of(query.leaves.begin(), query.leaves.end(),
+                     [](const CsgQueryLeaf& l) { return l.relation.has_value(); });
 }
 
 std::vector<RelationScore> scoreRelations(const CsgQuery& query, const ShapeGraph& stored,

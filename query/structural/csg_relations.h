@@ -29,11 +29,11 @@ namespace fsdb {
 
 // One relation of the query on a mapping, for the answer's explain.
 struct RelationScore {
-  int queryLeaf = 0;          // the related leaf (index into CsgQuery::leaves)
-  int storedLeaf = -1;        // M(q): its stored leaf, -1 when unmatched
-  int storedReference = -1;   // M(r), -1 when unmatched
-  bool checked = false;       // both matched: `score` is the membership
-  double score = 0;           // the membership; unchecked: the transform similarity q keeps (0 when q is unmatched)
+  int queryLeaf = 0;         // the related leaf (index into CsgQuery::leaves)
+  int storedLeaf = -1;       // M(q): its stored leaf, -1 when unmatched
+  int storedReference = -1;  // M(r), -1 when unmatched
+  bool checked = false;      // both matched: `score` is the membership
+  double score = 0;          // the membership; unchecked: the transform similarity q keeps (0 when q is unmatched)
 };
 
 // Whether any leaf of the query has a relation.

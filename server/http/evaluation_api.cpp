@@ -135,58 +135,60 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
   // the informative number is "lower_from", the lowest α from which the point is necessarily
   // inside (null when never), and "necessity" = 1 − lower_from (Zhang, Pham & Chen, §3.2;
   // alpha_field.h).
-  for (const std::string kind : {"shape", "part"})
-  server.addRoute("GET", "/" + kind + "s/{id}/membership", [limits, &store, kind](const ApiRequest& req) {
-    const Vec3 p{numberParam(req, "x", std::nullopt), numberParam(req, "y", std::nullopt),
-                 numberParam(req, "z", std::nullopt)};
-    const AlphaLevels levels = loadShape(store, shapeId(req), limits.maxNodes, kind).parsed.field->levelsAt(p);
-    const bool everInLower = levels.lower <= 1.0f;
-    return ApiResponse{200,
-                       {{"point", {p.x, p.y, p.z}},
-                        {"upper", levels.upper},
-                        {"lower", everInLower ? 1.0 : 0.0},
-                        {"lower_from", everInLower ? nlohmann::json(levels.lower) : nlohmann::json(nullptr)},
-                        {"necessity", everInLower ? 1.0 - levels.lower : 0.0}}};
-  });
+  for (const std::string kind : {"shape", "part"}) {
+    server.addRoute("GET", "/" + kind + "s/{id}/membership", [limits, &store, kind](const ApiRequest& req) {
+      const Vec3 p{numberParam(req, "x", std::nullopt), numberParam(req, "y", std::nullopt),
+                   numberParam(req, "z", std::nullopt)};
+      const AlphaLevels levels = loadShape(store, shapeId(req), limits.maxNodes, kind).parsed.field->levelsAt(p);
+      const bool everInLower = levels.lower <= 1.0f;
+      return ApiResponse{200,
+                         {{"point", {p.x, p.y, p.z}},
+                          {"upper", levels.upper},
+                          {"lower", everInLower ? 1.0 : 0.0},
+                          {"lower_from", everInLower ? nlohmann::json(levels.lower) : nlohmann::json(nullptr)},
+                          {"necessity", everInLower ? 1.0 - levels.lower : 0.0}}};
+    });
+  }
 
-  for (const std::string kind : {"shape", "part"})
-  server.addRoute("GET", "/" + kind + "s/{id}/mesh", [limits, &store, kind](const ApiRequest& req) {
-    const double alpha = numberParam(req, "alpha", 0.5);
-    if (alpha < 0.0 || alpha > 1.0) throw Error(errc::kInvalidParameter, "alpha lies in [0, 1]", "alpha");
-    const std::string bound = req.hasQueryParam("bound") ? req.queryParam("bound") : "upper";
-    if (bound != "lower" && bound != "upper")
-      throw Error(errc::kInvalidParameter, "bound must be lower or upper, got \"" + bound + "\"", "bound");
-    const std::string format = req.hasQueryParam("format") ? req.queryParam("format") : "obj";
-    if (format != "obj" && format != "stl" && format != "glb")
-      throw Error(errc::kInvalidParameter, "format must be obj, stl or glb, got \"" + format + "\"", "format");
-    const bool glb = format == "glb";  // both bounds in one file: `bound` does not apply
-    const int resolution = exportResolution(req, limits.maxResolution);
-    const StoredShape shape = loadShape(store, shapeId(req), limits.maxNodes, kind);
-    const std::string filename =
-        shape.object.name + "-" + (glb ? std::string() : bound + "-") + std::to_string(alpha) + "." + format;
-    const std::string contentType = glb ? "model/gltf-binary" : format == "obj" ? "model/obj" : "model/stl";
-    const std::string key = cacheKey("mesh", shape,
-                                     nlohmann::json{{"alpha", alpha}, {"bound", glb ? "both" : bound},
-                                                    {"format", format}, {"resolution", resolution},
-                                                    {"surface", "smooth"}}.dump());
-    if (auto hit = store.cachedEvaluation(key)) return bytesResponse(hit->vdb, contentType, filename, true);
-    const Evaluation e = evaluateParsedShape({{"resolution", resolution}, {"alphas", {alpha}}}, shape.parsed, limits);
-    std::string bytes;
-    size_t triangles = 0;
-    if (glb) {
-      std::vector<NamedMesh> both = {{"lower", extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kLower)},
-                                     {"upper", extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kUpper)}};
-      for (const NamedMesh& m : both) triangles += m.second.triangles.size();
-      bytes = toGlb(both);
-    } else {
-      const TriangleMesh mesh = extractSmoothMesh(*e.grid, *e.source, alpha,
-                                                  bound == "lower" ? EnvelopeBound::kLower : EnvelopeBound::kUpper);
-      triangles = mesh.triangles.size();
-      bytes = format == "obj" ? toObj(mesh) : toBinaryStl(mesh);
-    }
-    store.storeEvaluation(shape.object.id, key, {nlohmann::json{{"triangles", triangles}}.dump(), bytes});
-    return bytesResponse(std::move(bytes), contentType, filename, false);
-  });
+  for (const std::string kind : {"shape", "part"}) {
+    server.addRoute("GET", "/" + kind + "s/{id}/mesh", [limits, &store, kind](const ApiRequest& req) {
+      const double alpha = numberParam(req, "alpha", 0.5);
+      if (alpha < 0.0 || alpha > 1.0) throw Error(errc::kInvalidParameter, "alpha lies in [0, 1]", "alpha");
+      const std::string bound = req.hasQueryParam("bound") ? req.queryParam("bound") : "upper";
+      if (bound != "lower" && bound != "upper")
+        throw Error(errc::kInvalidParameter, "bound must be lower or upper, got \"" + bound + "\"", "bound");
+      const std::string format = req.hasQueryParam("format") ? req.queryParam("format") : "obj";
+      if (format != "obj" && format != "stl" && format != "glb")
+        throw Error(errc::kInvalidParameter, "format must be obj, stl or glb, got \"" + format + "\"", "format");
+      const bool glb = format == "glb";  // both bounds in one file: `bound` does not apply
+      const int resolution = exportResolution(req, limits.maxResolution);
+      const StoredShape shape = loadShape(store, shapeId(req), limits.maxNodes, kind);
+      const std::string filename =
+          shape.object.name + "-" + (glb ? std::string() : bound + "-") + std::to_string(alpha) + "." + format;
+      const std::string contentType = glb ? "model/gltf-binary" : format == "obj" ? "model/obj" : "model/stl";
+      const std::string key = cacheKey("mesh", shape,
+                                       nlohmann::json{{"alpha", alpha}, {"bound", glb ? "both" : bound},
+                                                      {"format", format}, {"resolution", resolution},
+                                                      {"surface", "smooth"}}.dump());
+      if (auto hit = store.cachedEvaluation(key)) return bytesResponse(hit->vdb, contentType, filename, true);
+      const Evaluation e = evaluateParsedShape({{"resolution", resolution}, {"alphas", {alpha}}}, shape.parsed, limits);
+      std::string bytes;
+      size_t triangles = 0;
+      if (glb) {
+        std::vector<NamedMesh> both = {{"lower", extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kLower)},
+                                       {"upper", extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kUpper)}};
+        for (const NamedMesh& m : both) triangles += m.second.triangles.size();
+        bytes = toGlb(both);
+      } else {
+        const TriangleMesh mesh = extractSmoothMesh(*e.grid, *e.source, alpha,
+                                                    bound == "lower" ? EnvelopeBound::kLower : EnvelopeBound::kUpper);
+        triangles = mesh.triangles.size();
+        bytes = format == "obj" ? toObj(mesh) : toBinaryStl(mesh);
+      }
+      store.storeEvaluation(shape.object.id, key, {nlohmann::json{{"triangles", triangles}}.dump(), bytes});
+      return bytesResponse(std::move(bytes), contentType, filename, false);
+    });
+  }
 
   // Thumbnails of stored shapes and parts: lower(α) solid and upper(α) translucent
   // (server/service/thumbnail.h), from smooth meshes at 48 voxels across, cached by content.
@@ -201,7 +203,8 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
       const std::string filename = shape.object.name + ".png";
       const std::string key = cacheKey("thumbnail", shape, nlohmann::json{{"alpha", alpha}, {"size", size}}.dump());
       if (auto hit = store.cachedEvaluation(key)) return bytesResponse(hit->vdb, "image/png", filename, true, true);
-      const Evaluation e = evaluateParsedShape({{"resolution", kThumbnailResolution}, {"alphas", {alpha}}}, shape.parsed, limits);
+      const Evaluation e =
+          evaluateParsedShape({{"resolution", kThumbnailResolution}, {"alphas", {alpha}}}, shape.parsed, limits);
       std::string bytes = toPng(renderThumbnail(extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kLower),
                                                 extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kUpper),
                                                 static_cast<int>(size)));

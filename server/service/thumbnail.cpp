@@ -41,8 +41,10 @@ void rasterise(const TriangleMesh& mesh, const View& v, const Vec3& light, Layer
     const double da = dot(a, v.toViewer), db = dot(b, v.toViewer), dc = dot(c, v.toViewer);
     const double area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
     if (area == 0) continue;
-    const int x0 = std::max(0, int(std::floor(std::min({ax, bx, cx})))), x1 = std::min(n - 1, int(std::ceil(std::max({ax, bx, cx}))));
-    const int y0 = std::max(0, int(std::floor(std::min({ay, by, cy})))), y1 = std::min(n - 1, int(std::ceil(std::max({ay, by, cy}))));
+    const int x0 = std::max(0, int(std::floor(std::min({ax, bx, cx})))),
+              x1 = std::min(n - 1, int(std::ceil(std::max({ax, bx, cx}))));
+    const int y0 = std::max(0, int(std::floor(std::min({ay, by, cy})))),
+              y1 = std::min(n - 1, int(std::ceil(std::max({ay, by, cy}))));
     for (int y = y0; y <= y1; ++y) {
       for (int x = x0; x <= x1; ++x) {
         const double sx = x + 0.5, sy = y + 0.5;  // pixel centre

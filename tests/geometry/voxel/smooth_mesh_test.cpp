@@ -12,10 +12,10 @@
 #include <utility>
 
 #include "geometry/core/error.h"
-#include "tests/geometry/mesh_checks.h"
 #include "geometry/field/fuzzy_part_field.h"
 #include "geometry/voxel/envelope_grid.h"
 #include "tests/geometry/fuzzy_ball.h"
+#include "tests/geometry/mesh_checks.h"
 
 namespace fsdb {
 namespace {
@@ -26,7 +26,8 @@ using testing::closedAndOriented;
 using testing::signedVolume;
 
 // Max and mean of distance(v) over the vertices, in voxels.
-std::pair<double, double> distances(const TriangleMesh& m, double h, const std::function<double(const Vec3&)>& distance) {
+std::pair<double, double> distances(const TriangleMesh& m, double h,
+                                    const std::function<double(const Vec3&)>& distance) {
   double worst = 0, sum = 0;
   for (const Vec3& v : m.vertices) {
     const double d = distance(v) / h;
@@ -53,15 +54,15 @@ TEST(SmoothMesh, CrispSpheresLieOnTheirSurface) {
     const EnvelopeGrid grid = EnvelopeGrid::build(ball, h);
     SmoothMeshStats stats;
     const TriangleMesh mesh = extractSmoothMesh(grid, ball, 0.5, EnvelopeBound::kUpper, &stats);
-    expectOnSurface(mesh, h, [&](const Vec3& v) { return std::fabs(norm(v - c) - radius); },
-                    4.0 / 3.0 * kPi * radius * radius * radius, "sphere r=" + std::to_string(radius));
+    expectOnSurface(
+        mesh, h, [&](const Vec3& v) { return std::fabs(norm(v - c) - radius); },
+        4.0 / 3.0 * kPi * radius * radius * radius, "sphere r=" + std::to_string(radius));
     EXPECT_EQ(stats.vertices, mesh.vertices.size());
     EXPECT_EQ(stats.unmoved, 0u);
     EXPECT_GT(stats.evaluations, stats.vertices);
     // The voxel mesh it starts from is off by up to half a voxel: the smooth one is far closer.
-    const auto [voxelWorst, voxelMean] =
-        distances(extractMesh(grid, 0.5, EnvelopeBound::kUpper), h,
-                  [&](const Vec3& v) { return std::fabs(norm(v - c) - radius); });
+    const auto [voxelWorst, voxelMean] = distances(extractMesh(grid, 0.5, EnvelopeBound::kUpper), h,
+                                                   [&](const Vec3& v) { return std::fabs(norm(v - c) - radius); });
     EXPECT_GT(voxelMean, 0.1) << "the terraced mesh";
     (void)voxelWorst;
   }
@@ -95,9 +96,9 @@ TEST(SmoothMesh, AFuzzyBallsLowerAndUpperAtThreeLevels) {
     for (EnvelopeBound bound : {EnvelopeBound::kLower, EnvelopeBound::kUpper}) {
       const double r = bound == EnvelopeBound::kUpper ? ball.upperRadius(alpha) : ball.lowerRadius(alpha);
       const TriangleMesh mesh = extractSmoothMesh(grid, ball, alpha, bound);
-      expectOnSurface(mesh, h, [&](const Vec3& v) { return std::fabs(norm(v - c) - r); },
-                      4.0 / 3.0 * kPi * r * r * r,
-                      std::string(bound == EnvelopeBound::kUpper ? "upper" : "lower") + " at " + std::to_string(alpha));
+      expectOnSurface(
+          mesh, h, [&](const Vec3& v) { return std::fabs(norm(v - c) - r); }, 4.0 / 3.0 * kPi * r * r * r,
+          std::string(bound == EnvelopeBound::kUpper ? "upper" : "lower") + " at " + std::to_string(alpha));
     }
   }
 }

@@ -45,7 +45,8 @@ TEST(QueryPrint, PrintedTextsMeanTheQuery) {
         "find shapes with bendness between 0.2 and 0.4"}) {
     const LinguisticQuery q = parseLinguisticQuery(text, v());
     const std::string once = linguisticQueryText(q, v());
-    EXPECT_EQ(testing::queryMeaning(parseLinguisticQuery(once, v())), testing::queryMeaning(q)) << text << " -> " << once;
+    EXPECT_EQ(testing::queryMeaning(parseLinguisticQuery(once, v())), testing::queryMeaning(q))
+        << text << " -> " << once;
     EXPECT_EQ(printed(once), once) << "a printed text prints as itself: " << once;
   }
 }

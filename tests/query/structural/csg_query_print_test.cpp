@@ -54,7 +54,8 @@ TEST(CsgQueryPrint, PrintedTextsMeanTheQuery) {
 }
 
 TEST(CsgQueryPrint, StoredPartsAreTheFormulaFormsToName) {
-  const ReferenceResolver resolver = [](const std::string& kind, const nlohmann::json& name) -> std::optional<ResolvedReference> {
+  const ReferenceResolver resolver = [](const std::string& kind,
+                                        const nlohmann::json& name) -> std::optional<ResolvedReference> {
     if (kind != "part" || name != "bolt") return std::nullopt;
     ResolvedReference r;
     r.id = 7;

@@ -121,13 +121,13 @@ TEST(CsgRelations, AnEqualSiblingThatTheWordsDescribeIsPreferred) {
 
 TEST(CsgRelations, ChainsScoreEachLink) {
   const CsgQuery q = query("a cone on top of a cylinder on top of a box");
-  const Scored stacked = score(q, stored({placed("a box", {0, 0, 0}), placed("a cylinder", {0, 3, 0}),
-                                          placed("a cone", {0, 6, 0})}));
+  const Scored stacked =
+      score(q, stored({placed("a box", {0, 0, 0}), placed("a cylinder", {0, 3, 0}), placed("a cone", {0, 6, 0})}));
   ASSERT_EQ(stacked.relations.size(), 2u);
   EXPECT_DOUBLE_EQ(stacked.relations[0].score, 1.0);
   EXPECT_DOUBLE_EQ(stacked.relations[1].score, 1.0);
-  const Scored row = score(q, stored({placed("a box", {0, 0, 0}), placed("a cylinder", {0, 3, 0}),
-                                      placed("a cone", {3, 3, 0})}));
+  const Scored row =
+      score(q, stored({placed("a box", {0, 0, 0}), placed("a cylinder", {0, 3, 0}), placed("a cone", {3, 3, 0})}));
   EXPECT_LT(row.score.score, stacked.score.score);
 }
 

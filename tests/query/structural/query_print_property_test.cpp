@@ -31,13 +31,14 @@ const T& pick(std::mt19937& rng, const std::vector<T>& list) {
   return list[size_t(uniform(rng, 0, int(list.size()) - 1))];
 }
 
-const std::vector<std::string> kNouns = {"cylinder", "cylinders", "box", "sphere", "ball", "rod", "cone", "plate",
-                                         "double pyramid", "pyramid", "disc", "block", "shape", "part", "object"};
+const std::vector<std::string> kNouns = {"cylinder", "cylinders", "box",   "sphere",         "ball",
+                                         "rod",      "cone",      "plate", "double pyramid", "pyramid",
+                                         "disc",     "block",     "shape", "part",           "object"};
 const std::vector<std::string> kSections = {"traverse section", "cross-section", "cross section", "section"};
-const std::vector<std::string> kDegrees = {"at least 0.5", "at most 0.2", "about 0.3", "0.4", "between 0.2 and 0.6",
-                                           "is about 0.7"};
-const std::vector<std::string> kDistances = {"about 3", "about 2 units", "3", "1.5 units", "between 2 and 4",
-                                             "close", "near", "far", "touching"};
+const std::vector<std::string> kDegrees = {"at least 0.5", "at most 0.2",         "about 0.3",
+                                           "0.4",          "between 0.2 and 0.6", "is about 0.7"};
+const std::vector<std::string> kDistances = {"about 3", "about 2 units", "3",   "1.5 units", "between 2 and 4",
+                                             "close",   "near",          "far", "touching"};
 
 // negation = "not" negation | "(" condition ")" | descriptor degree | [intensity] adjective [section]
 std::string negation(std::mt19937& rng, int depth) {
@@ -85,8 +86,10 @@ std::string relationWords(std::mt19937& rng) {
   if (chance(rng, 50)) out += pick(rng, kDistances) + " ";
   const int form = uniform(rng, 0, 2);
   if (form == 0) return out + "to the " + pick(rng, v().directionWords()) + " of ";  // phrases read too
-  if (form == 1) return out + pick(rng, std::vector<std::string>{"right", "left", "top right", "bottom front"}) + " of ";
-  return out + pick(rng, std::vector<std::string>{"above", "below", "on top of", "behind", "in front of", "under"}) + " ";
+  if (form == 1)
+    return out + pick(rng, std::vector<std::string>{"right", "left", "top right", "bottom front"}) + " of ";
+  return out + pick(rng, std::vector<std::string>{"above", "below", "on top of", "behind", "in front of", "under"}) +
+         " ";
 }
 
 std::string linguisticText(std::mt19937& rng) {
@@ -168,12 +171,14 @@ Item csgItem(std::mt19937& rng, int depth) {
     case 1: return {csgLeaf(rng) + " " + relationWords(rng) + csgLeaf(rng), true};
     case 2: return {"the union of " + csgOperands(rng, depth, pick(rng, std::vector<std::string>{" and ", ", "}))};
     case 3: return {"the intersection of " + csgOperands(rng, depth, " and ")};
-    case 4: return {"the difference of " + wrapped(csgItem(rng, depth + 1)) + " and " + wrapped(csgItem(rng, depth + 1))};
+    case 4:
+      return {"the difference of " + wrapped(csgItem(rng, depth + 1)) + " and " + wrapped(csgItem(rng, depth + 1))};
     case 5: return {"the part of " + csgLeaf(rng) + " inside " + wrapped(csgItem(rng, depth + 1))};
     case 6:
-      return {"(" + wrapped(csgItem(rng, depth + 1)) +
-              pick(rng, std::vector<std::string>{" minus ", " without ", " plus ", " united with ", " intersected with "}) +
-              wrapped(csgItem(rng, depth + 1)) + ")"};
+      return {
+          "(" + wrapped(csgItem(rng, depth + 1)) +
+          pick(rng, std::vector<std::string>{" minus ", " without ", " plus ", " united with ", " intersected with "}) +
+          wrapped(csgItem(rng, depth + 1)) + ")"};
     default: return {"(" + csgLeaf(rng) + " with " + csgLeaf(rng, "the ") + " on top)"};
   }
 }
