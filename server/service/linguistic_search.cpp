@@ -1,6 +1,8 @@
 // See server/service/linguistic_search.h.
 #include "server/service/linguistic_search.h"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -140,6 +142,12 @@ class Scorer {
       try {
         keep(kind, object, kind == "part" ? scorePart(object) : scoreStoredShape(object));
       } catch (const Error& e) {
+        if (e.code() == std::string(errc::kInvalidDocument)) {
+          // One bad document must not fail every query; it scores nothing, and the log says why.
+          spdlog::warn("linguistic search skips {} {}: its document does not parse: {} ({})", kind, object.id,
+                       e.what(), e.path());
+          continue;
+        }
         if (e.code() != std::string(errc::kNotFound)) throw;  // deleted meanwhile
       }
     }

@@ -24,6 +24,9 @@
 //   documents on both paths).
 // - maxMillis > 0: a search still scoring after that long stops with limit_exceeded (413)
 //   naming the limit.
+// - A stored object whose document no longer parses (invalid_document: written around the API,
+//   or by an older fsdb that accepted it) is skipped with a warning on the log, never the whole
+//   search's answer; an object deleted meanwhile is skipped too.
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>

@@ -153,6 +153,26 @@ TEST(QueryApi, ADatabaseFromBeforeTheSectionDescriptorsIsBackfilled) {
   EXPECT_EQ(pending->columnInt(0), 0);
 }
 
+// A stored document that no longer parses (here: a part without a1, written around the API) is
+// skipped, with a warning on the log; the query still answers with every other object.
+TEST(QueryApi, AnUnparsableStoredDocumentIsSkippedNotFatal) {
+  TempDir dir;
+  const std::string db = dir.file("bad.sqlite");
+  {
+    fsdb::sqlite::Connection c(db);
+    ASSERT_EQ(fsdb::applyMigrations(c, fsdb::embeddedMigrations()), int(fsdb::embeddedMigrations().size()));
+    c.exec("INSERT INTO objects (kind, name, latest_version) VALUES ('part', 'no-size', 1)");
+    auto s = c.prepare("INSERT INTO versions VALUES (1, 1, ?1, 'h', '2026-01-01T00:00:00.000Z')");
+    s->bind(1, json{{"kind", "part"}, {"name", "no-size"}, {"params", {{"kv", 0.1}}}}.dump());
+    s->run();
+  }
+  ServerProcess server({"--db", db});
+  ASSERT_EQ(server.post("/parts", part("bent", 0.1)).status, 201);
+  for (const bool scan : {false, true})
+    EXPECT_EQ(names(query(server, {{"text", "find a slightly bent part"}, {"scan", scan}})),
+              std::vector<std::string>{"bent"});
+}
+
 TEST(QueryApi, Errors) {
   ServerProcess server;
   auto expectError = [&server](const std::string& body, int status, const std::string& code, const std::string& path) {
