@@ -27,6 +27,13 @@ std::vector<std::vector<int>> CsgGraph::parents() const {
   return p;
 }
 
+std::vector<std::string> CsgGraph::leafPaths() const {
+  std::vector<std::string> out(static_cast<size_t>(leafCount));
+  for (const CsgGraphNode& n : nodes)
+    if (n.op == CsgGraphOp::Leaf && out[size_t(n.leaf)].empty()) out[size_t(n.leaf)] = n.path;
+  return out;
+}
+
 bool CsgGraph::isTree() const {
   for (const std::vector<int>& p : parents())
     if (p.size() > 1) return false;

@@ -46,6 +46,8 @@ struct CsgGraph {
   int root = 0;
   int leafCount = 0;
   bool isTree() const;  // no node reachable by two parent edges
+  // The path of each leaf's node, by CsgGraphNode::leaf (a shared leaf: its first node's).
+  std::vector<std::string> leafPaths() const;
   size_t size() const { return nodes.size(); }
   // Parent indices of each node (one entry per edge, so a doubly named child lists its parent twice).
   std::vector<std::vector<int>> parents() const;

@@ -643,14 +643,6 @@ CsgQuery graphOf(const std::string& form, const nlohmann::json& doc, const std::
   return q;
 }
 
-// The graph path of each leaf ("tree.children[1]"), by CsgGraphNode::leaf.
-std::vector<std::string> leafPaths(const CsgGraph& graph) {
-  std::vector<std::string> out(size_t(graph.leafCount));
-  for (const CsgGraphNode& n : graph.nodes)
-    if (n.op == CsgGraphOp::Leaf && out[size_t(n.leaf)].empty()) out[size_t(n.leaf)] = n.path;
-  return out;
-}
-
 // The query tree as "parsed" shows it: placeholders replaced by the description, with its
 // relation ("to": the graph path of the other leaf).
 nlohmann::json shownTree(nlohmann::json tree, const CsgQuery& query, const std::vector<size_t>& leafOf,
@@ -690,7 +682,7 @@ CsgQuery parseCsgQuery(const std::string& text, const Vocabulary& vocabulary, co
   const nlohmann::json doc = {{"kind", "shape"}, {"name", "query"}, {"tree", tree}};
   std::vector<size_t> leafOf;
   CsgQuery q = graphOf(formula ? "formula" : "phrase", doc, "", maxNodes, remembered, descriptions, &leafOf);
-  q.tree = shownTree(std::move(tree), q, leafOf, leafPaths(q.graph));
+  q.tree = shownTree(std::move(tree), q, leafOf, q.graph.leafPaths());
   return q;
 }
 

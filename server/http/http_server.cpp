@@ -118,6 +118,15 @@ void serveStatic(const std::string& root, const httplib::Request& req, httplib::
     return;
   }
   std::string body((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // The tag of the file itself, checked before anything is compressed: a revalidation (304)
+  // costs a read and a hash, not a gzip of three.js. One weak tag stands for both encodings.
+  const std::string tag = entityTag(body);
+  res.set_header("ETag", tag);
+  res.set_header("Cache-Control", "no-cache");  // revalidated: a rebuilt page shows at once
+  if (req.has_header("If-None-Match") && ifNoneMatchHits(req.get_header_value("If-None-Match"), tag)) {
+    res.status = 304;
+    return;
+  }
   res.status = 200;
   const auto endsWith = [&](const char* suffix) {
     const size_t n = std::strlen(suffix);
@@ -134,8 +143,6 @@ void serveStatic(const std::string& root, const httplib::Request& req, httplib::
     res.set_content(std::move(body), endsWith(".css") ? "text/css" : endsWith(".html") ? "text/html; charset=utf-8"
                                                                                     : "application/octet-stream");
   }
-  res.set_header("Cache-Control", "no-cache");  // revalidated: a rebuilt page shows at once
-  conditionalAndEncoded(req, res);
 }
 
 void sendError(httplib::Response& res, const Error& e) {

@@ -169,11 +169,7 @@ nlohmann::json mappingJson(const CsgQuery& query, const CsgHit& hit) {
 
 // Each relation of the query on this hit: its words, the stored leaves it was checked on, its membership.
 nlohmann::json relationsJson(const CsgQuery& query, const CsgHit& hit) {
-  std::vector<std::string> storedPaths(size_t(hit.stored->shape.graph.leafCount)), queryPaths(query.leaves.size());
-  for (const CsgGraphNode& n : hit.stored->shape.graph.nodes)
-    if (n.op == CsgGraphOp::Leaf && storedPaths[size_t(n.leaf)].empty()) storedPaths[size_t(n.leaf)] = n.path;
-  for (const CsgGraphNode& n : query.graph.nodes)
-    if (n.op == CsgGraphOp::Leaf && queryPaths[size_t(n.leaf)].empty()) queryPaths[size_t(n.leaf)] = n.path;
+  const std::vector<std::string> storedPaths = hit.stored->shape.graph.leafPaths(), queryPaths = query.graph.leafPaths();
   const auto storedPath = [&](int leaf) { return leaf < 0 ? nlohmann::json(nullptr) : nlohmann::json(storedPaths[size_t(leaf)]); };
   nlohmann::json out = nlohmann::json::array();
   for (const RelationScore& r : hit.relations) {

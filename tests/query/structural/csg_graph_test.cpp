@@ -44,6 +44,7 @@ TEST(CsgGraph, InlineTreeWithPathsAndLeafParts) {
   EXPECT_EQ(g.leaves[1].part.a1.support().lo, 2);
   EXPECT_EQ(g.leaves[1].part.tx.support().lo, 3);  // the leaf transform is on the part
   EXPECT_EQ(g.leaves[0].partId, 0);
+  EXPECT_EQ(g.graph.leafPaths(), (std::vector<std::string>{"shape.tree.children[0]", "shape.tree.children[1]"}));
 }
 
 TEST(CsgGraph, APartDocumentIsOneLeaf) {

@@ -178,3 +178,31 @@ TEST(ResponseEncodingApi, CorsOnlyWhenAsked) {
 
 }  // namespace
 }  // namespace fsdb
+
+namespace fsdb {
+namespace {
+
+// The studio page's files (served from the build's web folder): scripts gzipped, a weak ETag of
+// the file checked before any compression, 304 on a match, nothing outside the folder.
+TEST(ResponseEncodingApi, StudioFilesAreTaggedAndScriptsGzipped) {
+  ServerProcess server;
+  auto page = rawGet(server, "/", {});
+  ASSERT_EQ(page->status, 200) << page->body.substr(0, 200);
+  EXPECT_NE(page->body.find("fsdb studio"), std::string::npos);
+  auto script = rawGet(server, "/studio.js", {{"Accept-Encoding", "gzip"}});
+  ASSERT_EQ(script->status, 200);
+  EXPECT_EQ(script->get_header_value("Content-Type"), "application/x-javascript");
+  EXPECT_EQ(script->get_header_value("Content-Encoding"), "gzip");
+  const std::string plain = rawGet(server, "/studio.js", {{"Accept-Encoding", "identity"}})->body;
+  EXPECT_EQ(gunzip(script->body), plain);
+  const std::string tag = script->get_header_value("ETag");
+  EXPECT_EQ(tag, entityTag(plain));  // the file's own tag, whatever the encoding
+  auto again = rawGet(server, "/studio.js", {{"If-None-Match", tag}, {"Accept-Encoding", "gzip"}});
+  EXPECT_EQ(again->status, 304);
+  EXPECT_TRUE(again->body.empty());
+  EXPECT_EQ(rawGet(server, "/vendor/../../CMakeCache.txt", {})->status, 404);
+  EXPECT_EQ(rawGet(server, "/vendor/nothing.js", {})->status, 404);
+}
+
+}  // namespace
+}  // namespace fsdb
