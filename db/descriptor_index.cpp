@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "db/sqlite.h"
+#include "db/sql.h"
 
 namespace fsdb {
 
@@ -21,7 +21,7 @@ double lowestSupportLo(double lo, int widthClass) {
   return std::nextafter(lo - std::ldexp(1.0, widthClass), -std::numeric_limits<double>::infinity());
 }
 
-void writeDescriptorRows(sqlite::Connection& connection, int64_t objectId, const std::string& kind,
+void writeDescriptorRows(sql::Connection& connection, int64_t objectId, const std::string& kind,
                          const std::vector<DescriptorComponent>& components) {
   for (const char* sql : {"DELETE FROM descriptor_index WHERE object_id = ?1",
                           "DELETE FROM descriptor_values WHERE object_id = ?1"}) {
@@ -33,7 +33,8 @@ void writeDescriptorRows(sqlite::Connection& connection, int64_t objectId, const
       "INSERT INTO descriptor_index (object_id, kind, component, descriptor, width_class, support_lo,"
       " core_lo, core_hi, support_hi) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9)");
   auto seenClass = connection.prepare(
-      "INSERT OR IGNORE INTO descriptor_classes (descriptor, width_class) VALUES (?1, ?2)");
+      "INSERT INTO descriptor_classes (descriptor, width_class) VALUES (?1, ?2)"
+      " ON CONFLICT (descriptor, width_class) DO NOTHING");
   auto values = connection.prepare(
       "INSERT INTO descriptor_values (object_id, component, descriptor_values) VALUES (?1, ?2, ?3)");
   for (const DescriptorComponent& component : components) {
@@ -53,7 +54,7 @@ void writeDescriptorRows(sqlite::Connection& connection, int64_t objectId, const
   }
 }
 
-void markDescriptorsPending(sqlite::Connection& connection, int64_t objectId) {
+void markDescriptorsPending(sql::Connection& connection, int64_t objectId) {
   int64_t generation = 0;
   {
     auto clock = connection.prepare(
@@ -67,7 +68,7 @@ void markDescriptorsPending(sqlite::Connection& connection, int64_t objectId) {
   statement->run();
 }
 
-void clearDescriptorsPending(sqlite::Connection& connection, int64_t objectId) {
+void clearDescriptorsPending(sql::Connection& connection, int64_t objectId) {
   auto statement = connection.prepare("DELETE FROM descriptor_pending WHERE object_id = ?1");
   statement->bind(1, objectId);
   statement->run();
@@ -80,7 +81,7 @@ double below(double x) { return std::nextafter(x, -std::numeric_limits<double>::
 
 }  // namespace
 
-std::vector<DescriptorRange> descriptorRangesIn(sqlite::Connection& connection, const DescriptorOverlap& test) {
+std::vector<DescriptorRange> descriptorRangesIn(sql::Connection& connection, const DescriptorOverlap& test) {
   std::vector<DescriptorRange> ranges;
   auto statement = connection.prepare("SELECT width_class FROM descriptor_classes WHERE descriptor = ?1");
   statement->bind(1, test.descriptor);
@@ -103,7 +104,7 @@ std::vector<DescriptorRange> descriptorRangesIn(sqlite::Connection& connection, 
   return ranges;
 }
 
-void descriptorRangeRowsIn(sqlite::Connection& connection, const std::string& kind, const DescriptorRange& range,
+void descriptorRangeRowsIn(sql::Connection& connection, const std::string& kind, const DescriptorRange& range,
                            std::vector<DescriptorCandidate>& rows) {
   auto scan = connection.prepare(
       "SELECT object_id, support_lo, support_hi FROM descriptor_index WHERE kind = ?1 AND descriptor = ?2 AND width_class = ?3"
@@ -113,17 +114,20 @@ void descriptorRangeRowsIn(sqlite::Connection& connection, const std::string& ki
   while (scan->step()) rows.push_back({scan->columnInt(0), scan->columnDouble(1), scan->columnDouble(2), false});
 }
 
-std::vector<int64_t> pendingDescriptorIdsIn(sqlite::Connection& connection, const std::string& kind) {
+std::vector<int64_t> pendingDescriptorIdsIn(sql::Connection& connection, const std::string& kind) {
+  // Driven by the (usually empty) pending table, not by every object of the kind: SQLite's CROSS
+  // JOIN fixes that order; PostgreSQL's planner finds it from the statistics.
   auto pending = connection.prepare(
-      // CROSS JOIN: driven by the (usually empty) pending table, not by every object of the kind.
-      "SELECT p.object_id FROM descriptor_pending p CROSS JOIN objects o ON o.id = p.object_id WHERE o.kind = ?1");
+      connection.dialect() == sql::Dialect::kSqlite
+          ? "SELECT p.object_id FROM descriptor_pending p CROSS JOIN objects o ON o.id = p.object_id WHERE o.kind = ?1"
+          : "SELECT p.object_id FROM descriptor_pending p JOIN objects o ON o.id = p.object_id WHERE o.kind = ?1");
   pending->bind(1, kind);
   std::vector<int64_t> ids;
   while (pending->step()) ids.push_back(pending->columnInt(0));
   return ids;
 }
 
-std::vector<DescriptorCandidate> descriptorCandidatesIn(sqlite::Connection& connection, const std::string& kind,
+std::vector<DescriptorCandidate> descriptorCandidatesIn(sql::Connection& connection, const std::string& kind,
                                                         const DescriptorOverlap& test) {
   std::vector<DescriptorCandidate> rows;
   for (const DescriptorRange& range : descriptorRangesIn(connection, test)) descriptorRangeRowsIn(connection, kind, range, rows);

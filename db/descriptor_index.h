@@ -1,5 +1,5 @@
 #pragma once
-// The descriptor index of migration 002 at the level of one SQLite connection: what the store's
+// The descriptor index of migration 002 at the level of one connection (either engine): what the store's
 // write path and its descriptor methods (db/store.h) run inside their transactions.
 //
 // Width classes: a row's class c bounds its support width w = support_hi - support_lo by
@@ -16,7 +16,7 @@
 
 namespace fsdb {
 
-namespace sqlite {
+namespace sql {
 class Connection;
 }
 
@@ -28,21 +28,21 @@ int widthClass(double width);
 double lowestSupportLo(double lo, int widthClass);
 
 // Replaces the rows of `objectId` (of `kind`) with `components`.
-void writeDescriptorRows(sqlite::Connection& connection, int64_t objectId, const std::string& kind,
+void writeDescriptorRows(sql::Connection& connection, int64_t objectId, const std::string& kind,
                          const std::vector<DescriptorComponent>& components);
 // Marks `objectId` pending with a new generation (higher than any before).
-void markDescriptorsPending(sqlite::Connection& connection, int64_t objectId);
+void markDescriptorsPending(sql::Connection& connection, int64_t objectId);
 // Clears the mark of `objectId` (its rows were just written from what the write stored).
-void clearDescriptorsPending(sqlite::Connection& connection, int64_t objectId);
+void clearDescriptorsPending(sql::Connection& connection, int64_t objectId);
 
 // The parts of Store::descriptorCandidates (db/store.h): ranges per class, rows of one range
 // (appended to `rows`), pending ids.
-std::vector<DescriptorRange> descriptorRangesIn(sqlite::Connection& connection, const DescriptorOverlap& test);
-void descriptorRangeRowsIn(sqlite::Connection& connection, const std::string& kind, const DescriptorRange& range,
+std::vector<DescriptorRange> descriptorRangesIn(sql::Connection& connection, const DescriptorOverlap& test);
+void descriptorRangeRowsIn(sql::Connection& connection, const std::string& kind, const DescriptorRange& range,
                            std::vector<DescriptorCandidate>& rows);
-std::vector<int64_t> pendingDescriptorIdsIn(sqlite::Connection& connection, const std::string& kind);
+std::vector<int64_t> pendingDescriptorIdsIn(sql::Connection& connection, const std::string& kind);
 
-std::vector<DescriptorCandidate> descriptorCandidatesIn(sqlite::Connection& connection, const std::string& kind,
+std::vector<DescriptorCandidate> descriptorCandidatesIn(sql::Connection& connection, const std::string& kind,
                                                         const DescriptorOverlap& test);
 
 }  // namespace fsdb

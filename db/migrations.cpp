@@ -3,17 +3,14 @@
 
 #include <algorithm>
 
-#include "db/sqlite.h"
+#include "db/sql.h"
 #include "geometry/core/error.h"
 
 namespace fsdb {
 
-int schemaVersionOf(sqlite::Connection& connection) {
-  auto statement = connection.prepare("PRAGMA user_version");
-  return statement->step() ? static_cast<int>(statement->columnInt(0)) : 0;
-}
+int schemaVersionOf(sql::Connection& connection) { return connection.schemaVersion(); }
 
-int applyMigrations(sqlite::Connection& connection,
+int applyMigrations(sql::Connection& connection,
                     const std::vector<std::pair<int, std::string>>& migrations) {
   auto sorted = migrations;
   std::sort(sorted.begin(), sorted.end());
@@ -23,18 +20,17 @@ int applyMigrations(sqlite::Connection& connection,
     throw Error(errc::kStorage, "database schema version " + std::to_string(current) +
                                     " is newer than this fsdb knows (" + std::to_string(known) +
                                     "); upgrade fsdb to open it");
-  for (const auto& [version, sql] : sorted) {
+  for (const auto& [version, text] : sorted) {
     if (version <= current) continue;
-    sqlite::Transaction transaction(connection);
+    sql::Transaction transaction(connection);
     // Re-read under the write lock: another process may have migrated since we looked.
     if (schemaVersionOf(connection) >= version) continue;
     try {
-      connection.exec(sql);
+      connection.exec(text);
     } catch (const Error& e) {
       throw Error(errc::kStorage, "migration " + std::to_string(version) + ": " + e.what());
     }
-    // PRAGMA takes no bound parameters; the value is our own integer, not input.
-    connection.exec("PRAGMA user_version = " + std::to_string(version));
+    connection.setSchemaVersion(version);
     transaction.commit();
     current = version;
   }

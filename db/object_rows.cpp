@@ -10,11 +10,7 @@
 
 namespace fsdb::object_rows {
 
-using sqlite::Connection;
-using sqlite::Transaction;
-
-using sqlite::Connection;
-using sqlite::Transaction;
+using sql::Connection;
 
 // ISO 8601 UTC with milliseconds: "2026-11-22T10:00:00.123Z" (sorts as text in time order).
 std::string isoNow() {
@@ -39,7 +35,7 @@ std::string describe(const std::string& kind, const std::string& name, int64_t i
 }
 
 std::vector<int64_t> dependentsOf(Connection& connection, int64_t id) {
-  auto statement = connection.prepare("SELECT id FROM (" FSDB_REACHING_SQL ") WHERE id != ?1 ORDER BY id");
+  auto statement = connection.prepare("SELECT id FROM (" FSDB_REACHING_SQL ") AS reaching WHERE id != ?1 ORDER BY id");
   statement->bind(1, id);
   std::vector<int64_t> ids;
   while (statement->step()) ids.push_back(statement->columnInt(0));
@@ -89,7 +85,7 @@ std::vector<int64_t> resolveAll(Connection& connection, const std::vector<Object
 void checkCycles(Connection& connection, const ObjectRow& object,
                  const std::vector<ObjectReference>& references, const std::vector<int64_t>& children) {
   auto statement = connection.prepare(
-      "WITH RECURSIVE down(id) AS (SELECT ?1"
+      "WITH RECURSIVE down(id) AS (SELECT CAST(?1 AS BIGINT)"
       " UNION SELECT refs.child_id FROM refs JOIN down ON refs.parent_id = down.id)"
       " SELECT 1 FROM down WHERE id = ?2 LIMIT 1");
   for (size_t i = 0; i < children.size(); ++i) {
@@ -171,7 +167,8 @@ void writeVersion(Connection& connection, const ObjectRow& row, int version, con
     statement->run();
   }
   {
-    auto statement = connection.prepare("INSERT OR IGNORE INTO refs (parent_id, child_id) VALUES (?1, ?2)");
+    auto statement = connection.prepare(
+        "INSERT INTO refs (parent_id, child_id) VALUES (?1, ?2) ON CONFLICT (parent_id, child_id) DO NOTHING");
     for (int64_t child : children) {
       statement->reset();
       statement->bind(1, row.id).bind(2, child);
@@ -212,22 +209,47 @@ StoredObject createIn(Connection& connection, const NewObject& object) {
   // because its id and name are not in the database until the insert below.
   auto children = resolveAll(connection, object.references);
   std::string now = isoNow();
+  int64_t id = 0;
   {
     auto statement = connection.prepare(
-        "INSERT INTO objects (kind, name, latest_version) VALUES (?1, ?2, 1)");
+        "INSERT INTO objects (kind, name, latest_version) VALUES (?1, ?2, 1) RETURNING id");
     statement->bind(1, object.kind).bind(2, object.name);
+    if (statement->step()) id = statement->columnInt(0);
     statement->run();
   }
-  ObjectRow row{connection.lastInsertId(), object.kind, object.name, 1};
+  ObjectRow row{id, object.kind, object.name, 1};
   writeVersion(connection, row, 1, object, children, now);
+  logChange(connection, id);
   return written(row, 1, object, children, now);
 }
 
+void checkVersion(const ObjectRow& row, std::optional<int> ifVersion) {
+  if (ifVersion && *ifVersion != row.latestVersion)
+    throw Error(errc::kPreconditionFailed, describe(row.kind, row.name, row.id) + " is at version " +
+                                               std::to_string(row.latestVersion) + ", not " +
+                                               std::to_string(*ifVersion) + " (If-Match)");
+}
+
+void logChange(Connection& connection, int64_t id) {
+  int64_t seq = 0;
+  {
+    auto statement = connection.prepare("INSERT INTO change_log (object_id) VALUES (?1) RETURNING seq");
+    statement->bind(1, id);
+    if (statement->step()) seq = statement->columnInt(0);
+    statement->run();
+  }
+  if (seq % 1024 != 0) return;  // prune now and then: one range delete per 1024 writes
+  auto statement = connection.prepare("DELETE FROM change_log WHERE seq <= ?1");
+  statement->bind(1, seq - kChangeLogKept);
+  statement->run();
+}
+
 // put inside the caller's transaction.
-StoredObject putIn(Connection& connection, int64_t id, const NewObject& object) {
+StoredObject putIn(Connection& connection, int64_t id, const NewObject& object, std::optional<int> ifVersion) {
   auto row = objectRow(connection, id);
   if (!row || row->kind != object.kind)
     throw Error(errc::kNotFound, object.kind + " " + std::to_string(id) + " not found");
+  checkVersion(*row, ifVersion);
   if (row->name != object.name)
     throw Error(errc::kConflict,
                 "cannot rename " + describe(row->kind, row->name, id) + " to '" + object.name +
@@ -247,6 +269,7 @@ StoredObject putIn(Connection& connection, int64_t id, const NewObject& object) 
     statement->run();
   }
   writeVersion(connection, *row, version, object, children, now);
+  logChange(connection, id);
   return written(*row, version, object, children, now);
 }
 
@@ -278,7 +301,7 @@ std::vector<int64_t> referencesOf(Connection& connection, int64_t id) {
 
 // Columns: o.id, o.kind, o.name, o.latest_version, v.version, v.document, v.content_hash,
 // v.created_at. References are filled for the latest version (refs holds only its edges).
-StoredObject readObject(sqlite::Statement& row) {
+StoredObject readObject(sql::Statement& row) {
   StoredObject object;
   object.id = row.columnInt(0);
   object.kind = row.columnText(1);

@@ -2,13 +2,13 @@
 // Internal to db/: the rows of one object on one connection, inside the caller's transaction:
 // reference resolution, the cycle check, version rows, reference edges and cache invalidation
 // (the write path that Store::create, put and createBatch share), and reading objects back.
-// Store (db/store.h) is the public face; only db/store.cpp includes this header.
+// Store (db/store.h) is the public face; only db/sql_store.cpp includes this header.
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "db/sqlite.h"
+#include "db/sql.h"
 #include "db/store.h"
 
 namespace fsdb::object_rows {
@@ -34,19 +34,26 @@ struct ObjectRow {
 // "part 'bolt' (id 3)": how messages name an object.
 std::string describe(const std::string& kind, const std::string& name, int64_t id);
 // The objects whose latest version reaches id (FSDB_REACHING_SQL), sorted, without id itself.
-std::vector<int64_t> dependentsOf(sqlite::Connection& connection, int64_t id);
-std::optional<ObjectRow> objectRow(sqlite::Connection& connection, int64_t id);
+std::vector<int64_t> dependentsOf(sql::Connection& connection, int64_t id);
+std::optional<ObjectRow> objectRow(sql::Connection& connection, int64_t id);
 // Store::create, put and upsert (createBatch's modes), inside the caller's transaction.
-StoredObject createIn(sqlite::Connection& connection, const NewObject& object);
-StoredObject putIn(sqlite::Connection& connection, int64_t id, const NewObject& object);
-StoredObject upsertIn(sqlite::Connection& connection, const NewObject& object);
+StoredObject createIn(sql::Connection& connection, const NewObject& object);
+StoredObject putIn(sql::Connection& connection, int64_t id, const NewObject& object,
+                   std::optional<int> ifVersion = std::nullopt);
+// precondition_failed unless ifVersion is empty or the object's latest version.
+void checkVersion(const ObjectRow& row, std::optional<int> ifVersion);
+// Appends `id` to the change log (migration 004) under the next sequence number, and drops the
+// entries older than the newest kChangeLogKept now and then.
+constexpr int64_t kChangeLogKept = 100000;
+void logChange(sql::Connection& connection, int64_t id);
+StoredObject upsertIn(sql::Connection& connection, const NewObject& object);
 // The children that the latest version of id references, sorted.
-std::vector<int64_t> referencesOf(sqlite::Connection& connection, int64_t id);
+std::vector<int64_t> referencesOf(sql::Connection& connection, int64_t id);
 // One row of kObjectColumns. References are filled for the latest version by loadObject only
 // (refs holds only the latest version's edges).
-StoredObject readObject(sqlite::Statement& row);
+StoredObject readObject(sql::Statement& row);
 // The object of `kind` with this id (or, without one, this name) at `version` (else the latest).
-std::optional<StoredObject> loadObject(sqlite::Connection& connection, const std::string& kind,
+std::optional<StoredObject> loadObject(sql::Connection& connection, const std::string& kind,
                                        std::optional<int64_t> id, const std::string& name,
                                        std::optional<int> version);
 

@@ -30,34 +30,30 @@ void checkBind(sqlite3* db, int rc, int index) {
 }
 }  // namespace
 
-Statement& Statement::bind(int index, int64_t value) {
+sql::Statement& Statement::bind(int index, int64_t value) {
   checkBind(db_, sqlite3_bind_int64(stmt_, index, value), index);
   return *this;
 }
 
-Statement& Statement::bind(int index, double value) {
+sql::Statement& Statement::bind(int index, double value) {
   checkBind(db_, sqlite3_bind_double(stmt_, index, value), index);
   return *this;
 }
 
-Statement& Statement::bind(int index, const std::string& text) {
+sql::Statement& Statement::bind(int index, const std::string& text) {
   checkBind(db_, sqlite3_bind_text64(stmt_, index, text.data(), text.size(), SQLITE_TRANSIENT,
                                      SQLITE_UTF8),
             index);
   return *this;
 }
 
-Statement& Statement::bind(int index, const std::optional<int64_t>& value) {
-  return value ? bind(index, *value) : bindNull(index);
-}
-
-Statement& Statement::bindBlob(int index, const std::string& bytes) {
+sql::Statement& Statement::bindBlob(int index, const std::string& bytes) {
   checkBind(db_, sqlite3_bind_blob64(stmt_, index, bytes.data(), bytes.size(), SQLITE_TRANSIENT),
             index);
   return *this;
 }
 
-Statement& Statement::bindNull(int index) {
+sql::Statement& Statement::bindNull(int index) {
   checkBind(db_, sqlite3_bind_null(stmt_, index), index);
   return *this;
 }
@@ -69,11 +65,6 @@ bool Statement::step() {
   // sqlite3_errmsg still holds the step's message until the next call on this connection.
   std::string what = "'" + sql_ + "'";
   fail(db_, what);
-}
-
-void Statement::run() {
-  while (step()) {
-  }
 }
 
 void Statement::reset() {
@@ -98,11 +89,6 @@ std::string Statement::columnBlob(int column) const {
   const void* bytes = sqlite3_column_blob(stmt_, column);
   int size = sqlite3_column_bytes(stmt_, column);
   return bytes ? std::string(static_cast<const char*>(bytes), static_cast<size_t>(size)) : "";
-}
-
-std::optional<int64_t> Statement::columnOptionalInt(int column) const {
-  if (isNull(column)) return std::nullopt;
-  return columnInt(column);
 }
 
 // --- Connection --------------------------------------------------------------------------------
@@ -158,41 +144,23 @@ int Connection::changes() const { return sqlite3_changes(db_); }
 
 bool Connection::inTransaction() const { return sqlite3_get_autocommit(db_) == 0; }
 
-// --- Transaction, Savepoint --------------------------------------------------------------------
-
-Transaction::Transaction(Connection& connection, Mode mode) : connection_(connection) {
-  connection_.exec(mode == Mode::kImmediate ? "BEGIN IMMEDIATE" : "BEGIN DEFERRED");
+void Connection::begin(sql::TransactionMode mode) {
+  exec(mode == sql::TransactionMode::kWrite ? "BEGIN IMMEDIATE" : "BEGIN DEFERRED");
 }
 
-Transaction::~Transaction() {
+void Connection::rollbackQuietly() {
   // Some errors (disk full, I/O) end the transaction themselves; ROLLBACK would then fail.
-  if (!done_ && connection_.inTransaction()) sqlite3_exec(connection_.handle(), "ROLLBACK", nullptr, nullptr, nullptr);
+  if (inTransaction()) sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
 }
 
-void Transaction::commit() {
-  connection_.exec("COMMIT");
-  done_ = true;
+int Connection::schemaVersion() {
+  auto statement = prepare("PRAGMA user_version");
+  return statement->step() ? static_cast<int>(statement->columnInt(0)) : 0;
 }
 
-Savepoint::Savepoint(Connection& connection, std::string name)
-    : connection_(connection), name_(std::move(name)) {
-  connection_.exec("SAVEPOINT " + name_);
-}
-
-Savepoint::~Savepoint() {
-  if (done_ || !connection_.inTransaction()) return;
-  std::string sql = "ROLLBACK TO " + name_ + "; RELEASE " + name_;
-  sqlite3_exec(connection_.handle(), sql.c_str(), nullptr, nullptr, nullptr);
-}
-
-void Savepoint::release() {
-  connection_.exec("RELEASE " + name_);
-  done_ = true;
-}
-
-void Savepoint::rollback() {
-  connection_.exec("ROLLBACK TO " + name_ + "; RELEASE " + name_);
-  done_ = true;
+void Connection::setSchemaVersion(int version) {
+  // PRAGMA takes no bound parameters; the value is our own integer, not input.
+  exec("PRAGMA user_version = " + std::to_string(version));
 }
 
 }  // namespace fsdb::sqlite

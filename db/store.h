@@ -1,6 +1,9 @@
 #pragma once
-// Store: fsdb's database of parts and shapes (Zhang, Pham & Chen, §4; docs/api.md §2, §4) on one
-// SQLite file.
+// Store: fsdb's database of parts and shapes (Zhang, Pham & Chen, §4; docs/api.md §2, §4), an
+// interface with two backends: SqliteStore (db/sqlite_store.h, one embedded file, the default) and
+// PostgresStore (db/postgres_store.h, one PostgreSQL database shared by several stateless
+// servers). Both are db/sql_store.h, the same queries on different engines; the tests run the
+// same suites on both (docs/design/storage-backends.md says what differs and why).
 //
 // Model
 // - Every stored thing is an *object*: a system id (INTEGER, AUTOINCREMENT: never reused, not
@@ -21,17 +24,24 @@
 //   the resolved document + resolution + alphas + method). Any write to an object drops the cache
 //   rows of that object and of every object that reaches it through references.
 //
+// - Change log: every write records the ids it changed under a store-wide sequence number, so a
+//   server's in-memory caches see writes made through other servers (changesSince) without
+//   reading every object's version per query.
+//
 // Guarantees
-// - Every write is one transaction (BEGIN IMMEDIATE): it completes or leaves nothing.
-// - WAL journal, foreign keys on, busy timeout (Options::busyTimeoutMs); a write that still cannot
-//   get the lock fails with 503 storage_error, never a partial write.
+// - Every write is one transaction that holds the database's write lock (SQLite: BEGIN
+//   IMMEDIATE; PostgreSQL: an advisory lock): it completes or leaves nothing, and writers from
+//   all servers on one database run one at a time, so name, cycle and version checks cannot race.
+// - A write that cannot get the lock in time, or any engine failure, is 503 storage_error, never
+//   a partial write.
 // - Thread-safe: any number of threads may call any method; each call takes a connection from a
-//   pool (WAL lets readers run beside the one writer).
-// - Migrations (schema/migrations/NNN_*.sql, compiled into the binary) are applied in order at
-//   open(), each in its own transaction; the applied version is PRAGMA user_version.
+//   pool (readers run beside the one writer).
+// - Migrations (schema/migrations/NNN_*.sql and schema/migrations/postgresql/NNN_*.sql, compiled
+//   into the binary) are applied in order at open(), each in its own transaction.
 // Errors are fsdb::Error with the codes of geometry/core/error.h: not_found (404), conflict (409: name
 // taken on create, name change on put), in_use (409: delete of a referenced object without
-// cascade), unknown_reference / reference_cycle (422), storage_error (503: SQLite failures).
+// cascade), precondition_failed (412: the object moved past the version a conditional write
+// expected), unknown_reference / reference_cycle (422), storage_error (503: engine failures).
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -190,43 +200,73 @@ struct CachedEvaluation {
   std::string vdb;  // may be empty
 };
 
+// One object a write changed since some sequence number (Store::changesSince): its latest version
+// now, or latestVersion 0 when it was deleted.
+struct ObjectChange {
+  int64_t id = 0;
+  std::string kind;  // "" when deleted
+  std::string name;
+  int latestVersion = 0;
+};
+
+// What changed after a sequence number, up to `seq`. reset: the log no longer reaches back that far
+// (or the caller asked from 0), so `changes` lists every live object instead and the caller must
+// forget what it knew. An object changed several times appears once.
+struct ChangeFeed {
+  int64_t seq = 0;
+  bool reset = false;
+  std::vector<ObjectChange> changes;
+};
+
 class Store {
  public:
-  // Opens (creating if missing, with parent directories) and migrates. ":memory:" is not
-  // supported (each pooled connection would get its own database); use a temporary file.
-  static std::unique_ptr<Store> open(const std::string& path, const StoreOptions& options = {});
-  ~Store();
+  // Opens and migrates the store at `location`: a postgresql:// or postgres:// URL opens
+  // PostgresStore (db/postgres_store.h), anything else is a file path for SqliteStore
+  // (db/sqlite_store.h). ":memory:" is not supported (each pooled connection would get its own
+  // database); use a temporary file.
+  static std::unique_ptr<Store> open(const std::string& location, const StoreOptions& options = {});
+  virtual ~Store() = default;
   Store(const Store&) = delete;
   Store& operator=(const Store&) = delete;
 
-  const std::string& path() const;
-  int schemaVersion() const;  // highest applied migration
+  // The file path, or the URL with any password hidden.
+  virtual const std::string& path() const = 0;
+  virtual std::string backend() const = 0;  // "sqlite" or "postgresql"
+  virtual int schemaVersion() const = 0;  // highest applied migration
 
   // Creates an object at version 1. conflict when the kind already has a live object of that name.
-  StoredObject create(const NewObject& object);
+  virtual StoredObject create(const NewObject& object) = 0;
   // Adds a version to object `id` (which must be of object.kind, else not_found). The name must
   // stay the same (conflict otherwise). References are re-resolved; the edges become the new
-  // version's; cycles are refused.
-  StoredObject put(int64_t id, const NewObject& object);
+  // version's; cycles are refused. ifVersion: precondition_failed (412) unless the object's latest
+  // version is that one when the write holds the lock (HTTP If-Match).
+  virtual StoredObject put(int64_t id, const NewObject& object, std::optional<int> ifVersion = std::nullopt) = 0;
   // The latest version, or the given one. not_found when the object or version does not exist.
-  StoredObject get(const std::string& kind, int64_t id, std::optional<int> version = std::nullopt) const;
+  virtual StoredObject get(const std::string& kind, int64_t id, std::optional<int> version = std::nullopt) const = 0;
   // Resolves a reference to the latest version of the object it names; not_found-free: nullopt.
-  std::optional<StoredObject> find(const ObjectReference& reference) const;
-  std::vector<StoredObject> list(const ListQuery& query) const;
+  virtual std::optional<StoredObject> find(const ObjectReference& reference) const = 0;
+  virtual std::vector<StoredObject> list(const ListQuery& query) const = 0;
   // Deletes the object and all its versions. in_use (409) when a live object's latest version
   // refers to it, unless cascade: then every object that reaches it is deleted too. Returns the
-  // ids deleted (the object first).
-  std::vector<int64_t> remove(const std::string& kind, int64_t id, bool cascade);
+  // ids deleted (the object first). ifVersion as for put.
+  virtual std::vector<int64_t> remove(const std::string& kind, int64_t id, bool cascade,
+                                      std::optional<int> ifVersion = std::nullopt) = 0;
 
   // One transaction for the whole batch; each item in its own savepoint, so a failing item
   // (conflict, unknown reference, ...) is reported and the others of the batch still commit.
   // Items may refer to objects created earlier in the same batch.
-  std::vector<BulkItemResult> createBatch(const std::vector<NewObject>& items, BulkMode mode);
+  virtual std::vector<BulkItemResult> createBatch(const std::vector<NewObject>& items, BulkMode mode) = 0;
 
   // Live objects per kind ({"part": 31, "shape": 12}); kinds with no live object are absent.
-  std::map<std::string, int64_t> counts() const;
+  virtual std::map<std::string, int64_t> counts() const = 0;
   // Ids of the objects whose latest version reaches `id` through references (not `id` itself).
-  std::vector<int64_t> dependents(int64_t id) const;
+  virtual std::vector<int64_t> dependents(int64_t id) const = 0;
+
+  // --- The change log (migration 004) ---
+  // The newest sequence number: one indexed read, so a cache can check "anything new?" per query.
+  virtual int64_t changeSeq() const = 0;
+  // The objects changed after `seq` (0: everything, as a reset), in one snapshot.
+  virtual ChangeFeed changesSince(int64_t seq) const = 0;
 
   // --- The descriptor index (migration 002) ---
   // Writes keep it in step: create and put replace the object's rows with NewObject::descriptors
@@ -240,43 +280,43 @@ class Store {
   // The component rows of objects of `kind` passing `test` (one index range scan per width
   // class, db/descriptor_index.h), and every pending object of `kind` (pending = true), in index
   // order (not by id: sorting is the caller's choice; a shape's rows may be apart).
-  std::vector<DescriptorCandidate> descriptorCandidates(const std::string& kind, const DescriptorOverlap& test) const;
+  virtual std::vector<DescriptorCandidate> descriptorCandidates(const std::string& kind,
+                                                                const DescriptorOverlap& test) const = 0;
   // The same rows in parts: the range per width class present (empty ranges left out), the rows
   // of one range (pending = false), and the ids of the pending objects of `kind`.
-  std::vector<DescriptorRange> descriptorRanges(const DescriptorOverlap& test) const;
-  std::vector<DescriptorCandidate> descriptorRangeRows(const std::string& kind, const DescriptorRange& range) const;
-  std::vector<int64_t> pendingDescriptorIds(const std::string& kind) const;
+  virtual std::vector<DescriptorRange> descriptorRanges(const DescriptorOverlap& test) const = 0;
+  virtual std::vector<DescriptorCandidate> descriptorRangeRows(const std::string& kind,
+                                                               const DescriptorRange& range) const = 0;
+  virtual std::vector<int64_t> pendingDescriptorIds(const std::string& kind) const = 0;
   // Sorted ids of every live object of `kind` (the full scan's candidates).
-  std::vector<int64_t> objectIds(const std::string& kind) const;
-  // Every live object of `kind` by id with its name and latest version, in one read (structural
-  // search: which cached graphs are still current, server/service/csg_search.h).
-  std::vector<ObjectVersion> objectVersions(const std::string& kind) const;
+  virtual std::vector<int64_t> objectIds(const std::string& kind) const = 0;
+  // Every live object of `kind` by id with its name and latest version, in one read.
+  virtual std::vector<ObjectVersion> objectVersions(const std::string& kind) const = 0;
   // The objects of `kind` among `ids`, in the order given (ids of other kinds or deleted are skipped).
-  std::vector<IndexedObject> indexedObjects(const std::string& kind, const std::vector<int64_t>& ids) const;
+  virtual std::vector<IndexedObject> indexedObjects(const std::string& kind, const std::vector<int64_t>& ids) const = 0;
   // The rows of the latest version of `id`, by component (tests, diagnostics).
-  std::vector<DescriptorComponent> descriptorRows(int64_t id) const;
+  virtual std::vector<DescriptorComponent> descriptorRows(int64_t id) const = 0;
   // Pending objects with id > afterId, by id, at most `limit`.
-  std::vector<PendingDescriptors> pendingDescriptors(int64_t afterId = 0, int limit = 1000) const;
+  virtual std::vector<PendingDescriptors> pendingDescriptors(int64_t afterId = 0, int limit = 1000) const = 0;
   // For each (pending object, its rows): replaces the rows and clears the mark, but only when the
   // object is still pending with the same generation (a write since then marked it again or wrote
   // fresh rows). One transaction for all; returns how many it replaced. The caller computes the
   // rows from documents it read after pendingDescriptors.
-  size_t replaceDescriptors(
-      const std::vector<std::pair<PendingDescriptors, std::vector<DescriptorComponent>>>& refreshed);
+  virtual size_t replaceDescriptors(
+      const std::vector<std::pair<PendingDescriptors, std::vector<DescriptorComponent>>>& refreshed) = 0;
 
-  std::optional<CachedEvaluation> cachedEvaluation(const std::string& key) const;
-  void storeEvaluation(int64_t objectId, const std::string& key, const CachedEvaluation& value);
+  virtual std::optional<CachedEvaluation> cachedEvaluation(const std::string& key) const = 0;
+  virtual void storeEvaluation(int64_t objectId, const std::string& key, const CachedEvaluation& value) = 0;
 
-  // PRAGMA wal_checkpoint(TRUNCATE): called at shutdown so the file is whole on its own.
-  void checkpoint();
-  // PRAGMA integrity_check: "ok" or the first problem.
-  std::string integrityCheck() const;
+  // SQLite: PRAGMA wal_checkpoint(TRUNCATE), called at shutdown so the file is whole on its own.
+  // PostgreSQL: nothing (the server owns durability).
+  virtual void checkpoint() = 0;
+  // "ok" or the first problem (SQLite: PRAGMA integrity_check; PostgreSQL: the store's own
+  // invariants: every object has its latest version, every edge names live objects).
+  virtual std::string integrityCheck() const = 0;
 
-  class Impl;
-
- private:
-  explicit Store(std::unique_ptr<Impl> impl);
-  std::unique_ptr<Impl> impl_;
+ protected:
+  Store() = default;
 };
 
 }  // namespace fsdb

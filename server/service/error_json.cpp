@@ -13,7 +13,7 @@ int httpStatusFor(const std::string& code) {
       {errc::kInvalidDocument, 422},  {errc::kUnknownName, 422},
       {errc::kDomainError, 422},      {"method_not_allowed", 405},
       {errc::kUnsupportedMediaType, 415}, {errc::kConflict, 409},
-      {errc::kInUse, 409},            {errc::kUnknownReference, 422},
+      {errc::kInUse, 409}, {errc::kPreconditionFailed, 412},            {errc::kUnknownReference, 422},
       {errc::kReferenceCycle, 422},   {errc::kUnauthorized, 401},
       {errc::kStorage, 503}};
   auto it = kStatus.find(code);

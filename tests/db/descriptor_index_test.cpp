@@ -12,6 +12,7 @@
 #include "db/sqlite.h"
 #include "db/store.h"
 #include "tests/db/temp_dir.h"
+#include "tests/db/test_database.h"
 
 namespace fsdb {
 namespace {
@@ -65,11 +66,16 @@ std::vector<int64_t> pendingIds(const Store& store) {
   return ids;
 }
 
-class DescriptorIndexTest : public testing::Test {
+// On both backends (tests/db/test_database.h): the level scan's bounds and answers must not
+// depend on the engine.
+class DescriptorIndexTest : public testing::TestWithParam<std::string> {
  protected:
-  TempDir dir;
-  std::string path = dir.file("fsdb.db");
-  std::unique_ptr<Store> store = Store::open(path);
+  void SetUp() override {
+    FSDB_USE_BACKEND(GetParam());
+    store = Store::open(database.location());
+  }
+  test::TestDatabase database{GetParam()};
+  std::unique_ptr<Store> store;
 };
 
 TEST(WidthClass, BoundsTheWidth) {
@@ -88,7 +94,7 @@ TEST(WidthClass, BoundsTheWidth) {
   EXPECT_EQ(lowestSupportLo(0.25, kCrispWidthClass), 0.25);
 }
 
-TEST_F(DescriptorIndexTest, CreateWritesRowsAndCandidatesOverlap) {
+TEST_P(DescriptorIndexTest, CreateWritesRowsAndCandidatesOverlap) {
   const int64_t id = store->create(part("bent", 0.2, 0.4)).id;
   const auto rows = store->descriptorRows(id);
   ASSERT_EQ(rows.size(), 1u);
@@ -133,7 +139,7 @@ TEST_F(DescriptorIndexTest, CreateWritesRowsAndCandidatesOverlap) {
 }
 
 // objectVersions: every live object of the kind, by id, with its name and latest version.
-TEST_F(DescriptorIndexTest, ObjectVersionsFollowPutsAndDeletes) {
+TEST_P(DescriptorIndexTest, ObjectVersionsFollowPutsAndDeletes) {
   const int64_t a = store->create(part("a", 0.2, 0.4)).id;
   const int64_t b = store->create(part("b", 0.2, 0.4)).id;
   store->put(a, part("a", 0.7, 0.8, ",\"v\":2"));
@@ -151,7 +157,7 @@ TEST_F(DescriptorIndexTest, ObjectVersionsFollowPutsAndDeletes) {
   EXPECT_TRUE(store->objectVersions("shape").empty());
 }
 
-TEST_F(DescriptorIndexTest, PutReplacesAndDeleteRemoves) {
+TEST_P(DescriptorIndexTest, PutReplacesAndDeleteRemoves) {
   const int64_t id = store->create(part("p", 0.2, 0.4)).id;
   store->put(id, part("p", 0.7, 0.8, ",\"v\":2"));
   EXPECT_TRUE(ids(*store, "part", {"bendness", 0.2, 0.4}).empty());
@@ -164,15 +170,15 @@ TEST_F(DescriptorIndexTest, PutReplacesAndDeleteRemoves) {
   store->remove("part", id, false);
   EXPECT_TRUE(store->descriptorRows(id).empty());
   EXPECT_TRUE(ids(*store, "part", {"bendness", 0, 1}).empty());
-  sqlite::Connection db(path);
+  auto db = database.connect();
   for (const char* table : {"descriptor_index", "descriptor_values", "descriptor_pending"}) {
-    auto statement = db.prepare(std::string("SELECT COUNT(*) FROM ") + table);
+    auto statement = db->prepare(std::string("SELECT COUNT(*) FROM ") + table);
     ASSERT_TRUE(statement->step());
     EXPECT_EQ(statement->columnInt(0), 0) << table;
   }
 }
 
-TEST_F(DescriptorIndexTest, CreateBatchWritesRowsOfEveryItemThatCommits) {
+TEST_P(DescriptorIndexTest, CreateBatchWritesRowsOfEveryItemThatCommits) {
   store->create(part("taken", 0.1, 0.2));
   const auto results =
       store->createBatch({part("a", 0.5, 0.6), part("taken", 0.5, 0.6), part("b", 0.55, 0.9)}, BulkMode::kCreate);
@@ -182,7 +188,7 @@ TEST_F(DescriptorIndexTest, CreateBatchWritesRowsOfEveryItemThatCommits) {
             (std::vector<int64_t>{*results[0].id, *results[2].id}));
 }
 
-TEST_F(DescriptorIndexTest, ReferencesAndNewVersionsMarkPending) {
+TEST_P(DescriptorIndexTest, ReferencesAndNewVersionsMarkPending) {
   const int64_t bolt = store->create(part("bolt", 0.2, 0.4)).id;
   const int64_t plain = store->create(part("plain", 0.2, 0.4)).id;
   // A shape written with references: its rows came from documents read before the write.
@@ -222,7 +228,7 @@ TEST_F(DescriptorIndexTest, ReferencesAndNewVersionsMarkPending) {
   (void)plain;
 }
 
-TEST_F(DescriptorIndexTest, OverlapScanEqualsBruteForce) {
+TEST_P(DescriptorIndexTest, OverlapScanEqualsBruteForce) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> unit(0, 1);
   std::vector<std::pair<double, double>> supports;
@@ -279,7 +285,7 @@ TEST_F(DescriptorIndexTest, OverlapScanEqualsBruteForce) {
   EXPECT_TRUE(store->pendingDescriptorIds("part").empty());
 }
 
-TEST_F(DescriptorIndexTest, PendingIdsAreThePendingObjectsOfTheKind) {
+TEST_P(DescriptorIndexTest, PendingIdsAreThePendingObjectsOfTheKind) {
   const int64_t a = store->create(part("a", 0.1, 0.2)).id;
   const int64_t s = store->create(shapeOf("s", {"a"}, 0.1, 0.2)).id;  // references: pending
   EXPECT_TRUE(store->pendingDescriptorIds("part").empty());
@@ -312,6 +318,8 @@ TEST(DescriptorIndexMigration, ObjectsOfAnOlderDatabaseArePending) {
   store->put(id, part("new", 0.1, 0.2, ",\"v\":2"));
   EXPECT_EQ(pendingIds(*store), (std::vector<int64_t>{1, 2}));
 }
+
+INSTANTIATE_TEST_SUITE_P(Backends, DescriptorIndexTest, testing::ValuesIn(test::kBackends));
 
 }  // namespace
 }  // namespace fsdb

@@ -86,7 +86,7 @@ TEST_F(SqliteTest, CachedStatementIsResetAfterEachUse) {
   db.exec("CREATE TABLE t (x INTEGER)");
   db.exec("INSERT INTO t VALUES (1), (2)");
   const std::string sql = "SELECT x FROM t ORDER BY x";
-  Statement* first = nullptr;
+  sql::Statement* first = nullptr;
   {
     auto statement = db.prepare(sql);
     first = &*statement;
@@ -127,7 +127,7 @@ TEST_F(SqliteTest, TransactionCommitsOrRollsBack) {
   EXPECT_FALSE(db.inTransaction());
   EXPECT_EQ(count("t"), 0);
   {
-    Transaction transaction(db, Transaction::Mode::kDeferred);
+    Transaction transaction(db, Transaction::Mode::kRead);
     db.exec("INSERT INTO t VALUES (1)");
     transaction.commit();
   }

@@ -1,4 +1,5 @@
-// db/store.h: the Store contract, method by method, on a real file in a temporary directory.
+// db/store.h: the Store contract, method by method, on both backends: a real SQLite file in a
+// temporary directory and a fresh schema on the test PostgreSQL cluster (tests/db/test_database.h).
 #include "db/store.h"
 
 #include <gtest/gtest.h>
@@ -13,6 +14,7 @@
 #include "geometry/core/error.h"
 #include "tests/db/expect_error.h"
 #include "tests/db/temp_dir.h"
+#include "tests/db/test_database.h"
 
 namespace fsdb {
 namespace {
@@ -43,30 +45,44 @@ ObjectReference byId(const std::string& kind, int64_t id, int index = 0) {
   return {kind, id, "", "tree.children[" + std::to_string(index) + "].ref"};
 }
 
-class StoreTest : public testing::Test {
+class StoreTest : public testing::TestWithParam<std::string> {
  protected:
-  TempDir dir;
-  std::string path = dir.file("nested/dir/fsdb.db");
-  std::unique_ptr<Store> store = Store::open(path);
+  void SetUp() override {
+    FSDB_USE_BACKEND(GetParam());
+    store = Store::open(database.location());
+  }
+  test::TestDatabase database{GetParam()};
+  const std::string& path = database.location();
+  std::unique_ptr<Store> store;
 
   // Rows of `table` with object_id = id, read through a separate connection.
   int64_t rows(const std::string& table, const std::string& column, int64_t id) {
-    sqlite::Connection db(path);
-    auto statement = db.prepare("SELECT COUNT(*) FROM " + table + " WHERE " + column + " = ?1");
+    auto db = database.connect();
+    auto statement = db->prepare("SELECT COUNT(*) FROM " + table + " WHERE " + column + " = ?1");
     statement->bind(1, id);
     EXPECT_TRUE(statement->step());
     return statement->columnInt(0);
   }
 };
 
-TEST_F(StoreTest, OpenCreatesParentDirectoriesAndMigrates) {
-  EXPECT_TRUE(std::filesystem::exists(path));
-  EXPECT_EQ(store->path(), path);
-  EXPECT_EQ(store->schemaVersion(), embeddedMigrations().back().first);
+TEST_P(StoreTest, OpenMigrates) {
+  EXPECT_EQ(store->backend(), GetParam());
+  EXPECT_EQ(store->schemaVersion(), GetParam() == "sqlite" ? embeddedMigrations().back().first
+                                                           : embeddedPostgresMigrations().back().first);
+  EXPECT_EQ(embeddedMigrations().back().first, embeddedPostgresMigrations().back().first);
   EXPECT_EQ(store->integrityCheck(), "ok");
 }
 
-TEST_F(StoreTest, OpenFailsWithPathWhenItCannot) {
+TEST(SqliteStoreOpen, CreatesParentDirectories) {
+  TempDir dir;
+  const std::string path = dir.file("nested/dir/fsdb.db");
+  auto store = Store::open(path);
+  EXPECT_TRUE(std::filesystem::exists(path));
+  EXPECT_EQ(store->path(), path);
+}
+
+TEST(SqliteStoreOpen, FailsWithPathWhenItCannot) {
+  TempDir dir;
   std::string blocker = dir.file("a_file");
   { sqlite::Connection make(blocker); }  // a regular file where a directory is needed
   std::string bad = blocker + "/sub/x.db";
@@ -75,7 +91,7 @@ TEST_F(StoreTest, OpenFailsWithPathWhenItCannot) {
   expectError([&] { Store::open(":memory:"); }, errc::kStorage);
 }
 
-TEST_F(StoreTest, CreateAndGet) {
+TEST_P(StoreTest, CreateAndGet) {
   auto created = store->create(part("bolt"));
   EXPECT_GT(created.id, 0);
   EXPECT_EQ(created.version, 1);
@@ -92,7 +108,7 @@ TEST_F(StoreTest, CreateAndGet) {
   EXPECT_EQ(rows("part_parameters", "object_id", created.id), 2);
 }
 
-TEST_F(StoreTest, GetOfWrongKindOrMissingIsNotFound) {
+TEST_P(StoreTest, GetOfWrongKindOrMissingIsNotFound) {
   auto bolt = store->create(part("bolt"));
   expectError([&] { store->get("shape", bolt.id); }, errc::kNotFound);
   expectError([&] { store->get("part", bolt.id + 100); }, errc::kNotFound);
@@ -101,7 +117,7 @@ TEST_F(StoreTest, GetOfWrongKindOrMissingIsNotFound) {
   FSDB_EXPECT_CONTAINS(message, "version 7");
 }
 
-TEST_F(StoreTest, PutAddsVersionsAndOldOnesStayReadable) {
+TEST_P(StoreTest, PutAddsVersionsAndOldOnesStayReadable) {
   auto bolt = store->create(part("bolt", "{\"v\":1}"));
   auto second = store->put(bolt.id, part("bolt", "{\"v\":2}"));
   EXPECT_EQ(second.id, bolt.id);
@@ -115,7 +131,7 @@ TEST_F(StoreTest, PutAddsVersionsAndOldOnesStayReadable) {
   EXPECT_EQ(rows("part_parameters", "object_id", bolt.id), 4);  // per version
 }
 
-TEST_F(StoreTest, PutRefusesRenameAndOtherKinds) {
+TEST_P(StoreTest, PutRefusesRenameAndOtherKinds) {
   auto bolt = store->create(part("bolt"));
   expectError([&] { store->put(bolt.id, part("nut")); }, errc::kConflict, "name");
   auto asShape = shape("bolt", {});
@@ -124,7 +140,7 @@ TEST_F(StoreTest, PutRefusesRenameAndOtherKinds) {
   EXPECT_EQ(store->get("part", bolt.id).latestVersion, 1);
 }
 
-TEST_F(StoreTest, NameConflictWithinKindOnly) {
+TEST_P(StoreTest, NameConflictWithinKindOnly) {
   store->create(part("bolt"));
   expectError([&] { store->create(part("bolt")); }, errc::kConflict, "name");
   EXPECT_NO_THROW(store->create(shape("bolt", {})));  // names are per kind
@@ -133,29 +149,29 @@ TEST_F(StoreTest, NameConflictWithinKindOnly) {
   expectError([&] { store->create(unknownKind); }, errc::kInvalidDocument, "kind");
 }
 
-TEST_F(StoreTest, IdsAreNeverReused) {
+TEST_P(StoreTest, IdsAreNeverReused) {
   auto first = store->create(part("bolt"));
   store->remove("part", first.id, false);
   auto again = store->create(part("bolt"));  // the name is free again, the id is not
   EXPECT_GT(again.id, first.id);
 }
 
-TEST_F(StoreTest, ReferencesResolveByNameAndId) {
+TEST_P(StoreTest, ReferencesResolveByNameAndId) {
   auto bolt = store->create(part("bolt"));
   auto nut = store->create(part("nut"));
   auto s = store->create(shape("pair", {byName("part", "bolt", 0), byId("part", nut.id, 1)}));
   EXPECT_EQ(s.references, (std::vector<int64_t>{bolt.id, nut.id}));
   EXPECT_EQ(store->get("shape", s.id).references, (std::vector<int64_t>{bolt.id, nut.id}));
   // csg_nodes got the resolved ids of the ref leaves.
-  sqlite::Connection db(path);
-  auto nodes = db.prepare("SELECT ref_id FROM csg_nodes WHERE object_id = ?1 ORDER BY node");
+  auto db = database.connect();
+  auto nodes = db->prepare("SELECT ref_id FROM csg_nodes WHERE object_id = ?1 ORDER BY node");
   nodes->bind(1, s.id);
   std::vector<std::optional<int64_t>> refs;
   while (nodes->step()) refs.push_back(nodes->columnOptionalInt(0));
   EXPECT_EQ(refs, (std::vector<std::optional<int64_t>>{std::nullopt, bolt.id, nut.id}));
 }
 
-TEST_F(StoreTest, UnknownReferenceNamesPathAndLeavesNothing) {
+TEST_P(StoreTest, UnknownReferenceNamesPathAndLeavesNothing) {
   auto bolt = store->create(part("bolt"));
   auto message = expectError(
       [&] { store->create(shape("s", {byName("part", "bolt", 0), byName("part", "washer", 1)})); },
@@ -166,13 +182,13 @@ TEST_F(StoreTest, UnknownReferenceNamesPathAndLeavesNothing) {
               "tree.children[0].ref");
   EXPECT_FALSE(store->find(byName("shape", "s")));
   EXPECT_EQ(store->counts(), (std::map<std::string, int64_t>{{"part", 1}}));
-  sqlite::Connection db(path);
-  auto versions = db.prepare("SELECT COUNT(*) FROM versions");
+  auto db = database.connect();
+  auto versions = db->prepare("SELECT COUNT(*) FROM versions");
   ASSERT_TRUE(versions->step());
   EXPECT_EQ(versions->columnInt(0), 1);  // bolt's only
 }
 
-TEST_F(StoreTest, CycleOnPutIsRefused) {
+TEST_P(StoreTest, CycleOnPutIsRefused) {
   auto b = store->create(shape("B", {}));
   auto a = store->create(shape("A", {byName("shape", "B")}));
   auto message = expectError([&] { store->put(b.id, shape("B", {byName("shape", "A", 0)})); },
@@ -185,7 +201,7 @@ TEST_F(StoreTest, CycleOnPutIsRefused) {
   EXPECT_TRUE(store->get("shape", b.id).references.empty());
 }
 
-TEST_F(StoreTest, FindByNameAndId) {
+TEST_P(StoreTest, FindByNameAndId) {
   auto bolt = store->create(part("bolt"));
   store->put(bolt.id, part("bolt", "{\"v\":2}"));
   auto found = store->find(byName("part", "bolt"));
@@ -197,7 +213,7 @@ TEST_F(StoreTest, FindByNameAndId) {
   EXPECT_FALSE(store->find(byName("part", "nut")));
 }
 
-TEST_F(StoreTest, ListPagesByIdAndFilters) {
+TEST_P(StoreTest, ListPagesByIdAndFilters) {
   std::vector<int64_t> ids;
   for (int i = 0; i < 5; ++i) ids.push_back(store->create(part("p" + std::to_string(i))).id);
   store->create(shape("s", {}));
@@ -226,7 +242,7 @@ TEST_F(StoreTest, ListPagesByIdAndFilters) {
   EXPECT_EQ(old[0].documentJson, "{\"eps1\":1}");
 }
 
-TEST_F(StoreTest, RemoveInUseUnlessCascade) {
+TEST_P(StoreTest, RemoveInUseUnlessCascade) {
   auto bolt = store->create(part("bolt"));
   auto inner = store->create(shape("inner", {byName("part", "bolt")}));
   auto outer = store->create(shape("outer", {byName("shape", "inner")}));
@@ -246,7 +262,7 @@ TEST_F(StoreTest, RemoveInUseUnlessCascade) {
   EXPECT_EQ(store->integrityCheck(), "ok");
 }
 
-TEST_F(StoreTest, InUseMessageNamesAtMostFive) {
+TEST_P(StoreTest, InUseMessageNamesAtMostFive) {
   auto bolt = store->create(part("bolt"));
   for (int i = 0; i < 7; ++i) store->create(shape("s" + std::to_string(i), {byName("part", "bolt")}));
   auto message = expectError([&] { store->remove("part", bolt.id, false); }, errc::kInUse);
@@ -255,7 +271,7 @@ TEST_F(StoreTest, InUseMessageNamesAtMostFive) {
   FSDB_EXPECT_CONTAINS(message, "and 2 more");
 }
 
-TEST_F(StoreTest, ReferenceDroppedByPutNoLongerBlocksRemove) {
+TEST_P(StoreTest, ReferenceDroppedByPutNoLongerBlocksRemove) {
   auto bolt = store->create(part("bolt"));
   auto s = store->create(shape("s", {byName("part", "bolt")}));
   store->put(s.id, shape("s", {}, "v2"));
@@ -265,7 +281,7 @@ TEST_F(StoreTest, ReferenceDroppedByPutNoLongerBlocksRemove) {
   EXPECT_EQ(store->get("shape", s.id, 1).version, 1);
 }
 
-TEST_F(StoreTest, EvaluationCacheRoundTripAndInvalidationThroughChain) {
+TEST_P(StoreTest, EvaluationCacheRoundTripAndInvalidationThroughChain) {
   auto p = store->create(part("P"));
   auto s = store->create(shape("S", {byName("part", "P")}));
   auto t = store->create(shape("T", {byName("shape", "S")}));
@@ -288,7 +304,7 @@ TEST_F(StoreTest, EvaluationCacheRoundTripAndInvalidationThroughChain) {
   EXPECT_TRUE(store->cachedEvaluation("key-q"));   // untouched
 }
 
-TEST_F(StoreTest, CreateBatchReportsBadItemAndCommitsOthers) {
+TEST_P(StoreTest, CreateBatchReportsBadItemAndCommitsOthers) {
   std::vector<NewObject> items = {part("a"), shape("s", {byName("part", "missing")}), part("b"),
                                   part("a")};
   auto results = store->createBatch(items, BulkMode::kCreate);
@@ -306,7 +322,7 @@ TEST_F(StoreTest, CreateBatchReportsBadItemAndCommitsOthers) {
   EXPECT_EQ(store->get("part", *results[2].id).name, "b");
 }
 
-TEST_F(StoreTest, BatchItemsMayReferToEarlierItems) {
+TEST_P(StoreTest, BatchItemsMayReferToEarlierItems) {
   auto results = store->createBatch(
       {part("wheel"), shape("axle", {byName("part", "wheel")}), shape("car", {byName("shape", "axle")})},
       BulkMode::kCreate);
@@ -316,7 +332,7 @@ TEST_F(StoreTest, BatchItemsMayReferToEarlierItems) {
   EXPECT_EQ(store->dependents(*results[0].id), (std::vector<int64_t>{*results[1].id, *results[2].id}));
 }
 
-TEST_F(StoreTest, UpsertIsIdempotentOnSameHash) {
+TEST_P(StoreTest, UpsertIsIdempotentOnSameHash) {
   auto first = store->createBatch({part("bolt")}, BulkMode::kUpsert);
   ASSERT_TRUE(first[0].id);
   EXPECT_EQ(first[0].version, 1);
@@ -332,7 +348,7 @@ TEST_F(StoreTest, UpsertIsIdempotentOnSameHash) {
   EXPECT_EQ(conflict[0].errorCode, errc::kConflict);
 }
 
-TEST_F(StoreTest, UpsertInvalidatesDependentsCache) {
+TEST_P(StoreTest, UpsertInvalidatesDependentsCache) {
   store->create(part("P"));
   auto s = store->create(shape("S", {byName("part", "P")}));
   store->storeEvaluation(s.id, "key-s", {"{}", ""});
@@ -373,7 +389,7 @@ TEST(StoreReopen, RefusesNewerSchema) {
   FSDB_EXPECT_CONTAINS(message, "2000");
 }
 
-TEST_F(StoreTest, ConcurrentCreatesAndGets) {
+TEST_P(StoreTest, ConcurrentCreatesAndGets) {
   constexpr int kThreads = 4, kOps = 200;
   std::atomic<int> errors{0}, created{0};
   std::vector<std::thread> threads;
@@ -408,6 +424,137 @@ TEST_F(StoreTest, ConcurrentCreatesAndGets) {
   EXPECT_EQ(counts["part"], kThreads * kOps / 4);
   EXPECT_EQ(store->integrityCheck(), "ok");
 }
+
+TEST_P(StoreTest, IfVersionRefusesAWriteToAMovedObject) {
+  auto bolt = store->create(part("bolt"));
+  EXPECT_EQ(store->put(bolt.id, part("bolt", "{\"v\":2}"), 1).version, 2);
+  auto message = expectError([&] { store->put(bolt.id, part("bolt", "{\"v\":3}"), 1); }, errc::kPreconditionFailed);
+  FSDB_EXPECT_CONTAINS(message, "is at version 2, not 1");
+  EXPECT_EQ(store->get("part", bolt.id).version, 2);  // nothing written
+  expectError([&] { store->remove("part", bolt.id, false, 1); }, errc::kPreconditionFailed);
+  EXPECT_TRUE(store->find(byId("part", bolt.id)));
+  EXPECT_EQ(store->remove("part", bolt.id, false, 2), (std::vector<int64_t>{bolt.id}));
+}
+
+TEST_P(StoreTest, ChangeLogListsWhatChangedAfterASequenceNumber) {
+  auto bolt = store->create(part("bolt"));
+  auto nut = store->create(part("nut"));
+  const int64_t seq = store->changeSeq();
+  EXPECT_GT(seq, 0);
+  ChangeFeed all = store->changesSince(0);
+  EXPECT_TRUE(all.reset);
+  EXPECT_EQ(all.seq, seq);
+  ASSERT_EQ(all.changes.size(), 2u);
+  EXPECT_EQ(all.changes[0].id, bolt.id);
+  EXPECT_EQ(all.changes[1].name, "nut");
+
+  ChangeFeed none = store->changesSince(seq);
+  EXPECT_FALSE(none.reset);
+  EXPECT_TRUE(none.changes.empty());
+
+  store->put(bolt.id, part("bolt", "{\"v\":2}"));
+  store->put(bolt.id, part("bolt", "{\"v\":3}"));
+  auto pair = store->create(shape("pair", {byName("part", "nut")}));
+  store->remove("part", nut.id, true);  // takes pair with it
+  ChangeFeed feed = store->changesSince(seq);
+  EXPECT_FALSE(feed.reset);
+  EXPECT_GT(feed.seq, seq);
+  EXPECT_EQ(feed.seq, store->changeSeq());
+  ASSERT_EQ(feed.changes.size(), 3u);  // bolt once, though written twice
+  EXPECT_EQ(feed.changes[0].id, bolt.id);
+  EXPECT_EQ(feed.changes[0].latestVersion, 3);
+  EXPECT_EQ(feed.changes[0].kind, "part");
+  EXPECT_EQ(feed.changes[1].id, nut.id);
+  EXPECT_EQ(feed.changes[1].latestVersion, 0);  // deleted
+  EXPECT_EQ(feed.changes[2].id, pair.id);
+  EXPECT_EQ(feed.changes[2].latestVersion, 0);
+  // A failed write logs nothing; a sequence number newer than the log's is another database's.
+  expectError([&] { store->create(part("bolt")); }, errc::kConflict);
+  EXPECT_EQ(store->changeSeq(), feed.seq);
+  EXPECT_TRUE(store->changesSince(feed.seq + 5).reset);
+}
+
+TEST_P(StoreTest, TwoStoresOnOneDatabaseSeeEachOthersWrites) {
+  auto other = Store::open(database.location());  // as a second server would
+  const int64_t seq = other->changeSeq();
+  auto bolt = store->create(part("bolt"));
+  EXPECT_EQ(other->get("part", bolt.id).name, "bolt");
+  EXPECT_GT(other->changeSeq(), seq);
+  ChangeFeed feed = other->changesSince(seq);
+  ASSERT_EQ(feed.changes.size(), 1u);
+  EXPECT_EQ(feed.changes[0].id, bolt.id);
+  other->put(bolt.id, part("bolt", "{\"v\":2}"));
+  EXPECT_EQ(store->get("part", bolt.id).version, 2);
+  expectError([&] { store->put(bolt.id, part("bolt", "{\"v\":3}"), 1); }, errc::kPreconditionFailed);
+}
+
+// Two writers close a cycle from both ends at once (a -> b and b -> a): the write lock orders
+// them, so exactly one of each pair lands and the other is a reference_cycle; never both.
+TEST_P(StoreTest, CycleRejectionHoldsUnderConcurrentWriters) {
+  auto second = Store::open(database.location());
+  store->create(part("leaf"));
+  constexpr int kRounds = 25;
+  int refused = 0;
+  for (int round = 0; round < kRounds; ++round) {
+    const std::string a = "a" + std::to_string(round), b = "b" + std::to_string(round);
+    auto sa = store->create(shape(a, {byName("part", "leaf")}));
+    auto sb = store->create(shape(b, {byName("part", "leaf")}));
+    std::atomic<int> cycles{0}, others{0};
+    std::thread one([&] {
+      try {
+        store->put(sa.id, shape(a, {byName("shape", b)}));
+      } catch (const Error& e) {
+        (e.code() == std::string(errc::kReferenceCycle) ? cycles : others)++;
+      }
+    });
+    std::thread two([&] {
+      try {
+        second->put(sb.id, shape(b, {byName("shape", a)}));
+      } catch (const Error& e) {
+        (e.code() == std::string(errc::kReferenceCycle) ? cycles : others)++;
+      }
+    });
+    one.join();
+    two.join();
+    EXPECT_EQ(others.load(), 0) << "round " << round;
+    EXPECT_EQ(cycles.load(), 1) << "round " << round;
+    refused += cycles.load();
+    // What landed has no cycle: the walk down from a never returns to a.
+    EXPECT_TRUE(store->dependents(sa.id).empty() || store->dependents(sb.id).empty()) << "round " << round;
+  }
+  EXPECT_EQ(refused, kRounds);
+}
+
+TEST(PostgresStoreOpen, ReopenKeepsDataAndRefusesNewerSchema) {
+  FSDB_USE_BACKEND("postgresql");
+  test::TestDatabase database("postgresql");
+  int64_t id = 0;
+  {
+    auto store = Store::open(database.location());
+    id = store->create(part("bolt")).id;
+    store->put(id, part("bolt", "{\"v\":2}"));
+  }
+  {
+    auto store = Store::open(database.location(), StoreOptions{1000, true, 2});
+    EXPECT_EQ(store->get("part", id).version, 2);
+    EXPECT_EQ(store->get("part", id, 1).documentJson, "{\"eps1\":1}");
+    EXPECT_GT(store->create(part("nut")).id, id);
+  }
+  database.connect()->exec("UPDATE fsdb_schema SET version = 2000");
+  auto message = expectError([&] { Store::open(database.location()); }, errc::kStorage);
+  FSDB_EXPECT_CONTAINS(message, "2000");
+}
+
+TEST(PostgresStoreOpen, UnreachableServerNamesTheUrlWithoutItsPassword) {
+  // Port 1 on loopback: nothing listens there.
+  auto message = expectError([&] { Store::open("postgresql://alice:secret@127.0.0.1:1/fsdb"); }, errc::kStorage);
+  FSDB_EXPECT_CONTAINS(message, "cannot connect to postgresql://alice:***@127.0.0.1:1/fsdb");
+  EXPECT_EQ(message.find("secret"), std::string::npos);
+  message = expectError([&] { Store::open("postgres://127.0.0.1:1/fsdb?schema=1bad"); }, errc::kStorage);
+  FSDB_EXPECT_CONTAINS(message, "schema '1bad'");
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, StoreTest, testing::ValuesIn(test::kBackends));
 
 }  // namespace
 }  // namespace fsdb

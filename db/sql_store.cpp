@@ -1,0 +1,389 @@
+// See db/sql_store.h. Layout: the connection pool, the writes, the reads, the change log, the
+// descriptor index. The rows of one object (reference resolution, cycle check, versions, edges,
+// cache invalidation, the change log) are db/object_rows.cpp.
+#include "db/sql_store.h"
+
+#include <algorithm>
+
+#include "db/descriptor_index.h"
+#include "db/object_rows.h"
+#include "geometry/core/error.h"
+
+namespace fsdb {
+
+using sql::Transaction;
+using namespace object_rows;
+
+// --- The connection pool ------------------------------------------------------------------------
+
+SqlStore::Lease::Lease(const SqlStore& store) : store_(store) {
+  {
+    std::unique_lock<std::mutex> lock(store_.mutex_);
+    store_.available_.wait(lock, [&] { return !store_.idle_.empty(); });
+    connection_ = store_.idle_.back();
+    store_.idle_.pop_back();
+  }
+  try {
+    store_.beforeUse(*connection_);
+  } catch (...) {
+    {
+      std::lock_guard<std::mutex> lock(store_.mutex_);
+      store_.idle_.push_back(connection_);
+    }
+    store_.available_.notify_one();
+    throw;
+  }
+}
+
+SqlStore::Lease::~Lease() {
+  {
+    std::lock_guard<std::mutex> lock(store_.mutex_);
+    store_.idle_.push_back(connection_);
+  }
+  store_.available_.notify_one();
+}
+
+void SqlStore::addConnection(std::unique_ptr<sql::Connection> connection) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  idle_.push_back(connection.get());
+  connections_.push_back(std::move(connection));
+}
+
+// --- Writes -------------------------------------------------------------------------------------
+
+StoredObject SqlStore::create(const NewObject& object) {
+  Lease connection(*this);
+  Transaction transaction(*connection);
+  auto result = createIn(*connection, object);
+  transaction.commit();
+  return result;
+}
+
+StoredObject SqlStore::put(int64_t id, const NewObject& object, std::optional<int> ifVersion) {
+  Lease connection(*this);
+  Transaction transaction(*connection);
+  auto result = putIn(*connection, id, object, ifVersion);
+  transaction.commit();
+  return result;
+}
+
+std::vector<int64_t> SqlStore::remove(const std::string& kind, int64_t id, bool cascade,
+                                      std::optional<int> ifVersion) {
+  Lease connection(*this);
+  Transaction transaction(*connection);
+  auto row = objectRow(*connection, id);
+  if (!row || row->kind != kind) throw Error(errc::kNotFound, kind + " " + std::to_string(id) + " not found");
+  checkVersion(*row, ifVersion);
+  if (!cascade) {
+    auto statement = (*connection).prepare(
+        "SELECT o.id, o.kind, o.name, (SELECT COUNT(*) FROM refs WHERE child_id = ?1)"
+        " FROM refs JOIN objects o ON o.id = refs.parent_id WHERE refs.child_id = ?1"
+        " ORDER BY o.id LIMIT 5");
+    statement->bind(1, id);
+    std::string users;
+    int64_t total = 0;
+    while (statement->step()) {
+      users += (users.empty() ? "" : ", ") +
+               describe(statement->columnText(1), statement->columnText(2), statement->columnInt(0));
+      total = statement->columnInt(3);
+    }
+    if (total > 0) {
+      if (total > 5) users += " and " + std::to_string(total - 5) + " more";
+      throw Error(errc::kInUse, describe(row->kind, row->name, id) + " is used by " + users);
+    }
+  }
+  // One statement for all: refs.child_id has no ON DELETE (NO ACTION), and both engines check
+  // such foreign keys at the end of a statement, when the parents are gone with their children. Versions, normalised rows
+  // and cache rows go by ON DELETE CASCADE. RETURNING names what went, so the walk runs once.
+  auto statement = (*connection).prepare("DELETE FROM objects WHERE id = ?1 OR id IN (" FSDB_REACHING_SQL
+                                         ") RETURNING id");
+  statement->bind(1, id);
+  std::vector<int64_t> removed;
+  while (statement->step())
+    if (statement->columnInt(0) != id) removed.push_back(statement->columnInt(0));
+  std::sort(removed.begin(), removed.end());
+  removed.insert(removed.begin(), id);
+  for (int64_t gone : removed) logChange(*connection, gone);
+  transaction.commit();
+  return removed;
+}
+
+std::vector<BulkItemResult> SqlStore::createBatch(const std::vector<NewObject>& items, BulkMode mode) {
+  Lease connection(*this);
+  Transaction transaction(*connection);
+  std::vector<BulkItemResult> results;
+  results.reserve(items.size());
+  for (const auto& item : items) {
+    BulkItemResult result;
+    sql::Savepoint savepoint(*connection, "bulk_item");
+    try {
+      auto stored = mode == BulkMode::kCreate ? createIn(*connection, item) : upsertIn(*connection, item);
+      savepoint.release();
+      result.id = stored.id;
+      result.version = stored.version;
+    } catch (const Error& e) {
+      // An I/O or disk-full error may have ended the whole transaction: then nothing of the batch
+      // can commit, and the batch fails as a whole.
+      if (!(*connection).inTransaction()) throw;
+      savepoint.rollback();
+      result.errorCode = e.code();
+      result.errorMessage = e.what();
+      result.errorPath = e.path();
+    }
+    results.push_back(std::move(result));
+  }
+  transaction.commit();
+  return results;
+}
+
+void SqlStore::storeEvaluation(int64_t objectId, const std::string& key, const CachedEvaluation& value) {
+  Lease connection(*this);
+  Transaction transaction(*connection);
+  if (!objectRow(*connection, objectId))
+    throw Error(errc::kNotFound, "object " + std::to_string(objectId) + " not found");
+  auto statement = (*connection).prepare(
+      "INSERT INTO eval_cache (key, object_id, result, vdb) VALUES (?1, ?2, ?3, ?4) ON CONFLICT (key)"
+      " DO UPDATE SET object_id = excluded.object_id, result = excluded.result, vdb = excluded.vdb");
+  statement->bind(1, key).bind(2, objectId).bind(3, value.resultJson);
+  if (value.vdb.empty()) statement->bindNull(4); else statement->bindBlob(4, value.vdb);
+  statement->run();
+  transaction.commit();
+}
+
+// --- Reads --------------------------------------------------------------------------------------
+// Each read that runs more than one statement does so in one deferred transaction, so it sees
+// one snapshot even while a writer commits beside it.
+
+StoredObject SqlStore::get(const std::string& kind, int64_t id, std::optional<int> version) const {
+  Lease connection(*this);
+  Transaction transaction(*connection, Transaction::Mode::kRead);
+  if (auto object = loadObject(*connection, kind, id, "", version)) return *object;
+  auto row = objectRow(*connection, id);
+  if (row && row->kind == kind && version)
+    throw Error(errc::kNotFound, describe(kind, row->name, id) + " has no version " +
+                                     std::to_string(*version) + " (latest is " +
+                                     std::to_string(row->latestVersion) + ")");
+  throw Error(errc::kNotFound, kind + " " + std::to_string(id) + " not found");
+}
+
+std::optional<StoredObject> SqlStore::find(const ObjectReference& reference) const {
+  Lease connection(*this);
+  Transaction transaction(*connection, Transaction::Mode::kRead);
+  return loadObject(*connection, reference.kind, reference.id, reference.name, std::nullopt);
+}
+
+std::vector<StoredObject> SqlStore::list(const ListQuery& query) const {
+  Lease connection(*this);
+  Transaction transaction(*connection, Transaction::Mode::kRead);
+  std::vector<StoredObject> objects;
+  {
+    auto statement = (*connection).prepare(
+        std::string(kObjectColumns) +
+        " AND v.version = COALESCE(?3, o.latest_version)"
+        " WHERE o.kind = ?1 AND (CAST(?2 AS TEXT) IS NULL OR o.name = ?2) AND o.id > ?4 ORDER BY o.id LIMIT ?5");
+    statement->bind(1, query.kind);
+    if (query.name) statement->bind(2, *query.name); else statement->bindNull(2);
+    // A version only selects with a name (one object); otherwise every object's latest.
+    if (query.name && query.version) statement->bind(3, *query.version); else statement->bindNull(3);
+    statement->bind(4, query.afterId).bind(5, std::max(0, query.limit));
+    while (statement->step()) objects.push_back(readObject(*statement));
+  }
+  for (auto& object : objects)
+    if (object.version == object.latestVersion) object.references = referencesOf(*connection, object.id);
+  return objects;
+}
+
+std::map<std::string, int64_t> SqlStore::counts() const {
+  Lease connection(*this);
+  auto statement = (*connection).prepare("SELECT kind, COUNT(*) FROM objects GROUP BY kind");
+  std::map<std::string, int64_t> counts;
+  while (statement->step()) counts[statement->columnText(0)] = statement->columnInt(1);
+  return counts;
+}
+
+std::vector<int64_t> SqlStore::dependents(int64_t id) const {
+  Lease connection(*this);
+  return dependentsOf(*connection, id);
+}
+
+// --- The change log -----------------------------------------------------------------------------
+
+int64_t SqlStore::changeSeq() const {
+  Lease connection(*this);
+  auto statement = (*connection).prepare("SELECT COALESCE(MAX(seq), 0) FROM change_log");
+  return statement->step() ? statement->columnInt(0) : 0;
+}
+
+ChangeFeed SqlStore::changesSince(int64_t seq) const {
+  Lease connection(*this);
+  Transaction transaction(*connection, Transaction::Mode::kRead);
+  ChangeFeed feed;
+  int64_t oldest = 0;
+  {
+    auto statement = (*connection).prepare("SELECT COALESCE(MIN(seq), 0), COALESCE(MAX(seq), 0) FROM change_log");
+    if (statement->step()) {
+      oldest = statement->columnInt(0);
+      feed.seq = statement->columnInt(1);
+    }
+  }
+  // The log keeps the newest kChangeLogKept entries (object_rows.h logChange): a caller older than
+  // the oldest kept one (less the one just before it) may have missed pruned changes. So may one
+  // newer than the newest, which has seen another database.
+  feed.reset = seq <= 0 || seq > feed.seq || (oldest > 0 && seq < oldest - 1);
+  auto statement = (*connection).prepare(
+      feed.reset ? "SELECT id, kind, name, latest_version FROM objects ORDER BY id"
+                 : "SELECT c.object_id, o.kind, o.name, o.latest_version FROM (SELECT DISTINCT object_id FROM"
+                   " change_log WHERE seq > ?1) c LEFT JOIN objects o ON o.id = c.object_id ORDER BY c.object_id");
+  if (!feed.reset) statement->bind(1, seq);
+  while (statement->step())
+    feed.changes.push_back({statement->columnInt(0), statement->columnText(1), statement->columnText(2),
+                            static_cast<int>(statement->columnInt(3))});
+  return feed;
+}
+
+// --- The descriptor index -----------------------------------------------------------------------
+
+std::vector<DescriptorCandidate> SqlStore::descriptorCandidates(const std::string& kind,
+                                                            const DescriptorOverlap& test) const {
+  Lease connection(*this);
+  Transaction transaction(*connection, Transaction::Mode::kRead);
+  return descriptorCandidatesIn(*connection, kind, test);
+}
+
+std::vector<DescriptorRange> SqlStore::descriptorRanges(const DescriptorOverlap& test) const {
+  Lease connection(*this);
+  return descriptorRangesIn(*connection, test);
+}
+
+std::vector<DescriptorCandidate> SqlStore::descriptorRangeRows(const std::string& kind, const DescriptorRange& range) const {
+  Lease connection(*this);
+  std::vector<DescriptorCandidate> rows;
+  descriptorRangeRowsIn(*connection, kind, range, rows);
+  return rows;
+}
+
+std::vector<int64_t> SqlStore::pendingDescriptorIds(const std::string& kind) const {
+  Lease connection(*this);
+  return pendingDescriptorIdsIn(*connection, kind);
+}
+
+std::vector<int64_t> SqlStore::objectIds(const std::string& kind) const {
+  Lease connection(*this);
+  auto statement = (*connection).prepare("SELECT id FROM objects WHERE kind = ?1 ORDER BY id");
+  statement->bind(1, kind);
+  std::vector<int64_t> ids;
+  while (statement->step()) ids.push_back(statement->columnInt(0));
+  return ids;
+}
+
+std::vector<ObjectVersion> SqlStore::objectVersions(const std::string& kind) const {
+  Lease connection(*this);
+  auto statement = (*connection).prepare("SELECT id, name, latest_version FROM objects WHERE kind = ?1 ORDER BY id");
+  statement->bind(1, kind);
+  std::vector<ObjectVersion> out;
+  while (statement->step())
+    out.push_back({statement->columnInt(0), statement->columnText(1), static_cast<int>(statement->columnInt(2))});
+  return out;
+}
+
+std::vector<IndexedObject> SqlStore::indexedObjects(const std::string& kind, const std::vector<int64_t>& ids) const {
+  Lease connection(*this);
+  Transaction transaction(*connection, Transaction::Mode::kRead);
+  auto statement = (*connection).prepare(
+      "SELECT o.name, CASE WHEN p.object_id IS NULL THEN 0 ELSE 1 END, v.component, v.descriptor_values FROM objects o"
+      " LEFT JOIN descriptor_pending p ON p.object_id = o.id LEFT JOIN descriptor_values v ON v.object_id = o.id"
+      " WHERE o.id = ?1 AND o.kind = ?2 ORDER BY v.component");
+  std::vector<IndexedObject> objects;
+  objects.reserve(ids.size());
+  for (int64_t id : ids) {
+    statement->reset();
+    statement->bind(1, id).bind(2, kind);
+    IndexedObject object;
+    object.id = id;
+    bool found = false;
+    while (statement->step()) {
+      if (!found) {
+        object.name = statement->columnText(0);
+        object.pending = statement->columnInt(1) != 0;
+        found = true;
+      }
+      if (!statement->isNull(2))
+        object.components.emplace_back(static_cast<int>(statement->columnInt(2)), statement->columnBlob(3));
+    }
+    if (found) objects.push_back(std::move(object));
+  }
+  return objects;
+}
+
+std::vector<DescriptorComponent> SqlStore::descriptorRows(int64_t id) const {
+  Lease connection(*this);
+  Transaction transaction(*connection, Transaction::Mode::kRead);
+  std::vector<DescriptorComponent> components;
+  {
+    auto statement = (*connection).prepare(
+        "SELECT component, descriptor_values FROM descriptor_values WHERE object_id = ?1 ORDER BY component");
+    statement->bind(1, id);
+    while (statement->step()) {
+      DescriptorComponent component;
+      component.component = static_cast<int>(statement->columnInt(0));
+      component.values = statement->columnBlob(1);
+      components.push_back(std::move(component));
+    }
+  }
+  auto statement = (*connection).prepare(
+      "SELECT component, descriptor, support_lo, core_lo, core_hi, support_hi FROM descriptor_index"
+      " WHERE object_id = ?1 ORDER BY component, descriptor");
+  statement->bind(1, id);
+  while (statement->step()) {
+    const int c = static_cast<int>(statement->columnInt(0));
+    auto it = std::find_if(components.begin(), components.end(),
+                           [c](const DescriptorComponent& d) { return d.component == c; });
+    if (it == components.end()) it = components.insert(components.end(), DescriptorComponent{c, {}, {}});
+    it->spans.push_back({statement->columnText(1), statement->columnDouble(2), statement->columnDouble(3),
+                         statement->columnDouble(4), statement->columnDouble(5)});
+  }
+  return components;
+}
+
+std::vector<PendingDescriptors> SqlStore::pendingDescriptors(int64_t afterId, int limit) const {
+  Lease connection(*this);
+  auto statement = (*connection).prepare(
+      "SELECT p.object_id, o.kind, p.generation FROM descriptor_pending p JOIN objects o ON o.id = p.object_id"
+      " WHERE p.object_id > ?1 ORDER BY p.object_id LIMIT ?2");
+  statement->bind(1, afterId).bind(2, std::max(0, limit));
+  std::vector<PendingDescriptors> pending;
+  while (statement->step())
+    pending.push_back({statement->columnInt(0), statement->columnText(1), statement->columnInt(2)});
+  return pending;
+}
+
+size_t SqlStore::replaceDescriptors(
+    const std::vector<std::pair<PendingDescriptors, std::vector<DescriptorComponent>>>& refreshed) {
+  Lease connection(*this);
+  Transaction transaction(*connection);
+  size_t replaced = 0;
+  for (const auto& [pending, components] : refreshed) {
+    {
+      auto statement = (*connection).prepare("SELECT generation FROM descriptor_pending WHERE object_id = ?1");
+      statement->bind(1, pending.id);
+      if (!statement->step() || statement->columnInt(0) != pending.generation) continue;
+    }
+    auto row = objectRow(*connection, pending.id);
+    if (!row) continue;
+    writeDescriptorRows(*connection, pending.id, row->kind, components);
+    clearDescriptorsPending(*connection, pending.id);
+    ++replaced;
+  }
+  transaction.commit();
+  return replaced;
+}
+
+std::optional<CachedEvaluation> SqlStore::cachedEvaluation(const std::string& key) const {
+  Lease connection(*this);
+  auto statement = (*connection).prepare("SELECT result, vdb FROM eval_cache WHERE key = ?1");
+  statement->bind(1, key);
+  if (!statement->step()) return std::nullopt;
+  return CachedEvaluation{statement->columnText(0), statement->columnBlob(1)};
+}
+
+}  // namespace fsdb
