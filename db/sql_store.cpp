@@ -290,7 +290,8 @@ std::vector<IndexedObject> SqlStore::indexedObjects(const std::string& kind, con
   Lease connection(*this);
   Transaction transaction(*connection, Transaction::Mode::kRead);
   auto statement = (*connection).prepare(
-      "SELECT o.name, CASE WHEN p.object_id IS NULL THEN 0 ELSE 1 END, v.component, v.descriptor_values FROM objects o"
+      "SELECT o.name, CASE WHEN p.object_id IS NULL THEN 0 ELSE 1 END, v.component, v.descriptor_values,"
+      " o.latest_version FROM objects o"
       " LEFT JOIN descriptor_pending p ON p.object_id = o.id LEFT JOIN descriptor_values v ON v.object_id = o.id"
       " WHERE o.id = ?1 AND o.kind = ?2 ORDER BY v.component");
   std::vector<IndexedObject> objects;
@@ -305,6 +306,7 @@ std::vector<IndexedObject> SqlStore::indexedObjects(const std::string& kind, con
       if (!found) {
         object.name = statement->columnText(0);
         object.pending = statement->columnInt(1) != 0;
+        object.version = static_cast<int>(statement->columnInt(4));
         found = true;
       }
       if (!statement->isNull(2))

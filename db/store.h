@@ -184,6 +184,7 @@ struct DescriptorRange {
 struct IndexedObject {
   int64_t id = 0;
   std::string name;
+  int version = 0;  // the latest version, which the rows describe unless pending
   bool pending = false;
   std::vector<std::pair<int, std::string>> components;  // (component, values), by component
 };

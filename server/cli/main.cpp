@@ -96,9 +96,11 @@ int runServe(const fsdb::ServerOptions& options, const std::string& dbPath, cons
 
   std::unique_ptr<fsdb::Store> store;
   try {
-    const bool fresh = !std::filesystem::exists(dbPath);
     store = fsdb::Store::open(dbPath);
-    spdlog::info("database {} (schema version {})", dbPath, store->schemaVersion());
+    spdlog::info("database {} on {} (schema version {})", store->path(), store->backend(), store->schemaVersion());
+    // A database never written to gets the demo (loaded by upsert: two servers starting on one new
+    // PostgreSQL database both load it, and the second changes nothing).
+    const bool fresh = store->changeSeq() == 0 && store->counts().empty();
     if (fresh && !demoDir.empty()) loadDemo(*store, demoDir, fsdb::documentLimits(options.limits));
     backfillDescriptorIndex(*store, options.limits.maxNodes);
   } catch (const fsdb::Error& e) {
@@ -181,7 +183,9 @@ int main(int argc, char** argv) {
   std::string vocabularyPath;  // --vocabulary of serve, eval and query (one subcommand runs)
   if (const char* t = std::getenv("FSDB_TOKEN")) serve.token = t;
   auto* serveCmd = app.add_subcommand("serve", "serve the HTTP API");
-  serveCmd->add_option("--db", dbPath, "SQLite database file (created with its directory if missing)")
+  serveCmd->add_option("--db", dbPath,
+                       "SQLite database file (created with its directory if missing), or a PostgreSQL URL "
+                       "postgresql://user@host:port/database[?schema=NAME] shared by several servers")
       ->capture_default_str();
   serveCmd->add_option("--vocabulary", vocabularyPath,
                        "a vocabulary file (the format of schema/vocabulary.json) instead of the built-in one");
@@ -274,7 +278,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 1 << 24))->capture_default_str();
   evalCmd->add_option("--max-eval-ms", eval.maxEvalMs, "stop an evaluation running longer (milliseconds); 0: no limit")
       ->check(CLI::Range(0, 86400000))->capture_default_str();
-  evalCmd->add_option("--db", eval.dbPath, "database for SHAPE-ID and for references in FILE");
+  evalCmd->add_option("--db", eval.dbPath, "database (file or PostgreSQL URL) for SHAPE-ID and for references in FILE");
   evalCmd->add_option("--vocabulary", vocabularyPath, "a vocabulary file for parts described by words (as for serve)");
 
   fsdb::ImportOptions import;
@@ -282,7 +286,7 @@ int main(int argc, char** argv) {
   if (const char* t = std::getenv("FSDB_TOKEN")) import.token = t;
   auto* importCmd = app.add_subcommand("import", "bulk import of JSON Lines files of part and shape documents");
   importCmd->add_option("FILE", import.files, "JSON Lines files (or files holding one JSON array)")->required();
-  auto* importDb = importCmd->add_option("--db", import.dbPath, "database file")->capture_default_str();
+  auto* importDb = importCmd->add_option("--db", import.dbPath, "database file or PostgreSQL URL")->capture_default_str();
   importCmd->add_option("--server", import.serverUrl, "import through a running server, e.g. http://127.0.0.1:8080")
       ->excludes(importDb);
   importCmd->add_option("--token", import.token, "bearer token for --server (or FSDB_TOKEN)");
@@ -295,7 +299,7 @@ int main(int argc, char** argv) {
   query.dbPath = dbPath;
   auto* queryCmd = app.add_subcommand("query", "linguistic search (\"find a slightly bent shape\") or CSG search (\"a cube minus a cylinder\", \"A + B - C\") (exit 0 ran, 1 refused, 2 no database or server)");
   queryCmd->add_option("TEXT", query.text, "the query in words (GET /vocabulary lists them) or a CSG text (schema/csg_query_grammar.ebnf)")->required();
-  auto* queryDb = queryCmd->add_option("--db", query.dbPath, "database file")->capture_default_str();
+  auto* queryDb = queryCmd->add_option("--db", query.dbPath, "database file or PostgreSQL URL")->capture_default_str();
   queryCmd->add_option("--server", query.serverUrl, "ask a running server, e.g. http://127.0.0.1:8080")->excludes(queryDb);
   queryCmd->add_option("--limit", query.limit, "most results")->check(CLI::Range(1, 1000))->capture_default_str();
   queryCmd->add_option("--threshold", query.threshold, "least score")->check(CLI::Range(0.0, 1.0))->capture_default_str();

@@ -88,8 +88,12 @@ void readBody(const httplib::Request& req, const httplib::ContentReader& content
 
 // A GET's 200: its ETag, 304 when the client has it, gzip for binary exports the client accepts.
 void conditionalAndEncoded(const httplib::Request& req, httplib::Response& res) {
-  const std::string tag = entityTag(res.body);
-  res.set_header("ETag", tag);
+  // A handler may tag the answer itself (a stored object: its version, for If-Match).
+  std::string tag = res.get_header_value("ETag");
+  if (tag.empty()) {
+    tag = entityTag(res.body);
+    res.set_header("ETag", tag);
+  }
   if (req.has_header("If-None-Match") && ifNoneMatchHits(req.get_header_value("If-None-Match"), tag)) {
     res.status = 304;
     res.body.clear();
@@ -156,6 +160,11 @@ std::string ApiRequest::queryParam(const std::string& name) const {
 }
 
 bool ApiRequest::hasQueryParam(const std::string& name) const { return raw.has_param(name.c_str()); }
+
+std::optional<std::string> ApiRequest::header(const std::string& name) const {
+  if (!raw.has_header(name.c_str())) return std::nullopt;
+  return raw.get_header_value(name.c_str());
+}
 
 HttpServer::HttpServer(ServerOptions options)
     : options_(std::move(options)), server_(std::make_unique<httplib::Server>()) {

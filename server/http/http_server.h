@@ -19,6 +19,7 @@
 #include <functional>
 #include <memory>
 #include <regex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,7 @@ struct ApiRequest {
   std::string bodyBytes;  // POST and PUT: the body (read by the server, never by httplib: see addRoute)
   std::string queryParam(const std::string& name) const;  // "" when absent
   bool hasQueryParam(const std::string& name) const;
+  std::optional<std::string> header(const std::string& name) const;  // nullopt when absent
   const std::string& rawBody() const { return bodyBytes; }  // raw-body routes read it
 };
 

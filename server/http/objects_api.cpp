@@ -41,6 +41,65 @@ constexpr int kMaxListLimit = 1000;
 constexpr size_t kDefaultBatch = 500;
 constexpr size_t kMaxBatch = 10000;
 
+// The strong entity tag of a stored object's version (RFC 9110 §8.8.3): "3" for version 3.
+std::string versionTag(int version) { return "\"" + std::to_string(version) + "\""; }
+
+// The version a PUT or DELETE requires by If-Match (RFC 9110 §13.1.1), or nullopt without one (or
+// with "*": any current version). Strong comparison: a weak tag (W/"3") or a tag that is no
+// version of this object never matches, so the write is 412. With several tags, the one equal to
+// the latest version now is passed on; the store checks it again under its write lock.
+std::optional<int> ifMatchVersion(const ApiRequest& req, const Store& store, const std::string& kind, int64_t id) {
+  const std::optional<std::string> given = req.header("If-Match");
+  if (!given) return std::nullopt;
+  const std::string& header = *given;
+  std::vector<int> versions;
+  size_t start = 0;
+  while (start < header.size()) {
+    size_t end = header.find(',', start);
+    if (end == std::string::npos) end = header.size();
+    std::string tag = header.substr(start, end - start);
+    tag.erase(0, tag.find_first_not_of(" \t"));
+    tag.erase(tag.find_last_not_of(" \t") + 1);
+    if (tag == "*") return std::nullopt;
+    if (tag.size() > 2 && tag.size() < 12 && tag.front() == '"' && tag.back() == '"' &&
+        tag.find_first_not_of("0123456789", 1) == tag.size() - 1)
+      versions.push_back(std::stoi(tag.substr(1, tag.size() - 2)));
+    start = end + 1;
+  }
+  const auto refuse = [&](int latest) {
+    return Error(errc::kPreconditionFailed,
+                 "If-Match " + header + " names no current version of " + kind + " " + std::to_string(id) +
+                     (latest > 0 ? "; its ETag is now " + versionTag(latest) : ""),
+                 "If-Match");
+  };
+  if (versions.empty()) throw refuse(0);
+  if (versions.size() == 1) return versions[0];
+  const int latest = store.get(kind, id).version;
+  if (std::find(versions.begin(), versions.end(), latest) == versions.end()) throw refuse(latest);
+  return latest;
+}
+
+// The store's precondition_failed, at the header that caused it and naming the tag to read again.
+template <class Write>
+auto conditional(const Store& store, const std::string& kind, int64_t id, Write write) {
+  try {
+    return write();
+  } catch (const Error& e) {
+    if (e.code() != std::string(errc::kPreconditionFailed)) throw;
+    std::string message = e.what();
+    if (std::optional<StoredObject> now = store.find(ObjectReference{kind, id, "", ""}))
+      message += "; its ETag is now " + versionTag(now->version);
+    throw Error(e.code(), message, "If-Match");
+  }
+}
+
+// A stored object's answer with its version's tag.
+ApiResponse taggedObject(int status, const StoredObject& object) {
+  ApiResponse out{status, storedObjectJson(object)};
+  out.headers.emplace_back("ETag", versionTag(object.version));
+  return out;
+}
+
 bool booleanParam(const ApiRequest& req, const std::string& name) {
   if (!req.hasQueryParam(name)) return false;
   const std::string v = req.queryParam(name);
@@ -58,7 +117,7 @@ void registerKind(HttpServer& server, Store& store, const std::string& kind) {
   server.addRoute("POST", base, [&store, kind, limits, base](const ApiRequest& req) {
     const StoredObject created = store.create(prepareDocument(req.body, kind, store, limits, ""));
     refreshPendingDescriptors(store, limits.maxNodes);  // a shape with references is written pending
-    ApiResponse out{201, storedObjectJson(created)};
+    ApiResponse out = taggedObject(201, created);
     out.headers.emplace_back("Location", base + "/" + std::to_string(created.id));
     return out;
   }, write);
@@ -86,22 +145,27 @@ void registerKind(HttpServer& server, Store& store, const std::string& kind) {
 
   server.addRoute("GET", base + "/{id}", [&store, kind](const ApiRequest& req) {
     const int64_t id = positiveInteger(req.pathParams[0], "id");
-    return ApiResponse{200, storedObjectJson(store.get(kind, id, versionParam(req)))};
+    return taggedObject(200, store.get(kind, id, versionParam(req)));
   });
 
   server.addRoute("PUT", base + "/{id}", [&store, kind, limits](const ApiRequest& req) {
     const int64_t id = positiveInteger(req.pathParams[0], "id");
+    const std::optional<int> ifVersion = ifMatchVersion(req, store, kind, id);
     nlohmann::json doc = req.body;
     // The name may be left out: a new version keeps the object's name.
     if (doc.is_object() && !doc.contains("name")) doc["name"] = store.get(kind, id).name;
-    const StoredObject stored = store.put(id, prepareDocument(doc, kind, store, limits, ""));
+    const NewObject object = prepareDocument(doc, kind, store, limits, "");
+    const StoredObject stored = conditional(store, kind, id, [&] { return store.put(id, object, ifVersion); });
     refreshPendingDescriptors(store, limits.maxNodes);  // the objects reaching this one are pending
-    return ApiResponse{200, storedObjectJson(stored)};
+    return taggedObject(200, stored);
   }, write);
 
   server.addRoute("DELETE", base + "/{id}", [&store, kind](const ApiRequest& req) {
     const int64_t id = positiveInteger(req.pathParams[0], "id");
-    const std::vector<int64_t> deleted = store.remove(kind, id, booleanParam(req, "cascade"));
+    const std::optional<int> ifVersion = ifMatchVersion(req, store, kind, id);
+    const bool cascade = booleanParam(req, "cascade");
+    const std::vector<int64_t> deleted =
+        conditional(store, kind, id, [&] { return store.remove(kind, id, cascade, ifVersion); });
     return ApiResponse{200, {{"deleted", deleted}}};
   }, write);
 

@@ -26,7 +26,8 @@ void registerServiceRoutes(HttpServer& server, const Store& store) {
                         {"shapes", count("shape")},
                         {"curves", count("curve")},
                         {"surfaces", count("surface")},
-                        {"schema_version", store.schemaVersion()}}};
+                        {"schema_version", store.schemaVersion()},
+                        {"backend", store.backend()}}};
   });
   // Parsed once: the document is constant for the life of the binary.
   static const nlohmann::json openapi = nlohmann::json::parse(openapiDocumentText());

@@ -45,7 +45,8 @@ class Search {
         limit_(static_cast<size_t>(std::max(1, options.limit))), start_(Clock::now()) {}
 
   CsgSearchResult run(const Store& store, StoredGraphCache& cache) {
-    const StoreVersions versions = StoreVersions::read(store);
+    const std::shared_ptr<const StoreVersions> current = cache.versions(store);
+    const StoreVersions& versions = *current;
     std::vector<Candidate> candidates;
     // Missing graphs (the first search of a process, or after writes) are built in parallel.
     for (std::shared_ptr<const StoredGraph>& g :

@@ -15,7 +15,8 @@ GraphWarmup::GraphWarmup(const Store& store, std::shared_ptr<StoredGraphCache> c
   thread_ = std::thread([this, &store, cache, maxNodes]() {
     const auto start = std::chrono::steady_clock::now();
     try {
-      const StoreVersions versions = StoreVersions::read(store);
+      const std::shared_ptr<const StoreVersions> current = cache->versions(store);
+      const StoreVersions& versions = *current;
       spdlog::info("structural search: warming the graphs of {} shapes", versions.shapes.size());
       const size_t before = cache->builds();
       cache->graphs(store, versions, maxNodes, [this]() {

@@ -140,7 +140,9 @@ class Scorer {
   void scoreChunk(const std::string& kind, const std::vector<int64_t>& chunk) {
     for (const IndexedObject& object : store_.indexedObjects(kind, chunk)) {
       try {
-        keep(kind, object, kind == "part" ? scorePart(object) : scoreStoredShape(object));
+        int version = object.version;  // the rows' version; a document read below gives its own
+        QueryScore score = kind == "part" ? scorePart(object, version) : scoreStoredShape(object, version);
+        keep(kind, object, version, std::move(score));
       } catch (const Error& e) {
         if (e.code() == std::string(errc::kInvalidDocument)) {
           // One bad document must not fail every query; it scores nothing, and the log says why.
@@ -184,23 +186,25 @@ class Scorer {
     hits_.resize(n);
   }
 
-  QueryScore scorePart(const IndexedObject& object) {
+  QueryScore scorePart(const IndexedObject& object, int& version) {
     if (!object.pending && !object.components.empty())
       return scoreDescriptors(query_, decodeDescriptorValues(object.components.front().second));
     // Rows missing or possibly stale: describe the document, as the rows would.
     const StoredObject stored = store_.get("part", object.id);
+    version = stored.version;
     return scoreDescriptors(query_, describePart(parsePart(nlohmann::json::parse(stored.documentJson), "")));
   }
 
-  QueryScore scoreStoredShape(const IndexedObject& object) {
+  QueryScore scoreStoredShape(const IndexedObject& object, int& version) {
     // Relations need the components' placements, which the rows do not keep.
     const StoredObject stored = store_.get("shape", object.id);
+    version = stored.version;
     return scoreShape(query_, storedShapeComponents(store_, stored.documentJson, options_.maxNodes));
   }
 
-  void keep(const std::string& kind, const IndexedObject& object, QueryScore score) {
+  void keep(const std::string& kind, const IndexedObject& object, int version, QueryScore score) {
     if (!(score.score > 0) || score.score < cut_) return;
-    hits_.push_back({object.id, kind, object.name, std::move(score)});
+    hits_.push_back({object.id, kind, object.name, version, std::move(score)});
   }
 
   void checkTime() const {
@@ -223,7 +227,7 @@ class Scorer {
 };
 
 nlohmann::json hitJson(const LinguisticHit& hit) {
-  return {{"id", hit.id}, {"kind", hit.kind}, {"name", hit.name}, {"score", hit.score.score},
+  return {{"id", hit.id}, {"kind", hit.kind}, {"name", hit.name}, {"version", hit.version}, {"score", hit.score.score},
           {"explain", explainJson(hit.score)}};
 }
 

@@ -49,6 +49,7 @@ struct LinguisticSearchOptions {
 struct LinguisticHit {
   int64_t id = 0;
   std::string kind, name;
+  int version = 0;  // the version scored (a shape: its own; the parts it uses are their latest)
   QueryScore score;
 };
 

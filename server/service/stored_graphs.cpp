@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstring>
 #include <exception>
+#include <map>
 
 #include <tbb/parallel_for.h>
 
@@ -55,12 +56,35 @@ bool samePart(const FuzzyPart& a, const FuzzyPart& b) {
   return a.axis.x == b.axis.x && a.axis.y == b.axis.y && a.axis.z == b.axis.z;
 }
 
-StoreVersions StoreVersions::read(const Store& store) {
+StoreVersions StoreVersions::read(const Store& store) { return StoreVersions{}.updated(store.changesSince(0)); }
+
+StoreVersions StoreVersions::updated(const ChangeFeed& feed) const {
   StoreVersions out;
-  out.shapes = store.objectVersions("shape");
-  for (const ObjectVersion& o : store.objectVersions("part")) out.latest[o.id] = o.latestVersion;
-  for (const ObjectVersion& o : out.shapes) out.latest[o.id] = o.latestVersion;
+  if (!feed.reset) out = *this;
+  out.seq = feed.seq;
+  if (feed.changes.empty()) return out;
+  std::map<int64_t, ObjectVersion> shapes;
+  for (const ObjectVersion& s : out.shapes) shapes.emplace(s.id, s);
+  for (const ObjectChange& c : feed.changes) {
+    const bool live = c.latestVersion > 0 && (c.kind == "part" || c.kind == "shape");
+    if (live) out.latest[c.id] = c.latestVersion;
+    else out.latest.erase(c.id);
+    if (live && c.kind == "shape") shapes[c.id] = ObjectVersion{c.id, c.name, c.latestVersion};
+    else shapes.erase(c.id);
+  }
+  out.shapes.clear();
+  out.shapes.reserve(shapes.size());
+  for (auto& [id, s] : shapes) out.shapes.push_back(std::move(s));
   return out;
+}
+
+std::shared_ptr<const StoreVersions> StoredGraphCache::versions(const Store& store) {
+  const int64_t seq = store.changeSeq();
+  std::lock_guard<std::mutex> lock(versionsMutex_);
+  if (versions_ && versions_->seq == seq) return versions_;
+  const ChangeFeed feed = store.changesSince(versions_ ? versions_->seq : 0);
+  versions_ = std::make_shared<const StoreVersions>(versions_ ? versions_->updated(feed) : StoreVersions{}.updated(feed));
+  return versions_;
 }
 
 std::shared_ptr<StoredGraph> buildStoredGraph(const Store& store, int64_t shape, size_t maxNodes,

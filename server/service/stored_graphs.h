@@ -8,9 +8,9 @@
 //   are scored on) and the node counts (query/structural/csg_bound.h).
 // - The cache keys an entry by shape id and remembers the version of the shape and of every object
 //   its tree reached (the parts and shapes the resolver returned). graph() returns the entry only
-//   when all of them still have those versions in `versions` (read once per search), else builds
-//   it again: a PUT of a part changes the graphs of every tree using it, even through other shapes,
-//   and so does a write by another process on the same database file. Deleted shapes are never
+//   when all of them still have those versions in `versions` (versions(): the change log read once
+//   per search), else builds it again: a PUT of a part changes the graphs of every tree using it,
+//   even through other shapes, and so does a write by another server on the same database. Deleted shapes are never
 //   asked for; their entries go when the cache is cleared (when it holds more than maxEntries).
 // - Thread-safe; a graph is built outside the lock (two threads may build the same one; either
 //   result is the same).
@@ -53,11 +53,15 @@ uint64_t partKey(const FuzzyPart& part);
 bool samePart(const FuzzyPart& a, const FuzzyPart& b);
 
 // Latest versions of every live part and shape, by id (ids are shared by all kinds), and the live
-// shapes in id order (the candidates of a search), from one read of each kind.
+// shapes in id order (the candidates of a search), as of the store's change log sequence `seq`.
 struct StoreVersions {
   std::unordered_map<int64_t, int> latest;
   std::vector<ObjectVersion> shapes;
+  int64_t seq = 0;
+  // Everything, in one snapshot (Store::changesSince(0)).
   static StoreVersions read(const Store& store);
+  // These versions moved on by `feed` (from changesSince(seq)): a reset replaces them all.
+  StoreVersions updated(const ChangeFeed& feed) const;
 };
 
 // Builds the graph of the latest version of `shape` (errors as shapeGraph; not_found when deleted);
@@ -76,6 +80,10 @@ class StoredGraphCache {
   // rethrown after the others were built and kept.
   std::vector<std::shared_ptr<const StoredGraph>> graphs(const Store& store, const StoreVersions& versions,
                                                          size_t maxNodes, const std::function<void()>& check = {});
+  // The store's versions now, for a search: the same object while the store's change sequence
+  // stands still (one indexed read per search), else the last one moved on by the changes since
+  // (Store::changesSince). Writes by other servers on the same database are seen the same way.
+  std::shared_ptr<const StoreVersions> versions(const Store& store);
   size_t size() const;
   size_t builds() const;  // graphs built since construction (tests and bench see hits and misses)
 
@@ -91,6 +99,8 @@ class StoredGraphCache {
   size_t builds_ = 0;
   const size_t maxEntries_;
   std::timed_mutex buildMutex_;  // held by the one graphs() build at a time
+  std::mutex versionsMutex_;
+  std::shared_ptr<const StoreVersions> versions_;
 };
 
 }  // namespace fsdb

@@ -1,16 +1,21 @@
 #pragma once
 // TestDatabase: a fresh, empty database on one backend, for suites that run on both (db/store.h).
 // - "sqlite": a file in a TempDir (removed at destruction).
-// - "postgresql": a schema of its own, named after the process and a counter, on the cluster at
-//   $FSDB_TEST_POSTGRES_URL (make test starts one with scripts/pg-test-cluster); the cluster is
-//   thrown away with its schemas. Without that variable the PostgreSQL cases are skipped, except
-//   under CI=true, where they fail: CI must never pass by not running them.
+// - "postgresql": a schema of its own, named after the process and a counter, on the test cluster:
+//   $FSDB_TEST_POSTGRES_URL, or the URL in the file FSDB_PG_TEST_URL_FILE (compiled in: ctest
+//   starts a cluster there with scripts/pg-test-cluster as a fixture; tests/CMakeLists.txt).
+//   The cluster is thrown away with its schemas. Without a URL the PostgreSQL cases are skipped,
+//   except under CI=true, where they fail: CI must never pass by not running them.
 // kBackends lists both for INSTANTIATE_TEST_SUITE_P; FSDB_USE_BACKEND(backend) goes first in SetUp.
+// The server and service suites run once per backend instead (FSDB_TEST_BACKEND, set by ctest for
+// their "postgresql." copies): storeLocation() gives their databases.
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <cstdlib>
+#include <fstream>
 #include <memory>
+#include <stdexcept>
 #include <random>
 #include <string>
 
@@ -27,8 +32,13 @@ inline const std::string kBackends[] = {"sqlite", "postgresql"};
 
 // The cluster's URL, or "" when none was given.
 inline std::string postgresTestUrl() {
-  const char* url = std::getenv("FSDB_TEST_POSTGRES_URL");
-  return url ? url : "";
+  if (const char* url = std::getenv("FSDB_TEST_POSTGRES_URL")) return url;
+  std::string url;
+#ifdef FSDB_PG_TEST_URL_FILE
+  std::ifstream in(FSDB_PG_TEST_URL_FILE);
+  std::getline(in, url);
+#endif
+  return url;
 }
 
 // Skips (or under CI fails) the current test when `backend` cannot run here.
@@ -69,5 +79,20 @@ class TestDatabase {
   TempDir dir_;
   std::string location_;
 };
+
+// The backend of this run of a server or service suite: "sqlite" unless FSDB_TEST_BACKEND says.
+inline std::string suiteBackend() {
+  const char* backend = std::getenv("FSDB_TEST_BACKEND");
+  return backend ? backend : "sqlite";
+}
+
+// A new database for a server or service test: the file `name` in `dir`, or a new schema on the
+// test cluster when the suite runs on PostgreSQL (no URL there is an error, not a skip).
+inline std::string storeLocation(const TempDir& dir, const std::string& name) {
+  if (suiteBackend() != "postgresql") return dir.file(name);
+  if (postgresTestUrl().empty())
+    throw std::runtime_error("FSDB_TEST_BACKEND=postgresql, but no test cluster (FSDB_TEST_POSTGRES_URL)");
+  return freshPostgresLocation();
+}
 
 }  // namespace fsdb::test

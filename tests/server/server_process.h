@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "tests/db/temp_dir.h"
+#include "tests/db/test_database.h"
 
 namespace fsdb::test {
 
@@ -30,12 +31,14 @@ using fsdb::TempDir;
 class ServerProcess {
  public:
   explicit ServerProcess(std::vector<std::string> extraArgs = {}) {
-    // Without --db each server gets a database of its own (never data/fsdb.sqlite of the cwd).
+    // Without --db each server gets a database of its own (never data/fsdb.sqlite of the cwd): a
+    // temporary file, or a new schema on the test cluster when the suite runs on PostgreSQL.
     if (std::find(extraArgs.begin(), extraArgs.end(), "--db") == extraArgs.end()) {
       ownDir_ = std::make_unique<TempDir>();
       extraArgs.push_back("--db");
-      extraArgs.push_back(ownDir_->file("fsdb.sqlite"));
+      extraArgs.push_back(storeLocation(*ownDir_, "fsdb.sqlite"));
     }
+    db_ = extraArgs[static_cast<size_t>(std::find(extraArgs.begin(), extraArgs.end(), "--db") - extraArgs.begin()) + 1];
     int out[2];
     if (pipe(out) != 0) throw std::runtime_error("pipe failed");
     pid_ = fork();
@@ -132,6 +135,9 @@ class ServerProcess {
     return toReply(c.Delete(path.c_str(), headers()));
   }
 
+  // The --db the server runs on (a second server on the same database takes it).
+  const std::string& db() const { return db_; }
+
  private:
   httplib::Headers headers() const {
     httplib::Headers h;
@@ -151,6 +157,7 @@ class ServerProcess {
   }
 
   std::unique_ptr<TempDir> ownDir_;  // the database of a server started without --db
+  std::string db_;                   // the --db it was started with
   pid_t pid_ = -1;
   FILE* stdout_ = nullptr;
   std::string firstLine_, host_, token_;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/db/temp_dir.h"
+#include "tests/db/test_database.h"
 #include "geometry/core/error.h"
 #include "server/service/documents.h"
 
@@ -44,7 +45,7 @@ TEST(SplitBulkBody, AJsonArrayIsOneDocumentPerElement) {
 
 TEST(ImportDocuments, GoodLinesOfABatchWithBadOnesCommitAndErrorsNameTheirLines) {
   TempDir dir;
-  auto store = Store::open(dir.file("db.sqlite"));
+  auto store = Store::open(test::storeLocation(dir, "db.sqlite"));
   const std::string body = part("a", 1) + "\n" + part("bad", -1) + "\n" + part("a", 2) + "\n" +
                            json{{"kind", "shape"}, {"name", "s"}, {"csg", "a + b"}}.dump() + "\n" + part("b", 1) +
                            "\n" + json{{"kind", "shape"}, {"name", "t"}, {"csg", "a + b"}}.dump();
@@ -67,7 +68,7 @@ TEST(ImportDocuments, GoodLinesOfABatchWithBadOnesCommitAndErrorsNameTheirLines)
 
 TEST(ImportDocuments, AShapeMayUseAPartFromAnEarlierLineOfTheSameBatch) {
   TempDir dir;
-  auto store = Store::open(dir.file("db.sqlite"));
+  auto store = Store::open(test::storeLocation(dir, "db.sqlite"));
   const std::string body = part("p", 1) + "\n" +
                            json{{"kind", "shape"}, {"name", "s"}, {"tree", {{"part", "p"}}}}.dump();
   const BulkReport r = importDocuments(*store, splitBulkBody(body, 64), {});
@@ -79,7 +80,7 @@ TEST(ImportDocuments, AShapeMayUseAPartFromAnEarlierLineOfTheSameBatch) {
 
 TEST(ImportDocuments, UpsertAddsVersionsOnlyForChangedDocumentsAndReportsProgress) {
   TempDir dir;
-  auto store = Store::open(dir.file("db.sqlite"));
+  auto store = Store::open(test::storeLocation(dir, "db.sqlite"));
   BulkOptions options;
   options.mode = BulkMode::kUpsert;
   options.batchSize = 1;
@@ -96,7 +97,7 @@ TEST(ImportDocuments, UpsertAddsVersionsOnlyForChangedDocumentsAndReportsProgres
 
 TEST(ImportDocuments, WithoutARouteKindEachLineNeedsItsKind) {
   TempDir dir;
-  auto store = Store::open(dir.file("db.sqlite"));
+  auto store = Store::open(test::storeLocation(dir, "db.sqlite"));
   const BulkReport r = importDocuments(*store, splitBulkBody(R"({"name":"x","params":{"a1":1}})", 64), {});
   EXPECT_EQ(r.failed, 1u);
   EXPECT_EQ(r.errors[0]["error"]["path"], "kind");
@@ -107,7 +108,7 @@ TEST(ImportDocuments, WithoutARouteKindEachLineNeedsItsKind) {
 
 TEST(PrepareDocument, FillsKindChecksNamesAndComputesNormalisedColumns) {
   TempDir dir;
-  auto store = Store::open(dir.file("db.sqlite"));
+  auto store = Store::open(test::storeLocation(dir, "db.sqlite"));
   NewObject p = prepareDocument(json{{"name", "p"}, {"params", {{"a1", {{"tri", {1, 2, 3}}}}}}}, "part", *store, nodeLimit(10), "");
   EXPECT_EQ(json::parse(p.documentJson)["kind"], "part");
   ASSERT_EQ(p.parameters.size(), 14u);
@@ -148,7 +149,7 @@ TEST(PrepareDocument, FillsKindChecksNamesAndComputesNormalisedColumns) {
 // curve's or surface's control points, max_fair_points a stored fair curve's given points.
 TEST(PrepareDocument, EachKindIsLimitedByItsOwnOption) {
   TempDir dir;
-  auto store = Store::open(dir.file("db.sqlite"));
+  auto store = Store::open(test::storeLocation(dir, "db.sqlite"));
   DocumentLimits limits;
   limits.maxNodes = 2;
   limits.maxControlPoints = 3;
@@ -181,7 +182,7 @@ TEST(PrepareDocument, EachKindIsLimitedByItsOwnOption) {
 
 TEST(StoreResolver, FindsStoredObjectsByNameOrIdAndPendingOnesFirst) {
   TempDir dir;
-  auto store = Store::open(dir.file("db.sqlite"));
+  auto store = Store::open(test::storeLocation(dir, "db.sqlite"));
   const StoredObject p = store->create(prepareDocument(json{{"name", "p"}, {"params", {{"a1", 1}}}}, "part", *store, nodeLimit(10), ""));
   PendingDocuments pending;
   pending.add("part", "q", json{{"params", {{"a1", 2}}}});

@@ -13,6 +13,7 @@
 #include "server/service/csg_search.h"
 #include "server/service/documents.h"
 #include "tests/db/temp_dir.h"
+#include "tests/db/test_database.h"
 #include "tests/testing/grammar_examples.h"
 
 namespace fsdb {
@@ -27,7 +28,7 @@ int pick(std::mt19937& rng, int n) { return std::uniform_int_distribution<int>(0
 
 class Catalogue {
  public:
-  explicit Catalogue(uint32_t seed) : rng_(seed), store_(Store::open(dir_.file("fsdb.sqlite"))) {}
+  explicit Catalogue(uint32_t seed) : rng_(seed), store_(Store::open(test::storeLocation(dir_, "fsdb.sqlite"))) {}
 
   void build(int parts, int shapes) {
     for (int i = 0; i < parts; ++i) {

@@ -20,6 +20,7 @@
 #include "server/service/documents.h"
 #include "server/service/linguistic_search.h"
 #include "tests/db/temp_dir.h"
+#include "tests/db/test_database.h"
 #include "tests/testing/grammar_examples.h"
 
 namespace fsdb {
@@ -68,7 +69,7 @@ nlohmann::json partDocument(const FuzzyPart& part, const std::string& name, bool
 
 class Catalogue {
  public:
-  explicit Catalogue(uint32_t seed) : rng_(seed), store_(Store::open(dir_.file("fsdb.sqlite"))) {}
+  explicit Catalogue(uint32_t seed) : rng_(seed), store_(Store::open(test::storeLocation(dir_, "fsdb.sqlite"))) {}
 
   void build(int parts, int shapes) {
     for (int i = 0; i < parts; ++i) {

@@ -10,6 +10,7 @@
 
 #include "server/service/documents.h"
 #include "tests/db/temp_dir.h"
+#include "tests/db/test_database.h"
 
 namespace fsdb {
 namespace {
@@ -31,7 +32,7 @@ TEST(StoredGraphs, PartKeyAndSamePart) {
 
 TEST(StoredGraphs, EqualLeavesShareAnIdAndWritesRebuild) {
   TempDir dir;
-  auto store = Store::open(dir.file("fsdb.sqlite"));
+  auto store = Store::open(test::storeLocation(dir, "fsdb.sqlite"));
   const auto create = [&](const json& doc, const std::string& kind) {
     return store->create(prepareDocument(doc, kind, *store, DocumentLimits{}, "")).id;
   };
@@ -70,7 +71,7 @@ TEST(StoredGraphs, EqualLeavesShareAnIdAndWritesRebuild) {
 // A catalogue of `n` trees over two stored parts and a few parts from words (leaves repeat, so the
 // interned ids matter).
 std::unique_ptr<Store> catalogue(const TempDir& dir, int n) {
-  auto store = Store::open(dir.file("fsdb.sqlite"));
+  auto store = Store::open(test::storeLocation(dir, "fsdb.sqlite"));
   const auto create = [&](const json& doc, const std::string& kind) {
     return store->create(prepareDocument(doc, kind, *store, DocumentLimits{}, "")).id;
   };
