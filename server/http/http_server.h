@@ -9,8 +9,8 @@
 // - Routes are registered through addRoute(), which records them; routes() is what
 //   GET /openapi.json must describe (a test holds the two equal).
 // - start() binds before it returns, so the caller can print the real port (`--port 0`).
-// - A GET answered 200 carries a weak ETag of its body and is 304 without a body when
-//   If-None-Match names it (server/http/response_encoding.h); binary exports (meshes, grids) are
+// - A GET answered 200 carries a weak ETag of its body, unless its handler set one (a stored
+//   object: its version, strong, for If-Match), and is 304 without a body when If-None-Match names it (server/http/response_encoding.h); binary exports (meshes, grids) are
 //   gzipped when the client accepts it (JSON and SVG by cpp-httplib itself).
 // - CORS is off unless ServerOptions::corsOrigin is set.
 #include <nlohmann/json.hpp>
