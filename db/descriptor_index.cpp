@@ -29,28 +29,54 @@ void writeDescriptorRows(sql::Connection& connection, int64_t objectId, const st
     statement->bind(1, objectId);
     statement->run();
   }
-  auto row = connection.prepare(
-      "INSERT INTO descriptor_index (object_id, kind, component, descriptor, width_class, support_lo,"
-      " core_lo, core_hi, support_hi) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9)");
-  auto seenClass = connection.prepare(
-      "INSERT INTO descriptor_classes (descriptor, width_class) VALUES (?1, ?2)"
-      " ON CONFLICT (descriptor, width_class) DO NOTHING");
-  auto values = connection.prepare(
-      "INSERT INTO descriptor_values (object_id, component, descriptor_values) VALUES (?1, ?2, ?3)");
-  for (const DescriptorComponent& component : components) {
+  // Multi-row statements (sql::rowPlaceholders): a part's 13 rows are one round trip to a server.
+  struct Row {
+    int component;
+    const DescriptorSpan* span;
+    int widthClass;
+  };
+  std::vector<Row> rows;
+  std::vector<std::pair<std::string, int>> classes;
+  for (const DescriptorComponent& component : components)
     for (const DescriptorSpan& span : component.spans) {
-      const int c = widthClass(span.supportHi - span.supportLo);
-      row->reset();
-      row->bind(1, objectId).bind(2, kind).bind(3, component.component).bind(4, span.descriptor).bind(5, c);
-      row->bind(6, span.supportLo).bind(7, span.coreLo).bind(8, span.coreHi).bind(9, span.supportHi);
-      row->run();
-      seenClass->reset();
-      seenClass->bind(1, span.descriptor).bind(2, c);
-      seenClass->run();
+      rows.push_back({component.component, &span, widthClass(span.supportHi - span.supportLo)});
+      classes.emplace_back(span.descriptor, rows.back().widthClass);
     }
-    values->reset();
-    values->bind(1, objectId).bind(2, component.component).bindBlob(3, component.values);
-    values->run();
+  std::sort(classes.begin(), classes.end());
+  classes.erase(std::unique(classes.begin(), classes.end()), classes.end());
+  for (size_t from = 0; from < rows.size(); from += sql::kRowsPerStatement) {
+    const int n = static_cast<int>(std::min<size_t>(sql::kRowsPerStatement, rows.size() - from));
+    auto statement = connection.prepare(
+        "INSERT INTO descriptor_index (object_id, kind, component, descriptor, width_class, support_lo, core_lo, core_hi,"
+        " support_hi) VALUES " + sql::rowPlaceholders(n, 9));
+    for (int r = 0; r < n; ++r) {
+      const Row& row = rows[from + static_cast<size_t>(r)];
+      const DescriptorSpan& span = *row.span;
+      const int k = 9 * r;
+      statement->bind(k + 1, objectId).bind(k + 2, kind).bind(k + 3, row.component).bind(k + 4, span.descriptor);
+      statement->bind(k + 5, row.widthClass).bind(k + 6, span.supportLo).bind(k + 7, span.coreLo);
+      statement->bind(k + 8, span.coreHi).bind(k + 9, span.supportHi);
+    }
+    statement->run();
+  }
+  for (size_t from = 0; from < classes.size(); from += sql::kRowsPerStatement) {
+    const int n = static_cast<int>(std::min<size_t>(sql::kRowsPerStatement, classes.size() - from));
+    auto statement = connection.prepare("INSERT INTO descriptor_classes (descriptor, width_class) VALUES " +
+                                        sql::rowPlaceholders(n, 2) + " ON CONFLICT (descriptor, width_class) DO NOTHING");
+    for (int r = 0; r < n; ++r)
+      statement->bind(2 * r + 1, classes[from + static_cast<size_t>(r)].first)
+          .bind(2 * r + 2, classes[from + static_cast<size_t>(r)].second);
+    statement->run();
+  }
+  for (size_t from = 0; from < components.size(); from += sql::kRowsPerStatement) {
+    const int n = static_cast<int>(std::min<size_t>(sql::kRowsPerStatement, components.size() - from));
+    auto statement = connection.prepare("INSERT INTO descriptor_values (object_id, component, descriptor_values) VALUES " +
+                                        sql::rowPlaceholders(n, 3));
+    for (int r = 0; r < n; ++r) {
+      const DescriptorComponent& component = components[from + static_cast<size_t>(r)];
+      statement->bind(3 * r + 1, objectId).bind(3 * r + 2, component.component).bindBlob(3 * r + 3, component.values);
+    }
+    statement->run();
   }
 }
 

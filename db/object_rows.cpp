@@ -116,6 +116,12 @@ void invalidateDependents(Connection& connection, int64_t id, const std::vector<
   }
 }
 
+std::vector<int64_t> sortedUnique(std::vector<int64_t> ids) {
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
 // Writes version `version` of object `row` (whose objects row exists) with its normalised rows,
 // and makes its edges those of `children`.
 void writeVersion(Connection& connection, const ObjectRow& row, int version, const NewObject& object,
@@ -128,22 +134,26 @@ void writeVersion(Connection& connection, const ObjectRow& row, int version, con
     statement->bind(4, object.contentHash).bind(5, now);
     statement->run();
   }
-  {
+  for (size_t from = 0; from < object.parameters.size(); from += sql::kRowsPerStatement) {
+    const int rows = static_cast<int>(std::min<size_t>(sql::kRowsPerStatement, object.parameters.size() - from));
     auto statement = connection.prepare(
-        "INSERT INTO part_parameters (object_id, version, name, support_lo, core_lo, core_hi,"
-        " support_hi) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)");
-    for (const auto& p : object.parameters) {
-      statement->reset();
-      statement->bind(1, row.id).bind(2, version).bind(3, p.name).bind(4, p.supportLo);
-      statement->bind(5, p.coreLo).bind(6, p.coreHi).bind(7, p.supportHi);
-      statement->run();
+        "INSERT INTO part_parameters (object_id, version, name, support_lo, core_lo, core_hi, support_hi) VALUES " +
+        sql::rowPlaceholders(rows, 7));
+    for (int r = 0; r < rows; ++r) {
+      const ParameterSpan& p = object.parameters[from + static_cast<size_t>(r)];
+      const int k = 7 * r;
+      statement->bind(k + 1, row.id).bind(k + 2, version).bind(k + 3, p.name).bind(k + 4, p.supportLo);
+      statement->bind(k + 5, p.coreLo).bind(k + 6, p.coreHi).bind(k + 7, p.supportHi);
     }
+    statement->run();
   }
-  {
+  for (size_t from = 0; from < object.nodes.size(); from += sql::kRowsPerStatement) {
+    const int rows = static_cast<int>(std::min<size_t>(sql::kRowsPerStatement, object.nodes.size() - from));
     auto statement = connection.prepare(
-        "INSERT INTO csg_nodes (object_id, version, node, parent, position, kind, operator, ref_id,"
-        " transform) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9)");
-    for (const auto& node : object.nodes) {
+        "INSERT INTO csg_nodes (object_id, version, node, parent, position, kind, operator, ref_id, transform) VALUES " +
+        sql::rowPlaceholders(rows, 9));
+    for (int r = 0; r < rows; ++r) {
+      const CsgNodeRow& node = object.nodes[from + static_cast<size_t>(r)];
       std::optional<int64_t> refId;
       if (node.refIndex >= 0) {
         if (static_cast<size_t>(node.refIndex) >= children.size())
@@ -152,28 +162,26 @@ void writeVersion(Connection& connection, const ObjectRow& row, int version, con
                           std::to_string(node.refIndex) + " of " + std::to_string(children.size()));
         refId = children[static_cast<size_t>(node.refIndex)];
       }
-      statement->reset();
-      statement->bind(1, row.id).bind(2, version).bind(3, node.index).bind(4, node.parent);
-      statement->bind(5, node.position).bind(6, node.kind);
-      if (node.operatorJson.empty()) statement->bindNull(7); else statement->bind(7, node.operatorJson);
-      statement->bind(8, refId);
-      if (node.transformJson.empty()) statement->bindNull(9); else statement->bind(9, node.transformJson);
-      statement->run();
+      const int k = 9 * r;
+      statement->bind(k + 1, row.id).bind(k + 2, version).bind(k + 3, node.index).bind(k + 4, node.parent);
+      statement->bind(k + 5, node.position).bind(k + 6, node.kind);
+      if (node.operatorJson.empty()) statement->bindNull(k + 7); else statement->bind(k + 7, node.operatorJson);
+      statement->bind(k + 8, refId);
+      if (node.transformJson.empty()) statement->bindNull(k + 9); else statement->bind(k + 9, node.transformJson);
     }
+    statement->run();
   }
   {
     auto statement = connection.prepare("DELETE FROM refs WHERE parent_id = ?1");
     statement->bind(1, row.id);
     statement->run();
   }
-  {
-    auto statement = connection.prepare(
-        "INSERT INTO refs (parent_id, child_id) VALUES (?1, ?2) ON CONFLICT (parent_id, child_id) DO NOTHING");
-    for (int64_t child : children) {
-      statement->reset();
-      statement->bind(1, row.id).bind(2, child);
-      statement->run();
-    }
+  const std::vector<int64_t> edges = sortedUnique(children);
+  for (size_t from = 0; from < edges.size(); from += sql::kRowsPerStatement) {
+    const int rows = static_cast<int>(std::min<size_t>(sql::kRowsPerStatement, edges.size() - from));
+    auto statement = connection.prepare("INSERT INTO refs (parent_id, child_id) VALUES " + sql::rowPlaceholders(rows, 2));
+    for (int r = 0; r < rows; ++r) statement->bind(2 * r + 1, row.id).bind(2 * r + 2, edges[from + static_cast<size_t>(r)]);
+    statement->run();
   }
   writeDescriptorRows(connection, row.id, row.kind, object.descriptors);
   // Rows computed from referenced documents the caller read before this transaction may already
@@ -184,12 +192,6 @@ void writeVersion(Connection& connection, const ObjectRow& row, int version, con
 
 void checkKind(const std::string& kind) {
   if (!knownKind(kind)) throw Error(errc::kInvalidDocument, "unknown kind '" + kind + "'", "kind");
-}
-
-std::vector<int64_t> sortedUnique(std::vector<int64_t> ids) {
-  std::sort(ids.begin(), ids.end());
-  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-  return ids;
 }
 
 // The record of a write: what get() would return for the new version.

@@ -1,6 +1,7 @@
 // `fsdb import FILE --db PATH | --server URL` and `fsdb eval ID --db PATH` (docs/api.md §1) on the
 // real binary: the last stdout line "imported N, failed M", the exit status, the same counts
-// through a running server, and volumes printed by eval.
+// through a running server, and volumes printed by eval. The databases are files, or PostgreSQL
+// schemas in the suite's postgresql.* run (tests/db/test_database.h storeLocation).
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -46,14 +47,14 @@ std::string catalogue(bool withBadLine) {
 
 TEST(ImportCli, IntoADatabaseFile) {
   TempDir dir;
-  const std::string file = dir.file("catalogue.jsonl"), db = dir.file("cli.sqlite");
+  const std::string file = dir.file("catalogue.jsonl"), db = fsdb::test::storeLocation(dir, "cli.sqlite");
   writeFile(file, catalogue(true));
   auto withBad = runFsdb({"import", file, "--db", db});
   EXPECT_EQ(withBad.exitCode, 1) << withBad.out;
   EXPECT_EQ(lastLine(withBad.out), "imported 5, failed 1") << withBad.out;
 
   // Good lines only, into a fresh file: exit 0.
-  const std::string good = dir.file("good.jsonl"), db2 = dir.file("cli2.sqlite");
+  const std::string good = dir.file("good.jsonl"), db2 = fsdb::test::storeLocation(dir, "cli2.sqlite");
   writeFile(good, catalogue(false));
   auto clean = runFsdb({"import", good, "--db", db2});
   EXPECT_EQ(clean.exitCode, 0) << clean.out;
@@ -75,7 +76,7 @@ TEST(ImportCli, IntoADatabaseFile) {
 
 TEST(ImportCli, MixedFilesTakeCurvesAndSurfaces) {
   TempDir dir;
-  const std::string file = dir.file("curves.jsonl"), db = dir.file("curves.sqlite");
+  const std::string file = dir.file("curves.jsonl"), db = fsdb::test::storeLocation(dir, "curves.sqlite");
   std::string s = json{{"kind", "part"}, {"name", "A"}, {"params", {{"a1", 1}}}}.dump() + "\n";
   s += json{{"kind", "curve"}, {"name", "arc"}, {"bezier", {{"control_points", {{0, 0}, {{{"tri", {0, 1, 2}}}, 1}}}}}}.dump() + "\n";
   s += json{{"kind", "surface"}, {"name", "patch"}, {"bezier", {{"control_grid", {{{0, 0, 0}}}}}}}.dump() + "\n";
@@ -93,7 +94,7 @@ TEST(ImportCli, ThroughARunningServerGivesTheSameCounts) {
   TempDir dir;
   const std::string file = dir.file("catalogue.jsonl");
   writeFile(file, catalogue(true));
-  ServerProcess server({"--db", dir.file("srv.sqlite"), "--token", "tok"});
+  ServerProcess server({"--db", fsdb::test::storeLocation(dir, "srv.sqlite"), "--token", "tok"});
   const std::string url = "http://" + server.host() + ":" + std::to_string(server.port());
   auto noToken = runFsdb({"import", file, "--server", url});
   EXPECT_NE(noToken.exitCode, 0) << noToken.out;
@@ -120,9 +121,9 @@ TEST(ImportCli, CurvesAndSurfacesThroughAServerAsIntoAFile) {
                 {"bezier", {{"control_grid", {{{0, 0, 0}, {1, 0, 1}}, {{0, 1, 0}, {1, 1, {{"tri", {0, 0.5, 1}}}}}}}}}}.dump() + "\n";
   lines += json{{"kind", "curve"}, {"name", "fair"}, {"fair", {{"points", {{0, 0}, {2, 1}, {4, 0}}}}}}.dump() + "\n";
   writeFile(file, lines);
-  auto direct = runFsdb({"import", file, "--db", dir.file("direct.sqlite")});
+  auto direct = runFsdb({"import", file, "--db", fsdb::test::storeLocation(dir, "direct.sqlite")});
   EXPECT_EQ(lastLine(direct.out), "imported 4, failed 0") << direct.out;
-  ServerProcess server({"--db", dir.file("served.sqlite")});
+  ServerProcess server({"--db", fsdb::test::storeLocation(dir, "served.sqlite")});
   const std::string url = "http://" + server.host() + ":" + std::to_string(server.port());
   auto served = runFsdb({"import", file, "--server", url});
   EXPECT_EQ(served.exitCode, 0) << served.out;
@@ -135,7 +136,7 @@ TEST(ImportCli, CurvesAndSurfacesThroughAServerAsIntoAFile) {
 
 TEST(ImportCli, IntoTheFileOfARunningServerWhileItWrites) {
   TempDir dir;
-  const std::string file = dir.file("many.jsonl"), db = dir.file("shared.sqlite");
+  const std::string file = dir.file("many.jsonl"), db = fsdb::test::storeLocation(dir, "shared.sqlite");
   std::string lines;
   for (int i = 0; i < 300; ++i)
     lines += json{{"kind", "part"}, {"name", "imp" + std::to_string(i)}, {"params", {{"a1", 1}}}}.dump() + "\n";
@@ -156,7 +157,7 @@ TEST(ImportCli, IntoTheFileOfARunningServerWhileItWrites) {
 
 TEST(EvalCli, PrintsTheVolumesOfAStoredShape) {
   TempDir dir;
-  const std::string file = dir.file("catalogue.jsonl"), db = dir.file("eval.sqlite");
+  const std::string file = dir.file("catalogue.jsonl"), db = fsdb::test::storeLocation(dir, "eval.sqlite");
   writeFile(file, catalogue(false));
   ASSERT_EQ(runFsdb({"import", file, "--db", db}).exitCode, 0);
   int64_t id = 0;
