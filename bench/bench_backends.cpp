@@ -47,8 +47,11 @@ json value(std::mt19937& rng, double lo, double hi) {
 
 json partDocument(std::mt19937& rng, size_t i) {
   std::uniform_real_distribution<double> u(0, 1);
-  json params = {{"eps1", value(rng, 0.1, 2.5)}, {"eps2", value(rng, 0.1, 2.5)}, {"a1", value(rng, 0.3, 3.0)},
-                 {"a2", value(rng, 0.3, 2.0)},   {"a3", value(rng, 0.5, 3.0)}};
+  json params = {{"eps1", value(rng, 0.1, 2.5)},
+                 {"eps2", value(rng, 0.1, 2.5)},
+                 {"a1", value(rng, 0.3, 3.0)},
+                 {"a2", value(rng, 0.3, 2.0)},
+                 {"a3", value(rng, 0.5, 3.0)}};
   if (u(rng) < 0.2) params["kv"] = value(rng, 0.0, 0.15);
   if (u(rng) < 0.1) params["kx"] = value(rng, 0.0, 0.9);
   if (u(rng) < 0.1) params["t"] = value(rng, 0.0, 3.0);
@@ -64,7 +67,9 @@ json treeDocument(std::mt19937& rng, size_t i, size_t parts) {
     if (k > 0) leaf["transform"] = {{"translate", {static_cast<int>(rng() % 5), static_cast<int>(rng() % 5), 0}}};
     children.push_back(leaf);
   }
-  return {{"kind", "shape"}, {"name", "tree-" + std::to_string(i)}, {"tree", {{"op", rng() % 4 == 0 ? "difference" : "union"}, {"children", children}}}};
+  return {{"kind", "shape"},
+          {"name", "tree-" + std::to_string(i)},
+          {"tree", {{"op", rng() % 4 == 0 ? "difference" : "union"}, {"children", children}}}};
 }
 
 // Imports `count` documents made by `make` in batches; documents per second.
@@ -82,12 +87,12 @@ double importAll(fsdb::Store& store, const std::string& kind, size_t count, Make
   return count / (msSince(start) / 1000);
 }
 
-const std::vector<std::string> kLinguistic = {
-    "find a very twisted part", "find a slightly bent part", "find a very tapered and slightly bent part",
-    "find a very round part", "find a big part"};
-const std::vector<std::string> kCsg = {
-    "the union of a very bent cylinder and a sphere", "a box minus a cylinder", "\"p-7\" + \"p-11\"",
-    "the union of a very round part and a twisted box and a cylinder"};
+const std::vector<std::string> kLinguistic = {"find a very twisted part", "find a slightly bent part",
+                                              "find a very tapered and slightly bent part", "find a very round part",
+                                              "find a big part"};
+const std::vector<std::string> kCsg = {"the union of a very bent cylinder and a sphere", "a box minus a cylinder",
+                                       "\"p-7\" + \"p-11\"",
+                                       "the union of a very round part and a twisted box and a cylinder"};
 
 struct Backend {
   std::string name, location;
@@ -128,17 +133,19 @@ int main(int argc, char** argv) {
     for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(backends[0].location + suffix);
     backends[1].name = "postgresql";
     backends[1].location = postgres + (postgres.find('?') == std::string::npos ? "?" : "&") + "schema=bench_backends";
-    fsdb::postgres::Connection(fsdb::postgres::parseAddress(postgres)).exec("DROP SCHEMA IF EXISTS bench_backends CASCADE");
+    fsdb::postgres::Connection(fsdb::postgres::parseAddress(postgres))
+        .exec("DROP SCHEMA IF EXISTS bench_backends CASCADE");
 
     for (Backend& b : backends) {
       b.store = fsdb::Store::open(b.location);
       b.partsPerSecond = importAll(*b.store, "part", parts, partDocument);
-      b.treesPerSecond = importAll(*b.store, "shape", trees, [&](std::mt19937& rng, size_t i) { return treeDocument(rng, i, parts); });
+      b.treesPerSecond =
+          importAll(*b.store, "shape", trees, [&](std::mt19937& rng, size_t i) { return treeDocument(rng, i, parts); });
       const auto t = Clock::now();
       fsdb::refreshPendingDescriptors(*b.store, 10000);  // trees with references are written pending
       b.refreshMs = msSince(t);
-      std::fprintf(stderr, "%s: %zu parts at %.0f/s, %zu trees at %.0f/s, pending rows in %.0f ms\n", b.name.c_str(), parts,
-                   b.partsPerSecond, trees, b.treesPerSecond, b.refreshMs);
+      std::fprintf(stderr, "%s: %zu parts at %.0f/s, %zu trees at %.0f/s, pending rows in %.0f ms\n", b.name.c_str(),
+                   parts, b.partsPerSecond, trees, b.treesPerSecond, b.refreshMs);
     }
     // The queries are timed in the steady state: PostgreSQL's autovacuum would otherwise analyze
     // the new tables while they run (taking one of the two cores from both backends' timings).
@@ -172,7 +179,8 @@ int main(int argc, char** argv) {
       double p50[2];
       std::vector<int64_t> hits[2];
       for (int k = 0; k < 2; ++k) {
-        const fsdb::CsgQuery q = fsdb::parseCsgQuery(text, fsdb::Vocabulary::builtin(), fsdb::storeResolver(*backends[k].store), 10000);
+        const fsdb::CsgQuery q =
+            fsdb::parseCsgQuery(text, fsdb::Vocabulary::builtin(), fsdb::storeResolver(*backends[k].store), 10000);
         fsdb::CsgSearchOptions options;
         options.limit = 10;
         if (caches[k].size() == 0) {
@@ -181,7 +189,8 @@ int main(int argc, char** argv) {
           backends[k].coldCsgMs = msSince(t);
         }
         fsdb::CsgSearchResult r;
-        p50[k] = percentile(timeRuns(reps, [&] { r = fsdb::searchCsg(*backends[k].store, q, options, caches[k]); }), 0.5);
+        p50[k] =
+            percentile(timeRuns(reps, [&] { r = fsdb::searchCsg(*backends[k].store, q, options, caches[k]); }), 0.5);
         for (const auto& h : r.hits) hits[k].push_back(h.id);
       }
       if (hits[0] != hits[1]) throw fsdb::Error("bench", "'" + text + "': the backends answer differently");
@@ -189,8 +198,7 @@ int main(int argc, char** argv) {
     }
     row("csg: first query (every tree's graph built)", backends[0].coldCsgMs, backends[1].coldCsgMs, "ms");
     double seq[2];
-    for (int k = 0; k < 2; ++k)
-      seq[k] = percentile(timeRuns(200, [&] { backends[k].store->changeSeq(); }), 0.5);
+    for (int k = 0; k < 2; ++k) seq[k] = percentile(timeRuns(200, [&] { backends[k].store->changeSeq(); }), 0.5);
     row("change check per search (Store::changeSeq)", seq[0], seq[1], "ms");
     return 0;
   });

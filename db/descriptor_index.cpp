@@ -23,8 +23,8 @@ double lowestSupportLo(double lo, int widthClass) {
 
 void writeDescriptorRows(sql::Connection& connection, int64_t objectId, const std::string& kind,
                          const std::vector<DescriptorComponent>& components) {
-  for (const char* sql : {"DELETE FROM descriptor_index WHERE object_id = ?1",
-                          "DELETE FROM descriptor_values WHERE object_id = ?1"}) {
+  for (const char* sql :
+       {"DELETE FROM descriptor_index WHERE object_id = ?1", "DELETE FROM descriptor_values WHERE object_id = ?1"}) {
     auto statement = connection.prepare(sql);
     statement->bind(1, objectId);
     statement->run();
@@ -48,7 +48,8 @@ void writeDescriptorRows(sql::Connection& connection, int64_t objectId, const st
     const int n = static_cast<int>(std::min<size_t>(sql::kRowsPerStatement, rows.size() - from));
     auto statement = connection.prepare(
         "INSERT INTO descriptor_index (object_id, kind, component, descriptor, width_class, support_lo, core_lo, core_hi,"
-        " support_hi) VALUES " + sql::rowPlaceholders(n, 9));
+        " support_hi) VALUES " +
+        sql::rowPlaceholders(n, 9));
     for (int r = 0; r < n; ++r) {
       const Row& row = rows[from + static_cast<size_t>(r)];
       const DescriptorSpan& span = *row.span;
@@ -61,8 +62,9 @@ void writeDescriptorRows(sql::Connection& connection, int64_t objectId, const st
   }
   for (size_t from = 0; from < classes.size(); from += sql::kRowsPerStatement) {
     const int n = static_cast<int>(std::min<size_t>(sql::kRowsPerStatement, classes.size() - from));
-    auto statement = connection.prepare("INSERT INTO descriptor_classes (descriptor, width_class) VALUES " +
-                                        sql::rowPlaceholders(n, 2) + " ON CONFLICT (descriptor, width_class) DO NOTHING");
+    auto statement =
+        connection.prepare("INSERT INTO descriptor_classes (descriptor, width_class) VALUES " +
+                           sql::rowPlaceholders(n, 2) + " ON CONFLICT (descriptor, width_class) DO NOTHING");
     for (int r = 0; r < n; ++r)
       statement->bind(2 * r + 1, classes[from + static_cast<size_t>(r)].first)
           .bind(2 * r + 2, classes[from + static_cast<size_t>(r)].second);
@@ -70,8 +72,8 @@ void writeDescriptorRows(sql::Connection& connection, int64_t objectId, const st
   }
   for (size_t from = 0; from < components.size(); from += sql::kRowsPerStatement) {
     const int n = static_cast<int>(std::min<size_t>(sql::kRowsPerStatement, components.size() - from));
-    auto statement = connection.prepare("INSERT INTO descriptor_values (object_id, component, descriptor_values) VALUES " +
-                                        sql::rowPlaceholders(n, 3));
+    auto statement = connection.prepare(
+        "INSERT INTO descriptor_values (object_id, component, descriptor_values) VALUES " + sql::rowPlaceholders(n, 3));
     for (int r = 0; r < n; ++r) {
       const DescriptorComponent& component = components[from + static_cast<size_t>(r)];
       statement->bind(3 * r + 1, objectId).bind(3 * r + 2, component.component).bindBlob(3 * r + 3, component.values);
@@ -83,8 +85,8 @@ void writeDescriptorRows(sql::Connection& connection, int64_t objectId, const st
 void markDescriptorsPending(sql::Connection& connection, int64_t objectId) {
   int64_t generation = 0;
   {
-    auto clock = connection.prepare(
-        "UPDATE descriptor_clock SET generation = generation + 1 WHERE id = 1 RETURNING generation");
+    auto clock =
+        connection.prepare("UPDATE descriptor_clock SET generation = generation + 1 WHERE id = 1 RETURNING generation");
     if (clock->step()) generation = clock->columnInt(0);
   }
   auto statement = connection.prepare(
@@ -156,7 +158,8 @@ std::vector<int64_t> pendingDescriptorIdsIn(sql::Connection& connection, const s
 std::vector<DescriptorCandidate> descriptorCandidatesIn(sql::Connection& connection, const std::string& kind,
                                                         const DescriptorOverlap& test) {
   std::vector<DescriptorCandidate> rows;
-  for (const DescriptorRange& range : descriptorRangesIn(connection, test)) descriptorRangeRowsIn(connection, kind, range, rows);
+  for (const DescriptorRange& range : descriptorRangesIn(connection, test))
+    descriptorRangeRowsIn(connection, kind, range, rows);
   for (int64_t id : pendingDescriptorIdsIn(connection, kind)) rows.push_back({id, 0, 0, true});
   return rows;
 }

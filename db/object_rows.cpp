@@ -42,17 +42,14 @@ std::vector<int64_t> dependentsOf(Connection& connection, int64_t id) {
   return ids;
 }
 
-
 std::optional<ObjectRow> objectRow(Connection& connection, int64_t id) {
   auto statement = connection.prepare("SELECT kind, name, latest_version FROM objects WHERE id = ?1");
   statement->bind(1, id);
   if (!statement->step()) return std::nullopt;
-  return ObjectRow{id, statement->columnText(0), statement->columnText(1),
-                   static_cast<int>(statement->columnInt(2))};
+  return ObjectRow{id, statement->columnText(0), statement->columnText(1), static_cast<int>(statement->columnInt(2))};
 }
 
-std::optional<int64_t> idByName(Connection& connection, const std::string& kind,
-                                const std::string& name) {
+std::optional<int64_t> idByName(Connection& connection, const std::string& kind, const std::string& name) {
   auto statement = connection.prepare("SELECT id FROM objects WHERE kind = ?1 AND name = ?2");
   statement->bind(1, kind).bind(2, name);
   if (!statement->step()) return std::nullopt;
@@ -82,8 +79,8 @@ std::vector<int64_t> resolveAll(Connection& connection, const std::vector<Object
 
 // Refuses edges object -> child that would let `object` reach itself: the child is the object or
 // reaches it through the current refs.
-void checkCycles(Connection& connection, const ObjectRow& object,
-                 const std::vector<ObjectReference>& references, const std::vector<int64_t>& children) {
+void checkCycles(Connection& connection, const ObjectRow& object, const std::vector<ObjectReference>& references,
+                 const std::vector<int64_t>& children) {
   auto statement = connection.prepare(
       "WITH RECURSIVE down(id) AS (SELECT CAST(?1 AS BIGINT)"
       " UNION SELECT refs.child_id FROM refs JOIN down ON refs.parent_id = down.id)"
@@ -95,8 +92,7 @@ void checkCycles(Connection& connection, const ObjectRow& object,
     auto child = objectRow(connection, children[i]);
     std::string through = child ? describe(child->kind, child->name, child->id) : "itself";
     throw Error(errc::kReferenceCycle,
-                describe(object.kind, object.name, object.id) + " would contain itself through " +
-                    through,
+                describe(object.kind, object.name, object.id) + " would contain itself through " + through,
                 references[i].path);
   }
 }
@@ -157,17 +153,19 @@ void writeVersion(Connection& connection, const ObjectRow& row, int version, con
       std::optional<int64_t> refId;
       if (node.refIndex >= 0) {
         if (static_cast<size_t>(node.refIndex) >= children.size())
-          throw Error(errc::kInvalidDocument,
-                      "node " + std::to_string(node.index) + " refers to reference " +
-                          std::to_string(node.refIndex) + " of " + std::to_string(children.size()));
+          throw Error(errc::kInvalidDocument, "node " + std::to_string(node.index) + " refers to reference " +
+                                                  std::to_string(node.refIndex) + " of " +
+                                                  std::to_string(children.size()));
         refId = children[static_cast<size_t>(node.refIndex)];
       }
       const int k = 9 * r;
       statement->bind(k + 1, row.id).bind(k + 2, version).bind(k + 3, node.index).bind(k + 4, node.parent);
       statement->bind(k + 5, node.position).bind(k + 6, node.kind);
-      if (node.operatorJson.empty()) statement->bindNull(k + 7); else statement->bind(k + 7, node.operatorJson);
+      if (node.operatorJson.empty()) statement->bindNull(k + 7);
+      else statement->bind(k + 7, node.operatorJson);
       statement->bind(k + 8, refId);
-      if (node.transformJson.empty()) statement->bindNull(k + 9); else statement->bind(k + 9, node.transformJson);
+      if (node.transformJson.empty()) statement->bindNull(k + 9);
+      else statement->bind(k + 9, node.transformJson);
     }
     statement->run();
   }
@@ -179,8 +177,10 @@ void writeVersion(Connection& connection, const ObjectRow& row, int version, con
   const std::vector<int64_t> edges = sortedUnique(children);
   for (size_t from = 0; from < edges.size(); from += sql::kRowsPerStatement) {
     const int rows = static_cast<int>(std::min<size_t>(sql::kRowsPerStatement, edges.size() - from));
-    auto statement = connection.prepare("INSERT INTO refs (parent_id, child_id) VALUES " + sql::rowPlaceholders(rows, 2));
-    for (int r = 0; r < rows; ++r) statement->bind(2 * r + 1, row.id).bind(2 * r + 2, edges[from + static_cast<size_t>(r)]);
+    auto statement =
+        connection.prepare("INSERT INTO refs (parent_id, child_id) VALUES " + sql::rowPlaceholders(rows, 2));
+    for (int r = 0; r < rows; ++r)
+      statement->bind(2 * r + 1, row.id).bind(2 * r + 2, edges[from + static_cast<size_t>(r)]);
     statement->run();
   }
   writeDescriptorRows(connection, row.id, row.kind, object.descriptors);
@@ -195,26 +195,32 @@ void checkKind(const std::string& kind) {
 }
 
 // The record of a write: what get() would return for the new version.
-StoredObject written(const ObjectRow& row, int version, const NewObject& object,
-                     const std::vector<int64_t>& children, const std::string& now) {
-  return StoredObject{row.id, row.kind, row.name, version, version, object.documentJson,
-                      object.contentHash, now, sortedUnique(children)};
+StoredObject written(const ObjectRow& row, int version, const NewObject& object, const std::vector<int64_t>& children,
+                     const std::string& now) {
+  return StoredObject{row.id,
+                      row.kind,
+                      row.name,
+                      version,
+                      version,
+                      object.documentJson,
+                      object.contentHash,
+                      now,
+                      sortedUnique(children)};
 }
 
 // create inside the caller's transaction.
 StoredObject createIn(Connection& connection, const NewObject& object) {
   checkKind(object.kind);
   if (auto existing = idByName(connection, object.kind, object.name))
-    throw Error(errc::kConflict,
-                describe(object.kind, object.name, *existing) + " already exists", "name");
+    throw Error(errc::kConflict, describe(object.kind, object.name, *existing) + " already exists", "name");
   // A new object cannot close a cycle: nothing refers to it yet, and it cannot refer to itself
   // because its id and name are not in the database until the insert below.
   auto children = resolveAll(connection, object.references);
   std::string now = isoNow();
   int64_t id = 0;
   {
-    auto statement = connection.prepare(
-        "INSERT INTO objects (kind, name, latest_version) VALUES (?1, ?2, 1) RETURNING id");
+    auto statement =
+        connection.prepare("INSERT INTO objects (kind, name, latest_version) VALUES (?1, ?2, 1) RETURNING id");
     statement->bind(1, object.kind).bind(2, object.name);
     if (statement->step()) id = statement->columnInt(0);
     statement->run();
@@ -254,8 +260,7 @@ StoredObject putIn(Connection& connection, int64_t id, const NewObject& object, 
   checkVersion(*row, ifVersion);
   if (row->name != object.name)
     throw Error(errc::kConflict,
-                "cannot rename " + describe(row->kind, row->name, id) + " to '" + object.name +
-                    "' by a new version",
+                "cannot rename " + describe(row->kind, row->name, id) + " to '" + object.name + "' by a new version",
                 "name");
   auto children = resolveAll(connection, object.references);
   checkCycles(connection, *row, object.references, children);
@@ -265,8 +270,7 @@ StoredObject putIn(Connection& connection, int64_t id, const NewObject& object, 
   std::string now = isoNow();
   int version = row->latestVersion + 1;
   {
-    auto statement = connection.prepare(
-        "UPDATE objects SET latest_version = ?2 WHERE id = ?1");
+    auto statement = connection.prepare("UPDATE objects SET latest_version = ?2 WHERE id = ?1");
     statement->bind(1, id).bind(2, version);
     statement->run();
   }
@@ -325,13 +329,13 @@ std::optional<StoredObject> loadObject(Connection& connection, const std::string
     auto statement = connection.prepare(std::string(kObjectColumns) +
                                         " AND v.version = COALESCE(?3, o.latest_version) WHERE o.kind = ?2 AND " +
                                         (id ? "o.id = ?1" : "o.name = ?1"));
-    if (id) statement->bind(1, *id); else statement->bind(1, name);
+    if (id) statement->bind(1, *id);
+    else statement->bind(1, name);
     statement->bind(2, kind);
     statement->bind(3, version ? std::optional<int64_t>(*version) : std::nullopt);
     if (statement->step()) object = readObject(*statement);
   }
-  if (object && object->version == object->latestVersion)
-    object->references = referencesOf(connection, object->id);
+  if (object && object->version == object->latestVersion) object->references = referencesOf(connection, object->id);
   return object;
 }
 

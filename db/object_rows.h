@@ -15,7 +15,7 @@ namespace fsdb::object_rows {
 
 // The ids of the objects whose latest version reaches ?1 (its ancestors in refs; ?1 itself only
 // through a cycle), as a subquery. UNION (not UNION ALL) makes the walk terminate whatever the graph.
-#define FSDB_REACHING_SQL                                                 \
+#define FSDB_REACHING_SQL                                                    \
   "WITH RECURSIVE up(id) AS (SELECT parent_id FROM refs WHERE child_id = ?1" \
   " UNION SELECT refs.parent_id FROM refs JOIN up ON refs.child_id = up.id) SELECT id FROM up"
 
@@ -53,8 +53,7 @@ std::vector<int64_t> referencesOf(sql::Connection& connection, int64_t id);
 // (refs holds only the latest version's edges).
 StoredObject readObject(sql::Statement& row);
 // The object of `kind` with this id (or, without one, this name) at `version` (else the latest).
-std::optional<StoredObject> loadObject(sql::Connection& connection, const std::string& kind,
-                                       std::optional<int64_t> id, const std::string& name,
-                                       std::optional<int> version);
+std::optional<StoredObject> loadObject(sql::Connection& connection, const std::string& kind, std::optional<int64_t> id,
+                                       const std::string& name, std::optional<int> version);
 
 }  // namespace fsdb::object_rows

@@ -108,7 +108,8 @@ std::string numberedParameters(const std::string& sql, int& parameterCount) {
     } else if (c == '?' && i + 1 < sql.size() && std::isdigit(static_cast<unsigned char>(sql[i + 1]))) {
       size_t j = i + 1;
       int number = 0;
-      while (j < sql.size() && std::isdigit(static_cast<unsigned char>(sql[j]))) number = number * 10 + (sql[j++] - '0');
+      while (j < sql.size() && std::isdigit(static_cast<unsigned char>(sql[j])))
+        number = number * 10 + (sql[j++] - '0');
       parameterCount = std::max(parameterCount, number);
       out += '$';
       out += sql.substr(i + 1, j - i - 1);

@@ -31,7 +31,9 @@ class Statement {
   virtual Statement& bind(int index, double value) = 0;
   virtual Statement& bind(int index, const std::string& text) = 0;
   Statement& bind(int index, const char* text) { return bind(index, std::string(text)); }
-  Statement& bind(int index, const std::optional<int64_t>& value) { return value ? bind(index, *value) : bindNull(index); }
+  Statement& bind(int index, const std::optional<int64_t>& value) {
+    return value ? bind(index, *value) : bindNull(index);
+  }
   virtual Statement& bindBlob(int index, const std::string& bytes) = 0;  // empty binds a zero-length blob
   virtual Statement& bindNull(int index) = 0;
 

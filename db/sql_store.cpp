@@ -68,18 +68,18 @@ StoredObject SqlStore::put(int64_t id, const NewObject& object, std::optional<in
   return result;
 }
 
-std::vector<int64_t> SqlStore::remove(const std::string& kind, int64_t id, bool cascade,
-                                      std::optional<int> ifVersion) {
+std::vector<int64_t> SqlStore::remove(const std::string& kind, int64_t id, bool cascade, std::optional<int> ifVersion) {
   Lease connection(*this);
   Transaction transaction(*connection);
   auto row = objectRow(*connection, id);
   if (!row || row->kind != kind) throw Error(errc::kNotFound, kind + " " + std::to_string(id) + " not found");
   checkVersion(*row, ifVersion);
   if (!cascade) {
-    auto statement = (*connection).prepare(
-        "SELECT o.id, o.kind, o.name, (SELECT COUNT(*) FROM refs WHERE child_id = ?1)"
-        " FROM refs JOIN objects o ON o.id = refs.parent_id WHERE refs.child_id = ?1"
-        " ORDER BY o.id LIMIT 5");
+    auto statement = (*connection)
+                         .prepare(
+                             "SELECT o.id, o.kind, o.name, (SELECT COUNT(*) FROM refs WHERE child_id = ?1)"
+                             " FROM refs JOIN objects o ON o.id = refs.parent_id WHERE refs.child_id = ?1"
+                             " ORDER BY o.id LIMIT 5");
     statement->bind(1, id);
     std::string users;
     int64_t total = 0;
@@ -94,10 +94,10 @@ std::vector<int64_t> SqlStore::remove(const std::string& kind, int64_t id, bool 
     }
   }
   // One statement for all: refs.child_id has no ON DELETE (NO ACTION), and both engines check
-  // such foreign keys at the end of a statement, when the parents are gone with their children. Versions, normalised rows
-  // and cache rows go by ON DELETE CASCADE. RETURNING names what went, so the walk runs once.
-  auto statement = (*connection).prepare("DELETE FROM objects WHERE id = ?1 OR id IN (" FSDB_REACHING_SQL
-                                         ") RETURNING id");
+  // such foreign keys at the end of a statement, when the parents are gone with their children. Versions, normalised
+  // rows and cache rows go by ON DELETE CASCADE. RETURNING names what went, so the walk runs once.
+  auto statement =
+      (*connection).prepare("DELETE FROM objects WHERE id = ?1 OR id IN (" FSDB_REACHING_SQL ") RETURNING id");
   statement->bind(1, id);
   std::vector<int64_t> removed;
   while (statement->step())
@@ -142,11 +142,14 @@ void SqlStore::storeEvaluation(int64_t objectId, const std::string& key, const C
   Transaction transaction(*connection);
   if (!objectRow(*connection, objectId))
     throw Error(errc::kNotFound, "object " + std::to_string(objectId) + " not found");
-  auto statement = (*connection).prepare(
-      "INSERT INTO eval_cache (key, object_id, result, vdb) VALUES (?1, ?2, ?3, ?4) ON CONFLICT (key)"
-      " DO UPDATE SET object_id = excluded.object_id, result = excluded.result, vdb = excluded.vdb");
+  auto statement =
+      (*connection)
+          .prepare(
+              "INSERT INTO eval_cache (key, object_id, result, vdb) VALUES (?1, ?2, ?3, ?4) ON CONFLICT (key)"
+              " DO UPDATE SET object_id = excluded.object_id, result = excluded.result, vdb = excluded.vdb");
   statement->bind(1, key).bind(2, objectId).bind(3, value.resultJson);
-  if (value.vdb.empty()) statement->bindNull(4); else statement->bindBlob(4, value.vdb);
+  if (value.vdb.empty()) statement->bindNull(4);
+  else statement->bindBlob(4, value.vdb);
   statement->run();
   transaction.commit();
 }
@@ -161,9 +164,8 @@ StoredObject SqlStore::get(const std::string& kind, int64_t id, std::optional<in
   if (auto object = loadObject(*connection, kind, id, "", version)) return *object;
   auto row = objectRow(*connection, id);
   if (row && row->kind == kind && version)
-    throw Error(errc::kNotFound, describe(kind, row->name, id) + " has no version " +
-                                     std::to_string(*version) + " (latest is " +
-                                     std::to_string(row->latestVersion) + ")");
+    throw Error(errc::kNotFound, describe(kind, row->name, id) + " has no version " + std::to_string(*version) +
+                                     " (latest is " + std::to_string(row->latestVersion) + ")");
   throw Error(errc::kNotFound, kind + " " + std::to_string(id) + " not found");
 }
 
@@ -178,14 +180,18 @@ std::vector<StoredObject> SqlStore::list(const ListQuery& query) const {
   Transaction transaction(*connection, Transaction::Mode::kRead);
   std::vector<StoredObject> objects;
   {
-    auto statement = (*connection).prepare(
-        std::string(kObjectColumns) +
-        " AND v.version = COALESCE(?3, o.latest_version)"
-        " WHERE o.kind = ?1 AND (CAST(?2 AS TEXT) IS NULL OR o.name = ?2) AND o.id > ?4 ORDER BY o.id LIMIT ?5");
+    auto statement =
+        (*connection)
+            .prepare(
+                std::string(kObjectColumns) +
+                " AND v.version = COALESCE(?3, o.latest_version)"
+                " WHERE o.kind = ?1 AND (CAST(?2 AS TEXT) IS NULL OR o.name = ?2) AND o.id > ?4 ORDER BY o.id LIMIT ?5");
     statement->bind(1, query.kind);
-    if (query.name) statement->bind(2, *query.name); else statement->bindNull(2);
+    if (query.name) statement->bind(2, *query.name);
+    else statement->bindNull(2);
     // A version only selects with a name (one object); otherwise every object's latest.
-    if (query.name && query.version) statement->bind(3, *query.version); else statement->bindNull(3);
+    if (query.name && query.version) statement->bind(3, *query.version);
+    else statement->bindNull(3);
     statement->bind(4, query.afterId).bind(5, std::max(0, query.limit));
     while (statement->step()) objects.push_back(readObject(*statement));
   }
@@ -231,10 +237,13 @@ ChangeFeed SqlStore::changesSince(int64_t seq) const {
   // the oldest kept one (less the one just before it) may have missed pruned changes. So may one
   // newer than the newest, which has seen another database.
   feed.reset = seq <= 0 || seq > feed.seq || (oldest > 0 && seq < oldest - 1);
-  auto statement = (*connection).prepare(
-      feed.reset ? "SELECT id, kind, name, latest_version FROM objects ORDER BY id"
-                 : "SELECT c.object_id, o.kind, o.name, o.latest_version FROM (SELECT DISTINCT object_id FROM"
-                   " change_log WHERE seq > ?1) c LEFT JOIN objects o ON o.id = c.object_id ORDER BY c.object_id");
+  auto statement =
+      (*connection)
+          .prepare(
+              feed.reset
+                  ? "SELECT id, kind, name, latest_version FROM objects ORDER BY id"
+                  : "SELECT c.object_id, o.kind, o.name, o.latest_version FROM (SELECT DISTINCT object_id FROM"
+                    " change_log WHERE seq > ?1) c LEFT JOIN objects o ON o.id = c.object_id ORDER BY c.object_id");
   if (!feed.reset) statement->bind(1, seq);
   while (statement->step())
     feed.changes.push_back({statement->columnInt(0), statement->columnText(1), statement->columnText(2),
@@ -245,7 +254,7 @@ ChangeFeed SqlStore::changesSince(int64_t seq) const {
 // --- The descriptor index -----------------------------------------------------------------------
 
 std::vector<DescriptorCandidate> SqlStore::descriptorCandidates(const std::string& kind,
-                                                            const DescriptorOverlap& test) const {
+                                                                const DescriptorOverlap& test) const {
   Lease connection(*this);
   Transaction transaction(*connection, Transaction::Mode::kRead);
   return descriptorCandidatesIn(*connection, kind, test);
@@ -256,7 +265,8 @@ std::vector<DescriptorRange> SqlStore::descriptorRanges(const DescriptorOverlap&
   return descriptorRangesIn(*connection, test);
 }
 
-std::vector<DescriptorCandidate> SqlStore::descriptorRangeRows(const std::string& kind, const DescriptorRange& range) const {
+std::vector<DescriptorCandidate> SqlStore::descriptorRangeRows(const std::string& kind,
+                                                               const DescriptorRange& range) const {
   Lease connection(*this);
   std::vector<DescriptorCandidate> rows;
   descriptorRangeRowsIn(*connection, kind, range, rows);
@@ -296,16 +306,20 @@ std::vector<IndexedObject> SqlStore::indexedObjects(const std::string& kind, con
   constexpr int kIdsPerStatement = 64;
   std::string in;
   for (int i = 0; i < kIdsPerStatement; ++i) in += (i ? ", ?" : "?") + std::to_string(i + 2);
-  auto statement = (*connection).prepare(
-      "SELECT o.id, o.name, CASE WHEN p.object_id IS NULL THEN 0 ELSE 1 END, v.component, v.descriptor_values,"
-      " o.latest_version FROM objects o"
-      " LEFT JOIN descriptor_pending p ON p.object_id = o.id LEFT JOIN descriptor_values v ON v.object_id = o.id"
-      " WHERE o.kind = ?1 AND o.id IN (" + in + ")");
+  auto statement =
+      (*connection)
+          .prepare(
+              "SELECT o.id, o.name, CASE WHEN p.object_id IS NULL THEN 0 ELSE 1 END, v.component, v.descriptor_values,"
+              " o.latest_version FROM objects o"
+              " LEFT JOIN descriptor_pending p ON p.object_id = o.id LEFT JOIN descriptor_values v ON v.object_id = o.id"
+              " WHERE o.kind = ?1 AND o.id IN (" +
+              in + ")");
   std::unordered_map<int64_t, IndexedObject> found;
   for (size_t from = 0; from < ids.size(); from += kIdsPerStatement) {
     statement->reset();
     statement->bind(1, kind);
-    for (int i = 0; i < kIdsPerStatement; ++i) statement->bind(i + 2, ids[std::min(ids.size() - 1, from + static_cast<size_t>(i))]);
+    for (int i = 0; i < kIdsPerStatement; ++i)
+      statement->bind(i + 2, ids[std::min(ids.size() - 1, from + static_cast<size_t>(i))]);
     while (statement->step()) {
       const int64_t id = statement->columnInt(0);
       auto [it, fresh] = found.try_emplace(id);
@@ -337,8 +351,10 @@ std::vector<DescriptorComponent> SqlStore::descriptorRows(int64_t id) const {
   Transaction transaction(*connection, Transaction::Mode::kRead);
   std::vector<DescriptorComponent> components;
   {
-    auto statement = (*connection).prepare(
-        "SELECT component, descriptor_values FROM descriptor_values WHERE object_id = ?1 ORDER BY component");
+    auto statement =
+        (*connection)
+            .prepare(
+                "SELECT component, descriptor_values FROM descriptor_values WHERE object_id = ?1 ORDER BY component");
     statement->bind(1, id);
     while (statement->step()) {
       DescriptorComponent component;
@@ -347,9 +363,11 @@ std::vector<DescriptorComponent> SqlStore::descriptorRows(int64_t id) const {
       components.push_back(std::move(component));
     }
   }
-  auto statement = (*connection).prepare(
-      "SELECT component, descriptor, support_lo, core_lo, core_hi, support_hi FROM descriptor_index"
-      " WHERE object_id = ?1 ORDER BY component, descriptor");
+  auto statement =
+      (*connection)
+          .prepare(
+              "SELECT component, descriptor, support_lo, core_lo, core_hi, support_hi FROM descriptor_index"
+              " WHERE object_id = ?1 ORDER BY component, descriptor");
   statement->bind(1, id);
   while (statement->step()) {
     const int c = static_cast<int>(statement->columnInt(0));
@@ -364,9 +382,11 @@ std::vector<DescriptorComponent> SqlStore::descriptorRows(int64_t id) const {
 
 std::vector<PendingDescriptors> SqlStore::pendingDescriptors(int64_t afterId, int limit) const {
   Lease connection(*this);
-  auto statement = (*connection).prepare(
-      "SELECT p.object_id, o.kind, p.generation FROM descriptor_pending p JOIN objects o ON o.id = p.object_id"
-      " WHERE p.object_id > ?1 ORDER BY p.object_id LIMIT ?2");
+  auto statement =
+      (*connection)
+          .prepare(
+              "SELECT p.object_id, o.kind, p.generation FROM descriptor_pending p JOIN objects o ON o.id = p.object_id"
+              " WHERE p.object_id > ?1 ORDER BY p.object_id LIMIT ?2");
   statement->bind(1, afterId).bind(2, std::max(0, limit));
   std::vector<PendingDescriptors> pending;
   while (statement->step())

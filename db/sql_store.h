@@ -35,7 +35,8 @@ class SqlStore : public Store {
   std::vector<DescriptorCandidate> descriptorCandidates(const std::string& kind,
                                                         const DescriptorOverlap& test) const override;
   std::vector<DescriptorRange> descriptorRanges(const DescriptorOverlap& test) const override;
-  std::vector<DescriptorCandidate> descriptorRangeRows(const std::string& kind, const DescriptorRange& range) const override;
+  std::vector<DescriptorCandidate> descriptorRangeRows(const std::string& kind,
+                                                       const DescriptorRange& range) const override;
   std::vector<int64_t> pendingDescriptorIds(const std::string& kind) const override;
   std::vector<int64_t> objectIds(const std::string& kind) const override;
   std::vector<ObjectVersion> objectVersions(const std::string& kind) const override;

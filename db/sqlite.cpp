@@ -15,8 +15,7 @@ void fail(sqlite3* db, const std::string& what) {
 // --- Statement ---------------------------------------------------------------------------------
 
 Statement::Statement(sqlite3* db, const std::string& sql) : db_(db), sql_(sql) {
-  if (sqlite3_prepare_v2(db_, sql.c_str(), static_cast<int>(sql.size() + 1), &stmt_, nullptr) !=
-      SQLITE_OK) {
+  if (sqlite3_prepare_v2(db_, sql.c_str(), static_cast<int>(sql.size() + 1), &stmt_, nullptr) != SQLITE_OK) {
     sqlite3_finalize(stmt_);
     fail(db_, "prepare of '" + sql + "'");
   }
@@ -41,15 +40,12 @@ sql::Statement& Statement::bind(int index, double value) {
 }
 
 sql::Statement& Statement::bind(int index, const std::string& text) {
-  checkBind(db_, sqlite3_bind_text64(stmt_, index, text.data(), text.size(), SQLITE_TRANSIENT,
-                                     SQLITE_UTF8),
-            index);
+  checkBind(db_, sqlite3_bind_text64(stmt_, index, text.data(), text.size(), SQLITE_TRANSIENT, SQLITE_UTF8), index);
   return *this;
 }
 
 sql::Statement& Statement::bindBlob(int index, const std::string& bytes) {
-  checkBind(db_, sqlite3_bind_blob64(stmt_, index, bytes.data(), bytes.size(), SQLITE_TRANSIENT),
-            index);
+  checkBind(db_, sqlite3_bind_blob64(stmt_, index, bytes.data(), bytes.size(), SQLITE_TRANSIENT), index);
   return *this;
 }
 
@@ -133,8 +129,7 @@ void Connection::exec(const std::string& sql) {
 
 StatementRef Connection::prepare(const std::string& sql) {
   auto found = statements_.find(sql);
-  if (found == statements_.end())
-    found = statements_.emplace(sql, std::make_unique<Statement>(db_, sql)).first;
+  if (found == statements_.end()) found = statements_.emplace(sql, std::make_unique<Statement>(db_, sql)).first;
   return StatementRef(*found->second);
 }
 

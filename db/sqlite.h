@@ -22,9 +22,9 @@ struct sqlite3_stmt;
 
 namespace fsdb::sqlite {
 
+using sql::Savepoint;
 using sql::StatementRef;
 using sql::Transaction;
-using sql::Savepoint;
 
 // Throws Error(kStorage, what + " failed: " + sqlite3_errmsg(db)).
 [[noreturn]] void fail(sqlite3* db, const std::string& what);

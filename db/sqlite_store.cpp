@@ -16,8 +16,7 @@ std::unique_ptr<Store> SqliteStore::open(const std::string& path, const StoreOpt
   std::error_code error;
   auto parent = std::filesystem::path(path).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent, error);
-  if (error)
-    throw Error(errc::kStorage, "cannot create the directory of '" + path + "': " + error.message());
+  if (error) throw Error(errc::kStorage, "cannot create the directory of '" + path + "': " + error.message());
   std::unique_ptr<SqliteStore> store(new SqliteStore(path));
   sqlite::ConnectionOptions connectionOptions{options.busyTimeoutMs, options.synchronousFull};
   // The first connection migrates before the others open, so none of them sees an old schema.

@@ -53,10 +53,10 @@ namespace fsdb {
 
 // A reference from a document to another stored object, as written in the document.
 struct ObjectReference {
-  std::string kind;              // "part" or "shape"
-  std::optional<int64_t> id;     // when the document gives an id
-  std::string name;              // when it gives a name
-  std::string path;              // JSON path of the reference, for errors ("tree.children[1].part")
+  std::string kind;           // "part" or "shape"
+  std::optional<int64_t> id;  // when the document gives an id
+  std::string name;           // when it gives a name
+  std::string path;           // JSON path of the reference, for errors ("tree.children[1].part")
 };
 
 // One fuzzy parameter of a part in normalised form (alpha-cuts at 0 and 1).
@@ -69,12 +69,12 @@ struct ParameterSpan {
 struct CsgNodeRow {
   int index = 0;
   int parent = -1;
-  int position = 0;            // child position under the parent (difference is ordered)
-  std::string kind;            // "union", "intersection", "difference", "part" (inline), "ref"
-  std::string operatorJson;    // node operator document, "" for zadeh / leaves
-  int refIndex = -1;           // "ref" leaves: index into NewObject::references (the store
-                               // records the object it resolves to as csg_nodes.ref_id)
-  std::string transformJson;   // the leaf's transform document, "" when none
+  int position = 0;           // child position under the parent (difference is ordered)
+  std::string kind;           // "union", "intersection", "difference", "part" (inline), "ref"
+  std::string operatorJson;   // node operator document, "" for zadeh / leaves
+  int refIndex = -1;          // "ref" leaves: index into NewObject::references (the store
+                              // records the object it resolves to as csg_nodes.ref_id)
+  std::string transformJson;  // the leaf's transform document, "" when none
 };
 
 // One descriptor of one component in normalised form: the support [supportLo, supportHi] and
@@ -97,8 +97,8 @@ struct DescriptorComponent {
 struct NewObject {
   std::string kind;
   std::string name;
-  std::string documentJson;    // canonical JSON text of the document as given
-  std::string contentHash;     // of documentJson (db/content_hash.h)
+  std::string documentJson;  // canonical JSON text of the document as given
+  std::string contentHash;   // of documentJson (db/content_hash.h)
   std::vector<ObjectReference> references;
   std::vector<ParameterSpan> parameters;
   std::vector<CsgNodeRow> nodes;
@@ -109,11 +109,11 @@ struct StoredObject {
   int64_t id = 0;
   std::string kind;
   std::string name;
-  int version = 0;         // the version this record holds
-  int latestVersion = 0;   // the object's newest version
+  int version = 0;        // the version this record holds
+  int latestVersion = 0;  // the object's newest version
   std::string documentJson;
   std::string contentHash;
-  std::string createdAt;   // of this version, ISO 8601 UTC
+  std::string createdAt;            // of this version, ISO 8601 UTC
   std::vector<int64_t> references;  // resolved ids this version refers to (latest version only)
 };
 
@@ -125,9 +125,9 @@ struct ObjectVersion {
 
 struct ListQuery {
   std::string kind;
-  std::optional<std::string> name;   // exact name
-  std::optional<int> version;        // with name: that version (else the latest)
-  int64_t afterId = 0;               // keyset paging: ids greater than this
+  std::optional<std::string> name;  // exact name
+  std::optional<int> version;       // with name: that version (else the latest)
+  int64_t afterId = 0;              // keyset paging: ids greater than this
   int limit = 100;
 };
 
@@ -233,7 +233,7 @@ class Store {
   // The file path, or the URL with any password hidden.
   virtual const std::string& path() const = 0;
   virtual std::string backend() const = 0;  // "sqlite" or "postgresql"
-  virtual int schemaVersion() const = 0;  // highest applied migration
+  virtual int schemaVersion() const = 0;    // highest applied migration
 
   // Creates an object at version 1. conflict when the kind already has a live object of that name.
   virtual StoredObject create(const NewObject& object) = 0;

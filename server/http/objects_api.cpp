@@ -4,10 +4,10 @@
 
 #include "geometry/core/error.h"
 #include "server/http/api.h"
+#include "server/http/http_server.h"
 #include "server/service/bulk_import.h"
 #include "server/service/descriptor_rows.h"
 #include "server/service/documents.h"
-#include "server/http/http_server.h"
 
 namespace fsdb {
 
@@ -114,13 +114,16 @@ void registerKind(HttpServer& server, Store& store, const std::string& kind) {
   const int maxDepth = server.options().limits.maxJsonDepth;
   const RouteOptions write{true, false};
 
-  server.addRoute("POST", base, [&store, kind, limits, base](const ApiRequest& req) {
-    const StoredObject created = store.create(prepareDocument(req.body, kind, store, limits, ""));
-    refreshPendingDescriptors(store, limits.maxNodes);  // a shape with references is written pending
-    ApiResponse out = taggedObject(201, created);
-    out.headers.emplace_back("Location", base + "/" + std::to_string(created.id));
-    return out;
-  }, write);
+  server.addRoute(
+      "POST", base,
+      [&store, kind, limits, base](const ApiRequest& req) {
+        const StoredObject created = store.create(prepareDocument(req.body, kind, store, limits, ""));
+        refreshPendingDescriptors(store, limits.maxNodes);  // a shape with references is written pending
+        ApiResponse out = taggedObject(201, created);
+        out.headers.emplace_back("Location", base + "/" + std::to_string(created.id));
+        return out;
+      },
+      write);
 
   server.addRoute("GET", base, [&store, kind](const ApiRequest& req) {
     ListQuery q;
@@ -148,43 +151,52 @@ void registerKind(HttpServer& server, Store& store, const std::string& kind) {
     return taggedObject(200, store.get(kind, id, versionParam(req)));
   });
 
-  server.addRoute("PUT", base + "/{id}", [&store, kind, limits](const ApiRequest& req) {
-    const int64_t id = positiveInteger(req.pathParams[0], "id");
-    const std::optional<int> ifVersion = ifMatchVersion(req, store, kind, id);
-    nlohmann::json doc = req.body;
-    // The name may be left out: a new version keeps the object's name.
-    if (doc.is_object() && !doc.contains("name")) doc["name"] = store.get(kind, id).name;
-    const NewObject object = prepareDocument(doc, kind, store, limits, "");
-    const StoredObject stored = conditional(store, kind, id, [&] { return store.put(id, object, ifVersion); });
-    refreshPendingDescriptors(store, limits.maxNodes);  // the objects reaching this one are pending
-    return taggedObject(200, stored);
-  }, write);
+  server.addRoute(
+      "PUT", base + "/{id}",
+      [&store, kind, limits](const ApiRequest& req) {
+        const int64_t id = positiveInteger(req.pathParams[0], "id");
+        const std::optional<int> ifVersion = ifMatchVersion(req, store, kind, id);
+        nlohmann::json doc = req.body;
+        // The name may be left out: a new version keeps the object's name.
+        if (doc.is_object() && !doc.contains("name")) doc["name"] = store.get(kind, id).name;
+        const NewObject object = prepareDocument(doc, kind, store, limits, "");
+        const StoredObject stored = conditional(store, kind, id, [&] { return store.put(id, object, ifVersion); });
+        refreshPendingDescriptors(store, limits.maxNodes);  // the objects reaching this one are pending
+        return taggedObject(200, stored);
+      },
+      write);
 
-  server.addRoute("DELETE", base + "/{id}", [&store, kind](const ApiRequest& req) {
-    const int64_t id = positiveInteger(req.pathParams[0], "id");
-    const std::optional<int> ifVersion = ifMatchVersion(req, store, kind, id);
-    const bool cascade = booleanParam(req, "cascade");
-    const std::vector<int64_t> deleted =
-        conditional(store, kind, id, [&] { return store.remove(kind, id, cascade, ifVersion); });
-    return ApiResponse{200, {{"deleted", deleted}}};
-  }, write);
+  server.addRoute(
+      "DELETE", base + "/{id}",
+      [&store, kind](const ApiRequest& req) {
+        const int64_t id = positiveInteger(req.pathParams[0], "id");
+        const std::optional<int> ifVersion = ifMatchVersion(req, store, kind, id);
+        const bool cascade = booleanParam(req, "cascade");
+        const std::vector<int64_t> deleted =
+            conditional(store, kind, id, [&] { return store.remove(kind, id, cascade, ifVersion); });
+        return ApiResponse{200, {{"deleted", deleted}}};
+      },
+      write);
 
-  server.addRoute("POST", base + "/bulk", [&store, kind, limits, maxDepth](const ApiRequest& req) {
-    BulkOptions options;
-    options.kind = kind;
-    options.limits = limits;
-    if (req.hasQueryParam("mode")) {
-      const std::string mode = req.queryParam("mode");
-      if (mode == "create") options.mode = BulkMode::kCreate;
-      else if (mode == "upsert") options.mode = BulkMode::kUpsert;
-      else throw Error(errc::kInvalidParameter, "mode must be create or upsert, got \"" + mode + "\"", "mode");
-    }
-    options.batchSize = req.hasQueryParam("batch")
-                            ? static_cast<size_t>(positiveInteger(req.queryParam("batch"), "batch", kMaxBatch))
-                            : kDefaultBatch;
-    const BulkReport report = importDocuments(store, splitBulkBody(req.rawBody(), maxDepth), options);
-    return ApiResponse{200, report.toJson()};
-  }, RouteOptions{true, true});
+  server.addRoute(
+      "POST", base + "/bulk",
+      [&store, kind, limits, maxDepth](const ApiRequest& req) {
+        BulkOptions options;
+        options.kind = kind;
+        options.limits = limits;
+        if (req.hasQueryParam("mode")) {
+          const std::string mode = req.queryParam("mode");
+          if (mode == "create") options.mode = BulkMode::kCreate;
+          else if (mode == "upsert") options.mode = BulkMode::kUpsert;
+          else throw Error(errc::kInvalidParameter, "mode must be create or upsert, got \"" + mode + "\"", "mode");
+        }
+        options.batchSize = req.hasQueryParam("batch")
+                                ? static_cast<size_t>(positiveInteger(req.queryParam("batch"), "batch", kMaxBatch))
+                                : kDefaultBatch;
+        const BulkReport report = importDocuments(store, splitBulkBody(req.rawBody(), maxDepth), options);
+        return ApiResponse{200, report.toJson()};
+      },
+      RouteOptions{true, true});
 }
 
 }  // namespace

@@ -15,8 +15,8 @@
 #include <cstdlib>
 #include <fstream>
 #include <memory>
-#include <stdexcept>
 #include <random>
+#include <stdexcept>
 #include <string>
 
 #include <unistd.h>
@@ -42,12 +42,12 @@ inline std::string postgresTestUrl() {
 }
 
 // Skips (or under CI fails) the current test when `backend` cannot run here.
-#define FSDB_USE_BACKEND(backend)                                                                         \
-  do {                                                                                                    \
-    if (std::string(backend) == "postgresql" && ::fsdb::test::postgresTestUrl().empty()) {                \
+#define FSDB_USE_BACKEND(backend)                                                                        \
+  do {                                                                                                   \
+    if (std::string(backend) == "postgresql" && ::fsdb::test::postgresTestUrl().empty()) {               \
       if (std::getenv("CI")) FAIL() << "FSDB_TEST_POSTGRES_URL is not set (make test starts a cluster)"; \
-      GTEST_SKIP() << "FSDB_TEST_POSTGRES_URL is not set: run make test, or scripts/pg-test-cluster";      \
-    }                                                                                                     \
+      GTEST_SKIP() << "FSDB_TEST_POSTGRES_URL is not set: run make test, or scripts/pg-test-cluster";    \
+    }                                                                                                    \
   } while (0)
 
 // A URL for a new schema on the test cluster (created by the store at open).

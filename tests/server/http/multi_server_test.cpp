@@ -1,7 +1,8 @@
 // Several `fsdb serve` processes on one database (db/store.h: SQLite file or PostgreSQL; this suite
 // runs on both, tests/CMakeLists.txt): a write through one server is seen through the other at
 // once, even by the structural search's in-memory graphs; ETag / If-Match prevent lost updates;
-// and a soak of 2 servers, 4 writers and 4 readers (60 s, FSDB_MULTI_SERVER_SECONDS to change)
+// and a soak of 2 servers, 4 writers and 4 readers (60 s on PostgreSQL, 15 s on SQLite;
+// FSDB_MULTI_SERVER_SECONDS to change)
 // ends with no 5xx, no lost or duplicated version, and every search answer true of the versions
 // it names.
 #include <gtest/gtest.h>
@@ -39,7 +40,9 @@ json cylinder(const std::string& name) {
 json unionOf(const std::string& name, const std::string& a, const std::string& b) {
   return {{"kind", "shape"},
           {"name", name},
-          {"tree", {{"op", "union"}, {"children", json::array({{{"part", a}}, {{"part", b}, {"transform", {{"translate", {3, 0, 0}}}}}})}}}};
+          {"tree",
+           {{"op", "union"},
+            {"children", json::array({{{"part", a}}, {{"part", b}, {"transform", {{"translate", {3, 0, 0}}}}}})}}}};
 }
 
 double scoreOf(const json& answer, const std::string& name) {
@@ -99,10 +102,12 @@ TEST(MultiServer, IfMatchRefusesAWriteBasedOnAnOldVersion) {
   EXPECT_EQ(cached->status, 304);
 
   // Two clients read version 1; the first PUT wins, the second is 412 and writes nothing.
-  auto first = ca.Put(path.c_str(), httplib::Headers{{"If-Match", "\"1\""}}, rod("bar", true).dump(), "application/json");
+  auto first =
+      ca.Put(path.c_str(), httplib::Headers{{"If-Match", "\"1\""}}, rod("bar", true).dump(), "application/json");
   ASSERT_EQ(first->status, 200) << first->body;
   EXPECT_EQ(first->get_header_value("ETag"), "\"2\"");
-  auto second = cb.Put(path.c_str(), httplib::Headers{{"If-Match", "\"1\""}}, rod("bar", false).dump(), "application/json");
+  auto second =
+      cb.Put(path.c_str(), httplib::Headers{{"If-Match", "\"1\""}}, rod("bar", false).dump(), "application/json");
   ASSERT_EQ(second->status, 412) << second->body;
   const json error = json::parse(second->body)["error"];
   EXPECT_EQ(error["code"], "precondition_failed");
@@ -111,19 +116,27 @@ TEST(MultiServer, IfMatchRefusesAWriteBasedOnAnOldVersion) {
   EXPECT_EQ(a.get(path).json["version"], 2);
 
   // Weak tags never match (strong comparison); "*" and a list holding the current tag do.
-  EXPECT_EQ(cb.Put(path.c_str(), httplib::Headers{{"If-Match", "W/\"2\""}}, rod("bar", false).dump(), "application/json")->status,
-            412);
-  EXPECT_EQ(cb.Put(path.c_str(), httplib::Headers{{"If-Match", "\"1\", \"2\""}}, rod("bar", false).dump(), "application/json")->status,
-            200);
-  EXPECT_EQ(cb.Put(path.c_str(), httplib::Headers{{"If-Match", "*"}}, rod("bar", true).dump(), "application/json")->status, 200);
+  EXPECT_EQ(
+      cb.Put(path.c_str(), httplib::Headers{{"If-Match", "W/\"2\""}}, rod("bar", false).dump(), "application/json")
+          ->status,
+      412);
+  EXPECT_EQ(
+      cb.Put(path.c_str(), httplib::Headers{{"If-Match", "\"1\", \"2\""}}, rod("bar", false).dump(), "application/json")
+          ->status,
+      200);
+  EXPECT_EQ(
+      cb.Put(path.c_str(), httplib::Headers{{"If-Match", "*"}}, rod("bar", true).dump(), "application/json")->status,
+      200);
   EXPECT_EQ(cb.Delete(path.c_str(), httplib::Headers{{"If-Match", "\"3\""}})->status, 412);
   EXPECT_EQ(cb.Delete(path.c_str(), httplib::Headers{{"If-Match", "\"4\""}})->status, 200);
   EXPECT_EQ(a.get(path).status, 404);
 }
 
 TEST(MultiServer, TwoServersFourWritersFourReaders) {
+  // 60 s on PostgreSQL, the backend several servers are meant to share; 15 s on one SQLite file.
   const char* seconds = std::getenv("FSDB_MULTI_SERVER_SECONDS");
-  const auto duration = std::chrono::seconds(seconds ? std::atoi(seconds) : 60);
+  const auto duration =
+      std::chrono::seconds(seconds ? std::atoi(seconds) : fsdb::test::suiteBackend() == "postgresql" ? 60 : 15);
   ServerProcess a({"--threads", "8"});
   ServerProcess b({"--db", a.db(), "--threads", "8"});
   const ServerProcess* servers[2] = {&a, &b};
@@ -177,8 +190,8 @@ TEST(MultiServer, TwoServersFourWritersFourReaders) {
         const httplib::Response* current = answer(read, "GET " + path);
         if (!current) continue;
         const std::string tag = current->get_header_value("ETag");
-        const auto put = writes.Put(path.c_str(), httplib::Headers{{"If-Match", tag}}, rod(name, i % 4 < 2, mark).dump(),
-                                    "application/json");
+        const auto put = writes.Put(path.c_str(), httplib::Headers{{"If-Match", tag}},
+                                    rod(name, i % 4 < 2, mark).dump(), "application/json");
         const httplib::Response* written = answer(put, "PUT " + path);
         if (!written) continue;
         if (written->status == 412) {
@@ -192,8 +205,8 @@ TEST(MultiServer, TwoServersFourWritersFourReaders) {
         }
         const json body = json::parse(written->body, nullptr, false);
         if (!body.is_object() || !body.contains("version")) {
-          fail("PUT " + path + " answered 200 with " + std::to_string(written->body.size()) + " bytes: " +
-               written->body.substr(0, 80) + " (" + written->get_header_value("Content-Encoding") + ")");
+          fail("PUT " + path + " answered 200 with " + std::to_string(written->body.size()) +
+               " bytes: " + written->body.substr(0, 80) + " (" + written->get_header_value("Content-Encoding") + ")");
           continue;
         }
         const int version = body["version"];
@@ -218,7 +231,8 @@ TEST(MultiServer, TwoServersFourWritersFourReaders) {
             ++shapes;
             const auto byName = reads.Get(("/shapes?name=" + shape).c_str());
             const httplib::Response* found = answer(byName, "GET /shapes?name");
-            if (found && json::parse(found->body, nullptr, false).value("items", json::array()).size() != 1) fail("shape " + shape + " not found through the other server");
+            if (found && json::parse(found->body, nullptr, false).value("items", json::array()).size() != 1)
+              fail("shape " + shape + " not found through the other server");
           }
         }
       }
@@ -228,14 +242,14 @@ TEST(MultiServer, TwoServersFourWritersFourReaders) {
       httplib::Client client = servers[r % 2]->client();
       for (int i = 0; std::chrono::steady_clock::now() < deadline; ++i) {
         if (i % 4 == 3) {  // the structural search, whose graphs must follow the other server's writes
-          const auto csg =
-              client.Post("/query/csg", json{{"text", "the union of a bent cylinder and a cylinder"}}.dump(), "application/json");
+          const auto csg = client.Post(
+              "/query/csg", json{{"text", "the union of a bent cylinder and a cylinder"}}.dump(), "application/json");
           const httplib::Response* found = answer(csg, "POST /query/csg");
           if (found && found->status != 200) fail("query/csg: " + std::to_string(found->status) + " " + found->body);
           continue;
         }
-        const auto linguistic =
-            client.Post("/query/linguistic", json{{"text", "find a bent part"}, {"limit", 50}}.dump(), "application/json");
+        const auto linguistic = client.Post(
+            "/query/linguistic", json{{"text", "find a bent part"}, {"limit", 50}}.dump(), "application/json");
         const httplib::Response* found = answer(linguistic, "POST /query/linguistic");
         if (!found) continue;
         if (found->status != 200) {
@@ -270,7 +284,8 @@ TEST(MultiServer, TwoServersFourWritersFourReaders) {
   // Every search answer is true of the version it names (versions never change once written).
   for (const auto& [id, version] : answered) {
     const json stored = a.get("/parts/" + std::to_string(id) + "?version=" + std::to_string(version)).json;
-    EXPECT_EQ(stored["document"]["params"]["kv"], 1.0) << "a search called part " << id << " version " << version << " bent";
+    EXPECT_EQ(stored["document"]["params"]["kv"], 1.0)
+        << "a search called part " << id << " version " << version << " bent";
   }
   EXPECT_GT(acknowledged[ids["contended"]].size(), 10u);
   EXPECT_GT(searches.load(), 10);
