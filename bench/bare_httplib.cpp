@@ -1,8 +1,9 @@
 // The baseline of bench/bench_get_part.sh: a bare cpp-httplib server that answers
-// GET /parts/{id} with a fixed JSON body (the body fsdb returns for a stored part, read from a
-// file), with the same thread pool size fsdb uses, so the difference is fsdb's own work
+// GET /KINDs/{id} with a fixed JSON body (the body fsdb returns for a stored part or shape, read
+// from a file), with the same thread pool size fsdb uses, so the difference is fsdb's own work
 // (routing, SQLite read, JSON build and dump, logging).
-// Usage: bare_httplib BODY.json [THREADS] [nodelay]   prints "listening on http://127.0.0.1:PORT"
+// Usage: bare_httplib BODY.json [THREADS] [nodelay|delay] [KIND]   (KIND: part, the default, or
+// shape) prints "listening on http://127.0.0.1:PORT"
 // "nodelay" sets TCP_NODELAY on accepted sockets (httplib writes headers and body separately;
 // without it Nagle's algorithm and the client's delayed ACK add ~40 ms to keep-alive requests).
 #include <httplib.h>
@@ -32,9 +33,9 @@ int main(int argc, char** argv) {
     if (nodelay) setsockopt(sock, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof(yes));
   });
   server.new_task_queue = [threads] { return new httplib::ThreadPool(threads); };
-  server.Get(R"(/parts/(\d+))", [&body](const httplib::Request&, httplib::Response& res) {
-    res.set_content(body, "application/json");
-  });
+  const std::string kind = argc > 4 ? argv[4] : "part";
+  server.Get("/" + kind + R"(s/(\d+))",
+             [&body](const httplib::Request&, httplib::Response& res) { res.set_content(body, "application/json"); });
   const int port = server.bind_to_any_port("127.0.0.1");
   if (port < 0) return 1;
   std::cout << "listening on http://127.0.0.1:" << port << std::endl;

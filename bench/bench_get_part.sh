@@ -1,53 +1,97 @@
 #!/usr/bin/env bash
-# GET /parts/{id} throughput: `fsdb serve` holding 1000 parts under `wrk -t2 -c16 -d5s` (a Lua
-# script cycles through the 1000 ids), against bench/bare_httplib (a bare cpp-httplib server
-# returning the same JSON body on the same route, same thread pool size) under the same load.
-# Both set TCP_NODELAY.
-# Usage: bench/bench_get_part.sh [BUILD_DIR] [DURATION]   (default build, 5s); one run each.
+# GET /parts/{id} and GET /shapes/{id} throughput: `fsdb serve` holding 1000 parts and 1000
+# shapes (each a union of three of the parts) under `wrk -t2 -c16 -d5s` (a Lua script
+# cycles through the ids), against bench/bare_httplib (a bare cpp-httplib server returning the
+# same JSON body on the same route, same thread pool size) under the same load. Both set
+# TCP_NODELAY. fsdb runs with its request log on (--log-level info: a line per request, the
+# default) and off (warn). REPS rounds, alternating; medians and ratios of medians.
+# Usage: bench/bench_get_part.sh [BUILD_DIR] [DURATION] [REPS]   (default build, 5s, 3)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/service_lib.sh"
 build=$(cd "${1:-build}" && pwd)
 duration=${2:-5s}
-threads=$(python3 -c "import os; print(max(2, os.cpu_count()))")  # fsdb's default --threads
+reps=${3:-3}
+threads=$(python3 -c "import os; print(max(2, os.cpu_count()))")
 work=$(mktemp -d)
 trap 'stop_server; rm -rf "$work"' EXIT
 
 gen_parts 1000 "$work/parts.jsonl"
-"$build/fsdb" import "$work/parts.jsonl" --db "$work/parts.sqlite" 2>/dev/null | tail -1
+python3 - "$work/shapes.jsonl" <<'PY'
+import json, random, sys
+rnd = random.Random(5)
+with open(sys.argv[1], "w") as out:
+    for i in range(1, 1001):
+        picks = rnd.sample(range(1, 1001), 3)
+        children = [{"part": "part-%06d" % p} for p in picks]
+        out.write(json.dumps({"kind": "shape", "name": "shape-%06d" % i,
+                              "tree": {"op": "union", "children": children}}) + "\n")
+PY
+"$build/fsdb" import "$work/parts.jsonl" "$work/shapes.jsonl" --db "$work/objects.sqlite" 2>/dev/null | tail -1
 
-# load NAME URL: wrk on URL cycling the ids; prints one summary line, sets RPS, P50, P99.
-load() {
-  local out
-  out=$(wrk -t2 -c16 -d"$duration" --latency -s "$work/cycle.lua" "$2")
-  RPS=$(awk '/^Requests\/sec:/ {print $2}' <<<"$out")
-  P50=$(awk '$1 == "50%" {print $2}' <<<"$out")
-  P99=$(awk '$1 == "99%" {print $2}' <<<"$out")
-  local errors
-  errors=$(grep -E 'Non-2xx|Socket errors' <<<"$out" || true)
-  printf '%-34s %10s req/s   p50 %8s   p99 %8s   %s\n' "$1" "$RPS" "$P50" "$P99" "$errors"
-}
-
-echo "== GET /parts/{id}, 1000 parts, wrk -t2 -c16 -d$duration, server threads $threads"
-for level in info warn; do
-  start_server "$work/serve-$level.log" "$build/fsdb" --log-level "$level" serve --port 0 \
-    --threads "$threads" --db "$work/parts.sqlite"
-  if [[ ! -f $work/cycle.lua ]]; then
-    curl -sf "$SERVER_URL/parts?limit=1000" | python3 -c '
+# cycle KIND: a wrk script cycling the ids of KIND; body.KIND.json: one answer, for the bare server.
+cycle() {
+  curl -sf "$SERVER_URL/$1s?limit=1000" | python3 -c '
 import json, sys
 ids = [str(o["id"]) for o in json.load(sys.stdin)["items"]]
 print("local ids = {" + ",".join(ids) + "}")
 print("local i = 0")
-print("request = function()\n  i = i % #ids + 1\n  return wrk.format(\"GET\", \"/parts/\" .. ids[i])\nend")
-' >"$work/cycle.lua"
-    curl -sf "$SERVER_URL/parts/$(grep -o '[0-9]\+' "$work/cycle.lua" | head -1)" >"$work/body.json"
-  fi
-  load "fsdb serve (--log-level $level)" "$SERVER_URL"
-  [[ $level == info ]] && fsdb_rps=$RPS
-  stop_server
+print("request = function()\n  i = i % #ids + 1\n  return wrk.format(\"GET\", \"/'"$1"'s/\" .. ids[i])\nend")
+' >"$work/cycle.$1.lua"
+  curl -sf "$SERVER_URL/$1s/$(grep -o '[0-9]\+' "$work/cycle.$1.lua" | head -1)" >"$work/body.$1.json"
+}
+
+# load NAME KIND: wrk on the server cycling KIND's ids; appends "rps p50 p99" (ms) to $work/NAME.
+load() {
+  local out
+  out=$(wrk -t2 -c16 -d"$duration" --latency -s "$work/cycle.$2.lua" "$SERVER_URL")
+  if grep -qE 'Non-2xx|Socket errors' <<<"$out"; then echo "$1: $(grep -E 'Non-2xx|Socket errors' <<<"$out")" >&2; exit 1; fi
+  python3 - "$out" >>"$work/$1" <<'PY'
+import re, sys
+text = sys.argv[1]
+def ms(label):
+    m = re.search(r"^\s*" + label + r"\s+([\d.]+)(us|ms|s)\s*$", text, re.M)
+    return float(m.group(1)) * {"us": 0.001, "ms": 1, "s": 1000}[m.group(2)]
+rps = float(re.search(r"^Requests/sec:\s+([\d.]+)", text, re.M).group(1))
+print(rps, ms("50%"), ms("99%"))
+PY
+}
+
+start_server "$work/setup.log" "$build/fsdb" --log-level warn serve --port 0 --db "$work/objects.sqlite"
+cycle part
+cycle shape
+stop_server
+
+for _ in $(seq 1 "$reps"); do
+  for kind in part shape; do
+    for level in info warn; do
+      start_server "$work/serve.log" "$build/fsdb" --log-level "$level" serve --port 0 --threads "$threads" \
+        --db "$work/objects.sqlite"
+      load "fsdb.$kind.$level" "$kind"
+      stop_server
+    done
+    # The bare server answers the route with the fsdb body (cpp-httplib, same pool size).
+    start_server "$work/bare.log" "$build/bench/bare_httplib" "$work/body.$kind.json" "$threads" nodelay "$kind"
+    load "bare.$kind" "$kind"
+    stop_server
+  done
 done
 
-start_server "$work/bare.log" "$build/bench/bare_httplib" "$work/body.json" "$threads" nodelay
-load "bare cpp-httplib ($(wc -c <"$work/body.json") B body)" "$SERVER_URL"
-stop_server
-python3 -c "print('ratio bare / fsdb (log info) = %.2f' % ($RPS / $fsdb_rps))"
+echo "== GET /{parts,shapes}/{id}, 1000 of each, wrk -t2 -c16 -d$duration, server threads $threads, medians of $reps"
+python3 - "$work" <<'PY'
+import statistics, sys, os
+work = sys.argv[1]
+def med(name, k):
+    rows = [list(map(float, l.split())) for l in open(os.path.join(work, name))]
+    return statistics.median(r[k] for r in rows), [r[0] for r in rows]
+for kind in ("part", "shape"):
+    bare, bare_runs = med("bare." + kind, 0)
+    bare50, bare99 = med("bare." + kind, 1)[0], med("bare." + kind, 2)[0]
+    size = os.path.getsize(os.path.join(work, "body.%s.json" % kind))
+    print("GET /%ss/{id} (%d B body)" % (kind, size))
+    print("  %-30s %8.0f req/s  p50 %6.2f ms  p99 %6.2f ms  runs %s" % ("bare cpp-httplib", bare, bare50, bare99, " ".join("%.0f" % r for r in bare_runs)))
+    for level, what in (("info", "fsdb, request log on (info)"), ("warn", "fsdb, request log off (warn)")):
+        rps, runs = med("fsdb.%s.%s" % (kind, level), 0)
+        p50, p99 = med("fsdb.%s.%s" % (kind, level), 1)[0], med("fsdb.%s.%s" % (kind, level), 2)[0]
+        print("  %-30s %8.0f req/s  p50 %6.2f ms  p99 %6.2f ms  runs %s   %.2fx bare, p99 %.2fx bare" % (what, rps, p50, p99, " ".join("%.0f" % r for r in runs), rps / bare, p99 / bare99))
+PY

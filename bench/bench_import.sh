@@ -1,36 +1,39 @@
 #!/usr/bin/env bash
-# Bulk import rate (docs/s): `fsdb import FILE --db`, `fsdb import FILE --server` (a running
-# `fsdb serve`) and, as the baseline, the sqlite3 shell importing the same lines into a comparable
-# table (id, unique name, JSON document checked by json()) in one transaction.
-# Usage: bench/bench_import.sh [BUILD_DIR] [N]   (default build, 20000); one run each.
+# Bulk import rate (docs/s): `fsdb import FILE --db` (default --batch, and --batch 500),
+# `fsdb import FILE --server` (a running `fsdb serve`) and, as the baseline, the sqlite3 shell
+# importing the same lines into a comparable table (id, unique name, JSON document checked by
+# json()) in one transaction. Each is run REPS times, alternating; medians and ratios of medians.
+# Usage: bench/bench_import.sh [BUILD_DIR] [N] [REPS]   (default build, 20000, 3)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/service_lib.sh"
 build=$(cd "${1:-build}" && pwd)
 n=${2:-20000}
+reps=${3:-3}
 fsdb="$build/fsdb"
 work=$(mktemp -d)
 trap 'stop_server; rm -rf "$work"' EXIT
 
 gen_parts "$n" "$work/parts.jsonl"
-echo "== bulk import of $n part documents ($(du -h "$work/parts.jsonl" | cut -f1))"
+echo "== bulk import of $n part documents ($(du -h "$work/parts.jsonl" | cut -f1)), $reps runs each"
 
-t0=$(now)
-"$fsdb" import "$work/parts.jsonl" --db "$work/direct.sqlite" 2>"$work/direct.log" | tail -1
-t1=$(now)
-direct=$(rate "$n" "$t0" "$t1")
+# timed NAME CMD...: runs CMD (after removing the databases), appends its rate to $work/NAME.
+timed() {
+  local name=$1
+  shift
+  rm -f "$work"/*.sqlite*
+  local t0 t1
+  t0=$(now)
+  "$@" >"$work/$name.out" 2>"$work/$name.log"
+  t1=$(now)
+  grep -q "^imported $n, failed 0" "$work/$name.out" || { echo "$name: $(cat "$work/$name.out")" >&2; exit 1; }
+  rate "$n" "$t0" "$t1" >>"$work/$name.rates"
+}
 
-start_server "$work/serve.log" "$fsdb" serve --port 0 --db "$work/served.sqlite"
-t0=$(now)
-"$fsdb" import "$work/parts.jsonl" --server "$SERVER_URL" 2>"$work/served.log" | tail -1
-t1=$(now)
-stop_server
-served=$(rate "$n" "$t0" "$t1")
-
-# The baseline: the lines into a staging table (.import, tab mode: a line is one field), then
-# into a table like fsdb's objects in the same transaction.
-t0=$(now)
-sqlite3 "$work/shell.sqlite" >/dev/null <<SQL
+shell_import() {
+  # The lines into a staging table (.import, tab mode: a line is one field), then into a table
+  # like fsdb's objects in the same transaction.
+  sqlite3 "$work/shell.sqlite" >/dev/null <<SQL
 PRAGMA journal_mode=WAL;
 CREATE TABLE objects(id INTEGER PRIMARY KEY AUTOINCREMENT, kind TEXT NOT NULL, name TEXT NOT NULL,
                      document TEXT NOT NULL, created_at TEXT NOT NULL, UNIQUE(kind, name));
@@ -43,12 +46,31 @@ INSERT INTO objects(kind, name, document, created_at)
          strftime('%Y-%m-%dT%H:%M:%fZ', 'now') FROM staging;
 COMMIT;
 SQL
-t1=$(now)
-rows=$(sqlite3 "$work/shell.sqlite" 'SELECT count(*) FROM objects')
-[[ $rows == "$n" ]] || { echo "sqlite3 baseline imported $rows rows, expected $n" >&2; exit 1; }
-shell=$(rate "$n" "$t0" "$t1")
+  echo "imported $(sqlite3 "$work/shell.sqlite" 'SELECT count(*) FROM objects'), failed 0"
+}
 
-echo "fsdb import --db:     $direct docs/s"
-echo "fsdb import --server: $served docs/s"
-echo "sqlite3 shell:        $shell docs/s"
-python3 -c "print('ratios: sqlite3 / --db = %.1f, sqlite3 / --server = %.1f' % ($shell / $direct, $shell / $served))"
+served_import() {
+  start_server "$work/serve.log" "$fsdb" --log-level warn serve --port 0 --db "$work/served.sqlite"
+  "$fsdb" import "$work/parts.jsonl" --server "$SERVER_URL" "$@"
+  stop_server
+}
+
+for _ in $(seq 1 "$reps"); do
+  timed direct "$fsdb" import "$work/parts.jsonl" --db "$work/direct.sqlite"
+  timed direct500 "$fsdb" import "$work/parts.jsonl" --db "$work/direct.sqlite" --batch 500
+  timed served served_import
+  timed shell shell_import
+done
+
+median() { sort -n "$work/$1.rates" | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
+shell=$(median shell)
+report() {
+  local m
+  m=$(median "$1")
+  printf '%-36s %7s docs/s (median; runs: %s)   %.3fx the sqlite3 shell\n' "$2" "$m" \
+    "$(paste -sd' ' "$work/$1.rates")" "$(python3 -c "print($m / $shell)")"
+}
+report direct "fsdb import --db"
+report direct500 "fsdb import --db --batch 500"
+report served "fsdb import --server"
+printf '%-36s %7s docs/s (median; runs: %s)\n' "sqlite3 shell" "$shell" "$(paste -sd' ' "$work/shell.rates")"

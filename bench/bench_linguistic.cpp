@@ -7,8 +7,8 @@
 //                         scripts/run-benchmarks can run it; it then measures 100000 parts)
 // A catalogue is built once per size into DIR/parts-N.sqlite (default build/bench-data) and
 // reused by later runs: random parts (seeded) go through the same code as POST /parts/bulk
-// (prepareDocument: validation, parameter spans, describePart, descriptor rows) and are written
-// with Store::createBatch in transactions of 10000, so the database is what an import makes.
+// (importDocuments: prepareDocument's validation, describePart and descriptor rows on all cores,
+// Store::createBatch in transactions of 10000), so the database is what an import makes.
 // Every query runs R times indexed and S times as a scan; both answers must be equal.
 #include <algorithm>
 #include <chrono>
@@ -21,9 +21,10 @@
 
 #include "bench/bench_stats.h"
 #include "db/store.h"
-#include "query/linguistic/linguistic_query.h"
 #include "query/document/part_json.h"
+#include "query/linguistic/linguistic_query.h"
 #include "query/linguistic/vocabulary.h"
+#include "server/service/bulk_import.h"
 #include "server/service/documents.h"
 #include "server/service/linguistic_search.h"
 
@@ -67,21 +68,23 @@ void build(const std::string& path, size_t n) {
   auto store = fsdb::Store::open(tmp);
   std::mt19937 rng(42);
   const auto start = Clock::now();
-  const size_t batch = 10000;
-  for (size_t done = 0; done < n;) {
-    std::vector<fsdb::NewObject> items;
-    for (size_t i = 0; i < batch && done < n; ++i, ++done) {
-      nlohmann::json doc = fsdb::partToJson(randomPart(rng));
-      doc["kind"] = "part";
-      char name[32];
-      std::snprintf(name, sizeof name, "part-%07zu", done + 1);
-      doc["name"] = name;
-      items.push_back(fsdb::prepareDocument(doc, "part", *store, fsdb::DocumentLimits{}, ""));
-    }
-    store->createBatch(items, fsdb::BulkMode::kCreate);
-    if (done % 100000 == 0 || done == n)
-      std::fprintf(stderr, "  %zu parts, %.0f s\n", done, msSince(start) / 1000);
+  std::vector<fsdb::BulkLine> lines;
+  lines.reserve(n);
+  for (size_t i = 0; i < n; ++i) {
+    nlohmann::json doc = fsdb::partToJson(randomPart(rng));
+    doc["kind"] = "part";
+    char name[32];
+    std::snprintf(name, sizeof name, "part-%07zu", i + 1);
+    doc["name"] = name;
+    lines.push_back({i + 1, std::move(doc), nullptr});
   }
+  fsdb::BulkOptions options;
+  options.batchSize = 10000;
+  options.progress = [&](size_t done, size_t) {
+    if (done % 100000 == 0 || done == n) std::fprintf(stderr, "  %zu parts, %.0f s\n", done, msSince(start) / 1000);
+  };
+  const fsdb::BulkReport report = fsdb::importDocuments(*store, lines, options);
+  if (report.failed > 0) throw fsdb::Error(fsdb::errc::kStorage, "catalogue: " + report.errors[0].dump());
   store->checkpoint();
   store.reset();
   std::filesystem::rename(tmp, path);
@@ -89,11 +92,11 @@ void build(const std::string& path, size_t n) {
 }
 
 const std::vector<std::string> kQueries = {
-    "find a very twisted part",                   // selective: a tenth twisted, few very
-    "find a slightly bent part",                  // a fifth bent
-    "find a very tapered and slightly bent part", // and of two selective conditions
-    "find a very round part",                     // broad: exponents near 1
-    "find a big part",                            // broad: most parts have some size
+    "find a very twisted part",                    // selective: a tenth twisted, few very
+    "find a slightly bent part",                   // a fifth bent
+    "find a very tapered and slightly bent part",  // and of two selective conditions
+    "find a very round part",                      // broad: exponents near 1
+    "find a big part",                             // broad: most parts have some size
 };
 
 }  // namespace
@@ -111,10 +114,9 @@ int main(int argc, char** argv) {
       const std::string path = dir + "/parts-" + std::to_string(n) + ".sqlite";
       if (!std::filesystem::exists(path)) build(path, n);
       auto store = fsdb::Store::open(path);
-      std::printf("== %zu parts (%s, %.0f MB)\n", n, path.c_str(),
-                  std::filesystem::file_size(path) / 1e6);
-      std::printf("%-45s %9s %9s %9s %10s %7s %9s %6s\n", "query", "hits", "cands", "p50 ms", "p95 ms",
-                  "scan ms", "ratio", "equal");
+      std::printf("== %zu parts (%s, %.0f MB)\n", n, path.c_str(), std::filesystem::file_size(path) / 1e6);
+      std::printf("%-45s %9s %9s %9s %10s %7s %9s %6s\n", "query", "hits", "cands", "p50 ms", "p95 ms", "scan ms",
+                  "ratio", "equal");
       for (const std::string& text : kQueries) {
         const fsdb::LinguisticQuery q = fsdb::parseLinguisticQuery(text, fsdb::Vocabulary::builtin());
         fsdb::LinguisticSearchOptions options;
@@ -129,9 +131,17 @@ int main(int argc, char** argv) {
         std::printf("%-45s %9zu %9zu %9.2f %10.2f %7.0f %8.1fx %6s\n", ("\"" + text + "\"").c_str(), a.hits.size(),
                     a.candidates, c.p50, c.p95, c.refP50, c.ratio(), c.equal ? "yes" : "NO");
         std::fflush(stdout);
-        report.push_back({{"parts", n}, {"query", text}, {"candidates", a.candidates}, {"scanned", b.candidates},
-                          {"p50_ms", c.p50}, {"p95_ms", c.p95}, {"scan_p50_ms", c.refP50}, {"ratio", c.ratio()},
-                          {"equal", c.equal}, {"reps", reps}, {"scan_reps", scanReps}});
+        report.push_back({{"parts", n},
+                          {"query", text},
+                          {"candidates", a.candidates},
+                          {"scanned", b.candidates},
+                          {"p50_ms", c.p50},
+                          {"p95_ms", c.p95},
+                          {"scan_p50_ms", c.refP50},
+                          {"ratio", c.ratio()},
+                          {"equal", c.equal},
+                          {"reps", reps},
+                          {"scan_reps", scanReps}});
         if (!c.equal) {
           std::cerr << "indexed and scan answers differ for \"" << text << "\"\n";
           return 1;

@@ -27,9 +27,10 @@ int widthClass(double width);
 // The least support_lo a row of class c can have and still meet [lo, ...]: lo - 2^c rounded down.
 double lowestSupportLo(double lo, int widthClass);
 
-// Replaces the rows of `objectId` (of `kind`) with `components`.
+// Replaces the rows of `objectId` (of `kind`) with `components`. fresh: the object was created in
+// this transaction, so it has no rows to delete (ids are never reused) and the deletes are skipped.
 void writeDescriptorRows(sql::Connection& connection, int64_t objectId, const std::string& kind,
-                         const std::vector<DescriptorComponent>& components);
+                         const std::vector<DescriptorComponent>& components, bool fresh = false);
 // Marks `objectId` pending with a new generation (higher than any before).
 void markDescriptorsPending(sql::Connection& connection, int64_t objectId);
 // Clears the mark of `objectId` (its rows were just written from what the write stored).

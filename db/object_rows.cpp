@@ -119,28 +119,18 @@ std::vector<int64_t> sortedUnique(std::vector<int64_t> ids) {
 }
 
 // Writes version `version` of object `row` (whose objects row exists) with its normalised rows,
-// and makes its edges those of `children`.
+// and makes its edges those of `children`. Version 1 is a new object: an id is never reused, so
+// it has no edges, descriptor rows or pending mark to replace, and those deletes are skipped
+// (four of the eight statements a part's creation ran).
 void writeVersion(Connection& connection, const ObjectRow& row, int version, const NewObject& object,
                   const std::vector<int64_t>& children, const std::string& now) {
+  const bool fresh = version == 1;
   {
     auto statement = connection.prepare(
         "INSERT INTO versions (object_id, version, document, content_hash, created_at)"
         " VALUES (?1, ?2, ?3, ?4, ?5)");
     statement->bind(1, row.id).bind(2, version).bind(3, object.documentJson);
     statement->bind(4, object.contentHash).bind(5, now);
-    statement->run();
-  }
-  for (size_t from = 0; from < object.parameters.size(); from += sql::kRowsPerStatement) {
-    const int rows = static_cast<int>(std::min<size_t>(sql::kRowsPerStatement, object.parameters.size() - from));
-    auto statement = connection.prepare(
-        "INSERT INTO part_parameters (object_id, version, name, support_lo, core_lo, core_hi, support_hi) VALUES " +
-        sql::rowPlaceholders(rows, 7));
-    for (int r = 0; r < rows; ++r) {
-      const ParameterSpan& p = object.parameters[from + static_cast<size_t>(r)];
-      const int k = 7 * r;
-      statement->bind(k + 1, row.id).bind(k + 2, version).bind(k + 3, p.name).bind(k + 4, p.supportLo);
-      statement->bind(k + 5, p.coreLo).bind(k + 6, p.coreHi).bind(k + 7, p.supportHi);
-    }
     statement->run();
   }
   for (size_t from = 0; from < object.nodes.size(); from += sql::kRowsPerStatement) {
@@ -169,7 +159,7 @@ void writeVersion(Connection& connection, const ObjectRow& row, int version, con
     }
     statement->run();
   }
-  {
+  if (!fresh) {
     auto statement = connection.prepare("DELETE FROM refs WHERE parent_id = ?1");
     statement->bind(1, row.id);
     statement->run();
@@ -183,11 +173,12 @@ void writeVersion(Connection& connection, const ObjectRow& row, int version, con
       statement->bind(2 * r + 1, row.id).bind(2 * r + 2, edges[from + static_cast<size_t>(r)]);
     statement->run();
   }
-  writeDescriptorRows(connection, row.id, row.kind, object.descriptors);
+  writeDescriptorRows(connection, row.id, row.kind, object.descriptors, fresh);
   // Rows computed from referenced documents the caller read before this transaction may already
   // be stale: the server recomputes them after the commit (db/store.h, the descriptor index).
-  if (object.references.empty()) clearDescriptorsPending(connection, row.id);
-  else markDescriptorsPending(connection, row.id);
+  if (object.references.empty()) {
+    if (!fresh) clearDescriptorsPending(connection, row.id);
+  } else markDescriptorsPending(connection, row.id);
 }
 
 void checkKind(const std::string& kind) {
@@ -320,22 +311,33 @@ StoredObject readObject(sql::Statement& row) {
   return object;
 }
 
-// The object of `kind` with this id (or, without one, this name) at `version` (else the latest).
+// The object of `kind` with this id (or, without one, this name) at `version` (else the latest),
+// with the latest version's references, in one statement: one snapshot without a transaction
+// (GET /parts/{id} is this statement alone).
 std::optional<StoredObject> loadObject(Connection& connection, const std::string& kind, std::optional<int64_t> id,
                                        const std::string& name, std::optional<int> version) {
-  std::optional<StoredObject> object;
-  {
-    // Two statements, not one with OR, so each is a plain index lookup.
-    auto statement = connection.prepare(std::string(kObjectColumns) +
-                                        " AND v.version = COALESCE(?3, o.latest_version) WHERE o.kind = ?2 AND " +
-                                        (id ? "o.id = ?1" : "o.name = ?1"));
-    if (id) statement->bind(1, *id);
-    else statement->bind(1, name);
-    statement->bind(2, kind);
-    statement->bind(3, version ? std::optional<int64_t>(*version) : std::nullopt);
-    if (statement->step()) object = readObject(*statement);
+  // The children as "3,5,9" (no order is promised inside the aggregate: sorted below).
+  const char* children = connection.dialect() == sql::Dialect::kSqlite
+                             ? "(SELECT group_concat(child_id) FROM refs WHERE parent_id = o.id)"
+                             : "(SELECT string_agg(CAST(child_id AS TEXT), ',') FROM refs WHERE parent_id = o.id)";
+  // Two statements (by id, by name), not one with OR, so each is a plain index lookup.
+  auto statement = connection.prepare(
+      std::string(kObjectSelect) + ", CASE WHEN v.version = o.latest_version THEN " + children + " END" + kObjectFrom +
+      " AND v.version = COALESCE(?3, o.latest_version) WHERE o.kind = ?2 AND " + (id ? "o.id = ?1" : "o.name = ?1"));
+  if (id) statement->bind(1, *id);
+  else statement->bind(1, name);
+  statement->bind(2, kind);
+  statement->bind(3, version ? std::optional<int64_t>(*version) : std::nullopt);
+  if (!statement->step()) return std::nullopt;
+  StoredObject object = readObject(*statement);
+  const std::string list = statement->columnText(8);
+  for (size_t at = 0; at < list.size();) {
+    size_t end = list.find(',', at);
+    if (end == std::string::npos) end = list.size();
+    object.references.push_back(std::stoll(list.substr(at, end - at)));
+    at = end + 1;
   }
-  if (object && object->version == object->latestVersion) object->references = referencesOf(connection, object->id);
+  std::sort(object.references.begin(), object.references.end());
   return object;
 }
 

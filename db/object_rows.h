@@ -19,10 +19,14 @@ namespace fsdb::object_rows {
   "WITH RECURSIVE up(id) AS (SELECT parent_id FROM refs WHERE child_id = ?1" \
   " UNION SELECT refs.parent_id FROM refs JOIN up ON refs.child_id = up.id) SELECT id FROM up"
 
-// The columns readObject reads, joined for one version.
-constexpr const char* kObjectColumns =
-    "SELECT o.id, o.kind, o.name, o.latest_version, v.version, v.document, v.content_hash,"
-    " v.created_at FROM objects o JOIN versions v ON v.object_id = o.id";
+// The columns readObject reads (kObjectSelect, to which a query may add its own after them),
+// joined for one version (kObjectFrom); kObjectColumns is the two together.
+#define FSDB_OBJECT_SELECT \
+  "SELECT o.id, o.kind, o.name, o.latest_version, v.version, v.document, v.content_hash, v.created_at"
+#define FSDB_OBJECT_FROM " FROM objects o JOIN versions v ON v.object_id = o.id"
+constexpr const char* kObjectSelect = FSDB_OBJECT_SELECT;
+constexpr const char* kObjectFrom = FSDB_OBJECT_FROM;
+constexpr const char* kObjectColumns = FSDB_OBJECT_SELECT FSDB_OBJECT_FROM;
 
 // The objects row of one object.
 struct ObjectRow {

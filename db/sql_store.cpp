@@ -160,8 +160,9 @@ void SqlStore::storeEvaluation(int64_t objectId, const std::string& key, const C
 
 StoredObject SqlStore::get(const std::string& kind, int64_t id, std::optional<int> version) const {
   Lease connection(*this);
-  Transaction transaction(*connection, Transaction::Mode::kRead);
+  // One statement (its own snapshot): no transaction to begin and end.
   if (auto object = loadObject(*connection, kind, id, "", version)) return *object;
+  // Not there: why, for the message (a write in between can only make it more precise).
   auto row = objectRow(*connection, id);
   if (row && row->kind == kind && version)
     throw Error(errc::kNotFound, describe(kind, row->name, id) + " has no version " + std::to_string(*version) +
@@ -171,7 +172,6 @@ StoredObject SqlStore::get(const std::string& kind, int64_t id, std::optional<in
 
 std::optional<StoredObject> SqlStore::find(const ObjectReference& reference) const {
   Lease connection(*this);
-  Transaction transaction(*connection, Transaction::Mode::kRead);
   return loadObject(*connection, reference.kind, reference.id, reference.name, std::nullopt);
 }
 

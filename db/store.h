@@ -17,8 +17,8 @@
 //   stored once (shared subtrees; Zhang, Pham & Chen, §4). A reference always means the child's
 //   latest version. Unknown references are 422 unknown_reference (path = the reference's JSON
 //   path); an edge that would close a cycle is 422 reference_cycle.
-// - Normalised columns beside the document: per version, the fuzzy parameters of a part
-//   (support and core of each, for SQL prefilters) and the CSG nodes of a shape (for structural
+// - Normalised columns beside the document: per version, the CSG nodes of a shape (for
+//   structural search), and for the latest version the descriptor index rows (linguistic
 //   search). The caller (server/, which owns the parsers) computes them; the store only keeps them.
 // - Evaluation cache: results of evaluating a shape keyed by a caller-made key (content hash of
 //   the resolved document + resolution + alphas + method). Any write to an object drops the cache
@@ -59,12 +59,6 @@ struct ObjectReference {
   std::string path;           // JSON path of the reference, for errors ("tree.children[1].part")
 };
 
-// One fuzzy parameter of a part in normalised form (alpha-cuts at 0 and 1).
-struct ParameterSpan {
-  std::string name;  // "eps1", ..., "t", "translate.x", "rotate.deg", "scale"
-  double supportLo = 0, coreLo = 0, coreHi = 0, supportHi = 0;
-};
-
 // One node of a shape's CSG tree in pre-order; the root has parent -1.
 struct CsgNodeRow {
   int index = 0;
@@ -100,7 +94,6 @@ struct NewObject {
   std::string documentJson;  // canonical JSON text of the document as given
   std::string contentHash;   // of documentJson (db/content_hash.h)
   std::vector<ObjectReference> references;
-  std::vector<ParameterSpan> parameters;
   std::vector<CsgNodeRow> nodes;
   std::vector<DescriptorComponent> descriptors;  // the descriptor index rows of this version
 };

@@ -9,8 +9,8 @@
 
 #include "db/store.h"
 #include "geometry/core/error.h"
-#include "server/service/bulk_import.h"
 #include "server/cli/file_io.h"
+#include "server/service/bulk_import.h"
 
 namespace fsdb {
 namespace {
@@ -54,50 +54,102 @@ void printErrors(const std::string& file, const nlohmann::json& errors) {
   }
 }
 
-// The kind a line will be imported as: its "kind", or "part" for a line the server will reject
-// anyway (so errors still come back with the line number).
+// Finds a document's top-level "kind" without building the document: stops at its value.
+class KindFinder : public nlohmann::json_sax<nlohmann::json> {
+ public:
+  std::string kind;
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t& s) override {
+    if (depth_ == 1 && atKind_) {
+      kind = s;
+      return false;  // found: stop parsing
+    }
+    return value();
+  }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override { return open(); }
+  bool end_object() override { return --depth_ > 0; }
+  bool start_array(std::size_t) override { return depth_ > 0 && open(); }
+  bool end_array() override { return --depth_ > 0; }
+  bool key(string_t& k) override {
+    atKind_ = depth_ == 1 && k == "kind";
+    return true;
+  }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+
+ private:
+  bool value() { return !(depth_ == 1 && atKind_); }  // "kind" that is not a string: stop
+  bool open() {
+    if (depth_ == 1 && atKind_) return false;
+    ++depth_;
+    atKind_ = false;
+    return true;
+  }
+  int depth_ = 0;
+  bool atKind_ = false;
+};
+
 // The route a line goes to: its own kind when it names shape, curve or surface; parts otherwise
-// (lines without a kind are parts; a bad kind is refused by /parts/bulk with its line number).
-std::string kindOfLine(const BulkLine& line) {
-  if (line.document.is_object() && line.document.contains("kind"))
-    for (const char* kind : {"shape", "curve", "surface"})
-      if (line.document["kind"] == kind) return kind;
+// (lines without a kind are parts; a bad kind or a line that is not JSON is refused by
+// /parts/bulk with its line number).
+std::string kindOfLine(const std::string& text) {
+  KindFinder finder;
+  nlohmann::json::sax_parse(text, &finder);
+  for (const char* kind : {"shape", "curve", "surface"})
+    if (finder.kind == kind) return kind;
   return "part";
 }
 
-BulkReport importThroughServer(const std::vector<BulkLine>& lines, const ImportOptions& options,
-                               Progress& progress, size_t doneBefore) {
+BulkReport importThroughServer(const std::string& body, const ImportOptions& options, Progress& progress,
+                               size_t doneBefore) {
   httplib::Client client(options.serverUrl);
   client.set_read_timeout(600, 0);
   httplib::Headers headers;
   if (!options.token.empty()) headers.emplace("Authorization", "Bearer " + options.token);
   BulkReport report;
+  // An array file goes as it is, one request per kind run of its elements (re-serialised).
+  std::vector<std::string> texts;
+  std::vector<size_t> numbers;
+  if (isJsonArrayBody(body)) {
+    for (BulkLine& l : splitBulkBody(body, kFileJsonDepth)) {
+      texts.push_back(l.document.dump());
+      numbers.push_back(l.line);
+    }
+  } else {
+    for (const LineSpan& span : lineSpans(body)) {
+      texts.push_back(body.substr(span.begin, span.end - span.begin));
+      numbers.push_back(span.line);
+    }
+  }
+  std::vector<std::string> kinds(texts.size());
+  for (size_t k = 0; k < texts.size(); ++k) kinds[k] = kindOfLine(texts[k]);
   size_t i = 0;
-  while (i < lines.size()) {
-    // A run of lines of one kind, at most one batch long, keeping file order.
-    const std::string kind = kindOfLine(lines[i]);
-    std::string body;
+  while (i < texts.size()) {
+    // A run of lines of one kind, at most one batch long, keeping file order. Lines go as they
+    // are in the file: the server parses and validates them.
+    const std::string& kind = kinds[i];
+    std::string request;
     std::vector<size_t> lineNumbers;
     size_t j = i;
-    for (; j < lines.size() && j - i < options.batchSize && kindOfLine(lines[j]) == kind; ++j) {
-      // Lines that are not JSON were found while splitting the file: report them here.
-      if (!lines[j].parseError.is_null()) {
-        report.addFailure(lines[j].line, lines[j].parseError);
-        continue;
-      }
-      body += lines[j].document.dump() + "\n";
-      lineNumbers.push_back(lines[j].line);
+    for (; j < texts.size() && j - i < options.batchSize && kinds[j] == kind; ++j) {
+      request += texts[j];
+      request += '\n';
+      lineNumbers.push_back(numbers[j]);
     }
-    if (!lineNumbers.empty()) {
-      const std::string path = "/" + kind + "s/bulk?mode=" + options.mode +
-                               "&batch=" + std::to_string(options.batchSize);
-      auto res = client.Post(path, headers, body, "application/x-ndjson");
-      if (!res) throw Error(errc::kStorage, "cannot reach " + options.serverUrl + ": " + httplib::to_string(res.error()), "");
+    {
+      const std::string path =
+          "/" + kind + "s/bulk?mode=" + options.mode + "&batch=" + std::to_string(options.batchSize);
+      auto res = client.Post(path, headers, request, "application/x-ndjson");
+      if (!res)
+        throw Error(errc::kStorage, "cannot reach " + options.serverUrl + ": " + httplib::to_string(res.error()), "");
       const nlohmann::json answer = nlohmann::json::parse(res->body, nullptr, false);
       if (res->status != 200 || !answer.is_object() || !answer.contains("imported")) {
-        const std::string message = answer.is_object() && answer.contains("error")
-                                        ? answer["error"].value("message", res->body)
-                                        : res->body;
+        const std::string message =
+            answer.is_object() && answer.contains("error") ? answer["error"].value("message", res->body) : res->body;
         throw Error(errc::kStorage, "server answered " + std::to_string(res->status) + ": " + message, "");
       }
       report.imported += answer["imported"].get<size_t>();
@@ -124,15 +176,21 @@ int runImport(const ImportOptions& options) {
   try {
     std::unique_ptr<Store> store;
     if (options.serverUrl.empty()) store = Store::open(options.dbPath);
-    std::vector<std::pair<std::string, std::vector<BulkLine>>> files;
+    // Every file is read (and an array file parsed) before anything is imported, so a file
+    // that cannot be read or an array that is not JSON stops the import before its first write.
+    std::vector<std::pair<std::string, std::string>> files;
+    std::vector<size_t> counts;
     size_t total = 0;
     for (const std::string& f : options.files) {
-      files.emplace_back(f, splitBulkBody(readTextFile(f, "FILE"), kFileJsonDepth));
-      total += files.back().second.size();
+      files.emplace_back(f, readTextFile(f, "FILE"));
+      const std::string& body = files.back().second;
+      counts.push_back(isJsonArrayBody(body) ? splitBulkBody(body, kFileJsonDepth).size() : lineSpans(body).size());
+      total += counts.back();
     }
     Progress progress(total);
     size_t done = 0;
-    for (const auto& [file, lines] : files) {
+    for (size_t f = 0; f < files.size(); ++f) {
+      const auto& [file, body] = files[f];
       BulkReport report;
       if (store) {
         BulkOptions bulk;
@@ -140,11 +198,11 @@ int runImport(const ImportOptions& options) {
         bulk.batchSize = options.batchSize;
         const size_t before = done;
         bulk.progress = [&progress, before](size_t d, size_t) { progress.update(before + d); };
-        report = importDocuments(*store, lines, bulk);
+        report = importBody(*store, body, kFileJsonDepth, bulk);
       } else {
-        report = importThroughServer(lines, options, progress, done);
+        report = importThroughServer(body, options, progress, done);
       }
-      done += lines.size();
+      done += counts[f];
       printErrors(file, report.errors);
       imported += report.imported;
       failed += report.failed;

@@ -17,11 +17,11 @@ namespace fsdb {
 
 struct ImportOptions {
   std::vector<std::string> files;
-  std::string dbPath;     // used when serverUrl is empty
-  std::string serverUrl;  // http://host:port
-  std::string token;      // bearer token for --server (or FSDB_TOKEN)
+  std::string dbPath;           // used when serverUrl is empty
+  std::string serverUrl;        // http://host:port
+  std::string token;            // bearer token for --server (or FSDB_TOKEN)
   std::string mode = "create";  // create | upsert
-  size_t batchSize = 500;
+  size_t batchSize = 5000;      // docs/api.md: --batch
 };
 
 int runImport(const ImportOptions& options);

@@ -95,7 +95,7 @@ auto conditional(const Store& store, const std::string& kind, int64_t id, Write 
 
 // A stored object's answer with its version's tag.
 ApiResponse taggedObject(int status, const StoredObject& object) {
-  ApiResponse out{status, storedObjectJson(object)};
+  ApiResponse out{status, nullptr, storedObjectText(object), "application/json"};
   out.headers.emplace_back("ETag", versionTag(object.version));
   return out;
 }
@@ -138,12 +138,13 @@ void registerKind(HttpServer& server, Store& store, const std::string& kind) {
                   ? static_cast<int>(positiveInteger(req.queryParam("limit"), "limit", kMaxListLimit))
                   : kDefaultListLimit;
     const std::vector<StoredObject> found = store.list(q);
-    nlohmann::json items = nlohmann::json::array();
-    for (const StoredObject& o : found) items.push_back(storedObjectJson(o));
+    // {"items":[...],"next_after":...} with each item spliced as text (storedObjectText).
+    std::string body = "{\"items\":[";
+    for (size_t i = 0; i < found.size(); ++i) body += (i ? "," : "") + storedObjectText(found[i]);
     // Keyset paging: a full page may have more after it.
-    nlohmann::json next = nullptr;
-    if (static_cast<int>(found.size()) == q.limit && !found.empty()) next = found.back().id;
-    return ApiResponse{200, {{"items", items}, {"next_after", next}}};
+    const bool more = static_cast<int>(found.size()) == q.limit && !found.empty();
+    body += "],\"next_after\":" + (more ? std::to_string(found.back().id) : std::string("null")) + "}";
+    return ApiResponse{200, nullptr, std::move(body), "application/json"};
   });
 
   server.addRoute("GET", base + "/{id}", [&store, kind](const ApiRequest& req) {
@@ -193,7 +194,7 @@ void registerKind(HttpServer& server, Store& store, const std::string& kind) {
         options.batchSize = req.hasQueryParam("batch")
                                 ? static_cast<size_t>(positiveInteger(req.queryParam("batch"), "batch", kMaxBatch))
                                 : kDefaultBatch;
-        const BulkReport report = importDocuments(store, splitBulkBody(req.rawBody(), maxDepth), options);
+        const BulkReport report = importBody(store, req.rawBody(), maxDepth, options);
         return ApiResponse{200, report.toJson()};
       },
       RouteOptions{true, true});

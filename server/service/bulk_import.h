@@ -31,6 +31,16 @@ struct BulkLine {
   nlohmann::json parseError;  // {"code","message","path"} when it is not
 };
 
+// A body whose first non-blank byte is '[': one JSON array of documents, not JSON Lines.
+bool isJsonArrayBody(const std::string& body);
+
+// A non-blank line of a JSON Lines body: its number (from 1, blank lines counted) and its bytes
+// [begin, end) in the body.
+struct LineSpan {
+  size_t line, begin, end;
+};
+std::vector<LineSpan> lineSpans(const std::string& body);
+
 // Splits a body into documents. A body whose first non-blank byte is '[' is a JSON array
 // (malformed: one malformed_json error for the whole body, thrown); otherwise JSON Lines,
 // each line parsed separately (errors recorded on the line, never thrown).
@@ -48,15 +58,23 @@ struct BulkOptions {
 struct BulkReport {
   size_t imported = 0;
   size_t failed = 0;
-  std::vector<int64_t> ids;  // of the imported lines, in line order
+  std::vector<int64_t> ids;                         // of the imported lines, in line order
   nlohmann::json errors = nlohmann::json::array();  // [{"line":k,"error":{"code","message","path"}}]
-  nlohmann::json toJson() const;  // {"imported","failed","ids","errors"}
+  nlohmann::json toJson() const;                    // {"imported","failed","ids","errors"}
   // Counts a failed line and records its error ({"code","message","path"}).
   void addFailure(size_t line, nlohmann::json error);
   // Errors in line order (failures are found per batch, validation before storage).
   void sortErrors();
 };
 
+// Imports `lines` (splitBulkBody's), `options.batchSize` lines a transaction. Within a batch the
+// lines are parsed and validated on all cores (TBB) while the batch before is written by one
+// thread; shapes, whose references may name earlier lines, are validated by the writer in line
+// order. Throws fsdb::Error (storage_error) when a batch cannot commit: every batch before it is
+// stored and was reported through `progress`.
 BulkReport importDocuments(Store& store, const std::vector<BulkLine>& lines, const BulkOptions& options);
+// The same for a whole body (splitBulkBody's forms, same line numbers); JSON Lines are parsed
+// a batch at a time inside the pipeline, so only the batches in flight are held as documents.
+BulkReport importBody(Store& store, const std::string& body, int maxJsonDepth, const BulkOptions& options);
 
 }  // namespace fsdb

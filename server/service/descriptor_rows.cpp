@@ -3,6 +3,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <mutex>
@@ -62,9 +63,20 @@ std::vector<DescriptorComponent> rowsOfDocument(const Store& store, const Stored
   return shapeDescriptorRows(storedShapeComponents(store, object.documentJson, maxNodes));
 }
 
-}  // namespace
+// Two encodings (docs/design/linguistic-search.md, "Stored values"). Both keep every breakpoint
+// exactly (x and mu as IEEE doubles), so a decoded value equals (operator==) the encoded one.
+// - v1 (rows written before the compact form): u32 count, then per value u16 name length, the
+//   name, u32 point count, and (x, mu) as two doubles per point. About 2.1 KB for a fuzzy part,
+//   which is one row per 4 KiB page.
+// - v2 (written now): the byte kCompactTag (a v1 blob starts with its count, at most a few
+//   dozen), u8 level count L, L doubles (the distinct mu of the blob: describePart's are the
+//   levels k/16 and the parameters' breakpoint levels), u8 value count, then per value u8 name
+//   index in descriptorNames() (kNamedValue: u16 length and the name follow), u16 point count,
+//   and per point x as a double and u8 index of its mu. About 1.2 KB: three rows a page.
+constexpr uint8_t kCompactTag = 0xFF;
+constexpr uint8_t kNamedValue = 0xFF;
 
-std::string encodeDescriptorValues(const std::vector<DescriptorValue>& values) {
+std::string encodeV1(const std::vector<DescriptorValue>& values) {
   std::string out;
   put<uint32_t>(out, static_cast<uint32_t>(values.size()));
   for (const DescriptorValue& v : values) {
@@ -80,8 +92,7 @@ std::string encodeDescriptorValues(const std::vector<DescriptorValue>& values) {
   return out;
 }
 
-std::vector<DescriptorValue> decodeDescriptorValues(const std::string& bytes) {
-  Reader in(bytes);
+std::vector<DescriptorValue> decodeV1(Reader& in) {
   std::vector<DescriptorValue> values(in.count(sizeof(uint16_t) + sizeof(uint32_t)));
   for (DescriptorValue& v : values) {
     v.descriptor = in.text(in.get<uint16_t>());
@@ -93,6 +104,82 @@ std::vector<DescriptorValue> decodeDescriptorValues(const std::string& bytes) {
     // The breakpoints are canonical already, so fromPoints keeps them as they are.
     v.value = FuzzyNumber::fromPoints(points);
   }
+  return values;
+}
+
+std::vector<DescriptorValue> decodeV2(Reader& in) {
+  std::vector<double> levels(in.get<uint8_t>());
+  for (double& level : levels) level = in.get<double>();
+  const auto& names = descriptorNames();
+  std::vector<DescriptorValue> values(in.get<uint8_t>());
+  for (DescriptorValue& v : values) {
+    const uint8_t name = in.get<uint8_t>();
+    if (name == kNamedValue) v.descriptor = in.text(in.get<uint16_t>());
+    else if (name < names.size()) v.descriptor = names[name];
+    else throw Error(errc::kStorage, "a descriptor_values row is corrupt");
+    std::vector<Breakpoint> points(in.get<uint16_t>());
+    for (Breakpoint& p : points) {
+      p.x = in.get<double>();
+      const uint8_t level = in.get<uint8_t>();
+      if (level >= levels.size()) throw Error(errc::kStorage, "a descriptor_values row is corrupt");
+      p.mu = levels[level];
+    }
+    v.value = FuzzyNumber::fromPoints(points);
+  }
+  return values;
+}
+
+}  // namespace
+
+std::string encodeDescriptorValues(const std::vector<DescriptorValue>& values) {
+  std::vector<double> levels;
+  for (const DescriptorValue& v : values)
+    for (const Breakpoint& p : v.value.breakpoints()) levels.push_back(p.mu);
+  std::sort(levels.begin(), levels.end());
+  levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+  const auto fitsCompact = [&] {
+    if (levels.size() > 255 || values.size() > 255) return false;
+    for (const DescriptorValue& v : values)
+      if (v.value.breakpoints().size() > UINT16_MAX || v.descriptor.size() > UINT16_MAX) return false;
+    return true;
+  };
+  if (!fitsCompact()) {
+    // Over 255 distinct levels: points-form parameters with many levels. A v1 blob starts with
+    // its count, which must then not read as the tag (11 values a component: it never does).
+    if ((values.size() & 0xFF) == kCompactTag) throw Error(errc::kStorage, "too many descriptor values to encode");
+    return encodeV1(values);
+  }
+  std::string out;
+  put<uint8_t>(out, kCompactTag);
+  put<uint8_t>(out, static_cast<uint8_t>(levels.size()));
+  for (double level : levels) put<double>(out, level);
+  put<uint8_t>(out, static_cast<uint8_t>(values.size()));
+  for (const DescriptorValue& v : values) {
+    const int name = descriptorIndex(v.descriptor);
+    if (name >= 0 && name < kNamedValue) {
+      put<uint8_t>(out, static_cast<uint8_t>(name));
+    } else {
+      put<uint8_t>(out, kNamedValue);
+      put<uint16_t>(out, static_cast<uint16_t>(v.descriptor.size()));
+      out += v.descriptor;
+    }
+    const std::vector<Breakpoint>& points = v.value.breakpoints();
+    put<uint16_t>(out, static_cast<uint16_t>(points.size()));
+    for (const Breakpoint& p : points) {
+      put<double>(out, p.x);
+      // Bitwise equal levels only (sorted, deduplicated by ==; -0.0 == 0.0 is the one merge,
+      // and a mu is never negative zero after canonical breakpoints).
+      put<uint8_t>(out, static_cast<uint8_t>(std::lower_bound(levels.begin(), levels.end(), p.mu) - levels.begin()));
+    }
+  }
+  return out;
+}
+
+std::vector<DescriptorValue> decodeDescriptorValues(const std::string& bytes) {
+  Reader in(bytes);
+  const bool compact = !bytes.empty() && static_cast<uint8_t>(bytes[0]) == kCompactTag;
+  if (compact) in.get<uint8_t>();
+  std::vector<DescriptorValue> values = compact ? decodeV2(in) : decodeV1(in);
   if (!in.done()) throw Error(errc::kStorage, "a descriptor_values row has trailing bytes");
   return values;
 }

@@ -7,8 +7,8 @@
 #include "geometry/superquadric/fuzzy_part.h"
 #include "query/document/bezier_json.h"
 #include "query/document/curve_document.h"
-#include "query/json/json_body.h"
 #include "query/document/part_json.h"
+#include "query/json/json_body.h"
 #include "server/service/descriptor_rows.h"
 #include "server/service/limits.h"
 
@@ -27,19 +27,6 @@ void checkName(const nlohmann::json& doc, const std::string& path) {
     if (c < 0x20 || c == 0x7f) throw Error(errc::kInvalidDocument, "name must not contain control characters", np);
 }
 
-ParameterSpan span(const std::string& name, const FuzzyNumber& n) {
-  const Interval support = n.support(), core = n.core();
-  return {name, support.lo, core.lo, core.hi, support.hi};
-}
-
-std::vector<ParameterSpan> parameterSpans(const FuzzyPart& p) {
-  return {span("eps1", p.eps1), span("eps2", p.eps2), span("a1", p.a1),
-          span("a2", p.a2),     span("a3", p.a3),     span("kx", p.kx),
-          span("ky", p.ky),     span("kv", p.kv),     span("t", p.t),
-          span("translate.x", p.tx), span("translate.y", p.ty), span("translate.z", p.tz),
-          span("rotate.deg", p.deg), span("scale", p.scale)};
-}
-
 ObjectReference objectReference(const DocumentReference& r) {
   ObjectReference out;
   out.kind = r.kind;
@@ -55,6 +42,10 @@ std::string dumpOrEmpty(const nlohmann::json& j) { return j.is_null() ? std::str
 
 void PendingDocuments::add(const std::string& kind, const std::string& name, const nlohmann::json& document) {
   documents_[{kind, name}] = document;
+}
+
+void PendingDocuments::add(const std::string& kind, const std::string& name, nlohmann::json&& document) {
+  documents_[{kind, name}] = std::move(document);
 }
 
 const nlohmann::json* PendingDocuments::find(const std::string& kind, const std::string& name) const {
@@ -110,7 +101,6 @@ NewObject prepareDocument(const nlohmann::json& document, const std::string& kin
     else parseSurfaceDocument(doc, path, bezier);
   } else if (kind == "part") {
     const FuzzyPart part = parsePart(doc, path);
-    out.parameters = parameterSpans(part);
     out.descriptors = partDescriptorRows(part);
   } else {
     // Validates everything, references included, and keeps the resolved tree (csg text parsed).
@@ -136,15 +126,23 @@ NewObject prepareDocument(const nlohmann::json& document, const std::string& kin
   return out;
 }
 
-nlohmann::json storedObjectJson(const StoredObject& object) {
-  return {{"id", object.id},
-          {"kind", object.kind},
-          {"name", object.name},
-          {"version", object.version},
-          {"latest_version", object.latestVersion},
-          {"created_at", object.createdAt},
-          {"content_hash", object.contentHash},
-          {"document", nlohmann::json::parse(object.documentJson)}};
+std::string storedObjectText(const StoredObject& object) {
+  const auto text = [](const std::string& s) {
+    return nlohmann::json(s).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  };
+  // Keys in nlohmann's order (sorted), as the dump of the object's JSON writes them.
+  std::string out;
+  out.reserve(object.documentJson.size() + object.name.size() + 160);
+  out += "{\"content_hash\":" + text(object.contentHash);
+  out += ",\"created_at\":" + text(object.createdAt);
+  out += ",\"document\":";
+  out += object.documentJson;
+  out += ",\"id\":" + std::to_string(object.id);
+  out += ",\"kind\":" + text(object.kind);
+  out += ",\"latest_version\":" + std::to_string(object.latestVersion);
+  out += ",\"name\":" + text(object.name);
+  out += ",\"version\":" + std::to_string(object.version) + "}";
+  return out;
 }
 
 }  // namespace fsdb

@@ -45,6 +45,7 @@ DocumentLimits documentLimits(const ServerLimits& limits);
 class PendingDocuments {
  public:
   void add(const std::string& kind, const std::string& name, const nlohmann::json& document);
+  void add(const std::string& kind, const std::string& name, nlohmann::json&& document);
   const nlohmann::json* find(const std::string& kind, const std::string& name) const;
 
  private:
@@ -59,8 +60,12 @@ NewObject prepareDocument(const nlohmann::json& document, const std::string& kin
                           const DocumentLimits& limits, const std::string& path,
                           const PendingDocuments* pending = nullptr);
 
-// The JSON the API returns for a stored version:
-//   {"id","kind","name","version","latest_version","created_at","content_hash","document"}
-nlohmann::json storedObjectJson(const StoredObject& object);
+// The JSON the API returns for a stored version, as text:
+//   {"content_hash","created_at","document","id","kind","latest_version","name","version"}
+// byte for byte the dump of that object built with nlohmann::json, written without parsing
+// the document: the stored text is spliced in as it is (it is nlohmann's compact dump of the
+// parsed document, keys sorted, which parsing and dumping again reproduces). GET /parts/{id}
+// answers with it (docs/performance.md, "Service: import and reads").
+std::string storedObjectText(const StoredObject& object);
 
 }  // namespace fsdb

@@ -35,16 +35,17 @@ TEST(EmbeddedMigrations, StartWithInitAtVersionOne) {
 TEST_F(MigrationsTest, AppliesEmbeddedSchema) {
   EXPECT_EQ(schemaVersionOf(db), 0);
   EXPECT_EQ(applyMigrations(db, embeddedMigrations()), embeddedMigrations().back().first);
-  for (const char* table : {"objects", "versions", "refs", "part_parameters", "csg_nodes", "eval_cache"})
+  for (const char* table : {"objects", "versions", "refs", "csg_nodes", "eval_cache", "descriptor_index", "change_log"})
     EXPECT_TRUE(hasTable(db, table)) << table;
+  EXPECT_FALSE(hasTable(db, "part_parameters"));  // 005: written by every part, read by nothing
   // Idempotent: a second run applies nothing and fails on nothing.
   EXPECT_EQ(applyMigrations(db, embeddedMigrations()), embeddedMigrations().back().first);
 }
 
 TEST_F(MigrationsTest, AppliesInVersionOrderAndOnlyNewOnes) {
   // Given out of order: 2 needs 1's table.
-  std::vector<std::pair<int, std::string>> migrations = {
-      {2, "INSERT INTO log VALUES ('two')"}, {1, "CREATE TABLE log (what TEXT)"}};
+  std::vector<std::pair<int, std::string>> migrations = {{2, "INSERT INTO log VALUES ('two')"},
+                                                         {1, "CREATE TABLE log (what TEXT)"}};
   EXPECT_EQ(applyMigrations(db, migrations), 2);
   migrations.push_back({3, "INSERT INTO log VALUES ('three')"});
   EXPECT_EQ(applyMigrations(db, migrations), 3);
@@ -54,10 +55,9 @@ TEST_F(MigrationsTest, AppliesInVersionOrderAndOnlyNewOnes) {
 }
 
 TEST_F(MigrationsTest, FailedMigrationLeavesPreviousVersion) {
-  std::vector<std::pair<int, std::string>> migrations = {
-      {1, "CREATE TABLE a (x)"}, {2, "CREATE TABLE b (x); INSERT INTO nowhere VALUES (1)"}};
-  FSDB_EXPECT_CONTAINS(expectError([&] { applyMigrations(db, migrations); }, errc::kStorage),
-                       "migration 2");
+  std::vector<std::pair<int, std::string>> migrations = {{1, "CREATE TABLE a (x)"},
+                                                         {2, "CREATE TABLE b (x); INSERT INTO nowhere VALUES (1)"}};
+  FSDB_EXPECT_CONTAINS(expectError([&] { applyMigrations(db, migrations); }, errc::kStorage), "migration 2");
   EXPECT_EQ(schemaVersionOf(db), 1);
   EXPECT_TRUE(hasTable(db, "a"));
   EXPECT_FALSE(hasTable(db, "b"));  // rolled back with its transaction

@@ -4,10 +4,10 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/db/temp_dir.h"
-#include "tests/db/test_database.h"
 #include "geometry/core/error.h"
 #include "server/service/documents.h"
+#include "tests/db/temp_dir.h"
+#include "tests/db/test_database.h"
 
 namespace fsdb {
 namespace {
@@ -69,8 +69,8 @@ TEST(ImportDocuments, GoodLinesOfABatchWithBadOnesCommitAndErrorsNameTheirLines)
 TEST(ImportDocuments, AShapeMayUseAPartFromAnEarlierLineOfTheSameBatch) {
   TempDir dir;
   auto store = Store::open(test::storeLocation(dir, "db.sqlite"));
-  const std::string body = part("p", 1) + "\n" +
-                           json{{"kind", "shape"}, {"name", "s"}, {"tree", {{"part", "p"}}}}.dump();
+  const std::string body =
+      part("p", 1) + "\n" + json{{"kind", "shape"}, {"name", "s"}, {"tree", {{"part", "p"}}}}.dump();
   const BulkReport r = importDocuments(*store, splitBulkBody(body, 64), {});
   EXPECT_EQ(r.imported, 2u) << r.toJson().dump();
   const StoredObject s = store->get("shape", r.ids[1]);
@@ -109,18 +109,18 @@ TEST(ImportDocuments, WithoutARouteKindEachLineNeedsItsKind) {
 TEST(PrepareDocument, FillsKindChecksNamesAndComputesNormalisedColumns) {
   TempDir dir;
   auto store = Store::open(test::storeLocation(dir, "db.sqlite"));
-  NewObject p = prepareDocument(json{{"name", "p"}, {"params", {{"a1", {{"tri", {1, 2, 3}}}}}}}, "part", *store, nodeLimit(10), "");
+  NewObject p = prepareDocument(json{{"name", "p"}, {"params", {{"a1", {{"tri", {1, 2, 3}}}}}}}, "part", *store,
+                                nodeLimit(10), "");
   EXPECT_EQ(json::parse(p.documentJson)["kind"], "part");
-  ASSERT_EQ(p.parameters.size(), 14u);
-  EXPECT_EQ(p.parameters[2].name, "a1");
-  EXPECT_DOUBLE_EQ(p.parameters[2].supportLo, 1);
-  EXPECT_DOUBLE_EQ(p.parameters[2].coreLo, 2);
-  EXPECT_DOUBLE_EQ(p.parameters[2].supportHi, 3);
+  ASSERT_EQ(p.descriptors.size(), 1u);  // a part: one component
+  EXPECT_FALSE(p.descriptors[0].spans.empty());
+  EXPECT_FALSE(p.descriptors[0].values.empty());
   EXPECT_FALSE(p.contentHash.empty());
   store->create(p);
 
   NewObject s = prepareDocument(
-      json{{"name", "s"}, {"tree", {{"op", "union"}, {"children", {{{"part", "p"}}, {{"part", {{"params", {{"a1", 1}}}}}}}}}}},
+      json{{"name", "s"},
+           {"tree", {{"op", "union"}, {"children", {{{"part", "p"}}, {{"part", {{"params", {{"a1", 1}}}}}}}}}}},
       "shape", *store, nodeLimit(10), "");
   ASSERT_EQ(s.nodes.size(), 3u);
   EXPECT_EQ(s.nodes[1].kind, "ref");
@@ -168,14 +168,15 @@ TEST(PrepareDocument, EachKindIsLimitedByItsOwnOption) {
   const std::string curve = limitError({{"name", "c4"}, {"bezier", {{"control_points", four}}}}, "curve");
   EXPECT_EQ(curve.rfind("limit_exceeded bezier.control_points: ", 0), 0u) << curve;
   EXPECT_NE(curve.find("max_control_points=3"), std::string::npos) << curve;
-  const std::string surface =
-      limitError({{"name", "s4"}, {"bezier", {{"control_grid", {{{0, 0, 0}, {1, 0, 0}}, {{0, 1, 0}, {1, 1, 0}}}}}}}, "surface");
+  const std::string surface = limitError(
+      {{"name", "s4"}, {"bezier", {{"control_grid", {{{0, 0, 0}, {1, 0, 0}}, {{0, 1, 0}, {1, 1, 0}}}}}}}, "surface");
   EXPECT_NE(surface.find("max_control_points=3"), std::string::npos) << surface;
   EXPECT_EQ(limitError({{"name", "f3"}, {"fair", {{"points", three}}}}, "curve"), "no error");
   const std::string fair = limitError({{"name", "f4"}, {"fair", {{"points", four}}}}, "curve");
   EXPECT_EQ(fair.rfind("limit_exceeded fair.points: ", 0), 0u) << fair;
   EXPECT_NE(fair.find("max_fair_points=3"), std::string::npos) << fair;
-  const json tree = {{"op", "union"}, {"children", {{{"part", {{"params", {{"a1", 1}}}}}}, {{"part", {{"params", {{"a1", 2}}}}}}}}};
+  const json tree = {{"op", "union"},
+                     {"children", {{{"part", {{"params", {{"a1", 1}}}}}}, {{"part", {{"params", {{"a1", 2}}}}}}}}};
   const std::string shape = limitError({{"name", "s"}, {"tree", tree}}, "shape");
   EXPECT_NE(shape.find("max_nodes=2"), std::string::npos) << shape;
 }
@@ -183,7 +184,8 @@ TEST(PrepareDocument, EachKindIsLimitedByItsOwnOption) {
 TEST(StoreResolver, FindsStoredObjectsByNameOrIdAndPendingOnesFirst) {
   TempDir dir;
   auto store = Store::open(test::storeLocation(dir, "db.sqlite"));
-  const StoredObject p = store->create(prepareDocument(json{{"name", "p"}, {"params", {{"a1", 1}}}}, "part", *store, nodeLimit(10), ""));
+  const StoredObject p =
+      store->create(prepareDocument(json{{"name", "p"}, {"params", {{"a1", 1}}}}, "part", *store, nodeLimit(10), ""));
   PendingDocuments pending;
   pending.add("part", "q", json{{"params", {{"a1", 2}}}});
   const ReferenceResolver resolve = storeResolver(*store, &pending);
@@ -196,10 +198,38 @@ TEST(StoreResolver, FindsStoredObjectsByNameOrIdAndPendingOnesFirst) {
   EXPECT_FALSE(resolve("part", 2.5));
   EXPECT_EQ(pending.find("part", "nope"), nullptr);
 
-  const json out = storedObjectJson(store->get("part", p.id));
+  const json out = json::parse(storedObjectText(store->get("part", p.id)));
   EXPECT_EQ(out["id"], p.id);
   EXPECT_EQ(out["version"], 1);
   EXPECT_EQ(out["document"]["params"]["a1"], 1);
+}
+
+// The text GET answers is what building the JSON and dumping it would give, byte for byte:
+// names that need escaping, non-ASCII text, numbers of every form in the document.
+TEST(StoredObjectText, IsTheDumpOfTheObjectsJson) {
+  TempDir dir;
+  auto store = Store::open(test::storeLocation(dir, "db.sqlite"));
+  const json docs[] = {json{{"name", "plain"}, {"params", {{"a1", 1}}}},
+                       json{{"name", "quote \" back\\slash / tab\u00e9 \u4e2d"},
+                            {"meta", {{"note", "line\u2028sep"}, {"big", 1e21}, {"tiny", -2.5e-300}}},
+                            {"params", {{"a1", {{"tri", {2.5e-7, 1.0 / 3, 0.7}}}}, {"eps1", 1.5}}}},
+                       json{{"name", "zz"},
+                            {"descriptors", {"slightly bent"}},
+                            {"params", {{"a1", 2}, {"kx", -0.0}, {"a2", 1.25}}},
+                            {"meta", {{"n", 123456789012}}}}};
+  for (const json& doc : docs) {
+    const StoredObject stored =
+        store->get("part", store->create(prepareDocument(doc, "part", *store, nodeLimit(10), "")).id);
+    const json expected = {{"id", stored.id},
+                           {"kind", stored.kind},
+                           {"name", stored.name},
+                           {"version", stored.version},
+                           {"latest_version", stored.latestVersion},
+                           {"created_at", stored.createdAt},
+                           {"content_hash", stored.contentHash},
+                           {"document", json::parse(stored.documentJson)}};
+    EXPECT_EQ(storedObjectText(stored), expected.dump()) << doc.dump();
+  }
 }
 
 }  // namespace
