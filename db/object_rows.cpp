@@ -341,4 +341,15 @@ std::optional<StoredObject> loadObject(Connection& connection, const std::string
   return object;
 }
 
+std::string indexedObjectsSql(sql::Dialect dialect, int ids) {
+  std::string in;
+  for (int i = 0; i < ids; ++i) in += (i ? ", ?" : "?") + std::to_string(i + 2);
+  return std::string(
+             "SELECT o.id, o.name, CASE WHEN p.object_id IS NULL THEN 0 ELSE 1 END, v.component, v.descriptor_values,"
+             " o.latest_version FROM objects o"
+             " LEFT JOIN descriptor_pending p ON p.object_id = o.id LEFT JOIN descriptor_values v ON v.object_id = o.id"
+             " WHERE ") +
+         (dialect == sql::Dialect::kSqlite ? "+o.kind" : "o.kind") + " = ?1 AND o.id IN (" + in + ")";
+}
+
 }  // namespace fsdb::object_rows

@@ -304,16 +304,7 @@ std::vector<IndexedObject> SqlStore::indexedObjects(const std::string& kind, con
   // rows come from one statement, which sees one snapshot, and BEGIN and COMMIT would be two more
   // round trips per call (the search calls this per chunk of 64).
   constexpr int kIdsPerStatement = 64;
-  std::string in;
-  for (int i = 0; i < kIdsPerStatement; ++i) in += (i ? ", ?" : "?") + std::to_string(i + 2);
-  auto statement =
-      (*connection)
-          .prepare(
-              "SELECT o.id, o.name, CASE WHEN p.object_id IS NULL THEN 0 ELSE 1 END, v.component, v.descriptor_values,"
-              " o.latest_version FROM objects o"
-              " LEFT JOIN descriptor_pending p ON p.object_id = o.id LEFT JOIN descriptor_values v ON v.object_id = o.id"
-              " WHERE o.kind = ?1 AND o.id IN (" +
-              in + ")");
+  auto statement = (*connection).prepare(indexedObjectsSql((*connection).dialect(), kIdsPerStatement));
   std::unordered_map<int64_t, IndexedObject> found;
   for (size_t from = 0; from < ids.size(); from += kIdsPerStatement) {
     statement->reset();

@@ -3,7 +3,6 @@
 #include <httplib.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <csignal>
@@ -25,7 +24,6 @@
 #include "server/cli/file_io.h"
 #include "server/http/http_server.h"
 #include "server/cli/import_command.h"
-#include "server/cli/log_sink.h"
 #include "server/cli/query_command.h"
 
 namespace {
@@ -169,25 +167,7 @@ int runServe(const fsdb::ServerOptions& options, const std::string& dbPath, cons
 }  // namespace
 
 int main(int argc, char** argv) {
-  // On a terminal, colours and every line at once; otherwise (a server's log file or journal)
-  // lines are buffered and written every second, at once for warnings and errors
-  // (server/cli/log_sink.h): a request then never waits on a write to stderr.
-  if (isatty(STDERR_FILENO) == 1) {
-    spdlog::set_default_logger(spdlog::stderr_color_mt("fsdb"));
-  } else {
-    spdlog::set_default_logger(
-        std::make_shared<spdlog::logger>("fsdb", std::make_shared<fsdb::BufferedFdSink>(STDERR_FILENO)));
-    spdlog::flush_on(spdlog::level::warn);
-    // The flusher's thread starts now and must not take SIGINT/SIGTERM, which `serve` waits for
-    // in a thread of its own (a signal goes to any thread that does not block it).
-    sigset_t shutdown, previous;
-    sigemptyset(&shutdown);
-    sigaddset(&shutdown, SIGINT);
-    sigaddset(&shutdown, SIGTERM);
-    pthread_sigmask(SIG_BLOCK, &shutdown, &previous);
-    spdlog::flush_every(std::chrono::seconds(1));
-    pthread_sigmask(SIG_SETMASK, &previous, nullptr);
-  }
+  spdlog::set_default_logger(spdlog::stderr_color_mt("fsdb"));
   spdlog::set_pattern("%Y-%m-%dT%H:%M:%S.%e %^%l%$ %v");
 
   CLI::App app{"fsdb: a fuzzy shape database server"};
@@ -332,12 +312,10 @@ int main(int argc, char** argv) {
   spdlog::set_level(spdlog::level::from_str(logLevel));
 
   // Before the demo is loaded and anything parsed: every parser reads the active vocabulary.
-  int code = 2;
-  if (!useVocabulary(vocabularyPath)) code = 1;
-  else if (serveCmd->parsed()) code = runServe(serve, dbPath, demoDir);
-  else if (evalCmd->parsed()) code = fsdb::runEval(evalFile, eval);
-  else if (importCmd->parsed()) code = fsdb::runImport(import);
-  else if (queryCmd->parsed()) code = fsdb::runQuery(query);
-  spdlog::shutdown();  // writes the buffered log lines
-  return code;
+  if (!useVocabulary(vocabularyPath)) return 1;
+  if (serveCmd->parsed()) return runServe(serve, dbPath, demoDir);
+  if (evalCmd->parsed()) return fsdb::runEval(evalFile, eval);
+  if (importCmd->parsed()) return fsdb::runImport(import);
+  if (queryCmd->parsed()) return fsdb::runQuery(query);
+  return 2;
 }
