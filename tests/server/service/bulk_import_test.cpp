@@ -43,6 +43,51 @@ TEST(SplitBulkBody, AJsonArrayIsOneDocumentPerElement) {
   EXPECT_TRUE(splitBulkBody("", 64).empty());
 }
 
+TEST(LineSpans, NonBlankLinesWithTheirFileNumbers) {
+  const std::string body = "a\n\n \t\r\nbb\r\n  c";
+  const std::vector<LineSpan> spans = lineSpans(body);
+  ASSERT_EQ(spans.size(), 3u);
+  EXPECT_EQ(spans[0].line, 1u);
+  EXPECT_EQ(spans[1].line, 4u);
+  EXPECT_EQ(body.substr(spans[1].begin, spans[1].end - spans[1].begin), "bb\r");
+  EXPECT_EQ(spans[2].line, 5u);
+  EXPECT_EQ(body.substr(spans[2].begin, spans[2].end - spans[2].begin), "  c");
+  EXPECT_TRUE(lineSpans("").empty());
+  EXPECT_TRUE(isJsonArrayBody(" \n[1]"));
+  EXPECT_FALSE(isJsonArrayBody("{\"a\":[1]}"));
+  EXPECT_FALSE(isJsonArrayBody(""));
+}
+
+// importBody gives what splitBulkBody + importDocuments give, whatever the batch size against
+// the chunks the pipeline prepares in (128 lines): same ids order, same errors, same lines.
+TEST(ImportBody, AnswersAsImportDocumentsAcrossBatchesAndChunks) {
+  std::string body;
+  for (int i = 0; i < 300; ++i) {
+    if (i % 97 == 5) body += "not json\n";
+    else if (i % 61 == 7) body += part("dup", 1) + "\n";  // the second and later: conflict
+    else if (i % 50 == 9) body += "\n";
+    else body += part("p" + std::to_string(i), 1 + i % 3) + "\n";
+    if (i == 200) body += json{{"kind", "shape"}, {"name", "s"}, {"csg", "p1 + p2"}}.dump() + "\n";
+  }
+  for (size_t batch : {size_t{7}, size_t{129}, size_t{5000}}) {
+    TempDir a, b;
+    auto viaBody = Store::open(test::storeLocation(a, "a.sqlite"));
+    auto viaLines = Store::open(test::storeLocation(b, "b.sqlite"));
+    BulkOptions options;
+    options.batchSize = batch;
+    std::vector<std::pair<size_t, size_t>> progress;
+    options.progress = [&progress](size_t done, size_t total) { progress.emplace_back(done, total); };
+    const BulkReport r = importBody(*viaBody, body, 64, options);
+    options.progress = nullptr;
+    const BulkReport expected = importDocuments(*viaLines, splitBulkBody(body, 64), options);
+    EXPECT_EQ(r.toJson(), expected.toJson()) << "batch " << batch;
+    EXPECT_EQ(r.imported + r.failed, lineSpans(body).size());
+    ASSERT_FALSE(progress.empty());
+    EXPECT_EQ(progress.back().first, progress.back().second) << "batch " << batch;
+    for (size_t k = 1; k < progress.size(); ++k) EXPECT_LT(progress[k - 1].first, progress[k].first);
+  }
+}
+
 TEST(ImportDocuments, GoodLinesOfABatchWithBadOnesCommitAndErrorsNameTheirLines) {
   TempDir dir;
   auto store = Store::open(test::storeLocation(dir, "db.sqlite"));
