@@ -23,13 +23,13 @@ double lowestSupportLo(double lo, int widthClass) {
 
 void writeDescriptorRows(sql::Connection& connection, int64_t objectId, const std::string& kind,
                          const std::vector<DescriptorComponent>& components, bool fresh) {
-  for (const char* sql :
-       {"DELETE FROM descriptor_index WHERE object_id = ?1", "DELETE FROM descriptor_values WHERE object_id = ?1"}) {
-    if (fresh) break;
-    auto statement = connection.prepare(sql);
-    statement->bind(1, objectId);
-    statement->run();
-  }
+  if (!fresh)
+    for (const char* sql :
+         {"DELETE FROM descriptor_index WHERE object_id = ?1", "DELETE FROM descriptor_values WHERE object_id = ?1"}) {
+      auto statement = connection.prepare(sql);
+      statement->bind(1, objectId);
+      statement->run();
+    }
   // Multi-row statements (sql::rowPlaceholders): a part's 13 rows are one round trip to a server.
   struct Row {
     int component;

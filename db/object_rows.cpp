@@ -288,16 +288,17 @@ StoredObject upsertIn(Connection& connection, const NewObject& object) {
   return putIn(connection, *id, object);
 }
 
-std::vector<int64_t> referencesOf(Connection& connection, int64_t id) {
-  auto statement = connection.prepare("SELECT child_id FROM refs WHERE parent_id = ?1 ORDER BY child_id");
-  statement->bind(1, id);
-  std::vector<int64_t> ids;
-  while (statement->step()) ids.push_back(statement->columnInt(0));
-  return ids;
+std::string objectColumnsSql(sql::Dialect dialect) {
+  // The children as "3,5,9" (no order is promised inside the aggregate: readObject sorts them).
+  const char* children = dialect == sql::Dialect::kSqlite
+                             ? "(SELECT group_concat(child_id) FROM refs WHERE parent_id = o.id)"
+                             : "(SELECT string_agg(CAST(child_id AS TEXT), ',') FROM refs WHERE parent_id = o.id)";
+  return std::string(
+             "SELECT o.id, o.kind, o.name, o.latest_version, v.version, v.document, v.content_hash, v.created_at,"
+             " CASE WHEN v.version = o.latest_version THEN ") +
+         children + " END FROM objects o JOIN versions v ON v.object_id = o.id";
 }
 
-// Columns: o.id, o.kind, o.name, o.latest_version, v.version, v.document, v.content_hash,
-// v.created_at. References are filled for the latest version (refs holds only its edges).
 StoredObject readObject(sql::Statement& row) {
   StoredObject object;
   object.id = row.columnInt(0);
@@ -308,37 +309,30 @@ StoredObject readObject(sql::Statement& row) {
   object.documentJson = row.columnText(5);
   object.contentHash = row.columnText(6);
   object.createdAt = row.columnText(7);
+  const std::string children = row.columnText(8);
+  for (size_t at = 0; at < children.size();) {
+    size_t end = children.find(',', at);
+    if (end == std::string::npos) end = children.size();
+    object.references.push_back(std::stoll(children.substr(at, end - at)));
+    at = end + 1;
+  }
+  std::sort(object.references.begin(), object.references.end());
   return object;
 }
 
-// The object of `kind` with this id (or, without one, this name) at `version` (else the latest),
-// with the latest version's references, in one statement: one snapshot without a transaction
-// (GET /parts/{id} is this statement alone).
+// One statement: one snapshot without a transaction (GET /parts/{id} is this statement alone).
 std::optional<StoredObject> loadObject(Connection& connection, const std::string& kind, std::optional<int64_t> id,
                                        const std::string& name, std::optional<int> version) {
-  // The children as "3,5,9" (no order is promised inside the aggregate: sorted below).
-  const char* children = connection.dialect() == sql::Dialect::kSqlite
-                             ? "(SELECT group_concat(child_id) FROM refs WHERE parent_id = o.id)"
-                             : "(SELECT string_agg(CAST(child_id AS TEXT), ',') FROM refs WHERE parent_id = o.id)";
   // Two statements (by id, by name), not one with OR, so each is a plain index lookup.
-  auto statement = connection.prepare(
-      std::string(kObjectSelect) + ", CASE WHEN v.version = o.latest_version THEN " + children + " END" + kObjectFrom +
-      " AND v.version = COALESCE(?3, o.latest_version) WHERE o.kind = ?2 AND " + (id ? "o.id = ?1" : "o.name = ?1"));
+  auto statement = connection.prepare(objectColumnsSql(connection.dialect()) +
+                                      " AND v.version = COALESCE(?3, o.latest_version) WHERE o.kind = ?2 AND " +
+                                      (id ? "o.id = ?1" : "o.name = ?1"));
   if (id) statement->bind(1, *id);
   else statement->bind(1, name);
   statement->bind(2, kind);
   statement->bind(3, version ? std::optional<int64_t>(*version) : std::nullopt);
   if (!statement->step()) return std::nullopt;
-  StoredObject object = readObject(*statement);
-  const std::string list = statement->columnText(8);
-  for (size_t at = 0; at < list.size();) {
-    size_t end = list.find(',', at);
-    if (end == std::string::npos) end = list.size();
-    object.references.push_back(std::stoll(list.substr(at, end - at)));
-    at = end + 1;
-  }
-  std::sort(object.references.begin(), object.references.end());
-  return object;
+  return readObject(*statement);
 }
 
 std::string indexedObjectsSql(sql::Dialect dialect, int ids) {

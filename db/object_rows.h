@@ -19,14 +19,10 @@ namespace fsdb::object_rows {
   "WITH RECURSIVE up(id) AS (SELECT parent_id FROM refs WHERE child_id = ?1" \
   " UNION SELECT refs.parent_id FROM refs JOIN up ON refs.child_id = up.id) SELECT id FROM up"
 
-// The columns readObject reads (kObjectSelect, to which a query may add its own after them),
-// joined for one version (kObjectFrom); kObjectColumns is the two together.
-#define FSDB_OBJECT_SELECT \
-  "SELECT o.id, o.kind, o.name, o.latest_version, v.version, v.document, v.content_hash, v.created_at"
-#define FSDB_OBJECT_FROM " FROM objects o JOIN versions v ON v.object_id = o.id"
-constexpr const char* kObjectSelect = FSDB_OBJECT_SELECT;
-constexpr const char* kObjectFrom = FSDB_OBJECT_FROM;
-constexpr const char* kObjectColumns = FSDB_OBJECT_SELECT FSDB_OBJECT_FROM;
+// "SELECT <the columns readObject reads> FROM objects o JOIN versions v ON v.object_id = o.id":
+// one version of an object with, for the latest version, its children aggregated in the same
+// row (refs holds only the latest version's edges), so a read is one statement.
+std::string objectColumnsSql(sql::Dialect dialect);
 
 // The objects row of one object.
 struct ObjectRow {
@@ -51,10 +47,7 @@ void checkVersion(const ObjectRow& row, std::optional<int> ifVersion);
 constexpr int64_t kChangeLogKept = 100000;
 void logChange(sql::Connection& connection, int64_t id);
 StoredObject upsertIn(sql::Connection& connection, const NewObject& object);
-// The children that the latest version of id references, sorted.
-std::vector<int64_t> referencesOf(sql::Connection& connection, int64_t id);
-// One row of kObjectColumns. References are filled for the latest version by loadObject only
-// (refs holds only the latest version's edges).
+// One row of objectColumnsSql, references sorted (empty for an older version).
 StoredObject readObject(sql::Statement& row);
 // The object of `kind` with this id (or, without one, this name) at `version` (else the latest).
 std::optional<StoredObject> loadObject(sql::Connection& connection, const std::string& kind, std::optional<int64_t> id,

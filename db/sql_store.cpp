@@ -177,26 +177,20 @@ std::optional<StoredObject> SqlStore::find(const ObjectReference& reference) con
 
 std::vector<StoredObject> SqlStore::list(const ListQuery& query) const {
   Lease connection(*this);
-  Transaction transaction(*connection, Transaction::Mode::kRead);
+  // One statement (references included): its own snapshot, no transaction around it.
+  auto statement = (*connection)
+                       .prepare(objectColumnsSql((*connection).dialect()) +
+                                " AND v.version = COALESCE(?3, o.latest_version) WHERE o.kind = ?1 AND (CAST(?2 AS "
+                                "TEXT) IS NULL OR o.name = ?2) AND o.id > ?4 ORDER BY o.id LIMIT ?5");
+  statement->bind(1, query.kind);
+  if (query.name) statement->bind(2, *query.name);
+  else statement->bindNull(2);
+  // A version only selects with a name (one object); otherwise every object's latest.
+  if (query.name && query.version) statement->bind(3, *query.version);
+  else statement->bindNull(3);
+  statement->bind(4, query.afterId).bind(5, std::max(0, query.limit));
   std::vector<StoredObject> objects;
-  {
-    auto statement =
-        (*connection)
-            .prepare(
-                std::string(kObjectColumns) +
-                " AND v.version = COALESCE(?3, o.latest_version)"
-                " WHERE o.kind = ?1 AND (CAST(?2 AS TEXT) IS NULL OR o.name = ?2) AND o.id > ?4 ORDER BY o.id LIMIT ?5");
-    statement->bind(1, query.kind);
-    if (query.name) statement->bind(2, *query.name);
-    else statement->bindNull(2);
-    // A version only selects with a name (one object); otherwise every object's latest.
-    if (query.name && query.version) statement->bind(3, *query.version);
-    else statement->bindNull(3);
-    statement->bind(4, query.afterId).bind(5, std::max(0, query.limit));
-    while (statement->step()) objects.push_back(readObject(*statement));
-  }
-  for (auto& object : objects)
-    if (object.version == object.latestVersion) object.references = referencesOf(*connection, object.id);
+  while (statement->step()) objects.push_back(readObject(*statement));
   return objects;
 }
 
