@@ -50,8 +50,8 @@ bool bearerMatches(const std::string& header, const std::string& token) {
 // Reads a POST or PUT body through httplib's ContentReader into *body (see addRoute for why).
 // Multipart bodies are drained and refused (415); a body over maxBody, which httplib checks only
 // against Content-Length and not for chunked transfers, is 413 and closes the connection.
-void readBody(const httplib::Request& req, const httplib::ContentReader& content, size_t maxBody,
-              std::string* body, httplib::Response& res) {
+void readBody(const httplib::Request& req, const httplib::ContentReader& content, size_t maxBody, std::string* body,
+              httplib::Response& res) {
   if (req.is_multipart_form_data()) {
     content([](const httplib::MultipartFormData&) { return true; }, [](const char*, size_t) { return true; });
     throw Error(errc::kUnsupportedMediaType,
@@ -81,8 +81,8 @@ void readBody(const httplib::Request& req, const httplib::ContentReader& content
   }
   if (!read) {
     res.set_header("Connection", "close");
-    throw Error(errc::kMalformedJson, "the request body ended before its announced length (or its chunks were malformed)",
-                "body");
+    throw Error(errc::kMalformedJson,
+                "the request body ended before its announced length (or its chunks were malformed)", "body");
   }
 }
 
@@ -144,8 +144,9 @@ void serveStatic(const std::string& root, const httplib::Request& req, httplib::
     res.set_header("Vary", "Accept-Encoding");
     res.set_content(std::move(body), "application/x-javascript");
   } else {
-    res.set_content(std::move(body), endsWith(".css") ? "text/css" : endsWith(".html") ? "text/html; charset=utf-8"
-                                                                                    : "application/octet-stream");
+    res.set_content(std::move(body), endsWith(".css")    ? "text/css"
+                                     : endsWith(".html") ? "text/html; charset=utf-8"
+                                                         : "application/octet-stream");
   }
 }
 
@@ -195,8 +196,7 @@ void HttpServer::addRoute(const std::string& method, const std::string& openapiP
       if (!token.empty() && !bearerMatches(req.get_header_value("Authorization"), token)) {
         res.set_header("WWW-Authenticate", "Bearer");
         throw Error(errc::kUnauthorized,
-                    "this server requires \"Authorization: Bearer <token>\" for writes (fsdb serve --token)",
-                    "");
+                    "this server requires \"Authorization: Bearer <token>\" for writes (fsdb serve --token)", "");
       }
       for (size_t i = 1; i < req.matches.size(); ++i) api.pathParams.push_back(req.matches[i].str());
       if (content && !routeOptions.rawBody) api.body = parseJsonBody(api.bodyBytes, maxDepth);
@@ -242,8 +242,7 @@ void HttpServer::installHandlers() {
   // At least 8: a keep-alive connection holds its worker until it closes, and a browser opens
   // six at once for one page; with two workers the third file of the studio page waited for a
   // keep-alive timeout (5 s).
-  const int threads = options_.threads > 0 ? options_.threads
-                                           : std::max(8u, std::thread::hardware_concurrency());
+  const int threads = options_.threads > 0 ? options_.threads : std::max(8u, std::thread::hardware_concurrency());
   s.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<size_t>(threads)); };
 
   if (!options_.corsOrigin.empty()) {
@@ -269,7 +268,9 @@ void HttpServer::installHandlers() {
       spdlog::warn("no studio page: '{}' is not a folder (fsdb serve --web DIR)", options_.webRoot);
     else
       s.Get(R"(/|/index\.html|/studio\.(js|css)|/vendor/[A-Za-z0-9_.-]+(/[A-Za-z0-9_.-]+)*)",
-            [root = options_.webRoot](const httplib::Request& req, httplib::Response& res) { serveStatic(root, req, res); });
+            [root = options_.webRoot](const httplib::Request& req, httplib::Response& res) {
+              serveStatic(root, req, res);
+            });
   }
 
   s.set_pre_routing_handler([](const httplib::Request&, httplib::Response&) {
@@ -283,8 +284,7 @@ void HttpServer::installHandlers() {
     if (!res.body.empty()) return;
     if (res.status == 413) {
       sendError(res, Error(errc::kLimitExceeded,
-                           "request body larger than max_body_bytes=" +
-                               std::to_string(options_.limits.maxBodyBytes),
+                           "request body larger than max_body_bytes=" + std::to_string(options_.limits.maxBodyBytes),
                            "body"));
       return;
     }
@@ -296,12 +296,13 @@ void HttpServer::installHandlers() {
         std::string allow;
         for (const auto& m : allowed) allow += (allow.empty() ? "" : ", ") + m;
         res.set_header("Allow", allow);
-        sendError(res, Error("method_not_allowed", req.method + " is not allowed on " + req.path +
-                                                       "; allowed: " + allow, ""));
+        sendError(res, Error("method_not_allowed",
+                             req.method + " is not allowed on " + req.path + "; allowed: " + allow, ""));
         return;
       }
-      sendError(res, Error(errc::kNotFound, "no endpoint " + req.method + " " + req.path +
-                                                "; GET /openapi.json lists every endpoint", ""));
+      sendError(res,
+                Error(errc::kNotFound,
+                      "no endpoint " + req.method + " " + req.path + "; GET /openapi.json lists every endpoint", ""));
       return;
     }
     sendJson(res, res.status, errorBody("http_" + std::to_string(res.status), "request failed", ""));
@@ -343,8 +344,18 @@ int HttpServer::bind() {
   return port;
 }
 
-void HttpServer::listen() { server_->listen_after_bind(); }
+void HttpServer::listen() {
+  if (!stopRequested_.load()) server_->listen_after_bind();
+  listenReturned_.store(true);
+}
 
-void HttpServer::stop() { server_->stop(); }
+void HttpServer::stop() {
+  stopRequested_.store(true);
+  // httplib's stop() acts only while listen() runs: a SIGTERM right after the port line (before
+  // listen() started) was lost and the server served on. listen() checks stopRequested_ first, so
+  // wait until it either runs (then httplib's stop() ends it) or has returned.
+  while (!server_->is_running() && !listenReturned_.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  server_->stop();
+}
 
 }  // namespace fsdb

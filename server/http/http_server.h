@@ -10,16 +10,18 @@
 //   GET /openapi.json must describe (a test holds the two equal).
 // - start() binds before it returns, so the caller can print the real port (`--port 0`).
 // - A GET answered 200 carries a weak ETag of its body, unless its handler set one (a stored
-//   object: its version, strong, for If-Match), and is 304 without a body when If-None-Match names it (server/http/response_encoding.h); binary exports (meshes, grids) are
-//   gzipped when the client accepts it (JSON and SVG by cpp-httplib itself).
+//   object: its version, strong, for If-Match), and is 304 without a body when If-None-Match names it
+//   (server/http/response_encoding.h); binary exports (meshes, grids) are gzipped when the client accepts it (JSON and
+//   SVG by cpp-httplib itself).
 // - CORS is off unless ServerOptions::corsOrigin is set.
 #include <nlohmann/json.hpp>
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <regex>
 #include <optional>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -32,7 +34,6 @@ struct Response;
 }  // namespace httplib
 
 namespace fsdb {
-
 
 struct ServerOptions {
   std::string host = "127.0.0.1";
@@ -66,11 +67,11 @@ struct ApiRequest {
   const httplib::Request& raw;
   nlohmann::json body;
   std::vector<std::string> pathParams;  // values of the route's {name} segments, in order
-  std::string bodyBytes;  // POST and PUT: the body (read by the server, never by httplib: see addRoute)
+  std::string bodyBytes;                // POST and PUT: the body (read by the server, never by httplib: see addRoute)
   std::string queryParam(const std::string& name) const;  // "" when absent
   bool hasQueryParam(const std::string& name) const;
   std::optional<std::string> header(const std::string& name) const;  // nullopt when absent
-  const std::string& rawBody() const { return bodyBytes; }  // raw-body routes read it
+  const std::string& rawBody() const { return bodyBytes; }           // raw-body routes read it
 };
 
 // What a handler returns: status + JSON, or (for exports) a body with its own media type.
@@ -80,8 +81,8 @@ struct ApiResponse {
       : status(s), json(std::move(j)), rawBody(std::move(raw)), contentType(std::move(type)) {}
   int status = 200;
   nlohmann::json json;
-  std::string rawBody;      // used when contentType is not JSON
-  std::string contentType;  // "" = application/json
+  std::string rawBody;                                       // used when contentType is not JSON
+  std::string contentType;                                   // "" = application/json
   std::vector<std::pair<std::string, std::string>> headers;  // extra headers (Location, ...)
 };
 
@@ -114,9 +115,11 @@ class HttpServer {
   // Binds host:port (port 0 picks one) and returns the bound port; throws std::runtime_error
   // when the address cannot be bound.
   int bind();
-  // Serves until stop(); returns after in-flight requests are answered.
+  // Serves until stop(); returns after in-flight requests are answered, at once when stop() came
+  // first.
   void listen();
-  // Thread-safe; stops accepting and makes listen() return.
+  // Thread-safe; stops accepting and makes listen() return. Called before listen(), it waits for
+  // listen() to be called (which then returns at once), so a stop is never lost.
   void stop();
 
  private:
@@ -126,6 +129,8 @@ class HttpServer {
   std::unique_ptr<httplib::Server> server_;
   std::vector<Route> routes_;
   std::vector<std::regex> routePatterns_;  // routes_[i]'s path pattern, compiled once (405 lookup)
+  std::atomic<bool> stopRequested_{false};
+  std::atomic<bool> listenReturned_{false};
 };
 
 }  // namespace fsdb

@@ -84,16 +84,27 @@ class ServerProcess {
     pid_ = -1;
   }
 
-  // Sends SIGTERM and returns the exit status (the server must stop gracefully).
+  // Sends SIGTERM and returns the exit status (the server must stop gracefully); a server still
+  // running after 60 s is killed and 124 returned, so a lost stop fails the test, not the ctest timeout.
   int terminate() {
     kill(pid_, SIGTERM);
     int status = 0;
-    waitpid(pid_, &status, 0);
+    bool stopped = false;
+    for (int ms = 0; ms < 60000 && !stopped; ms += 10) {
+      stopped = waitpid(pid_, &status, WNOHANG) == pid_;
+      if (!stopped) usleep(10000);
+    }
+    if (!stopped) {
+      kill(pid_, SIGKILL);
+      waitpid(pid_, nullptr, 0);
+    }
     pid_ = -1;
+    if (!stopped) return 124;
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   }
 
   bool alive() const { return pid_ > 0 && ::kill(pid_, 0) == 0; }
+  pid_t pid() const { return pid_; }
   int port() const { return port_; }
   const std::string& host() const { return host_; }
   const std::string& firstLine() const { return firstLine_; }
