@@ -59,27 +59,37 @@ nlohmann::json parseJsonBody(const std::string& body, int maxDepth) {
   ParsePosition position;
   auto depthGuard = [maxDepth, &position](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
     if (depth > maxDepth)
-      throw Error(errc::kLimitExceeded,
-                  "JSON nesting deeper than max_json_depth=" + std::to_string(maxDepth), "body");
+      throw Error(errc::kLimitExceeded, "JSON nesting deeper than max_json_depth=" + std::to_string(maxDepth), "body");
     position.event(event, parsed);
     return true;
   };
   try {
     return nlohmann::json::parse(body, depthGuard);
   } catch (const nlohmann::json::parse_error& e) {
-    throw Error(errc::kMalformedJson,
-                "body is not valid JSON at byte " + std::to_string(e.byte) + ": " + e.what(), "body");
+    throw Error(errc::kMalformedJson, "body is not valid JSON at byte " + std::to_string(e.byte) + ": " + e.what(),
+                "body");
   } catch (const nlohmann::json::out_of_range& e) {
     // 406: a number literal beyond double range (1e999): not finite, like NaN (docs/api.md §2).
     throw Error(errc::kInvalidDocument, std::string("a number must be finite: ") + e.what(), position.path());
   }
 }
 
+std::optional<nlohmann::json> tryParseJsonBody(const std::string& body, int maxDepth) {
+  bool tooDeep = false;
+  // Returning false drops the value; the parser goes on (iteratively) to the end of the body.
+  auto depthGuard = [maxDepth, &tooDeep](int depth, nlohmann::json::parse_event_t, nlohmann::json&) {
+    tooDeep = tooDeep || depth > maxDepth;
+    return !tooDeep;
+  };
+  nlohmann::json parsed = nlohmann::json::parse(body, depthGuard, /*allow_exceptions=*/false);
+  if (tooDeep || parsed.is_discarded()) return std::nullopt;
+  return parsed;
+}
+
 std::string jsonTypeName(const nlohmann::json& j) { return j.type_name(); }
 
 const nlohmann::json& requireObject(const nlohmann::json& j, const std::string& path) {
-  if (!j.is_object())
-    throw Error(errc::kInvalidDocument, "expected an object, got " + jsonTypeName(j), path);
+  if (!j.is_object()) throw Error(errc::kInvalidDocument, "expected an object, got " + jsonTypeName(j), path);
   return j;
 }
 
@@ -95,7 +105,8 @@ int64_t optionalInteger(const nlohmann::json& obj, const std::string& path, cons
   const std::optional<int64_t> n = integralNumber(v);
   if (!n || *n < min || *n > max)
     throw Error(errc::kInvalidParameter,
-                key + " must be an integer from " + std::to_string(min) + " to " + std::to_string(max) + ", got " + v.dump(),
+                key + " must be an integer from " + std::to_string(min) + " to " + std::to_string(max) + ", got " +
+                    v.dump(),
                 joinPath(path, key));
   return *n;
 }
@@ -120,7 +131,8 @@ double optionalNumberIn(const nlohmann::json& obj, const std::string& path, cons
   const nlohmann::json& v = obj[key];
   const double x = requireNumber(v, joinPath(path, key));
   if (!(x >= min && x <= max)) {
-    throw Error(errc::kInvalidParameter, key + " must be in [" + formatNumber(min) + ", " + formatNumber(max) + "], got " + v.dump(),
+    throw Error(errc::kInvalidParameter,
+                key + " must be in [" + formatNumber(min) + ", " + formatNumber(max) + "], got " + v.dump(),
                 joinPath(path, key));
   }
   return x;

@@ -12,6 +12,10 @@
 namespace fsdb {
 
 nlohmann::json parseJsonBody(const std::string& body, int maxDepth);
+// brief  parseJsonBody without its errors: nullopt for a body that is not JSON, nests deeper than
+//        maxDepth or holds a number beyond double range. No exception is raised, so a caller that
+//        only counts failures (a bulk body's unlisted bad lines) pays for none.
+std::optional<nlohmann::json> tryParseJsonBody(const std::string& body, int maxDepth);
 
 // Typed access with the JSON path of the value in the error. Each throws fsdb::Error
 // (invalid_document) naming `path` and what was expected.

@@ -44,14 +44,17 @@ class Progress {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-void printErrors(const std::string& file, const nlohmann::json& errors) {
-  for (const auto& e : errors) {
+void printErrors(const std::string& file, const BulkReport& report) {
+  for (const auto& e : report.errors) {
     const auto& err = e["error"];
     std::cerr << file << ":" << e["line"].get<size_t>() << ": " << err.value("code", "") << ": "
               << err.value("message", "");
     if (!err.value("path", "").empty()) std::cerr << " (" << err["path"].get<std::string>() << ")";
     std::cerr << "\n";
   }
+  if (report.errorsTruncated)
+    std::cerr << file << ": " << report.failed - report.errors.size() << " more failed lines not listed (the first "
+              << report.errors.size() << " are; --max-errors N lists more)\n";
 }
 
 // Finds a document's top-level "kind" without building the document: stops at its value.
@@ -111,61 +114,55 @@ BulkReport importThroughServer(const std::string& body, const ImportOptions& opt
   httplib::Headers headers;
   if (!options.token.empty()) headers.emplace("Authorization", "Bearer " + options.token);
   BulkReport report;
-  // An array file goes as it is, one request per kind run of its elements (re-serialised).
-  std::vector<std::string> texts;
-  std::vector<size_t> numbers;
-  if (isJsonArrayBody(body)) {
-    for (BulkLine& l : splitBulkBody(body, kFileJsonDepth)) {
-      texts.push_back(l.document.dump());
-      numbers.push_back(l.line);
+  report.maxErrors = options.maxErrors;
+  // Runs of lines of one kind, at most one batch long, keeping file order; each run is one request.
+  // Lines go as they are in the file (the server parses and validates them); an array's elements
+  // are re-serialised on one line each.
+  std::string kind, request;
+  std::vector<size_t> lineNumbers;  // the file's numbers of the request's lines
+  size_t done = doneBefore;
+  auto send = [&]() {
+    const std::string path = "/" + kind + "s/bulk?mode=" + options.mode + "&batch=" + std::to_string(options.batchSize);
+    auto res = client.Post(path, headers, request, "application/x-ndjson");
+    if (!res)
+      throw Error(errc::kStorage, "cannot reach " + options.serverUrl + ": " + httplib::to_string(res.error()), "");
+    const nlohmann::json answer = nlohmann::json::parse(res->body, nullptr, false);
+    if (res->status != 200 || !answer.is_object() || !answer.contains("imported")) {
+      const std::string message =
+          answer.is_object() && answer.contains("error") ? answer["error"].value("message", res->body) : res->body;
+      throw Error(errc::kStorage, "server answered " + std::to_string(res->status) + ": " + message, "");
     }
-  } else {
-    for (const LineSpan& span : lineSpans(body)) {
-      texts.push_back(body.substr(span.begin, span.end - span.begin));
-      numbers.push_back(span.line);
+    report.imported += answer["imported"].get<size_t>();
+    report.failed += answer["failed"].get<size_t>();
+    for (const auto& id : answer["ids"]) report.ids.push_back(id.get<int64_t>());
+    // The server numbers the lines of each request from 1: map back to the file's numbers.
+    const size_t errorsBefore = report.errors.size();
+    for (auto e : answer["errors"]) {
+      const size_t k = e["line"].get<size_t>();
+      if (k >= 1 && k <= lineNumbers.size()) e["line"] = lineNumbers[k - 1];
+      report.errors.push_back(e);
     }
+    report.closeErrors(errorsBefore);
+    report.errorsTruncated = report.errorsTruncated || answer.value("errors_truncated", false);
+    done += lineNumbers.size();
+    progress.update(done);
+    request.clear();
+    lineNumbers.clear();
+  };
+  const bool array = isJsonArrayBody(body);
+  BulkBodyReader reader(body, kFileJsonDepth);
+  LineSpan span;
+  while (reader.next(span)) {
+    std::string text = body.substr(span.begin, span.end - span.begin);
+    if (array) text = nlohmann::json::parse(text).dump();  // checked whole by the reader
+    std::string k = kindOfLine(text);
+    if (!lineNumbers.empty() && (k != kind || lineNumbers.size() >= options.batchSize)) send();
+    kind = std::move(k);
+    request += text;
+    request += '\n';
+    lineNumbers.push_back(span.line);
   }
-  std::vector<std::string> kinds(texts.size());
-  for (size_t k = 0; k < texts.size(); ++k) kinds[k] = kindOfLine(texts[k]);
-  size_t i = 0;
-  while (i < texts.size()) {
-    // A run of lines of one kind, at most one batch long, keeping file order. Lines go as they
-    // are in the file: the server parses and validates them.
-    const std::string& kind = kinds[i];
-    std::string request;
-    std::vector<size_t> lineNumbers;
-    size_t j = i;
-    for (; j < texts.size() && j - i < options.batchSize && kinds[j] == kind; ++j) {
-      request += texts[j];
-      request += '\n';
-      lineNumbers.push_back(numbers[j]);
-    }
-    {
-      const std::string path =
-          "/" + kind + "s/bulk?mode=" + options.mode + "&batch=" + std::to_string(options.batchSize);
-      auto res = client.Post(path, headers, request, "application/x-ndjson");
-      if (!res)
-        throw Error(errc::kStorage, "cannot reach " + options.serverUrl + ": " + httplib::to_string(res.error()), "");
-      const nlohmann::json answer = nlohmann::json::parse(res->body, nullptr, false);
-      if (res->status != 200 || !answer.is_object() || !answer.contains("imported")) {
-        const std::string message =
-            answer.is_object() && answer.contains("error") ? answer["error"].value("message", res->body) : res->body;
-        throw Error(errc::kStorage, "server answered " + std::to_string(res->status) + ": " + message, "");
-      }
-      report.imported += answer["imported"].get<size_t>();
-      report.failed += answer["failed"].get<size_t>();
-      for (const auto& id : answer["ids"]) report.ids.push_back(id.get<int64_t>());
-      // The server numbers the lines of each request from 1: map back to the file's numbers.
-      for (auto e : answer["errors"]) {
-        const size_t k = e["line"].get<size_t>();
-        if (k >= 1 && k <= lineNumbers.size()) e["line"] = lineNumbers[k - 1];
-        report.errors.push_back(e);
-      }
-    }
-    i = j;
-    progress.update(doneBefore + i);
-  }
-  report.sortErrors();
+  if (!lineNumbers.empty()) send();
   return report;
 }
 
@@ -184,7 +181,7 @@ int runImport(const ImportOptions& options) {
     for (const std::string& f : options.files) {
       files.emplace_back(f, readTextFile(f, "FILE"));
       const std::string& body = files.back().second;
-      counts.push_back(isJsonArrayBody(body) ? splitBulkBody(body, kFileJsonDepth).size() : lineSpans(body).size());
+      counts.push_back(BulkBodyReader(body, kFileJsonDepth).count());
       total += counts.back();
     }
     Progress progress(total);
@@ -196,6 +193,7 @@ int runImport(const ImportOptions& options) {
         BulkOptions bulk;
         bulk.mode = options.mode == "upsert" ? BulkMode::kUpsert : BulkMode::kCreate;
         bulk.batchSize = options.batchSize;
+        bulk.maxErrors = options.maxErrors;
         const size_t before = done;
         bulk.progress = [&progress, before](size_t d, size_t) { progress.update(before + d); };
         report = importBody(*store, body, kFileJsonDepth, bulk);
@@ -203,7 +201,7 @@ int runImport(const ImportOptions& options) {
         report = importThroughServer(body, options, progress, done);
       }
       done += counts[f];
-      printErrors(file, report.errors);
+      printErrors(file, report);
       imported += report.imported;
       failed += report.failed;
     }

@@ -212,6 +212,9 @@ int main(int argc, char** argv) {
                        "longest evaluation in milliseconds (POST /evaluate, stored-shape evaluate, mesh and grid.vdb; "
                        "413 beyond); 0: no limit")
       ->check(CLI::Range(0, 86400000))->capture_default_str();
+  serveCmd->add_option("--max-bulk-errors", serve.limits.maxBulkErrors,
+                       "failed lines listed in a bulk import's answer (the rest counted; errors_truncated)")
+      ->check(CLI::Range(size_t(0), size_t(1000000)))->capture_default_str();
   serveCmd->add_option("--max-nodes", serve.limits.maxNodes, "most CSG nodes in one shape")
       ->check(CLI::PositiveNumber)->capture_default_str();
   serveCmd->add_option("--max-control-points", serve.limits.maxControlPoints,
@@ -293,6 +296,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"create", "upsert"}))->capture_default_str();
   importCmd->add_option("--batch", import.batchSize, "lines per transaction")->check(CLI::Range(1, 10000))
       ->capture_default_str();
+  importCmd->add_option("--max-errors", import.maxErrors, "failed lines listed per file (the rest are counted)")
+      ->check(CLI::Range(size_t(0), size_t(100000000)))->capture_default_str();
 
   fsdb::QueryCommandOptions query;
   query.dbPath = dbPath;

@@ -112,6 +112,7 @@ void registerKind(HttpServer& server, Store& store, const std::string& kind) {
   const std::string base = "/" + kind + "s";
   const DocumentLimits limits = documentLimits(server.options().limits);
   const int maxDepth = server.options().limits.maxJsonDepth;
+  const size_t maxBulkErrors = server.options().limits.maxBulkErrors;
   const RouteOptions write{true, false};
 
   server.addRoute(
@@ -181,10 +182,11 @@ void registerKind(HttpServer& server, Store& store, const std::string& kind) {
 
   server.addRoute(
       "POST", base + "/bulk",
-      [&store, kind, limits, maxDepth](const ApiRequest& req) {
+      [&store, kind, limits, maxDepth, maxBulkErrors](const ApiRequest& req) {
         BulkOptions options;
         options.kind = kind;
         options.limits = limits;
+        options.maxErrors = maxBulkErrors;
         if (req.hasQueryParam("mode")) {
           const std::string mode = req.queryParam("mode");
           if (mode == "create") options.mode = BulkMode::kCreate;

@@ -5,6 +5,7 @@
 #include <tbb/parallel_pipeline.h>
 
 #include <algorithm>
+#include <atomic>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -33,67 +34,31 @@ std::string lineKind(const nlohmann::json& doc, const std::string& routeKind) {
 
 }  // namespace
 
-std::vector<LineSpan> lineSpans(const std::string& body) {
-  std::vector<LineSpan> spans;
-  size_t line = 0, pos = 0;
-  while (pos <= body.size()) {
-    size_t end = body.find('\n', pos);
-    if (end == std::string::npos) end = body.size();
-    ++line;
-    for (size_t k = pos; k < end; ++k)
-      if (body[k] != ' ' && body[k] != '\t' && body[k] != '\r') {
-        spans.push_back({line, pos, end});
-        break;
-      }
-    pos = end + 1;
-  }
-  return spans;
-}
-
-namespace {
-
-// A line's document, or its error recorded on it (never thrown).
-BulkLine parseLine(const std::string& body, const LineSpan& span, int maxJsonDepth) {
-  BulkLine l;
-  l.line = span.line;
-  try {
-    l.document = parseJsonBody(body.substr(span.begin, span.end - span.begin), maxJsonDepth);
-  } catch (const Error& e) {
-    l.parseError = errorObject(e.code(), e.what(), e.path());
-  }
-  return l;
-}
-
-}  // namespace
-
-bool isJsonArrayBody(const std::string& body) {
-  const size_t first = body.find_first_not_of(" \t\r\n");
-  return first != std::string::npos && body[first] == '[';
-}
-
-std::vector<BulkLine> splitBulkBody(const std::string& body, int maxJsonDepth) {
-  std::vector<BulkLine> out;
-  if (isJsonArrayBody(body)) {
-    const nlohmann::json array = parseJsonBody(body, maxJsonDepth);
-    for (size_t i = 0; i < array.size(); ++i) out.push_back({i + 1, array[i], nullptr});
-    return out;
-  }
-  for (const LineSpan& span : lineSpans(body)) out.push_back(parseLine(body, span, maxJsonDepth));
-  return out;
-}
-
 nlohmann::json BulkReport::toJson() const {
-  return {{"imported", imported}, {"failed", failed}, {"ids", ids}, {"errors", errors}};
+  return {{"imported", imported},
+          {"failed", failed},
+          {"ids", ids},
+          {"errors", errors},
+          {"errors_truncated", errorsTruncated}};
 }
 
 void BulkReport::addFailure(size_t line, nlohmann::json error) {
   ++failed;
+  if (errorsFull_ || maxErrors == 0) {
+    errorsTruncated = true;
+    return;
+  }
   errors.push_back({{"line", line}, {"error", std::move(error)}});
 }
 
-void BulkReport::sortErrors() {
-  std::stable_sort(errors.begin(), errors.end(),
+void BulkReport::closeErrors(size_t from) {
+  std::stable_sort(errors.begin() + static_cast<std::ptrdiff_t>(std::min(from, errors.size())), errors.end(),
                    [](const nlohmann::json& a, const nlohmann::json& b) { return a["line"] < b["line"]; });
+  if (errors.size() > maxErrors) {
+    errors.erase(errors.begin() + static_cast<std::ptrdiff_t>(maxErrors), errors.end());
+    errorsTruncated = true;
+  }
+  errorsFull_ = errors.size() >= maxErrors;
 }
 
 namespace {
@@ -106,10 +71,13 @@ struct PreparedLine {
   std::string kind;
   nlohmann::json document;
   std::optional<NewObject> object;  // prepared; for a shape, by the writer
-  nlohmann::json error;             // {"code","message","path"} when the line failed
+  nlohmann::json error;             // {"code","message","path"} when the line failed (just the code
+                                    // when it will not be listed)
 };
 
-PreparedLine prepareLine(BulkLine&& in, const Store& store, const BulkOptions& options) {
+// `withMessage`: false once the report lists all the errors it may (every later line's error is
+// only counted), so that bad lines cost no message and no exception.
+PreparedLine prepareLine(BulkLine&& in, const Store& store, const BulkOptions& options, bool withMessage) {
   PreparedLine out;
   out.line = in.line;
   if (!in.parseError.is_null()) {
@@ -117,6 +85,14 @@ PreparedLine prepareLine(BulkLine&& in, const Store& store, const BulkOptions& o
     return out;
   }
   out.document = std::move(in.document);
+  // A line that is not an object fails as prepareDocument would, without the cost of an
+  // exception: millions of such lines are the cheapest body to send.
+  if (!out.document.is_object()) {
+    out.error = withMessage
+                    ? errorObject(errc::kInvalidDocument, "expected an object, got " + jsonTypeName(out.document), "")
+                    : nlohmann::json(errc::kInvalidDocument);
+    return out;
+  }
   try {
     out.kind = lineKind(out.document, options.kind);
     if (out.kind != "shape") out.object = prepareDocument(out.document, out.kind, store, options.limits, "");
@@ -166,70 +142,107 @@ void writeBatch(Store& store, std::vector<PreparedLine>& lines, const BulkOption
 constexpr size_t kChunkLines = 128;
 constexpr size_t kChunksInFlight = 48;
 
-// Imports `count` lines, line i given by readLine(i) (a BulkLine): lines prepared in parallel
-// (prepareLine), batches written in line order by one thread at a time (writeBatch).
-template <typename ReadLine>
-BulkReport importLines(Store& store, size_t count, ReadLine readLine, const BulkOptions& options) {
+// Imports the lines of `source`: source.count() lines, source.next(item) giving the next one's
+// handle and source.read(item, withMessage) its BulkLine. Lines are prepared in parallel (prepareLine) and
+// batches written in line order by one thread at a time (writeBatch).
+template <typename Source>
+BulkReport importLines(Store& store, Source& source, const BulkOptions& options) {
+  using Item = typename Source::Item;
   BulkReport report;
+  report.maxErrors = options.maxErrors;
+  const size_t count = source.count();
   const size_t batch = options.batchSize == 0 ? 1 : options.batchSize;
   size_t next = 0;
   struct Chunk {
     size_t end = 0;  // one past its last line
+    std::vector<Item> items;
     std::vector<PreparedLine> lines;
   };
   std::vector<PreparedLine> pending;  // the batch being accumulated by the writer
-  tbb::parallel_pipeline(kChunksInFlight,
-                         tbb::make_filter<void, std::pair<size_t, size_t>>(
-                             tbb::filter_mode::serial_in_order,
-                             [&](tbb::flow_control& control) -> std::pair<size_t, size_t> {
-                               if (next >= count) {
-                                 control.stop();
-                                 return {0, 0};
-                               }
-                               const size_t start = next;
-                               next = std::min({count, start + kChunkLines, (start / batch + 1) * batch});
-                               return {start, next};
-                             }) &
-                             tbb::make_filter<std::pair<size_t, size_t>, std::shared_ptr<Chunk>>(
-                                 tbb::filter_mode::parallel,
-                                 [&](std::pair<size_t, size_t> range) {
-                                   auto chunk = std::make_shared<Chunk>();
-                                   chunk->end = range.second;
-                                   chunk->lines.resize(range.second - range.first);
-                                   tbb::parallel_for(tbb::blocked_range<size_t>(range.first, range.second, 16),
-                                                     [&](const tbb::blocked_range<size_t>& r) {
-                                                       for (size_t i = r.begin(); i != r.end(); ++i)
-                                                         chunk->lines[i - range.first] =
-                                                             prepareLine(readLine(i), store, options);
-                                                     });
-                                   return chunk;
-                                 }) &
-                             tbb::make_filter<std::shared_ptr<Chunk>, void>(
-                                 tbb::filter_mode::serial_in_order, [&](const std::shared_ptr<Chunk>& chunk) {
-                                   for (PreparedLine& l : chunk->lines) pending.push_back(std::move(l));
-                                   if (chunk->end % batch != 0 && chunk->end != count) return;  // the batch goes on
-                                   writeBatch(store, pending, options, report);
-                                   pending.clear();
-                                   if (options.progress) options.progress(chunk->end, count);
-                                 }));
-  report.sortErrors();
+  // Set by the writer once the report lists maxErrors: the lines prepared after it are of later
+  // batches, whose errors are only counted.
+  std::atomic<bool> errorsFull{options.maxErrors == 0};
+  tbb::parallel_pipeline(
+      kChunksInFlight,
+      tbb::make_filter<void, std::shared_ptr<Chunk>>(tbb::filter_mode::serial_in_order,
+                                                     [&](tbb::flow_control& control) -> std::shared_ptr<Chunk> {
+                                                       const size_t size =
+                                                           std::min(kChunkLines, (next / batch + 1) * batch - next);
+                                                       auto chunk = std::make_shared<Chunk>();
+                                                       Item item;
+                                                       while (chunk->items.size() < size && source.next(item))
+                                                         chunk->items.push_back(item);
+                                                       if (chunk->items.empty()) {
+                                                         control.stop();
+                                                         return nullptr;
+                                                       }
+                                                       next += chunk->items.size();
+                                                       chunk->end = next;
+                                                       return chunk;
+                                                     }) &
+          tbb::make_filter<std::shared_ptr<Chunk>, std::shared_ptr<Chunk>>(
+              tbb::filter_mode::parallel,
+              [&](std::shared_ptr<Chunk> chunk) {
+                chunk->lines.resize(chunk->items.size());
+                tbb::parallel_for(
+                    tbb::blocked_range<size_t>(0, chunk->items.size(), 16), [&](const tbb::blocked_range<size_t>& r) {
+                      const bool withMessage = !errorsFull.load(std::memory_order_relaxed);
+                      for (size_t i = r.begin(); i != r.end(); ++i)
+                        chunk->lines[i] =
+                            prepareLine(source.read(chunk->items[i], withMessage), store, options, withMessage);
+                    });
+                return chunk;
+              }) &
+          tbb::make_filter<std::shared_ptr<Chunk>, void>(tbb::filter_mode::serial_in_order,
+                                                         [&](const std::shared_ptr<Chunk>& chunk) {
+                                                           for (PreparedLine& l : chunk->lines)
+                                                             pending.push_back(std::move(l));
+                                                           if (chunk->end % batch != 0 && chunk->end != count)
+                                                             return;  // the batch goes on
+                                                           const size_t errorsBefore = report.errors.size();
+                                                           writeBatch(store, pending, options, report);
+                                                           report.closeErrors(errorsBefore);
+                                                           if (report.errors.size() >= options.maxErrors)
+                                                             errorsFull.store(true, std::memory_order_relaxed);
+                                                           pending.clear();
+                                                           if (options.progress) options.progress(chunk->end, count);
+                                                         }));
   return report;
 }
+
+// The lines of a vector, by index.
+struct VectorSource {
+  using Item = size_t;
+  const std::vector<BulkLine>& lines;
+  size_t at = 0;
+  size_t count() const { return lines.size(); }
+  bool next(Item& i) { return at < lines.size() ? (i = at++, true) : false; }
+  BulkLine read(Item i, bool) const { return lines[i]; }
+};
+
+// The documents of a body, by span, each parsed when read.
+struct BodySource {
+  using Item = LineSpan;
+  const std::string& body;
+  BulkBodyReader reader;
+  int maxJsonDepth;
+  size_t count() const { return reader.count(); }
+  bool next(Item& span) { return reader.next(span); }
+  BulkLine read(const Item& span, bool withMessage) const {
+    return parseBulkLine(body, span, maxJsonDepth, withMessage);
+  }
+};
 
 }  // namespace
 
 BulkReport importDocuments(Store& store, const std::vector<BulkLine>& lines, const BulkOptions& options) {
-  return importLines(
-      store, lines.size(), [&lines](size_t i) { return BulkLine(lines[i]); }, options);
+  VectorSource source{lines};
+  return importLines(store, source, options);
 }
 
 BulkReport importBody(Store& store, const std::string& body, int maxJsonDepth, const BulkOptions& options) {
-  if (isJsonArrayBody(body)) return importDocuments(store, splitBulkBody(body, maxJsonDepth), options);
-  // JSON Lines: the lines are found here (cheap) and parsed inside the pipeline, a batch at a
-  // time, so a large file never has every document in memory at once.
-  const std::vector<LineSpan> spans = lineSpans(body);
-  return importLines(
-      store, spans.size(), [&](size_t i) { return parseLine(body, spans[i], maxJsonDepth); }, options);
+  BodySource source{body, BulkBodyReader(body, maxJsonDepth), maxJsonDepth};
+  return importLines(store, source, options);
 }
 
 }  // namespace fsdb

@@ -1,8 +1,7 @@
 #pragma once
 // Bulk import (docs/api.md §4 POST /parts/bulk, /shapes/bulk; docs/api.md §1 `fsdb import`).
 //
-// Input: JSON Lines (one document per line; blank lines skipped) or one JSON array of documents.
-// Lines are numbered from 1 as in the file (for an array: element index + 1).
+// The body forms and their line numbers: server/service/bulk_body.h.
 //
 // What happens to the good lines of a batch that has bad ones: lines are taken in batches of
 // `batchSize`. Each line is validated on its own (JSON, document, references); a line that fails
@@ -21,36 +20,22 @@
 #include <vector>
 
 #include "db/store.h"
+#include "server/service/bulk_body.h"
 #include "server/service/documents.h"
 
 namespace fsdb {
 
-struct BulkLine {
-  size_t line = 0;
-  nlohmann::json document;    // null when the line is not JSON
-  nlohmann::json parseError;  // {"code","message","path"} when it is not
-};
-
-// A body whose first non-blank byte is '[': one JSON array of documents, not JSON Lines.
-bool isJsonArrayBody(const std::string& body);
-
-// A non-blank line of a JSON Lines body: its number (from 1, blank lines counted) and its bytes
-// [begin, end) in the body.
-struct LineSpan {
-  size_t line, begin, end;
-};
-std::vector<LineSpan> lineSpans(const std::string& body);
-
-// Splits a body into documents. A body whose first non-blank byte is '[' is a JSON array
-// (malformed: one malformed_json error for the whole body, thrown); otherwise JSON Lines,
-// each line parsed separately (errors recorded on the line, never thrown).
-std::vector<BulkLine> splitBulkBody(const std::string& body, int maxJsonDepth);
+// How many errors a report lists by default: every failed line is counted, but only the first
+// ones (by line) are listed, so that a body of bad lines cannot grow the answer or the server's
+// memory beyond a fixed bound.
+constexpr size_t kDefaultMaxBulkErrors = 1000;
 
 struct BulkOptions {
   std::string kind;  // "part" / "shape": every line must be of it; "": each line's "kind" decides
   BulkMode mode = BulkMode::kCreate;
   size_t batchSize = 500;
-  DocumentLimits limits;  // of every document (server/service/documents.h)
+  size_t maxErrors = kDefaultMaxBulkErrors;  // errors listed (0: none); the rest only counted
+  DocumentLimits limits;                     // of every document (server/service/documents.h)
   // Called after each committed batch with (lines done, lines total).
   std::function<void(size_t, size_t)> progress;
 };
@@ -60,11 +45,20 @@ struct BulkReport {
   size_t failed = 0;
   std::vector<int64_t> ids;                         // of the imported lines, in line order
   nlohmann::json errors = nlohmann::json::array();  // [{"line":k,"error":{"code","message","path"}}]
-  nlohmann::json toJson() const;                    // {"imported","failed","ids","errors"}
-  // Counts a failed line and records its error ({"code","message","path"}).
+  bool errorsTruncated = false;                     // more lines failed than `errors` lists
+  size_t maxErrors = kDefaultMaxBulkErrors;
+  // {"imported","failed","ids","errors","errors_truncated"}
+  nlohmann::json toJson() const;
+  // Counts a failed line and records its error ({"code","message","path"}) for closeErrors;
+  // once closeErrors has listed maxErrors, later failures (of later lines) are only counted.
   void addFailure(size_t line, nlohmann::json error);
-  // Errors in line order (failures are found per batch, validation before storage).
-  void sortErrors();
+  // brief  Puts errors[from..] (added since `from`, all of lines after those before it) in line
+  //        order and keeps only the first maxErrors of all, marking the report truncated when
+  //        any is dropped.
+  void closeErrors(size_t from);
+
+ private:
+  bool errorsFull_ = false;  // maxErrors listed: every later line's error is dropped
 };
 
 // Imports `lines` (splitBulkBody's), `options.batchSize` lines a transaction. Within a batch the
@@ -73,8 +67,11 @@ struct BulkReport {
 // order. Throws fsdb::Error (storage_error) when a batch cannot commit: every batch before it is
 // stored and was reported through `progress`.
 BulkReport importDocuments(Store& store, const std::vector<BulkLine>& lines, const BulkOptions& options);
-// The same for a whole body (splitBulkBody's forms, same line numbers); JSON Lines are parsed
-// a batch at a time inside the pipeline, so only the batches in flight are held as documents.
+// brief  The same for a whole body (bulk_body.h's forms, same line numbers).
+// note   The body is read a document at a time (BulkBodyReader) and each document parsed inside
+//        the pipeline, so beyond the body only the batches in flight and the listed errors are
+//        held in memory, however many lines the body has.
+// throws As BulkBodyReader (a malformed array: nothing imported), and as importDocuments.
 BulkReport importBody(Store& store, const std::string& body, int maxJsonDepth, const BulkOptions& options);
 
 }  // namespace fsdb

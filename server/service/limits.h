@@ -15,6 +15,8 @@ struct ServerLimits {
   size_t maxPoints = 1000000;       // --max-points: POST /operators/evaluate points per request
   int maxResolution = 512;          // --max-resolution: voxels along a shape's longest side
   size_t maxNodes = 10000;          // --max-nodes: CSG nodes per shape
+  size_t maxBulkErrors = 1000;      // --max-bulk-errors: failed lines listed in a bulk answer (the rest
+                                    // counted; errors_truncated)
   std::uint64_t maxGridMb = 1024;   // --max-grid-mb: MiB of leaves of one evaluation's grid (413 beyond); 0: none
   int maxEvalMs = 60000;            // --max-eval-ms: longest grid evaluation (413 beyond); 0: none
   int maxQueryMs = 10000;           // --max-query-ms: longest linguistic search (413 beyond); 0: none

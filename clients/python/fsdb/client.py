@@ -213,11 +213,13 @@ class Client:
     # --- bulk import ---
     def bulk_import(self, docs: Iterable[Json], kind: str = "part", batch: int = 1000, mode: str = "create") -> Json:
         """Imports documents of one kind, `batch` a request (and a transaction): {"imported",
-        "failed", "ids", "errors"}, error lines numbered from 1 over all of `docs`. Shows a
-        progress bar on a terminal (tqdm when installed)."""
+        "failed", "ids", "errors", "errors_truncated"}, error lines numbered from 1 over all of
+        `docs`; each request lists at most the server's --max-bulk-errors failed lines, and
+        errors_truncated is true when some were left out. Shows a progress bar on a terminal
+        (tqdm when installed)."""
         collection = getattr(self, kind + "s")
         docs = list(docs)
-        report: Json = {"imported": 0, "failed": 0, "ids": [], "errors": []}
+        report: Json = {"imported": 0, "failed": 0, "ids": [], "errors": [], "errors_truncated": False}
         bar = _progress(len(docs))
         for start in range(0, len(docs), batch):
             chunk = docs[start:start + batch]
@@ -227,6 +229,7 @@ class Client:
             report["ids"] += answer["ids"]
             for e in answer["errors"]:
                 report["errors"].append({"line": e["line"] + start, "error": e["error"]})
+            report["errors_truncated"] = report["errors_truncated"] or answer.get("errors_truncated", False)
             bar(len(chunk))
         bar(0, done=True)
         return report

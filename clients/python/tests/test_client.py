@@ -82,6 +82,7 @@ class ClientTest(unittest.TestCase):
         self.assertEqual((report["imported"], report["failed"], len(report["ids"])), (4, 1, 4))
         self.assertEqual(report["errors"][0]["line"], 4)
         self.assertEqual(report["errors"][0]["error"]["path"], "params.a1")
+        self.assertFalse(report["errors_truncated"])
         again = self.client.parts.bulk([part("bulk-0", 7)], mode="upsert")
         self.assertEqual(again["imported"], 1)
         self.assertEqual(self.client.parts.get(again["ids"][0])["version"], 2)

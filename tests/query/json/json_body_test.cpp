@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "geometry/core/error.h"
 
@@ -43,6 +46,20 @@ TEST(JsonBody, NestingBeyondTheLimitIsLimitExceeded) {
   // A hostile depth far beyond the stack's reach is refused, not a crash.
   std::string deep(200000, '[');
   EXPECT_EQ(errorOf([&] { parseJsonBody(deep, 64); }).code(), errc::kLimitExceeded);
+}
+
+// tryParseJsonBody accepts exactly what parseJsonBody accepts, and gives the same document.
+TEST(JsonBody, TryParseAcceptsWhatParseAcceptsWithoutErrors) {
+  for (const std::string& body :
+       std::vector<std::string>{"{\"a\":[1,2]}", "[[[1]]]", "[[[[1]]]]", "0", " \"s\" ", "{\"a\":", "", "[1,]",
+                                "{\"n\":1e999}", "1 2", std::string(200000, '['), "{\"a\":{\"b\":{\"c\":1}}}"}) {
+    std::optional<json> expected;
+    try {
+      expected = parseJsonBody(body, 3);
+    } catch (const Error&) {
+    }
+    EXPECT_EQ(tryParseJsonBody(body, 3), expected) << body.substr(0, 40);
+  }
 }
 
 TEST(JsonBody, TypedAccessNamesThePath) {

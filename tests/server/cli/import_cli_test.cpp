@@ -24,22 +24,25 @@ std::string lastLine(const std::string& out) {
   return nl == std::string::npos ? text : text.substr(nl + 1);
 }
 
-void writeFile(const std::string& path, const std::string& text) {
-  std::ofstream(path) << text;
-}
+void writeFile(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
 // Three parts, two shapes (one by csg text), and one bad line (an unknown reference).
 std::string catalogue(bool withBadLine) {
   std::string s;
   s += json{{"kind", "part"}, {"name", "A"}, {"params", {{"a1", 1}}}}.dump() + "\n";
-  s += json{{"kind", "part"}, {"name", "B"}, {"params", {{"a1", {{"tri", {0.4, 0.5, 0.6}}}}}},
-            {"transform", {{"translate", {1, 0, 0}}}}}.dump() + "\n";
+  s += json{{"kind", "part"},
+            {"name", "B"},
+            {"params", {{"a1", {{"tri", {0.4, 0.5, 0.6}}}}}},
+            {"transform", {{"translate", {1, 0, 0}}}}}
+           .dump() +
+       "\n";
   s += "\n";
-  if (withBadLine)
-    s += json{{"kind", "shape"}, {"name", "bad"},
-              {"tree", {{"part", "missing"}}}}.dump() + "\n";
-  s += json{{"kind", "shape"}, {"name", "AB"},
-            {"tree", {{"op", "union"}, {"children", {{{"part", "A"}}, {{"part", "B"}}}}}}}.dump() + "\n";
+  if (withBadLine) s += json{{"kind", "shape"}, {"name", "bad"}, {"tree", {{"part", "missing"}}}}.dump() + "\n";
+  s += json{{"kind", "shape"},
+            {"name", "AB"},
+            {"tree", {{"op", "union"}, {"children", {{{"part", "A"}}, {{"part", "B"}}}}}}}
+           .dump() +
+       "\n";
   s += json{{"kind", "part"}, {"name", "C"}, {"params", {{"a1", 0.5}}}}.dump() + "\n";
   s += json{{"kind", "shape"}, {"name", "D"}, {"csg", "D = AB - C"}}.dump() + "\n";
   return s;
@@ -78,7 +81,9 @@ TEST(ImportCli, MixedFilesTakeCurvesAndSurfaces) {
   TempDir dir;
   const std::string file = dir.file("curves.jsonl"), db = fsdb::test::storeLocation(dir, "curves.sqlite");
   std::string s = json{{"kind", "part"}, {"name", "A"}, {"params", {{"a1", 1}}}}.dump() + "\n";
-  s += json{{"kind", "curve"}, {"name", "arc"}, {"bezier", {{"control_points", {{0, 0}, {{{"tri", {0, 1, 2}}}, 1}}}}}}.dump() + "\n";
+  s += json{{"kind", "curve"}, {"name", "arc"}, {"bezier", {{"control_points", {{0, 0}, {{{"tri", {0, 1, 2}}}, 1}}}}}}
+           .dump() +
+       "\n";
   s += json{{"kind", "surface"}, {"name", "patch"}, {"bezier", {{"control_grid", {{{0, 0, 0}}}}}}}.dump() + "\n";
   s += json{{"kind", "volume"}, {"name", "x"}}.dump() + "\n";
   writeFile(file, s);
@@ -108,6 +113,39 @@ TEST(ImportCli, ThroughARunningServerGivesTheSameCounts) {
   EXPECT_EQ(runFsdb({"import", file, "--server", "http://127.0.0.1:1", "--token", "tok"}).exitCode, 2);
 }
 
+// --max-errors lists the first failed lines of a file and counts the rest, into a database and
+// through a server alike; an array file through a server keeps its element numbers.
+TEST(ImportCli, MaxErrorsListsTheFirstFailuresAndCountsTheRest) {
+  TempDir dir;
+  const std::string lines = dir.file("bad.jsonl"), array = dir.file("bad.json");
+  std::string text;
+  for (int i = 1; i <= 7; ++i)
+    text += (i == 4 ? json{{"kind", "part"}, {"name", "ok"}, {"params", {{"a1", 1}}}}.dump() : "0") + "\n";
+  writeFile(lines, text);
+  writeFile(array, "[0,\n 0,\n {\"kind\":\"part\",\"name\":\"ok2\",\n  \"params\":{\"a1\":1}}, 0]");
+  ServerProcess server({"--db", fsdb::test::storeLocation(dir, "srv.sqlite")});
+  const std::string url = "http://" + server.host() + ":" + std::to_string(server.port());
+  for (const std::vector<std::string>& target :
+       {std::vector<std::string>{"--db", fsdb::test::storeLocation(dir, "direct.sqlite")},
+        std::vector<std::string>{"--server", url}}) {
+    std::vector<std::string> args = {"import", lines, "--max-errors", "2", "--batch", "2"};
+    args.insert(args.end(), target.begin(), target.end());
+    auto r = runFsdb(args, true);
+    EXPECT_EQ(r.exitCode, 1) << r.out;
+    EXPECT_EQ(lastLine(r.out), "imported 1, failed 6") << r.out;
+    EXPECT_NE(r.out.find("bad.jsonl:1: invalid_document"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("bad.jsonl:2: invalid_document"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("bad.jsonl:3:"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("bad.jsonl: 4 more failed lines not listed"), std::string::npos) << r.out;
+    args = {"import", array};
+    args.insert(args.end(), target.begin(), target.end());
+    r = runFsdb(args, true);
+    EXPECT_EQ(lastLine(r.out), "imported 1, failed 3") << r.out;
+    EXPECT_NE(r.out.find("bad.json:4: invalid_document"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("not listed"), std::string::npos) << r.out;
+  }
+}
+
 // Curves and surfaces go to their own bulk routes through a server, as into a file (before, every
 // line that was no shape went to /parts/bulk and failed there).
 TEST(ImportCli, CurvesAndSurfacesThroughAServerAsIntoAFile) {
@@ -115,10 +153,16 @@ TEST(ImportCli, CurvesAndSurfacesThroughAServerAsIntoAFile) {
   const std::string file = dir.file("mixed.jsonl");
   std::string lines;
   lines += json{{"kind", "part"}, {"name", "P"}, {"params", {{"a1", 1}}}}.dump() + "\n";
-  lines += json{{"kind", "curve"}, {"name", "wave"},
-                {"bezier", {{"control_points", {{0, 0}, {1, {{"tri", {1.5, 2, 2.5}}}}, {3, 0}}}}}}.dump() + "\n";
-  lines += json{{"kind", "surface"}, {"name", "patch"},
-                {"bezier", {{"control_grid", {{{0, 0, 0}, {1, 0, 1}}, {{0, 1, 0}, {1, 1, {{"tri", {0, 0.5, 1}}}}}}}}}}.dump() + "\n";
+  lines += json{{"kind", "curve"},
+                {"name", "wave"},
+                {"bezier", {{"control_points", {{0, 0}, {1, {{"tri", {1.5, 2, 2.5}}}}, {3, 0}}}}}}
+               .dump() +
+           "\n";
+  lines += json{{"kind", "surface"},
+                {"name", "patch"},
+                {"bezier", {{"control_grid", {{{0, 0, 0}, {1, 0, 1}}, {{0, 1, 0}, {1, 1, {{"tri", {0, 0.5, 1}}}}}}}}}}
+               .dump() +
+           "\n";
   lines += json{{"kind", "curve"}, {"name", "fair"}, {"fair", {{"points", {{0, 0}, {2, 1}, {4, 0}}}}}}.dump() + "\n";
   writeFile(file, lines);
   auto direct = runFsdb({"import", file, "--db", fsdb::test::storeLocation(dir, "direct.sqlite")});
@@ -144,9 +188,10 @@ TEST(ImportCli, IntoTheFileOfARunningServerWhileItWrites) {
   ServerProcess server({"--db", db});
   std::thread writer([&] {
     for (int i = 0; i < 30; ++i)
-      EXPECT_EQ(server.post("/parts", json{{"kind", "part"}, {"name", "w" + std::to_string(i)}, {"params", {{"a1", 1}}}})
-                    .status,
-                201);
+      EXPECT_EQ(
+          server.post("/parts", json{{"kind", "part"}, {"name", "w" + std::to_string(i)}, {"params", {{"a1", 1}}}})
+              .status,
+          201);
   });
   auto r = runFsdb({"import", file, "--db", db, "--batch", "20"});
   writer.join();

@@ -1,4 +1,4 @@
-// server/service/bulk_import and server/service/documents: splitting bodies, validating documents on the way
+// server/service/bulk_import and server/service/documents: validating documents on the way
 // into the store, per-line errors, references to earlier lines, batches and upserts.
 #include "server/service/bulk_import.h"
 
@@ -25,39 +25,6 @@ std::string part(const std::string& name, double a1) {
   return json{{"kind", "part"}, {"name", name}, {"params", {{"a1", a1}}}}.dump();
 }
 
-TEST(SplitBulkBody, JsonLinesKeepFileLineNumbersAndRecordBadLines) {
-  const auto lines = splitBulkBody(part("a", 1) + "\n\n  \nnot json\n" + part("b", 2), 64);
-  ASSERT_EQ(lines.size(), 3u);
-  EXPECT_EQ(lines[0].line, 1u);
-  EXPECT_EQ(lines[1].line, 4u);
-  EXPECT_EQ(lines[1].parseError["code"], "malformed_json");
-  EXPECT_EQ(lines[2].line, 5u);
-  EXPECT_EQ(lines[2].document["name"], "b");
-}
-
-TEST(SplitBulkBody, AJsonArrayIsOneDocumentPerElement) {
-  const auto lines = splitBulkBody("  [" + part("a", 1) + "," + part("b", 2) + "]", 64);
-  ASSERT_EQ(lines.size(), 2u);
-  EXPECT_EQ(lines[1].line, 2u);
-  EXPECT_THROW(splitBulkBody("[1, 2", 64), Error);
-  EXPECT_TRUE(splitBulkBody("", 64).empty());
-}
-
-TEST(LineSpans, NonBlankLinesWithTheirFileNumbers) {
-  const std::string body = "a\n\n \t\r\nbb\r\n  c";
-  const std::vector<LineSpan> spans = lineSpans(body);
-  ASSERT_EQ(spans.size(), 3u);
-  EXPECT_EQ(spans[0].line, 1u);
-  EXPECT_EQ(spans[1].line, 4u);
-  EXPECT_EQ(body.substr(spans[1].begin, spans[1].end - spans[1].begin), "bb\r");
-  EXPECT_EQ(spans[2].line, 5u);
-  EXPECT_EQ(body.substr(spans[2].begin, spans[2].end - spans[2].begin), "  c");
-  EXPECT_TRUE(lineSpans("").empty());
-  EXPECT_TRUE(isJsonArrayBody(" \n[1]"));
-  EXPECT_FALSE(isJsonArrayBody("{\"a\":[1]}"));
-  EXPECT_FALSE(isJsonArrayBody(""));
-}
-
 // importBody gives what splitBulkBody + importDocuments give, whatever the batch size against
 // the chunks the pipeline prepares in (128 lines): same ids order, same errors, same lines.
 TEST(ImportBody, AnswersAsImportDocumentsAcrossBatchesAndChunks) {
@@ -81,7 +48,7 @@ TEST(ImportBody, AnswersAsImportDocumentsAcrossBatchesAndChunks) {
     options.progress = nullptr;
     const BulkReport expected = importDocuments(*viaLines, splitBulkBody(body, 64), options);
     EXPECT_EQ(r.toJson(), expected.toJson()) << "batch " << batch;
-    EXPECT_EQ(r.imported + r.failed, lineSpans(body).size());
+    EXPECT_EQ(r.imported + r.failed, BulkBodyReader(body, 64).count());
     ASSERT_FALSE(progress.empty());
     EXPECT_EQ(progress.back().first, progress.back().second) << "batch " << batch;
     for (size_t k = 1; k < progress.size(); ++k) EXPECT_LT(progress[k - 1].first, progress[k].first);
@@ -138,6 +105,33 @@ TEST(ImportDocuments, UpsertAddsVersionsOnlyForChangedDocumentsAndReportsProgres
   EXPECT_EQ(store->get("part", again.ids[1]).latestVersion, 2);
   EXPECT_EQ(progress.back(), std::make_pair(size_t{2}, size_t{2}));
   EXPECT_EQ(progress.size(), 4u);
+}
+
+// A body of bad lines: every one counted, only the first maxErrors listed (in line order, across
+// batches and with storage errors found after validation ones), and the report says so.
+TEST(ImportBody, ListsTheFirstMaxErrorsFailuresAndCountsTheRest) {
+  std::string body;
+  for (int i = 1; i <= 40; ++i)
+    body += (i % 3 == 0 ? part("dup", 1) : std::string("0")) + "\n";  // 3: ok, 6,9..: conflict
+  for (size_t maxErrors : {size_t{0}, size_t{5}, size_t{38}, size_t{39}, size_t{1000}}) {
+    TempDir dir;
+    auto store = Store::open(test::storeLocation(dir, "db.sqlite"));
+    BulkOptions options;
+    options.batchSize = 4;
+    options.maxErrors = maxErrors;
+    const BulkReport r = importBody(*store, body, 64, options);
+    EXPECT_EQ(r.imported, 1u);
+    EXPECT_EQ(r.failed, 39u);
+    ASSERT_EQ(r.errors.size(), std::min<size_t>(maxErrors, 39)) << maxErrors;
+    EXPECT_EQ(r.errorsTruncated, maxErrors < 39) << maxErrors;
+    EXPECT_EQ(r.toJson()["errors_truncated"], maxErrors < 39);
+    // The first ones by line: 1, 2, 4, 5, 6 (a conflict, found by the store after 4 and 5), ...
+    size_t expectLine = 1;
+    for (const auto& e : r.errors) {
+      if (expectLine == 3) ++expectLine;
+      EXPECT_EQ(e["line"], expectLine++) << maxErrors;
+    }
+  }
 }
 
 TEST(ImportDocuments, WithoutARouteKindEachLineNeedsItsKind) {
