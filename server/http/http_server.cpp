@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <filesystem>
@@ -234,7 +235,8 @@ void HttpServer::installHandlers() {
   // TCP_NODELAY (inherited by accepted sockets): httplib writes headers and body separately, and
   // Nagle's algorithm with the client's delayed ACK then adds ~40 ms to every keep-alive request
   // (bench/bench_get_part.sh: 75 requests/s without it).
-  s.set_socket_options([](socket_t sock) {
+  s.set_socket_options([this](socket_t sock) {
+    listenSocket_ = static_cast<int>(sock);  // the listening socket (bind() widens its backlog)
     int yes = 1;
     setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, reinterpret_cast<const void*>(&yes), sizeof(yes));
     setsockopt(sock, IPPROTO_TCP, TCP_NODELAY, reinterpret_cast<const void*>(&yes), sizeof(yes));
@@ -341,6 +343,12 @@ int HttpServer::bind() {
     throw std::runtime_error("cannot bind " + options_.host + ":" + std::to_string(port) +
                              " (in use, or not an address of this machine); try --port 0");
   }
+  // httplib listens with a backlog of 5 and closes a keep-alive connection after 5 requests, so
+  // 64 clients reconnect all the time; connections beyond the queue were dropped and retried by
+  // the client's kernel after 1 s (bench/soak.sh: wrk timeouts, 1.1 s latencies, a reset). A
+  // second listen() on the bound socket sets the kernel's largest queue instead.
+  if (listenSocket_ >= 0 && ::listen(listenSocket_, SOMAXCONN) != 0)
+    spdlog::warn("cannot widen the listen backlog: {}", std::strerror(errno));
   return port;
 }
 

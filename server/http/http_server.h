@@ -112,8 +112,8 @@ class HttpServer {
   const std::vector<Route>& routes() const { return routes_; }
   const ServerOptions& options() const { return options_; }
 
-  // Binds host:port (port 0 picks one) and returns the bound port; throws std::runtime_error
-  // when the address cannot be bound.
+  // Binds host:port (port 0 picks one) and returns the bound port, listening with the kernel's
+  // largest backlog (SOMAXCONN); throws std::runtime_error when the address cannot be bound.
   int bind();
   // Serves until stop(); returns after in-flight requests are answered, at once when stop() came
   // first.
@@ -131,6 +131,7 @@ class HttpServer {
   std::vector<std::regex> routePatterns_;  // routes_[i]'s path pattern, compiled once (405 lookup)
   std::atomic<bool> stopRequested_{false};
   std::atomic<bool> listenReturned_{false};
+  int listenSocket_ = -1;  // set by httplib's socket callback when it binds
 };
 
 }  // namespace fsdb
