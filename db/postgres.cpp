@@ -82,14 +82,18 @@ Address parseAddress(const std::string& url) {
     }
   }
   address.conninfo = kept.empty() ? base : base + "?" + kept;
-  // postgresql://user:secret@host -> postgresql://user:***@host
-  address.display = url;
-  const size_t scheme = url.find("://") + 3, at = url.find('@', scheme);
-  if (at != std::string::npos) {
-    const size_t colon = url.find(':', scheme);
-    if (colon != std::string::npos && colon < at) address.display = url.substr(0, colon + 1) + "***" + url.substr(at);
-  }
+  address.display = hidePassword(url);
   return address;
+}
+
+std::string hidePassword(const std::string& url) {
+  // scheme://user:secret@host -> scheme://user:***@host
+  const size_t slashes = url.find("://");
+  if (slashes == std::string::npos) return url;
+  const size_t scheme = slashes + 3, at = url.find('@', scheme);
+  if (at == std::string::npos) return url;
+  const size_t colon = url.find(':', scheme);
+  return colon != std::string::npos && colon < at ? url.substr(0, colon + 1) + "***" + url.substr(at) : url;
 }
 
 std::string numberedParameters(const std::string& sql, int& parameterCount) {

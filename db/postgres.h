@@ -37,6 +37,8 @@ struct Address {
 Address parseAddress(const std::string& url);
 // true for postgresql:// and postgres:// URLs.
 bool isPostgresUrl(const std::string& text);
+// A URL for logs and errors: scheme://user:secret@host becomes scheme://user:***@host.
+std::string hidePassword(const std::string& url);
 
 class Statement final : public sql::Statement {
  public:

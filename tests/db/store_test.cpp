@@ -88,6 +88,27 @@ TEST(SqliteStoreOpen, FailsWithPathWhenItCannot) {
   expectError([&] { Store::open(":memory:"); }, errc::kStorage);
 }
 
+// A URL that is not PostgreSQL's is an error naming both forms fsdb takes, not a new SQLite file
+// in a folder named after the scheme (before: "postgresql:/db" made a folder "postgresql:").
+TEST(StoreOpen, AUrlOfAnotherSchemeIsAClearErrorAndCreatesNothing) {
+  TempDir dir;
+  const auto cwd = std::filesystem::current_path();
+  std::filesystem::current_path(dir.file(""));
+  for (const std::string location : {"postgresql:/db", "postgres:db", "mysql://u:pw@host/db", "sqlite:///x.db",
+                                     "sqlite:x.db", "FILE:x.db", "http://host/x"}) {
+    const std::string message = expectError([&] { Store::open(location); }, errc::kStorage);
+    FSDB_EXPECT_CONTAINS(message, "postgresql://user@host:5432/database");
+    FSDB_EXPECT_CONTAINS(message, "SQLite file path");
+    EXPECT_EQ(message.find("pw"), std::string::npos) << message;
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir.file("")));
+  // A file path that merely holds a colon is still a file path.
+  Store::open("my:catalogue.sqlite");
+  Store::open("./postgresql:/db.sqlite");
+  std::filesystem::current_path(cwd);
+  EXPECT_TRUE(std::filesystem::exists(dir.file("my:catalogue.sqlite")));
+}
+
 TEST_P(StoreTest, CreateAndGet) {
   auto created = store->create(part("bolt"));
   EXPECT_GT(created.id, 0);
