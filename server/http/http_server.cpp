@@ -290,6 +290,21 @@ void HttpServer::installHandlers() {
                            "body"));
       return;
     }
+    if (res.status == 414) {
+      sendError(res, Error(errc::kLimitExceeded,
+                           "request line longer than " + std::to_string(CPPHTTPLIB_REQUEST_URI_MAX_LENGTH) +
+                               " bytes (the server's URI limit); send long texts in a POST body",
+                           "uri"));
+      res.status = 414;  // limit_exceeded is 413 for bodies; this limit has its own status
+      return;
+    }
+    if (res.status == 400) {
+      sendError(res, Error("bad_request",
+                           "malformed HTTP request: a request or header line longer than " +
+                               std::to_string(CPPHTTPLIB_HEADER_MAX_LENGTH) + " bytes, or not HTTP/1.x",
+                           ""));
+      return;
+    }
     if (res.status == 404) {
       std::vector<std::string> allowed;
       for (size_t i = 0; i < routes_.size(); ++i)

@@ -50,8 +50,8 @@ class BadInput : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir = new TempDir;
-    server = new ServerProcess({"--db", dir->file("bad.sqlite"), "--max-body-bytes", "4000", "--max-json-depth",
-                                "16", "--max-resolution", "64", "--max-nodes", "20"});
+    server = new ServerProcess({"--db", dir->file("bad.sqlite"), "--max-body-bytes", "4000", "--max-json-depth", "16",
+                                "--max-resolution", "64", "--max-nodes", "20"});
     ASSERT_EQ(server->post("/parts", part("good")).status, 201);
   }
   static void TearDownTestSuite() {
@@ -90,13 +90,12 @@ TEST_F(BadInput, InvalidFuzzyNumbersNamingTheirPath) {
   expectError(s, s.post("/parts", part("p", {{"a1", {{"trap", {1, 2, 3}}}}})), 422, "invalid_document", nullptr);
   expectError(s, s.post("/parts", part("p", {{"a1", "NaN"}})), 422, "", "params.a1");
   expectError(s, s.post("/parts", part("p", {{"a1", "inf"}})), 422, "", "params.a1");
-  expectError(s, s.post("/parts",
-                        std::string(R"({"kind":"part","name":"p","params":{"a1":1e999}})")),
-              422, "invalid_document", "params.a1");
+  expectError(s, s.post("/parts", std::string(R"({"kind":"part","name":"p","params":{"a1":1e999}})")), 422,
+              "invalid_document", "params.a1");
   expectError(s, s.post("/parts", std::string(R"({"kind":"part","name":"p","params":{"a1":{"tri":[1,2,1e999]}}})")),
               422, "invalid_document", "params.a1.tri[2]");
-  expectError(s, s.post("/parts", std::string(R"({"kind":"part","name":"p","params":{"a1":1,"a2":-1e999}})")),
-              422, "invalid_document", "params.a2");
+  expectError(s, s.post("/parts", std::string(R"({"kind":"part","name":"p","params":{"a1":1,"a2":-1e999}})")), 422,
+              "invalid_document", "params.a2");
   expectError(s, s.post("/evaluate", std::string(R"({"shape":{"kind":"part","params":{"a1":1}},"alphas":[1e400]})")),
               422, "invalid_document", "alphas[0]");
 }
@@ -108,8 +107,7 @@ TEST_F(BadInput, OutOfRangeParametersAndUnknownFields) {
   expectError(s, s.post("/parts", part("p", {{"a1", -1}})), 422, "", "params.a1");
   expectError(s, s.post("/parts", part("p", {{"kx", 2}})), 422, "", "params.kx");
   expectError(s, s.post("/parts", part("p", {{"a1", 1}, {"a3", 1}, {"kv", 100}})), 422, "", "params.kv");
-  expectError(s, s.post("/parts", part("p", {{"a1", 1}, {"wobble", 1}})), 422, "invalid_document",
-              "params.wobble");
+  expectError(s, s.post("/parts", part("p", {{"a1", 1}, {"wobble", 1}})), 422, "invalid_document", "params.wobble");
   // Valid parts too small or too large to grid: a 422 naming the shape, not a 500 or null volumes.
   for (double a1 : {1e-300, 1e-7, 1e300}) {
     json request = {{"shape", {{"kind", "part"}, {"params", {{"a1", a1}}}}}, {"resolution", 16}};
@@ -118,8 +116,8 @@ TEST_F(BadInput, OutOfRangeParametersAndUnknownFields) {
   json extra = part("p");
   extra["colour"] = "red";
   expectError(s, s.post("/parts", extra), 422, "invalid_document", "colour");
-  expectError(s, s.post("/parts", json{{"kind", "part"}, {"name", "p"}, {"text", "a glorbly frobnicated zyx"}}),
-              422, "", nullptr);
+  expectError(s, s.post("/parts", json{{"kind", "part"}, {"name", "p"}, {"text", "a glorbly frobnicated zyx"}}), 422,
+              "", nullptr);
 }
 
 TEST_F(BadInput, ReferencesCyclesConflictsAndKinds) {
@@ -135,14 +133,15 @@ TEST_F(BadInput, ReferencesCyclesConflictsAndKinds) {
   ASSERT_EQ(x.status, 201) << x.body;
   auto y = s.post("/shapes", unionOf("cy", {{{"ref", "cx"}}}));
   ASSERT_EQ(y.status, 201) << y.body;
-  expectError(s, s.put("/shapes/" + std::to_string(x.json["id"].get<int64_t>()), unionOf("cx", {{{"ref", "cy"}}})),
-              422, "reference_cycle", nullptr);
+  expectError(s, s.put("/shapes/" + std::to_string(x.json["id"].get<int64_t>()), unionOf("cx", {{{"ref", "cy"}}})), 422,
+              "reference_cycle", nullptr);
   EXPECT_EQ(s.get("/shapes/" + std::to_string(x.json["id"].get<int64_t>())).json["version"], 1);
-  expectError(s, s.put("/shapes/" + std::to_string(x.json["id"].get<int64_t>()), unionOf("cx", {{{"ref", "cx"}}})),
-              422, "reference_cycle", nullptr);
+  expectError(s, s.put("/shapes/" + std::to_string(x.json["id"].get<int64_t>()), unionOf("cx", {{{"ref", "cx"}}})), 422,
+              "reference_cycle", nullptr);
   expectError(s, s.post("/parts", part("good")), 409, "conflict", nullptr);
   // A name change on PUT is a conflict too.
-  expectError(s, s.put("/shapes/" + std::to_string(y.json["id"].get<int64_t>()), unionOf("renamed", {{{"part", "good"}}})),
+  expectError(s,
+              s.put("/shapes/" + std::to_string(y.json["id"].get<int64_t>()), unionOf("renamed", {{{"part", "good"}}})),
               409, "conflict", nullptr);
   expectError(s, s.post("/parts", unionOf("u2", {{{"part", "good"}}})), 422, "invalid_document", "kind");
   expectError(s, s.post("/shapes", part("p2")), 422, "invalid_document", "kind");
@@ -164,25 +163,43 @@ TEST_F(BadInput, Limits) {
   auto shape = s.post("/shapes", unionOf("small", {{{"part", "good"}}}));
   ASSERT_EQ(shape.status, 201);
   const std::string sid = std::to_string(shape.json["id"].get<int64_t>());
-  expectError(s, s.post("/shapes/" + sid + "/evaluate", json{{"resolution", 65}}), 413, "limit_exceeded",
-              "resolution", "max_resolution");
+  expectError(s, s.post("/shapes/" + sid + "/evaluate", json{{"resolution", 65}}), 413, "limit_exceeded", "resolution",
+              "max_resolution");
   expectError(s, s.get("/shapes/" + sid + "/mesh?resolution=9999"), 413, "limit_exceeded", "resolution",
               "max_resolution");
   json many = json::array();
   for (int i = 0; i < 25; ++i) many.push_back({{"part", "good"}});
   expectError(s, s.post("/shapes", unionOf("many", many)), 413, "limit_exceeded", nullptr, "max_nodes");
+  // The URI limit: 414 naming it (httplib's own answer said only "request failed"), and a URI
+  // just under it is served.
+  expectError(s, s.get("/parts?name=" + std::string(9000, 'a')), 414, "limit_exceeded", "uri", "8192 bytes");
+  EXPECT_EQ(s.get("/parts?name=" + std::string(8000, 'a')).status, 200);
+  // A header line over httplib's limit: 400 saying so, with the JSON error body.
+  auto c = s.client();
+  const auto r = c.Get("/health", httplib::Headers{{"X-Big", std::string(9000, 'b')}});
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400);
+  EXPECT_NE(r->body.find("\"code\":\"bad_request\""), std::string::npos) << r->body;
+  EXPECT_NE(r->body.find("8192 bytes"), std::string::npos) << r->body;
 }
 
 TEST_F(BadInput, PathsAndQueryParameters) {
   const ServerProcess& s = *server;
   // GET requests whose path segment or query parameter is invalid: (target, the parameter named).
   const std::vector<std::pair<std::string, std::string>> invalid = {
-      {"/parts/abc", "id"}, {"/parts/-3", "id"}, {"/parts/1.5", "id"},
+      {"/parts/abc", "id"},
+      {"/parts/-3", "id"},
+      {"/parts/1.5", "id"},
       {"/shapes/0/membership?x=0&y=0&z=0", "id"},
       // Every {id} is parsed alike: no sign, no overflow to "not found".
-      {"/shapes/+1/membership?x=0&y=0&z=0", "id"}, {"/parts/+1", "id"}, {"/shapes/1e3/grid.vdb", "id"},
-      {"/parts?limit=0", "limit"}, {"/parts?limit=100000", "limit"}, {"/parts?after=x", "after"},
-      {"/parts?name=good&version=abc", "version"}, {"/parts/1?version=0", "version"}};
+      {"/shapes/+1/membership?x=0&y=0&z=0", "id"},
+      {"/parts/+1", "id"},
+      {"/shapes/1e3/grid.vdb", "id"},
+      {"/parts?limit=0", "limit"},
+      {"/parts?limit=100000", "limit"},
+      {"/parts?after=x", "after"},
+      {"/parts?name=good&version=abc", "version"},
+      {"/parts/1?version=0", "version"}};
   for (const auto& [target, parameter] : invalid)
     expectError(s, s.get(target), 422, "invalid_parameter", parameter.c_str());
   expectError(s, s.post("/shapes/99999999999999999999/evaluate", std::string("")), 422, "invalid_parameter", "id");
@@ -211,14 +228,10 @@ TEST_F(BadInput, RoutesAndMethods) {
 
 TEST_F(BadInput, BulkReportsBadLinesAndImportsTheGoodOnes) {
   const ServerProcess& s = *server;
-  const std::string body = part("bulk-a").dump() + "\n" +
-                           "{not json\n" +
-                           "\n" +
-                           part("bulk-b", {{"a1", -1}}).dump() + "\n" +
-                           part("good").dump() + "\n" +
-                           unionOf("bulk-s", {{{"part", "bulk-a"}}}).dump() + "\n" +
-                           part("bulk-c").dump() + "\n" +
-                           R"({"kind":"part","name":"bulk-d","params":{"a1":1e999}})" + "\n";
+  const std::string body = part("bulk-a").dump() + "\n" + "{not json\n" + "\n" + part("bulk-b", {{"a1", -1}}).dump() +
+                           "\n" + part("good").dump() + "\n" + unionOf("bulk-s", {{{"part", "bulk-a"}}}).dump() + "\n" +
+                           part("bulk-c").dump() + "\n" + R"({"kind":"part","name":"bulk-d","params":{"a1":1e999}})" +
+                           "\n";
   auto r = s.post("/parts/bulk", body, "application/x-ndjson");
   ASSERT_EQ(r.status, 200) << r.body;
   EXPECT_EQ(r.json["imported"], 2);
@@ -265,10 +278,10 @@ TEST(BadInputToken, WritesNeedTheTokenReadsDoNot) {
   auto shape = server.post("/shapes", json{{"kind", "shape"}, {"name", "ts"}, {"tree", {{"part", "t"}}}});
   ASSERT_EQ(shape.status, 201) << shape.body;
   server.setToken("");
-  EXPECT_EQ(server.post("/shapes/" + std::to_string(shape.json["id"].get<int64_t>()) + "/evaluate",
-                        json{{"resolution", 16}})
-                .status,
-            200);
+  EXPECT_EQ(
+      server.post("/shapes/" + std::to_string(shape.json["id"].get<int64_t>()) + "/evaluate", json{{"resolution", 16}})
+          .status,
+      200);
 }
 
 // Bodies as curl sends them. `curl -d` labels a JSON body application/x-www-form-urlencoded;
@@ -298,20 +311,24 @@ TEST(BadInputBodies, FormLabelledJsonOver8KiBChunkedAndMultipartBodies) {
   expectError(server, server.post("/parts", big.dump()), 413, "limit_exceeded", "body", "max_body_bytes=100000");
   httplib::Client c = server.client();
   const std::string chunked = big.dump();
-  auto res = c.Post("/parts", chunked.size(),
-                    [&](size_t offset, size_t length, httplib::DataSink& sink) {
-                      sink.write(chunked.data() + offset, std::min<size_t>(length, 4096));
-                      return true;
-                    },
-                    "application/json");
+  auto res = c.Post(
+      "/parts", chunked.size(),
+      [&](size_t offset, size_t length, httplib::DataSink& sink) {
+        sink.write(chunked.data() + offset, std::min<size_t>(length, 4096));
+        return true;
+      },
+      "application/json");
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 413) << res->body;
-  res = c.Post("/parts", [&](size_t offset, httplib::DataSink& sink) {
-                 if (offset < chunked.size()) sink.write(chunked.data() + offset, std::min<size_t>(4096, chunked.size() - offset));
-                 else sink.done();
-                 return true;
-               },
-               "application/json");
+  res = c.Post(
+      "/parts",
+      [&](size_t offset, httplib::DataSink& sink) {
+        if (offset < chunked.size())
+          sink.write(chunked.data() + offset, std::min<size_t>(4096, chunked.size() - offset));
+        else sink.done();
+        return true;
+      },
+      "application/json");
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 413) << res->body;
   EXPECT_NE(res->body.find("max_body_bytes=100000"), std::string::npos) << res->body;
