@@ -245,8 +245,8 @@ TEST_P(DescriptorIndexTest, OverlapScanEqualsBruteForce) {
   for (int q = 0; q < 600; ++q) {
     DescriptorOverlap test{"bendness", unit(rng) * 1.2 - 0.1, 0};
     test.hi = test.lo + (unit(rng) < 0.3 ? 0.0 : unit(rng) * 0.3);
-    if (q % 10 == 0) test.lo = supports[q].first;   // exactly on a support end
-    if (q % 10 == 1) test.hi = supports[q].second;
+    if (q % 10 == 0) test.lo = supports[q % supports.size()].first;  // exactly on a support end
+    if (q % 10 == 1) test.hi = supports[q % supports.size()].second;
     if (test.hi < test.lo) test.hi = test.lo;
     test.loIncluded = q % 3 != 0;
     test.hiIncluded = q % 5 != 0;
