@@ -4,7 +4,10 @@ JOBS ?= 2
 HOST ?= 127.0.0.1
 PORT ?= 8080
 
-.PHONY: deps configure build serve test bench clean
+SANITIZE_BUILD ?= build-sanitize
+FUZZ_SECONDS ?= 60
+
+.PHONY: deps configure build serve test bench clean sanitize-build test-sanitize fuzz
 
 deps:
 	scripts/install-deps
@@ -21,6 +24,21 @@ serve: build
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j$(JOBS)
+
+# The suite again under AddressSanitizer and UndefinedBehaviorSanitizer (clang), with the fuzz
+# targets' regression inputs; the PostgreSQL reruns of the server suites are left out (the same
+# code as their SQLite runs; the db/ suites still run on both backends).
+sanitize-build: deps
+	CC=clang CXX=clang++ cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Release -DFSDB_FUZZ=ON -DFSDB_BUILD_BENCH=OFF
+	cmake --build $(SANITIZE_BUILD) -j$(JOBS)
+
+test-sanitize: sanitize-build
+	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j$(JOBS) -E '^postgresql\.'
+
+# Every fuzz target for FUZZ_SECONDS each (scripts/fuzz; crashes are kept under tests/fuzz/regressions).
+fuzz: sanitize-build
+	scripts/fuzz $(FUZZ_SECONDS) $(SANITIZE_BUILD)
 
 bench: build
 	scripts/run-benchmarks $(BUILD)
