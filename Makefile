@@ -33,7 +33,8 @@ sanitize-build: deps
 	cmake --build $(SANITIZE_BUILD) -j$(JOBS)
 
 test-sanitize: sanitize-build
-	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+	  UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1:suppressions=$(CURDIR)/tests/sanitize/ubsan.supp \
 	  ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j$(JOBS) -E '^postgresql\.'
 
 # Every fuzz target for FUZZ_SECONDS each (scripts/fuzz; crashes are kept under tests/fuzz/regressions).

@@ -13,13 +13,12 @@ namespace fsdb {
 
 int64_t positiveInteger(const std::string& text, const std::string& what, int64_t max) {
   int64_t v = 0;
+  // At most 18 digits, which int64_t holds; a longer text is refused before any digit is taken
+  // (it was read on, and 19 nines overflowed: undefined behaviour UBSan found).
   bool ok = !text.empty() && text.size() <= 18;
-  for (char c : text) {
-    if (c < '0' || c > '9') {
-      ok = false;
-      break;
-    }
-    v = v * 10 + (c - '0');
+  for (size_t i = 0; ok && i < text.size(); ++i) {
+    ok = text[i] >= '0' && text[i] <= '9';
+    if (ok) v = v * 10 + (text[i] - '0');
   }
   if (!ok || v <= 0 || v > max)
     throw Error(errc::kInvalidParameter,

@@ -15,6 +15,7 @@
 #include "tests/geometry/expect_error.h"
 #include "tests/geometry/fuzzy_ball.h"
 #include "tests/testing/fuzzy_bench_part.h"
+#include "tests/testing/sanitizer_slowdown.h"
 
 namespace fsdb {
 namespace {
@@ -82,7 +83,7 @@ TEST_F(SlowPartDeadline, PastDeadlineStopsAtOnce) {
   limits.deadline = Clock::now() - std::chrono::milliseconds(1);
   const auto start = Clock::now();
   expectError([&] { EnvelopeGrid::build(field_, voxel_, limits); }, errc::kLimitExceeded, kDeadlinePath);
-  EXPECT_LT(secondsSince(start), 0.5);
+  EXPECT_LT(secondsSince(start), 0.5 * testing::kSlowdown);
 }
 
 TEST_F(SlowPartDeadline, DeadlineDuringTheBuildStopsItWithinABlock) {
@@ -90,7 +91,7 @@ TEST_F(SlowPartDeadline, DeadlineDuringTheBuildStopsItWithinABlock) {
   const auto start = Clock::now();
   limits.deadline = start + std::chrono::milliseconds(150);
   expectError([&] { EnvelopeGrid::build(field_, voxel_, limits); }, errc::kLimitExceeded, kDeadlinePath);
-  EXPECT_LT(secondsSince(start), 1.5);  // generous: one 8³ block per thread past the deadline
+  EXPECT_LT(secondsSince(start), 1.5 * testing::kSlowdown);  // generous: one 8³ block per thread past the deadline
 }
 
 // A budget of one enclosure makes nearly every search of the fuzzy part run out.

@@ -99,7 +99,8 @@ TEST(CsgRelations, AnEqualSiblingThatTheWordsDescribeIsPreferred) {
   // Two equal spheres, beside and on top: the common subgraph cannot tell them apart; the relation can.
   const CsgQuery q = query("a sphere on top of a cylinder");
   for (const bool topFirst : {false, true}) {
-    nlohmann::json children = {placed("a cylinder", {0, 0, 0})};
+    // json::array, not = {...}: clang takes a one-element brace list as a copy of the object.
+    nlohmann::json children = nlohmann::json::array({placed("a cylinder", {0, 0, 0})});
     children.push_back(placed("a sphere", topFirst ? std::vector<double>{0, 3, 0} : std::vector<double>{3, 0, 0}));
     children.push_back(placed("a sphere", topFirst ? std::vector<double>{3, 0, 0} : std::vector<double>{0, 3, 0}));
     const ShapeGraph s = stored(children);
