@@ -15,16 +15,15 @@ using nlohmann::json;
 void checkCount(std::size_t n, std::size_t max, const std::string& limitName, const std::string& what,
                 const std::string& path) {
   if (n > max)
-    throw Error(errc::kLimitExceeded, std::to_string(n) + " " + what + " exceed " + limitName + "=" + std::to_string(max),
-                path);
+    throw Error(errc::kLimitExceeded,
+                std::to_string(n) + " " + what + " exceed " + limitName + "=" + std::to_string(max), path);
 }
 
 FuzzyPoint parsePoint(const json& j, const std::string& path) {
   requireArray(j, path);
   if (j.empty() || j.size() > 3)
-    throw Error(errc::kInvalidDocument, "a control point is [x, y] or [x, y, z], got " + std::to_string(j.size()) +
-                                            " coordinates",
-                path);
+    throw Error(errc::kInvalidDocument,
+                "a control point is [x, y] or [x, y, z], got " + std::to_string(j.size()) + " coordinates", path);
   FuzzyPoint p;
   for (std::size_t c = 0; c < j.size(); ++c) p.push_back(parseFuzzyNumber(j[c], joinPath(path, c)));
   return p;
@@ -60,7 +59,8 @@ FuzzyBezierCurve parseBezierCurve(const json& obj, const std::string& path, cons
   if (obj.contains("weights")) {
     const std::string wp = joinPath(path, "weights");
     const json& weights = requireArray(obj["weights"], wp);
-    for (std::size_t k = 0; k < weights.size(); ++k) curve.weights.push_back(parseFuzzyNumber(weights[k], joinPath(wp, k)));
+    for (std::size_t k = 0; k < weights.size(); ++k)
+      curve.weights.push_back(parseFuzzyNumber(weights[k], joinPath(wp, k)));
     if (curve.weights.empty())
       throw Error(errc::kInvalidDocument, "weights must not be empty (leave it out for a polynomial curve)", wp);
   }
@@ -82,6 +82,7 @@ FuzzyBezierSurface parseBezierSurface(const json& obj, const std::string& path, 
 }
 
 FuzzyBezierSurface parseSurfaceDocument(const json& doc, const std::string& path, const BezierJsonLimits& limits) {
+  requireObject(doc, path);  // before rejectUnknownKeys, which iterates keys (an array threw json's error)
   rejectUnknownKeys(doc, path, {"kind", "name", "bezier", "meta"}, " in a surface document");
   const std::string bp = joinPath(path, "bezier");
   const json& bezier = requireObject(requireField(doc, "bezier", path), bp);
@@ -91,8 +92,7 @@ FuzzyBezierSurface parseSurfaceDocument(const json& doc, const std::string& path
 
 double parseUnitNumber(const json& j, const std::string& path) {
   const double x = requireNumber(j, path);
-  if (x < 0.0 || x > 1.0)
-    throw Error(errc::kInvalidParameter, "must lie in [0, 1], got " + j.dump(), path);
+  if (x < 0.0 || x > 1.0) throw Error(errc::kInvalidParameter, "must lie in [0, 1], got " + j.dump(), path);
   return x;
 }
 

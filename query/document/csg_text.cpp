@@ -61,8 +61,16 @@ class Parser {
   nlohmann::json factor() {
     skip();
     if (i_ < s_.size() && s_[i_] == '(') {
+      // Each '(' is a recursion: 100000 of them overflowed the stack and took the server down
+      // (found by tests/fuzz/fuzz_shape_document). The bound is that of JSON nesting's default.
+      if (++depth_ > kMaxNesting)
+        throw Error(errc::kLimitExceeded,
+                    "csg: parentheses nest deeper than " + std::to_string(kMaxNesting) + " levels at column " +
+                        std::to_string(i_ + 1),
+                    path_);
       ++i_;
       nlohmann::json inner = expr();
+      --depth_;
       skip();
       if (i_ >= s_.size() || s_[i_] != ')') fail("expected ')'");
       ++i_;
@@ -82,14 +90,11 @@ class Parser {
   // link (quadratic: "cube + cube + ..." of 9999 names took seconds).
   static nlohmann::json combine(const std::string& op, nlohmann::json left, nlohmann::json right) {
     nlohmann::json node{{"op", op}, {"children", nlohmann::json::array()}};
-    if (left.contains("op") && left["op"] == op)
-      node["children"] = std::move(left["children"]);
-    else
-      node["children"].push_back(std::move(left));
+    if (left.contains("op") && left["op"] == op) node["children"] = std::move(left["children"]);
+    else node["children"].push_back(std::move(left));
     if (op != "difference" && right.contains("op") && right["op"] == op)
       for (auto& c : right["children"]) node["children"].push_back(std::move(c));
-    else
-      node["children"].push_back(std::move(right));
+    else node["children"].push_back(std::move(right));
     return node;
   }
 
@@ -126,6 +131,8 @@ class Parser {
                 "csg: " + expected + " at column " + std::to_string(i_ + 1) + ", found " + found, path_);
   }
 
+  static constexpr int kMaxNesting = 64;
+  int depth_ = 0;  // parentheses open around the position
   const std::string& s_;
   const CsgNameKind& kindOf_;
   const std::string& path_;

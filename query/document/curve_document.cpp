@@ -6,8 +6,9 @@
 
 namespace fsdb {
 
-CurveDocument parseCurveDocument(const nlohmann::json& doc, const std::string& path, const BezierJsonLimits& bezierLimits,
-                                 const FairCurveLimits& fairLimits) {
+CurveDocument parseCurveDocument(const nlohmann::json& doc, const std::string& path,
+                                 const BezierJsonLimits& bezierLimits, const FairCurveLimits& fairLimits) {
+  requireObject(doc, path);  // before rejectUnknownKeys, which iterates keys (an array threw json's error)
   rejectUnknownKeys(doc, path, {"kind", "name", "bezier", "fair", "meta"}, " in a curve document");
   const bool isBezier = doc.contains("bezier"), isFair = doc.contains("fair");
   if (isBezier == isFair)

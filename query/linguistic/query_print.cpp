@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "geometry/core/error.h"
+#include "geometry/core/number_format.h"
 #include "query/json/fuzzy_json.h"
 #include "query/json/number_phrases.h"
 #include "query/linguistic/degree_sets.h"
@@ -128,24 +129,15 @@ class Printer {
 
 }  // namespace
 
-std::string numberText(double x) {
-  char buf[40];
-  for (int precision = 1; precision <= 17; ++precision) {
-    std::snprintf(buf, sizeof buf, "%.*g", precision, x);
-    if (std::strtod(buf, nullptr) == x) break;
-  }
-  return buf;
-}
-
 std::string distanceText(const FuzzyNumber& d, const Vocabulary& vocabulary) {
   for (const std::string& word : vocabulary.distanceWords())
     if (*vocabulary.distance(word) == d) return word;
   const Interval core = d.core(), support = d.support();
-  if (d.isCrisp()) return numberText(core.lo);
-  const std::string about = "about " + numberText(core.lo);
+  if (d.isCrisp()) return formatNumber(core.lo);
+  const std::string about = "about " + formatNumber(core.lo);
   if (core.lo == core.hi && parseNumberPhrase(about) == d) return about;
   if (core.lo == support.lo && core.hi == support.hi) {
-    const std::string between = "between " + numberText(core.lo) + " and " + numberText(core.hi);
+    const std::string between = "between " + formatNumber(core.lo) + " and " + formatNumber(core.hi);
     if (parseNumberPhrase(between) == d) return between;
   }
   unprintable("the distance " + toJson(d).dump());
@@ -166,7 +158,7 @@ std::string linguisticQueryText(const LinguisticQuery& query, const Vocabulary& 
   } else {
     out += p.nounPhrase(query.root, query.subject, "a");
   }
-  if (query.atLeast > 0) out += " at least " + numberText(query.atLeast);
+  if (query.atLeast > 0) out += " at least " + formatNumber(query.atLeast);
   if (query.aggregation != "min") out += " using " + query.aggregation;
   return out;
 }

@@ -36,7 +36,4 @@ std::string nounPhraseText(const LinguisticQuery& phrase, const Vocabulary& voca
 // "between a and b", or a crisp number.
 std::string distanceText(const FuzzyNumber& distance, const Vocabulary& vocabulary);
 
-// The shortest decimal form of x that reads back (strtod) to exactly x.
-std::string numberText(double x);
-
 }  // namespace fsdb

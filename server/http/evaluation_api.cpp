@@ -11,14 +11,14 @@
 
 #include "db/content_hash.h"
 #include "db/store.h"
+#include "geometry/core/error.h"
 #include "geometry/voxel/envelope_mesh.h"
 #include "geometry/voxel/smooth_mesh.h"
-#include "geometry/core/error.h"
 #include "query/json/json_body.h"
 #include "server/http/api.h"
+#include "server/http/http_server.h"
 #include "server/service/documents.h"
 #include "server/service/evaluation.h"
-#include "server/http/http_server.h"
 #include "server/service/mesh_format.h"
 #include "server/service/png_format.h"
 #include "server/service/thumbnail.h"
@@ -33,7 +33,8 @@ double numberParam(const ApiRequest& req, const std::string& name, std::optional
   const std::string text = req.queryParam(name);
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(v))
+  // Every byte must be read: an encoded NUL ("0%00junk") stopped strtod as an end would.
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v))
     throw Error(errc::kInvalidParameter, name + " must be a finite number, got \"" + text + "\"", name);
   return v;
 }
@@ -46,7 +47,6 @@ int64_t shapeId(const ApiRequest& req) { return positiveInteger(req.pathParams[0
 
 // Voxels across a thumbnail's shape: enough for 128 pixels once the vertices are on the surface.
 constexpr int kThumbnailResolution = 48;
-
 
 // The stored shape, parsed once (the same parse serves the cache key and, on a miss, the
 // evaluation), and a fingerprint of everything it is made of: its document and each referenced
@@ -81,14 +81,14 @@ int exportResolution(const ApiRequest& req, int maxResolution) {
     throw Error(errc::kInvalidParameter, "resolution must be an integer of at least 2", "resolution");
   if (r > maxResolution)
     throw Error(errc::kLimitExceeded,
-                "resolution " + std::to_string(static_cast<long long>(r)) + " exceeds max_resolution=" +
-                    std::to_string(maxResolution),
+                "resolution " + std::to_string(static_cast<long long>(r)) +
+                    " exceeds max_resolution=" + std::to_string(maxResolution),
                 "resolution");
   return static_cast<int>(r);
 }
 
-ApiResponse bytesResponse(std::string bytes, const std::string& contentType, const std::string& filename,
-                          bool cached, bool inlineView = false) {
+ApiResponse bytesResponse(std::string bytes, const std::string& contentType, const std::string& filename, bool cached,
+                          bool inlineView = false) {
   ApiResponse out{200, nullptr, std::move(bytes), contentType};
   // Pictures open in the browser; mesh and grid files download.
   out.headers.emplace_back("Content-Disposition",
@@ -110,25 +110,28 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
   });
 
   // The body ({"resolution","alphas","method"}) may be empty: the defaults of POST /evaluate.
-  server.addRoute("POST", "/shapes/{id}/evaluate", [limits, maxDepth, &store](const ApiRequest& req) {
-    nlohmann::json request = nlohmann::json::object();
-    if (req.rawBody().find_first_not_of(" \t\r\n") != std::string::npos)
-      request = parseJsonBody(req.rawBody(), maxDepth);
-    requireObject(request, "");
-    const StoredShape shape = loadShape(store, shapeId(req), limits.maxNodes);
-    const std::string key = cacheKey("evaluate", shape, request.dump());
-    if (auto hit = store.cachedEvaluation(key)) {
-      nlohmann::json result = nlohmann::json::parse(hit->resultJson);
-      result["cached"] = true;
-      return ApiResponse{200, result};
-    }
-    nlohmann::json result = evaluateParsedShape(request, shape.parsed, limits).result;
-    result["shape_id"] = shape.object.id;
-    result["shape_version"] = shape.object.version;
-    store.storeEvaluation(shape.object.id, key, {result.dump(), ""});
-    result["cached"] = false;
-    return ApiResponse{200, result};
-  }, RouteOptions{false, true});
+  server.addRoute(
+      "POST", "/shapes/{id}/evaluate",
+      [limits, maxDepth, &store](const ApiRequest& req) {
+        nlohmann::json request = nlohmann::json::object();
+        if (req.rawBody().find_first_not_of(" \t\r\n") != std::string::npos)
+          request = parseJsonBody(req.rawBody(), maxDepth);
+        requireObject(request, "");
+        const StoredShape shape = loadShape(store, shapeId(req), limits.maxNodes);
+        const std::string key = cacheKey("evaluate", shape, request.dump());
+        if (auto hit = store.cachedEvaluation(key)) {
+          nlohmann::json result = nlohmann::json::parse(hit->resultJson);
+          result["cached"] = true;
+          return ApiResponse{200, result};
+        }
+        nlohmann::json result = evaluateParsedShape(request, shape.parsed, limits).result;
+        result["shape_id"] = shape.object.id;
+        result["shape_version"] = shape.object.version;
+        store.storeEvaluation(shape.object.id, key, {result.dump(), ""});
+        result["cached"] = false;
+        return ApiResponse{200, result};
+      },
+      RouteOptions{false, true});
 
   // docs/api.md §4: "upper" is the highest α with the point in upper(α). "lower" as docs/api.md
   // words it (the highest α with the point in lower(α)) is 1 or 0, because lower(α) grows with α;
@@ -167,9 +170,12 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
           shape.object.name + "-" + (glb ? std::string() : bound + "-") + std::to_string(alpha) + "." + format;
       const std::string contentType = glb ? "model/gltf-binary" : format == "obj" ? "model/obj" : "model/stl";
       const std::string key = cacheKey("mesh", shape,
-                                       nlohmann::json{{"alpha", alpha}, {"bound", glb ? "both" : bound},
-                                                      {"format", format}, {"resolution", resolution},
-                                                      {"surface", "smooth"}}.dump());
+                                       nlohmann::json{{"alpha", alpha},
+                                                      {"bound", glb ? "both" : bound},
+                                                      {"format", format},
+                                                      {"resolution", resolution},
+                                                      {"surface", "smooth"}}
+                                           .dump());
       if (auto hit = store.cachedEvaluation(key)) return bytesResponse(hit->vdb, contentType, filename, true);
       const Evaluation e = evaluateParsedShape({{"resolution", resolution}, {"alphas", {alpha}}}, shape.parsed, limits);
       std::string bytes;

@@ -30,10 +30,30 @@ TEST(CsgText, ParsesTheSpecExampleWithPrecedence) {
   EXPECT_EQ(t.tree, expected) << t.tree.dump();
 }
 
+// Parentheses nest at most 64 deep: 100000 of them overflowed the stack (a crash of the server
+// on POST /shapes, found by fuzzing); 64 still parse, and sequences of groups are not nesting.
+TEST(CsgText, ParenthesesNestAtMost64Deep) {
+  EXPECT_EQ(parse(std::string(64, '(') + "A" + std::string(64, ')')), json({{"part", "A"}}));
+  std::string groups;
+  for (int i = 0; i < 200; ++i) groups += i ? " + (B)" : "(A)";
+  EXPECT_EQ(parse(groups)["children"].size(), 200u);
+  for (int n : {65, 100000}) {
+    try {
+      parse(std::string(n, '(') + "A" + std::string(n, ')'));
+      ADD_FAILURE() << n << " levels parsed";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), errc::kLimitExceeded);
+      EXPECT_EQ(e.path(), "csg");
+      EXPECT_NE(std::string(e.what()).find("deeper than 64 levels at column 65"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(CsgText, IntersectionBindsTighterThanUnion) {
   EXPECT_EQ(parse("A + B * C"),
             json({{"op", "union"},
-                  {"children", {{{"part", "A"}}, {{"op", "intersection"}, {"children", {{{"part", "B"}}, {{"part", "C"}}}}}}}}));
+                  {"children",
+                   {{{"part", "A"}}, {{"op", "intersection"}, {"children", {{{"part", "B"}}, {{"part", "C"}}}}}}}}));
 }
 
 TEST(CsgText, ChainsBecomeNaryNodesButDifferenceKeepsItsOrder) {
@@ -52,7 +72,8 @@ TEST(CsgText, ChainsBecomeNaryNodesButDifferenceKeepsItsOrder) {
 // copied: bench/bench_csg_query_text times it); parenthesised operands change nothing.
 TEST(CsgText, LongChainsKeepEveryOperandInOrder) {
   std::string text = "P0";
-  for (int i = 1; i < 5000; ++i) text += (i % 2 ? " + " : " + (") + std::string("P") + std::to_string(i) + (i % 2 ? "" : ")");
+  for (int i = 1; i < 5000; ++i)
+    text += (i % 2 ? " + " : " + (") + std::string("P") + std::to_string(i) + (i % 2 ? "" : ")");
   const json tree = parse(text);
   EXPECT_EQ(tree["op"], "union");
   ASSERT_EQ(tree["children"].size(), 5000u);

@@ -1,6 +1,7 @@
 // query/document/curve_document: a stored curve is a Bézier curve or a fair curve, exactly one, with the
 // JSON path of every bad value (prefixed by the caller's) and the limits named.
 #include "query/document/curve_document.h"
+#include "query/document/bezier_json.h"
 
 #include <gtest/gtest.h>
 
@@ -40,8 +41,14 @@ TEST(CurveDocument, ErrorsCarryTheJsonPath) {
     expectError([&] { parseCurveDocument(json::parse(text), "line", kLimits); }, code, path);
   };
   bad(R"({"name":"c"})", "line.bezier");
+  // Not an object: invalid_document, not json's own iterator error (found by fuzz_curve_document).
+  for (const char* notObject : {"[1]", "\"c\"", "3"}) {
+    bad(notObject, "line");
+    expectError([&] { parseSurfaceDocument(json::parse(notObject), "line", kLimits); }, errc::kInvalidDocument, "line");
+  }
   bad(R"({"name":"c","fair":{"points":[[0,0],[1,1]]},"bezier":{"control_points":[[0]]}})", "line.fair");
-  bad(R"({"name":"c","bezier":{"control_points":[[0,0],[{"tri":[1,0,2]},0]]}})", "line.bezier.control_points[1][0].tri[1]");
+  bad(R"({"name":"c","bezier":{"control_points":[[0,0],[{"tri":[1,0,2]},0]]}})",
+      "line.bezier.control_points[1][0].tri[1]");
   bad(R"({"name":"c","bezier":{"control_points":[[0,0],[0]]}})", "line.bezier.control_points[1]");
   bad(R"({"name":"c","bezier":{"control_points":[[0,0,0,0]]}})", "line.bezier.control_points[0]");
   bad(R"({"name":"c","bezier":{"control_points":[[0]],"weights":[-1]}})", "line.bezier.weights[0]");
@@ -60,8 +67,9 @@ TEST(CurveDocument, ErrorsCarryTheJsonPath) {
   bad(R"({"name":"c","shape":{}})", "line.shape");
   FairCurveLimits small;
   small.maxPoints = 2;
-  expectError([&] { parseCurveDocument(json::parse(R"({"fair":{"points":[[0,0],[1,1],[2,0]]}})"), "", kLimits, small); },
-              errc::kLimitExceeded, "fair.points");
+  expectError(
+      [&] { parseCurveDocument(json::parse(R"({"fair":{"points":[[0,0],[1,1],[2,0]]}})"), "", kLimits, small); },
+      errc::kLimitExceeded, "fair.points");
 }
 
 }  // namespace

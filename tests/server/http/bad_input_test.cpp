@@ -170,6 +170,12 @@ TEST_F(BadInput, Limits) {
   json many = json::array();
   for (int i = 0; i < 25; ++i) many.push_back({{"part", "good"}});
   expectError(s, s.post("/shapes", unionOf("many", many)), 413, "limit_exceeded", nullptr, "max_nodes");
+  // Parentheses in a csg formula nest at most 64 deep (100000 took the server down).
+  expectError(s,
+              s.post("/shapes", json{{"kind", "shape"},
+                                     {"name", "deep"},
+                                     {"csg", std::string(1500, '(') + "good" + std::string(1500, ')')}}),
+              413, "limit_exceeded", "csg", "deeper than 64 levels");
   // The URI limit: 414 naming it (httplib's own answer said only "request failed"), and a URI
   // just under it is served.
   expectError(s, s.get("/parts?name=" + std::string(9000, 'a')), 414, "limit_exceeded", "uri", "8192 bytes");
@@ -211,6 +217,10 @@ TEST_F(BadInput, PathsAndQueryParameters) {
   const std::string sid = std::to_string(shape.json["id"].get<int64_t>());
   expectError(s, s.get("/shapes/" + sid + "/membership?x=0&y=0"), 422, "invalid_parameter", "z");
   expectError(s, s.get("/shapes/" + sid + "/membership?x=a&y=0&z=0"), 422, "invalid_parameter", "x");
+  // An encoded NUL ends the number early for strtod; the rest of the text still counts.
+  expectError(s, s.get("/shapes/" + sid + "/membership?x=0%00junk&y=0&z=0"), 422, "invalid_parameter", "x");
+  // A 19-digit id is refused without overflowing (undefined behaviour UBSan found).
+  expectError(s, s.get("/shapes/9999999999999999999/membership?x=0&y=0&z=0"), 422, "invalid_parameter", "id");
   expectError(s, s.get("/shapes/" + sid + "/mesh?format=ply"), 422, "invalid_parameter", "format");
   expectError(s, s.get("/shapes/" + sid + "/mesh?bound=middle"), 422, "invalid_parameter", "bound");
   expectError(s, s.get("/shapes/" + sid + "/mesh?alpha=2"), 422, "invalid_parameter", "alpha");
