@@ -27,7 +27,10 @@ Error invalidArgument(const std::string& message, const std::string& path) {
 double crossing(const Breakpoint& a, const Breakpoint& b, double alpha) {
   if (alpha == b.mu || a.x == b.x) return b.x;
   if (alpha == a.mu) return a.x;
-  return a.x + (alpha - a.mu) / (b.mu - a.mu) * (b.x - a.x);
+  const double t = (alpha - a.mu) / (b.mu - a.mu), span = b.x - a.x;
+  // Breakpoints near -DBL_MAX and DBL_MAX: their span overflows to infinity, the weighted mean
+  // of the two does not (found by fuzz_fuzzy_number: {"tri":[-1e308,1e308,1e308]}).
+  return std::isfinite(span) ? a.x + t * span : (1 - t) * a.x + t * b.x;
 }
 
 // Keeps (left limit, value, right limit) of each run of breakpoints sharing an x.
@@ -74,8 +77,7 @@ bool dropCollinear(std::vector<Breakpoint>& p) {
     if (a.x < b.x && b.x < c.x) {
       const double onLine = a.mu + (c.mu - a.mu) * ((b.x - a.x) / (c.x - a.x));
       const bool extreme = b.mu == 0 || b.mu == 1;
-      drop = std::abs(b.mu - onLine) <= kCollinearTolerance &&
-             (!extreme || (a.mu == b.mu && c.mu == b.mu));
+      drop = std::abs(b.mu - onLine) <= kCollinearTolerance && (!extreme || (a.mu == b.mu && c.mu == b.mu));
     }
     if (!drop) out.push_back(b);
   }
@@ -98,12 +100,11 @@ std::vector<Breakpoint> canonical(std::vector<Breakpoint> p) {
 }
 
 void checkAlpha(double alpha, bool allowZero, bool allowOne) {
-  const bool ok = std::isfinite(alpha) && (allowZero ? alpha >= 0 : alpha > 0) &&
-                  (allowOne ? alpha <= 1 : alpha < 1);
+  const bool ok = std::isfinite(alpha) && (allowZero ? alpha >= 0 : alpha > 0) && (allowOne ? alpha <= 1 : alpha < 1);
   if (!ok) {
     throw Error(errc::kInvalidParameter,
-                "alpha must be in " + std::string(allowZero ? "[0" : "(0") + ", " +
-                    (allowOne ? "1]" : "1)") + ", got " + formatNumber(alpha),
+                "alpha must be in " + std::string(allowZero ? "[0" : "(0") + ", " + (allowOne ? "1]" : "1)") +
+                    ", got " + formatNumber(alpha),
                 "alpha");
   }
 }
@@ -136,16 +137,14 @@ FuzzyNumber FuzzyNumber::triangular(double l, double m, double r) {
   const char* names[3] = {"l", "m", "r"};
   for (size_t i = 0; i < 3; ++i) {
     if (!std::isfinite(v[i])) {
-      throw invalidArgument(std::string("triangular number needs finite l, m, r; got ") +
-                                names[i] + "=" + formatNumber(v[i]),
-                            index(i));
+      throw invalidArgument(
+          std::string("triangular number needs finite l, m, r; got ") + names[i] + "=" + formatNumber(v[i]), index(i));
     }
   }
   for (size_t i = 1; i < 3; ++i) {
     if (v[i - 1] > v[i]) {
-      throw invalidArgument(std::string("triangular number needs l <= m <= r, got ") +
-                                names[i - 1] + "=" + formatNumber(v[i - 1]) + " > " + names[i] +
-                                "=" + formatNumber(v[i]),
+      throw invalidArgument(std::string("triangular number needs l <= m <= r, got ") + names[i - 1] + "=" +
+                                formatNumber(v[i - 1]) + " > " + names[i] + "=" + formatNumber(v[i]),
                             index(i));
     }
   }
@@ -157,16 +156,15 @@ FuzzyNumber FuzzyNumber::trapezoidal(double a, double b, double c, double d) {
   const char* names[4] = {"a", "b", "c", "d"};
   for (size_t i = 0; i < 4; ++i) {
     if (!std::isfinite(v[i])) {
-      throw invalidArgument(std::string("trapezoidal number needs finite a, b, c, d; got ") +
-                                names[i] + "=" + formatNumber(v[i]),
+      throw invalidArgument(std::string("trapezoidal number needs finite a, b, c, d; got ") + names[i] + "=" +
+                                formatNumber(v[i]),
                             index(i));
     }
   }
   for (size_t i = 1; i < 4; ++i) {
     if (v[i - 1] > v[i]) {
-      throw invalidArgument(std::string("trapezoidal number needs a <= b <= c <= d, got ") +
-                                names[i - 1] + "=" + formatNumber(v[i - 1]) + " > " + names[i] +
-                                "=" + formatNumber(v[i]),
+      throw invalidArgument(std::string("trapezoidal number needs a <= b <= c <= d, got ") + names[i - 1] + "=" +
+                                formatNumber(v[i - 1]) + " > " + names[i] + "=" + formatNumber(v[i]),
                             index(i));
     }
   }
@@ -181,64 +179,55 @@ FuzzyNumber FuzzyNumber::fromPoints(const std::vector<Breakpoint>& points) {
   for (size_t i = 0; i < points.size(); ++i) {
     const Breakpoint& p = points[i];
     if (!std::isfinite(p.x)) {
-      throw invalidArgument("point " + std::to_string(i) + ": x must be finite, got " +
-                                formatNumber(p.x),
+      throw invalidArgument("point " + std::to_string(i) + ": x must be finite, got " + formatNumber(p.x),
                             index(i) + "[0]");
     }
     if (!(p.mu >= 0 && p.mu <= 1)) {
-      throw invalidArgument("point " + std::to_string(i) + ": mu must be in [0, 1], got " +
-                                formatNumber(p.mu),
+      throw invalidArgument("point " + std::to_string(i) + ": mu must be in [0, 1], got " + formatNumber(p.mu),
                             index(i) + "[1]");
     }
     if (i > 0 && p.x < points[i - 1].x) {
-      throw invalidArgument("points need non-decreasing x: point " + std::to_string(i) +
-                                " has x=" + formatNumber(p.x) + " < previous x=" +
-                                formatNumber(points[i - 1].x),
+      throw invalidArgument("points need non-decreasing x: point " + std::to_string(i) + " has x=" + formatNumber(p.x) +
+                                " < previous x=" + formatNumber(points[i - 1].x),
                             index(i) + "[0]");
     }
     top = std::max(top, p.mu);
   }
   if (top != 1.0) {
-    throw invalidArgument("points must be normal (reach mu = 1 somewhere); the largest mu is " +
-                              formatNumber(top),
-                          "");
+    throw invalidArgument("points must be normal (reach mu = 1 somewhere); the largest mu is " + formatNumber(top), "");
   }
   return FuzzyNumber(canonical(points));
 }
 
-FuzzyNumber FuzzyNumber::fromAlphaCuts(const std::vector<double>& alphas,
-                                       const std::vector<Interval>& cuts) {
+FuzzyNumber FuzzyNumber::fromAlphaCuts(const std::vector<double>& alphas, const std::vector<Interval>& cuts) {
   auto fail = [](const std::string& message, const std::string& path) {
     return Error(errc::kInvalidParameter, message, path);
   };
   if (alphas.empty() || alphas.size() != cuts.size()) {
-    throw fail("alphas and cuts must be non-empty and of the same length, got " +
-                   std::to_string(alphas.size()) + " and " + std::to_string(cuts.size()),
+    throw fail("alphas and cuts must be non-empty and of the same length, got " + std::to_string(alphas.size()) +
+                   " and " + std::to_string(cuts.size()),
                "alphas");
   }
   double scale = 1.0;
   for (size_t k = 0; k < alphas.size(); ++k) {
     if (!(alphas[k] >= 0 && alphas[k] <= 1)) {
-      throw fail("alpha levels must be in [0, 1], got " + formatNumber(alphas[k]),
-                 "alphas" + index(k));
+      throw fail("alpha levels must be in [0, 1], got " + formatNumber(alphas[k]), "alphas" + index(k));
     }
     if (k > 0 && alphas[k] < alphas[k - 1]) {
       throw fail("alpha levels must be non-decreasing", "alphas" + index(k));
     }
     if (k > 1 && alphas[k] == alphas[k - 2]) {
-      throw fail("an alpha level may appear at most twice (closed and strong cut)",
-                 "alphas" + index(k));
+      throw fail("an alpha level may appear at most twice (closed and strong cut)", "alphas" + index(k));
     }
     if (!std::isfinite(cuts[k].lo) || !std::isfinite(cuts[k].hi) || cuts[k].lo > cuts[k].hi) {
-      throw fail("cut " + std::to_string(k) + " must be finite with lo <= hi, got [" +
-                     formatNumber(cuts[k].lo) + ", " + formatNumber(cuts[k].hi) + "]",
+      throw fail("cut " + std::to_string(k) + " must be finite with lo <= hi, got [" + formatNumber(cuts[k].lo) + ", " +
+                     formatNumber(cuts[k].hi) + "]",
                  "cuts" + index(k));
     }
     scale = std::max({scale, std::abs(cuts[k].lo), std::abs(cuts[k].hi)});
   }
   if (alphas.back() != 1.0) {
-    throw fail("the last alpha level must be 1 (a fuzzy number is normal), got " +
-                   formatNumber(alphas.back()),
+    throw fail("the last alpha level must be 1 (a fuzzy number is normal), got " + formatNumber(alphas.back()),
                "alphas" + index(alphas.size() - 1));
   }
   // Up the left side (lo at rising alpha), then down the right side (hi at falling alpha).
@@ -299,9 +288,7 @@ bool FuzzyNumber::isConvex() const {
 
 double FuzzyNumber::cardinality() const { return area(points_); }
 
-bool operator==(const FuzzyNumber& a, const FuzzyNumber& b) {
-  return a.breakpoints() == b.breakpoints();
-}
+bool operator==(const FuzzyNumber& a, const FuzzyNumber& b) { return a.breakpoints() == b.breakpoints(); }
 bool operator!=(const FuzzyNumber& a, const FuzzyNumber& b) { return !(a == b); }
 
 }  // namespace fsdb

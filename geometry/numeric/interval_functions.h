@@ -25,7 +25,9 @@ inline Interval mul(double c, const Interval& a) {  // {c·x}
   return c >= 0.0 ? Interval{c * a.lo, c * a.hi} : Interval{c * a.hi, c * a.lo};
 }
 inline Interval neg(const Interval& a) { return {-a.hi, -a.lo}; }  // {−x}
-inline double mid(const Interval& a) { return 0.5 * a.lo + 0.5 * a.hi; }  // halves first: no overflow
+// Halves first: no overflow. A point interval is its point (half of the smallest subnormal rounds
+// to 0, so [5e-324, 5e-324] had the midpoint 0: found by fuzz_part_document).
+inline double mid(const Interval& a) { return a.lo == a.hi ? a.lo : 0.5 * a.lo + 0.5 * a.hi; }
 inline double magnitude(const Interval& a) {  // max |x| over a
   return std::max(std::fabs(a.lo), std::fabs(a.hi));
 }

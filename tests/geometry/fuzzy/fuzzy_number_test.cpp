@@ -15,8 +15,7 @@ namespace {
 
 using testing::uniform;
 
-void expectError(const std::function<void()>& f, const std::string& code,
-                 const std::string& path) {
+void expectError(const std::function<void()>& f, const std::string& code, const std::string& path) {
   try {
     f();
     FAIL() << "no error, expected " << code << " at " << path;
@@ -32,15 +31,13 @@ std::vector<Breakpoint> bp(std::initializer_list<Breakpoint> list) { return list
 TEST(FuzzyNumber, FactoriesGiveCanonicalBreakpoints) {
   EXPECT_EQ(FuzzyNumber::crisp(2).breakpoints(), bp({{2, 0}, {2, 1}, {2, 0}}));
   EXPECT_EQ(FuzzyNumber::triangular(1, 2, 4).breakpoints(), bp({{1, 0}, {2, 1}, {4, 0}}));
-  EXPECT_EQ(FuzzyNumber::trapezoidal(1, 2, 3, 4).breakpoints(),
-            bp({{1, 0}, {2, 1}, {3, 1}, {4, 0}}));
+  EXPECT_EQ(FuzzyNumber::trapezoidal(1, 2, 3, 4).breakpoints(), bp({{1, 0}, {2, 1}, {3, 1}, {4, 0}}));
   // Degenerate shapes collapse to the simpler ones.
   EXPECT_EQ(FuzzyNumber::triangular(2, 2, 2), FuzzyNumber::crisp(2));
   EXPECT_EQ(FuzzyNumber::trapezoidal(1, 2, 2, 4), FuzzyNumber::triangular(1, 2, 4));
   EXPECT_EQ(FuzzyNumber::trapezoidal(3, 3, 3, 3), FuzzyNumber::crisp(3));
   EXPECT_EQ(FuzzyNumber::triangular(1, 1, 3).breakpoints(), bp({{1, 0}, {1, 1}, {3, 0}}));
-  EXPECT_EQ(FuzzyNumber::trapezoidal(1, 1, 3, 3).breakpoints(),
-            bp({{1, 0}, {1, 1}, {3, 1}, {3, 0}}));
+  EXPECT_EQ(FuzzyNumber::trapezoidal(1, 1, 3, 3).breakpoints(), bp({{1, 0}, {1, 1}, {3, 1}, {3, 0}}));
   EXPECT_EQ(FuzzyNumber(), FuzzyNumber::crisp(0));
   EXPECT_NE(FuzzyNumber::triangular(1, 2, 4), FuzzyNumber::triangular(1, 2, 5));
   EXPECT_FALSE(FuzzyNumber::crisp(1) != FuzzyNumber::crisp(1));
@@ -52,12 +49,10 @@ TEST(FuzzyNumber, FromPointsCanonicalises) {
   EXPECT_EQ(FuzzyNumber::fromPoints({{0, 1}, {1, 1}}), FuzzyNumber::trapezoidal(0, 0, 1, 1));
   EXPECT_EQ(FuzzyNumber::fromPoints({{-5, 0}, {0, 0}, {1, 0.5}, {2, 1}, {4, 0}, {9, 0}}),
             FuzzyNumber::triangular(0, 2, 4));
-  EXPECT_EQ(FuzzyNumber::fromPoints({{0, 0}, {1, 0.3}, {1, 0.1}, {1, 0.3}, {2, 1}, {3, 0}})
-                .breakpoints(),
+  EXPECT_EQ(FuzzyNumber::fromPoints({{0, 0}, {1, 0.3}, {1, 0.1}, {1, 0.3}, {2, 1}, {3, 0}}).breakpoints(),
             bp({{0, 0}, {1, 0.3}, {2, 1}, {3, 0}}));
   // A spike inside a jump keeps left limit, value and right limit.
-  EXPECT_EQ(FuzzyNumber::fromPoints({{0, 0}, {1, 0.2}, {1, 1}, {1, 0.1}, {1, 0.5}, {2, 0}})
-                .breakpoints(),
+  EXPECT_EQ(FuzzyNumber::fromPoints({{0, 0}, {1, 0.2}, {1, 1}, {1, 0.1}, {1, 0.5}, {2, 0}}).breakpoints(),
             bp({{0, 0}, {1, 0.2}, {1, 1}, {1, 0.5}, {2, 0}}));
 }
 
@@ -80,16 +75,11 @@ TEST(FuzzyNumber, FactoryErrorsNameTheBadArgument) {
   expectError([&] { FuzzyNumber::trapezoidal(1, 2, 3, inf); }, errc::kInvalidDocument, "[3]");
   expectError([&] { FuzzyNumber::crisp(nan); }, errc::kInvalidDocument, "");
   expectError([] { FuzzyNumber::fromPoints({}); }, errc::kInvalidDocument, "");
-  expectError([] { FuzzyNumber::fromPoints({{0, 0}, {1, 0.8}, {2, 0}}); },
-              errc::kInvalidDocument, "");
-  expectError([] { FuzzyNumber::fromPoints({{0, 0}, {1, 1.5}}); }, errc::kInvalidDocument,
-              "[1][1]");
-  expectError([] { FuzzyNumber::fromPoints({{0, -0.1}, {1, 1}}); }, errc::kInvalidDocument,
-              "[0][1]");
-  expectError([] { FuzzyNumber::fromPoints({{0, 0}, {2, 1}, {1, 0}}); },
-              errc::kInvalidDocument, "[2][0]");
-  expectError([&] { FuzzyNumber::fromPoints({{0, 0}, {inf, 1}}); }, errc::kInvalidDocument,
-              "[1][0]");
+  expectError([] { FuzzyNumber::fromPoints({{0, 0}, {1, 0.8}, {2, 0}}); }, errc::kInvalidDocument, "");
+  expectError([] { FuzzyNumber::fromPoints({{0, 0}, {1, 1.5}}); }, errc::kInvalidDocument, "[1][1]");
+  expectError([] { FuzzyNumber::fromPoints({{0, -0.1}, {1, 1}}); }, errc::kInvalidDocument, "[0][1]");
+  expectError([] { FuzzyNumber::fromPoints({{0, 0}, {2, 1}, {1, 0}}); }, errc::kInvalidDocument, "[2][0]");
+  expectError([&] { FuzzyNumber::fromPoints({{0, 0}, {inf, 1}}); }, errc::kInvalidDocument, "[1][0]");
   try {
     FuzzyNumber::triangular(3, 2, 4);
   } catch (const Error& e) {
@@ -128,6 +118,22 @@ TEST(FuzzyNumber, AlphaCutsOfClosedForms) {
   EXPECT_EQ(FuzzyNumber::trapezoidal(1, 1, 3, 3).alphaCut(0.7), (Interval{1, 3}));
 }
 
+// Cuts of a number whose breakpoints span nearly all doubles stay finite and nested (the span
+// b - a overflowed to infinity before).
+TEST(FuzzyNumber, AlphaCutsOfAHugeSpanStayFinite) {
+  const FuzzyNumber huge = FuzzyNumber::triangular(-1e308, 1e308, 1e308);
+  Interval previous = huge.alphaCut(0);
+  for (double a : {0.125, 0.25, 0.5, 0.75, 1.0}) {
+    const Interval cut = huge.alphaCut(a);
+    EXPECT_TRUE(std::isfinite(cut.lo) && std::isfinite(cut.hi)) << a;
+    EXPECT_LE(cut.lo, cut.hi) << a;
+    EXPECT_GE(cut.lo, previous.lo) << a;
+    previous = cut;
+  }
+  EXPECT_DOUBLE_EQ(huge.alphaCut(0.5).lo, 0.0);
+  EXPECT_EQ(huge.alphaCut(1), (Interval{1e308, 1e308}));
+}
+
 TEST(FuzzyNumber, StrongCutDiffersOnlyAtHorizontalPieces) {
   const FuzzyNumber a = FuzzyNumber::fromPoints({{0, 0}, {1, 0.5}, {2, 0.5}, {3, 1}, {4, 0}});
   EXPECT_EQ(a.alphaCut(0.5), (Interval{1, 3.5}));
@@ -141,8 +147,7 @@ TEST(FuzzyNumber, StrongCutDiffersOnlyAtHorizontalPieces) {
 }
 
 TEST(FuzzyNumber, NonConvexCutsAreHulls) {
-  const FuzzyNumber twoHumps =
-      FuzzyNumber::fromPoints({{0, 0}, {1, 1}, {2, 0}, {3, 0}, {4, 0.6}, {5, 0}});
+  const FuzzyNumber twoHumps = FuzzyNumber::fromPoints({{0, 0}, {1, 1}, {2, 0}, {3, 0}, {4, 0.6}, {5, 0}});
   EXPECT_FALSE(twoHumps.isConvex());
   EXPECT_EQ(twoHumps.alphaCut(0.5), (Interval{0.5, 4 + 1.0 / 6}));
   EXPECT_NEAR(twoHumps.alphaCut(0.5).hi, 4 + 1.0 / 6, 1e-15);
@@ -166,8 +171,7 @@ TEST(FuzzyNumber, CardinalityClosedForms) {
     const double a = uniform(rng, -5, 5), b = a + uniform(rng, 0, 3), c = b + uniform(rng, 0, 3),
                  d = c + uniform(rng, 0, 3);
     EXPECT_NEAR(FuzzyNumber::triangular(a, b, c).cardinality(), (c - a) / 2, 1e-12);
-    EXPECT_NEAR(FuzzyNumber::trapezoidal(a, b, c, d).cardinality(), ((d - a) + (c - b)) / 2,
-                1e-12);
+    EXPECT_NEAR(FuzzyNumber::trapezoidal(a, b, c, d).cardinality(), ((d - a) + (c - b)) / 2, 1e-12);
   }
   EXPECT_EQ(FuzzyNumber::crisp(4).cardinality(), 0);
 }
@@ -229,20 +233,21 @@ TEST(FuzzyNumber, FromAlphaCutsInvertsAlphaCut) {
 
 TEST(FuzzyNumber, FromAlphaCutsRejectsBadInput) {
   expectError([] { FuzzyNumber::fromAlphaCuts({}, {}); }, errc::kInvalidParameter, "alphas");
-  expectError([] { FuzzyNumber::fromAlphaCuts({0, 1}, {{0, 1}}); }, errc::kInvalidParameter,
-              "alphas");
-  expectError([] { FuzzyNumber::fromAlphaCuts({0, 0.5}, {{0, 2}, {1, 1}}); },
-              errc::kInvalidParameter, "alphas[1]");
-  expectError([] { FuzzyNumber::fromAlphaCuts({0.5, 0, 1}, {{0, 2}, {0, 2}, {1, 1}}); },
-              errc::kInvalidParameter, "alphas[1]");
-  expectError([] { FuzzyNumber::fromAlphaCuts({0, 0, 0, 1}, {{0, 2}, {0, 2}, {0, 2}, {1, 1}}); },
-              errc::kInvalidParameter, "alphas[2]");
-  expectError([] { FuzzyNumber::fromAlphaCuts({-1, 1}, {{0, 2}, {1, 1}}); },
-              errc::kInvalidParameter, "alphas[0]");
-  expectError([] { FuzzyNumber::fromAlphaCuts({0, 1}, {{0, 2}, {3, 1}}); },
-              errc::kInvalidParameter, "cuts[1]");
-  expectError([] { FuzzyNumber::fromAlphaCuts({0, 1}, {{0, 2}, {3, 4}}); },
-              errc::kInvalidParameter, "cuts[1]");
+  expectError([] { FuzzyNumber::fromAlphaCuts({0, 1}, {{0, 1}}); }, errc::kInvalidParameter, "alphas");
+  expectError([] { FuzzyNumber::fromAlphaCuts({0, 0.5}, {{0, 2}, {1, 1}}); }, errc::kInvalidParameter, "alphas[1]");
+  expectError(
+      [] {
+        FuzzyNumber::fromAlphaCuts({0.5, 0, 1}, {{0, 2}, {0, 2}, {1, 1}});
+      },
+      errc::kInvalidParameter, "alphas[1]");
+  expectError(
+      [] {
+        FuzzyNumber::fromAlphaCuts({0, 0, 0, 1}, {{0, 2}, {0, 2}, {0, 2}, {1, 1}});
+      },
+      errc::kInvalidParameter, "alphas[2]");
+  expectError([] { FuzzyNumber::fromAlphaCuts({-1, 1}, {{0, 2}, {1, 1}}); }, errc::kInvalidParameter, "alphas[0]");
+  expectError([] { FuzzyNumber::fromAlphaCuts({0, 1}, {{0, 2}, {3, 1}}); }, errc::kInvalidParameter, "cuts[1]");
+  expectError([] { FuzzyNumber::fromAlphaCuts({0, 1}, {{0, 2}, {3, 4}}); }, errc::kInvalidParameter, "cuts[1]");
 }
 
 }  // namespace

@@ -24,9 +24,8 @@ Interval randomInterval(std::mt19937_64& rng, double lo, double hi) {
 // Samples the function densely (ends included) and checks: every sample lies in the
 // enclosure (inclusion), and the enclosure's ends are within `slack` of the extreme samples
 // (tightness; `slack` covers the sampling step).
-void expectInclusionAndTightness(const std::string& name, const Interval& r,
-                                 const Interval& a, const std::function<double(double)>& f,
-                                 double slack) {
+void expectInclusionAndTightness(const std::string& name, const Interval& r, const Interval& a,
+                                 const std::function<double(double)>& f, double slack) {
   double lo = f(a.lo), hi = lo;
   const int n = 400;
   for (int i = 0; i <= n; ++i) {
@@ -47,6 +46,9 @@ TEST(IntervalFunctions, ScalarHelpers) {
   EXPECT_EQ(neg({1, 3}), (Interval{-3, -1}));
   EXPECT_EQ(mid({1, 3}), 2.0);
   EXPECT_EQ(mid({-kMaxFinite, kMaxFinite}), 0.0);  // no overflow
+  // A point interval is its point, the smallest subnormal too (halving it first gave 0).
+  EXPECT_EQ(mid({5e-324, 5e-324}), 5e-324);
+  EXPECT_EQ(mid({kMaxFinite, kMaxFinite}), kMaxFinite);
   EXPECT_EQ(magnitude({-5, 3}), 5.0);
   EXPECT_EQ(mignitude({2, 5}), 2.0);
   EXPECT_EQ(mignitude({-5, -3}), 3.0);
@@ -122,18 +124,18 @@ TEST(IntervalFunctions, RandomInclusionAndTightnessOfOneArgumentFunctions) {
     for (const Interval& x : {a, small}) {
       const double step = (x.hi - x.lo) / 400;
       // Sampling misses an extremum by at most step²/2 for sin/cos (curvature <= 1).
-      expectInclusionAndTightness("sin", sin(x), x, [](double t) { return std::sin(t); },
-                                  step * step + 1e-15);
-      expectInclusionAndTightness("cos", cos(x), x, [](double t) { return std::cos(t); },
-                                  step * step + 1e-15);
-      expectInclusionAndTightness("abs", abs(x), x, [](double t) { return std::fabs(t); },
-                                  step + 1e-15);
-      expectInclusionAndTightness("sqr", sqr(x), x, [](double t) { return t * t; },
-                                  2 * 10 * step + 1e-12);
+      expectInclusionAndTightness(
+          "sin", sin(x), x, [](double t) { return std::sin(t); }, step * step + 1e-15);
+      expectInclusionAndTightness(
+          "cos", cos(x), x, [](double t) { return std::cos(t); }, step * step + 1e-15);
+      expectInclusionAndTightness(
+          "abs", abs(x), x, [](double t) { return std::fabs(t); }, step + 1e-15);
+      expectInclusionAndTightness(
+          "sqr", sqr(x), x, [](double t) { return t * t; }, 2 * 10 * step + 1e-12);
     }
     const Interval nonneg = randomInterval(rng, 0, 5);
-    expectInclusionAndTightness("sqrt", sqrt(nonneg), nonneg,
-                                [](double t) { return std::sqrt(t); }, 1e-12);
+    expectInclusionAndTightness(
+        "sqrt", sqrt(nonneg), nonneg, [](double t) { return std::sqrt(t); }, 1e-12);
   }
 }
 
@@ -141,9 +143,7 @@ TEST(IntervalFunctions, RandomInclusionAndTightnessOfTwoArgumentFunctions) {
   std::mt19937_64 rng(11);
   const int n = 30;
   // The i-th of n + 1 grid points of a, the last one exactly a.hi.
-  const auto at = [n](const Interval& a, int i) {
-    return i == n ? a.hi : a.lo + (a.hi - a.lo) * i / n;
-  };
+  const auto at = [n](const Interval& a, int i) { return i == n ? a.hi : a.lo + (a.hi - a.lo) * i / n; };
   for (int trial = 0; trial < 300; ++trial) {
     const Interval b = randomInterval(rng, 0, 3), e = randomInterval(rng, 0.05, 20);
     const Interval x = randomInterval(rng, -4, 4), y = randomInterval(rng, -4, 4);
@@ -194,7 +194,8 @@ TEST(IntervalFunctions, AtancAndItsSlope) {
     const Interval a = randomInterval(rng, -reach, reach);
     // Tightness up to the sampling step at an interior extreme (both have |f''| < 1 there).
     const double step = (a.hi - a.lo) / 400, slack = 1e-6 + step * step;
-    expectInclusionAndTightness("atanc", atanc(a), a, [](double w) { return atanc(w); }, slack);
+    expectInclusionAndTightness(
+        "atanc", atanc(a), a, [](double w) { return atanc(w); }, slack);
     expectInclusionAndTightness("atancSlope", atancSlope(a), a, derivative, slack);
   }
   // The extremes: −0.29224806 at 0.8243, +0.29224806 at −0.8243.
