@@ -301,7 +301,9 @@ void HttpServer::installHandlers() {
     if (res.status == 400) {
       sendError(res, Error("bad_request",
                            "malformed HTTP request: a request or header line longer than " +
-                               std::to_string(CPPHTTPLIB_HEADER_MAX_LENGTH) + " bytes, or not HTTP/1.x",
+                               std::to_string(CPPHTTPLIB_HEADER_MAX_LENGTH) +
+                               " bytes, a POST or PUT without a body or Content-Length where no route takes one, "
+                               "or not HTTP/1.x",
                            ""));
       return;
     }
