@@ -96,16 +96,10 @@ BulkBodyReader::BulkBodyReader(const std::string& body, int maxJsonDepth) : body
     pos_ = body.find('[') + 1;
     return;
   }
-  for (size_t pos = 0; pos <= body.size();) {
-    size_t end = body.find('\n', pos);
-    if (end == std::string::npos) end = body.size();
-    for (size_t k = pos; k < end; ++k)
-      if (!isBlank(body[k])) {
-        ++count_;
-        break;
-      }
-    pos = end + 1;
-  }
+  // JSON Lines: the lines next() will give, counted by a copy that walks them.
+  BulkBodyReader lines = *this;
+  LineSpan span;
+  while (lines.next(span)) ++count_;
 }
 
 bool BulkBodyReader::next(LineSpan& span) {
