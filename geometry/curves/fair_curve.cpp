@@ -21,7 +21,13 @@ using Polygon = std::array<Vec2, 4>;
 
 // The piece's radius lines converge ahead of both points (A = D.tau_a, B = D.tau_b, c1 = n_b.tau_a,
 // c2 = n_a.tau_b): the crossing X of the lines lies on the concave side, as for a circle.
-bool convex(double A, double B, double c1, double c2) { return A > 0 && B > 0 && c1 < 0 && c2 > 0; }
+// Lengths are local (about 1; plane_frame.h). Near 0 the crossing X lies at a point itself (the chord
+// along a radius line, e.g. a closed curve through collinear points) and the convex polygon would
+// collapse Q0 and Q1 onto it, leaving the PE no tangent there: such pieces take Table 1's depths.
+constexpr double kConvexTolerance = 1e-9;
+bool convex(double A, double B, double c1, double c2) {
+  return A > kConvexTolerance && B > kConvexTolerance && c1 < -kConvexTolerance && c2 > kConvexTolerance;
+}
 
 // Convex piece: Q1 stays short of X (B - d1 c2 > 0) and Q2 beyond it (A + d2 c1 < 0), so the PE
 // turns the way the curve advances at both ends and the strings keep one sign (a true involute
@@ -77,9 +83,10 @@ struct StringLength {
 };
 StringLength stringLength(const FairCurve& c, size_t k, double t) {
   const auto& q = c.evolute[k];
-  const size_t b = (k + 1) % c.points.size();
+  const size_t b = (k + 1) % c.localPoints.size();
   // Signed strings: P = Q - rho T at both ends.
-  const double s0 = dot(q[0] - c.points[k], unit(q[1] - q[0])), s1 = dot(q[3] - c.points[b], unit(q[3] - q[2]));
+  const double s0 = dot(q[0] - c.localPoints[k], unit(q[1] - q[0])),
+               s1 = dot(q[3] - c.localPoints[b], unit(q[3] - q[2]));
   const double d0 = 3 * length(q[1] - q[0]), d1 = 3 * length(q[3] - q[2]);  // |BP'(0)|, |BP'(1)|
   const double lin = s1 - s0;
   const double h10 = t * t * t - 2 * t * t + t, h11 = t * t * t - t * t;
@@ -119,14 +126,34 @@ void checkFairPoints(const std::vector<Vec2>& points, bool closed) {
   for (size_t i = 0; i + (closed ? 0 : 1) < n; ++i) {
     const size_t j = (i + 1) % n;
     if (points[i].x == points[j].x && points[i].y == points[j].y)
-      throw Error(errc::kInvalidParameter, "consecutive points must differ (" + pointPath(i) + " = " + pointPath(j) + ")",
-                  pointPath(j));
+      throw Error(errc::kInvalidParameter,
+                  "consecutive points must differ (" + pointPath(i) + " = " + pointPath(j) + ")", pointPath(j));
   }
 }
 
-std::vector<double> radiusMagnitudes(const std::vector<Vec2>& points, const std::vector<Relation>& relations,
-                                     bool closed, double ratio) {
+std::vector<Vec2> fairLocalPoints(const std::vector<Vec2>& points, bool closed, PlaneFrame* frame) {
   checkFairPoints(points, closed);
+  *frame = PlaneFrame::normalizing(points);
+  std::vector<Vec2> local;
+  local.reserve(points.size());
+  for (const Vec2& p : points) local.push_back(frame->toLocal(p));
+  const size_t n = points.size();
+  for (size_t i = 0; i + (closed ? 0 : 1) < n; ++i) {
+    const size_t j = (i + 1) % n;
+    if (local[i].x == local[j].x && local[i].y == local[j].y)
+      throw Error(errc::kInvalidParameter,
+                  pointPath(i) + " and " + pointPath(j) + " are too close together for the size of the curve (" +
+                      formatNumber(length(points[j] - points[i])) + " apart, coordinates up to " +
+                      formatNumber(frame->toWorldLength(1.0)) + "): their difference is lost in rounding",
+                  pointPath(j));
+  }
+  return local;
+}
+
+std::vector<double> radiusMagnitudes(const std::vector<Vec2>& worldPoints, const std::vector<Relation>& relations,
+                                     bool closed, double ratio) {
+  PlaneFrame frame;
+  const std::vector<Vec2> points = fairLocalPoints(worldPoints, closed, &frame);
   const size_t n = points.size();
   const size_t steps = closed ? n : n - 1;
   if (!relations.empty() && relations.size() != steps)
@@ -149,8 +176,8 @@ std::vector<double> radiusMagnitudes(const std::vector<Vec2>& points, const std:
   if (closed && !relations.empty()) {
     if (std::abs(drift) == static_cast<double>(n))
       throw Error(errc::kInvalidParameter,
-                  "a closed curve's relations cannot all be '" +
-                      std::string(drift > 0 ? "smoother" : "sharper") + "': the radii would have to grow all the way round",
+                  "a closed curve's relations cannot all be '" + std::string(drift > 0 ? "smoother" : "sharper") +
+                      "': the radii would have to grow all the way round",
                   "relations");
     for (double& s : step) s -= drift / static_cast<double>(n);
   }
@@ -161,20 +188,22 @@ std::vector<double> radiusMagnitudes(const std::vector<Vec2>& points, const std:
   mean /= static_cast<double>(n);
   std::vector<double> r(n);
   for (size_t i = 0; i < n; ++i) {
-    r[i] = chord * std::pow(ratio, e[i] - mean);
+    r[i] = frame.toWorldLength(chord * std::pow(ratio, e[i] - mean));
     // Points near the double range (or a long run of one relation on a huge or tiny chord) leave
     // no representable radius: the request's fault, named by its field, not buildFairCurve's.
     if (!std::isfinite(r[i]) || !(r[i] > 0))
       throw Error(errc::kInvalidParameter,
                   "the radius-vector magnitudes are not representable (the points are too far apart or too close, "
-                  "or too many relations in a row); got " + formatNumber(r[i]) + " at " + pointPath(i),
+                  "or too many relations in a row); got " +
+                      formatNumber(r[i]) + " at " + pointPath(i),
                   relations.empty() ? "points" : "relations");
   }
   return r;
 }
 
-std::vector<double> firstEstimationAngles(const std::vector<Vec2>& points, bool closed) {
-  checkFairPoints(points, closed);
+std::vector<double> firstEstimationAngles(const std::vector<Vec2>& worldPoints, bool closed) {
+  PlaneFrame frame;  // angles do not depend on the frame
+  const std::vector<Vec2> points = fairLocalPoints(worldPoints, closed, &frame);
   const size_t n = points.size();
   std::vector<double> angles(n);
   for (size_t i = 0; i < n; ++i) {
@@ -190,9 +219,10 @@ std::vector<double> firstEstimationAngles(const std::vector<Vec2>& points, bool 
   return angles;
 }
 
-FairCurve buildFairCurve(const std::vector<Vec2>& points, const std::vector<double>& anglesDeg,
+FairCurve buildFairCurve(const std::vector<Vec2>& worldPoints, const std::vector<double>& anglesDeg,
                          const std::vector<double>& magnitudes, bool closed, const EvoluteAlphas& a) {
-  checkFairPoints(points, closed);
+  FairCurve c;
+  const std::vector<Vec2> points = fairLocalPoints(worldPoints, closed, &c.frame);
   const size_t n = points.size();
   if (anglesDeg.size() != n || magnitudes.size() != n)
     throw Error(errc::kInvalidParameter, "one angle and one magnitude per point are needed", "angles");
@@ -200,13 +230,23 @@ FairCurve buildFairCurve(const std::vector<Vec2>& points, const std::vector<doub
     if (!std::isfinite(anglesDeg[i]))
       throw Error(errc::kInvalidParameter, "angles must be finite", "angles[" + std::to_string(i) + "]");
     if (!(magnitudes[i] > 0) || !std::isfinite(magnitudes[i]))
-      throw Error(errc::kInvalidParameter, "magnitudes must be finite and > 0", "magnitudes[" + std::to_string(i) + "]");
+      throw Error(errc::kInvalidParameter, "magnitudes must be finite and > 0",
+                  "magnitudes[" + std::to_string(i) + "]");
   }
   if (!(a.a3 > a.a4 && a.a4 > 0 && a.a1 > a.a2 && a.a2 > 0))
     throw Error(errc::kInvalidParameter, "evolute alphas need a3 > a4 > 0 and a1 > a2 > 0", "alphas");
 
-  FairCurve c;
-  c.points = points;
+  std::vector<double> local(n);  // the magnitudes in local units
+  for (size_t i = 0; i < n; ++i) {
+    local[i] = c.frame.toLocalLength(magnitudes[i]);
+    if (!(local[i] > 0) || !std::isfinite(local[i]))
+      throw Error(errc::kInvalidParameter,
+                  "magnitude " + formatNumber(magnitudes[i]) + " is out of proportion to the points (" +
+                      formatNumber(c.frame.toWorldLength(1.0)) + " across)",
+                  "magnitudes[" + std::to_string(i) + "]");
+  }
+  c.points = worldPoints;
+  c.localPoints = points;
   c.closed = closed;
   // Orientation of each radius-vector (header): the concave side, else the predecessor's side.
   std::vector<Vec2> dir(n);
@@ -228,7 +268,9 @@ FairCurve buildFairCurve(const std::vector<Vec2>& points, const std::vector<doub
       if (decided[i]) continue;
       const size_t prev = (i + n - 1) % n, next = (i + 1) % n;
       const bool hasPrev = closed || i > 0, hasNext = closed || i + 1 < n;
-      const int ref = hasPrev && decided[prev] ? static_cast<int>(prev) : hasNext && decided[next] ? static_cast<int>(next) : -1;
+      const int ref = hasPrev && decided[prev]   ? static_cast<int>(prev)
+                      : hasNext && decided[next] ? static_cast<int>(next)
+                                                 : -1;
       if (ref < 0 && pass == 0) continue;
       if (ref >= 0 && dot(dir[i], dir[ref]) < 0) dir[i] = -dir[i];
       decided[i] = true;
@@ -250,11 +292,12 @@ FairCurve buildFairCurve(const std::vector<Vec2>& points, const std::vector<doub
   for (size_t k = 0; k < pieces; ++k) {
     const size_t b = (k + 1) % n;
     const Vec2 D = points[b] - points[k];
-    const double ra = magnitudes[k], rb = magnitudes[b];
+    const double ra = local[k], rb = local[b];
     const double A = dot(D, tau[k]), B = dot(D, tau[b]);
     const double c1 = dot(dir[b], tau[k]), c2 = dot(dir[k], tau[b]);
-    c.evolute.push_back(convex(A, B, c1, c2) ? convexPolygon(points[k], dir[k], points[b], dir[b], ra, rb, A, B, c1, c2, a)
-                                             : tablePolygon(points[k], dir[k], tau[k], points[b], dir[b], tau[b], ra, rb, a));
+    c.evolute.push_back(convex(A, B, c1, c2)
+                            ? convexPolygon(points[k], dir[k], points[b], dir[b], ra, rb, A, B, c1, c2, a)
+                            : tablePolygon(points[k], dir[k], tau[k], points[b], dir[b], tau[b], ra, rb, a));
   }
   return c;
 }
@@ -266,7 +309,7 @@ Vec2 fairCurvePoint(const FairCurve& c, size_t k, double t) {
   // the curve normals.
   double speed;
   const Vec2 T = unitTangent(c.evolute.at(k), t, &speed);
-  return bezier(c.evolute[k], t) - stringLength(c, k, t).rho * T;
+  return c.frame.toWorld(bezier(c.evolute[k], t) - stringLength(c, k, t).rho * T);
 }
 
 Vec2 fairCurveDerivative(const FairCurve& c, size_t k, double t) {
@@ -277,7 +320,7 @@ Vec2 fairCurveDerivative(const FairCurve& c, size_t k, double t) {
   // T' = (BP'' - (BP''.T) T) / |BP'|; at a PE cusp (speed 0) T is constant to first order.
   const Vec2 dT = speed > 0 ? (1.0 / speed) * (d2 - dot(d2, T) * T) : Vec2{0, 0};
   const StringLength s = stringLength(c, k, t);
-  return d1 - s.drho * T - s.rho * dT;
+  return c.frame.toWorldVector(d1 - s.drho * T - s.rho * dT);
 }
 
 std::vector<Vec2> sampleFairCurve(const FairCurve& c, int samplesPerPiece) {
@@ -287,8 +330,14 @@ std::vector<Vec2> sampleFairCurve(const FairCurve& c, int samplesPerPiece) {
   std::vector<Vec2> out;
   out.reserve(pieceCount(c) * static_cast<size_t>(samplesPerPiece - 1) + 1);
   for (size_t k = 0; k < pieceCount(c); ++k)
-    for (int s = k == 0 ? 0 : 1; s < samplesPerPiece; ++s)
+    for (int s = k == 0 ? 0 : 1; s < samplesPerPiece; ++s) {
       out.push_back(fairCurvePoint(c, k, static_cast<double>(s) / (samplesPerPiece - 1)));
+      if (!std::isfinite(out.back().x) || !std::isfinite(out.back().y))
+        throw Error(errc::kInvalidParameter,
+                    "the curve through these points leaves the range of doubles (piece " + std::to_string(k) +
+                        "); move the points nearer to the origin",
+                    "points");
+    }
   return out;
 }
 

@@ -40,13 +40,17 @@
 // h11 = t^3 - t^2) that vanishes at both ends and gives rho' = |BP'| there, the exact involute's
 // rate. So C(0) = P_k, C(1) = P_{k+1} exactly, and at both ends C' = -rho T' is perpendicular to
 // the radius-vector line: both pieces meeting at P_i have the tangent normal to R_i (G1).
-// Errors: fsdb::Error(invalid_parameter) naming "points[i]" (non-finite, or equal to the next
-// point), "points" (fewer than 2, closed fewer than 3), "relations" (wrong count), "angles[i]".
+// Scale: every function takes and answers world coordinates but computes in the local frame of
+// the points (plane_frame.h), so subnormal spacings and coordinates near the double range work.
+// Errors: fsdb::Error(invalid_parameter) naming "points[i]" (non-finite, equal to the next point,
+// or so close to it for the curve's size that their difference is lost), "points" (fewer than 2,
+// closed fewer than 3; a curve that leaves the double range), "relations" (wrong count), "angles[i]".
 #include <array>
 #include <cstddef>
 #include <vector>
 
 #include "geometry/core/vec2.h"
+#include "geometry/curves/plane_frame.h"
 
 namespace fsdb {
 
@@ -58,14 +62,21 @@ struct EvoluteAlphas {
 };
 
 struct FairCurve {
-  std::vector<Vec2> points;                   // P_i
-  std::vector<Vec2> radii;                    // R_i (oriented, with magnitude)
-  std::vector<std::array<Vec2, 4>> evolute;   // BP_k control points Q0..Q3, piece k: P_k -> P_k+1
+  std::vector<Vec2> points;  // P_i
+  std::vector<Vec2> radii;   // R_i (oriented, with magnitude)
   bool closed = false;
+  // The construction, in the local coordinates of `frame` (plane_frame.h):
+  PlaneFrame frame;
+  std::vector<Vec2> localPoints;             // P_i
+  std::vector<std::array<Vec2, 4>> evolute;  // BP_k control points Q0..Q3, piece k: P_k -> P_k+1
 };
 
 // Checks points (finite, consecutive distinct, enough of them); throws as in the header.
 void checkFairPoints(const std::vector<Vec2>& points, bool closed);
+// brief: the checked points in their normalizing frame (PlaneFrame::normalizing), stored in *frame.
+// throws: as checkFairPoints; also "points[j]" when P_j is distinct from its predecessor in world
+//         coordinates but not in local ones (too close for the curve's size).
+std::vector<Vec2> fairLocalPoints(const std::vector<Vec2>& points, bool closed, PlaneFrame* frame);
 // |R_i| from the SMOOTHER / SHARPER relations (relations: N-1 entries open, N closed, or none).
 // Magnitudes that are not finite and > 0 (points near the double range) are invalid_parameter at
 // "points" (or "relations" when given).
@@ -82,7 +93,8 @@ size_t pieceCount(const FairCurve& c);
 Vec2 fairCurvePoint(const FairCurve& c, size_t piece, double t);
 Vec2 fairCurveDerivative(const FairCurve& c, size_t piece, double t);
 // samplesPerPiece >= 2 points per piece, shared ends once: (samplesPerPiece - 1) * pieces + 1
-// points (closed: the last equals the first).
+// points (closed: the last equals the first). Throws invalid_parameter ("points") when a sample
+// is not finite (a curve through points near the double range that bulges beyond it).
 std::vector<Vec2> sampleFairCurve(const FairCurve& c, int samplesPerPiece);
 
 // An angle read modulo 180, in [0, 180).

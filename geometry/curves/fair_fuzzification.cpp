@@ -5,8 +5,8 @@
 #include <string>
 
 #include "geometry/core/error.h"
-#include "geometry/curves/fair_curve.h"
 #include "geometry/core/number_format.h"
+#include "geometry/curves/fair_curve.h"
 #include "geometry/operators/tnorms.h"
 
 namespace fsdb {
@@ -45,23 +45,24 @@ double dangerArcMembership(double theta, const AngleArc& arc) {
   return std::min(1.0, std::min(offset - arc.length, 180.0 - offset) / half);
 }
 
-FairDangerZones fairDangerZones(const std::vector<Vec2>& points, const std::vector<double>& anglesDeg, bool closed,
+FairDangerZones fairDangerZones(const std::vector<Vec2>& worldPoints, const std::vector<double>& anglesDeg, bool closed,
                                 size_t i, FairBehavior behavior) {
-  checkFairPoints(points, closed);
+  PlaneFrame frame;  // directions and the signs of cross products do not depend on it
+  const std::vector<Vec2> points = fairLocalPoints(worldPoints, closed, &frame);
   const size_t n = points.size();
-  if (anglesDeg.size() != n)
-    throw Error(errc::kInvalidParameter, "one angle per point is needed", "angles");
+  if (anglesDeg.size() != n) throw Error(errc::kInvalidParameter, "one angle per point is needed", "angles");
   FairDangerZones z;
   std::vector<size_t> neighbours;
   if (closed || i > 0) neighbours.push_back((i + n - 1) % n);
   if (closed || i + 1 < n) neighbours.push_back((i + 1) % n);
   for (size_t j : neighbours) {
-    z.colinear.push_back(angleOf(points[i] - points[j]));  // Bernardes, Wu & D'Ottaviano, §4 G1
+    z.colinear.push_back(angleOf(points[i] - points[j]));   // Bernardes, Wu & D'Ottaviano, §4 G1
     z.parallel.push_back(normalizeAngle180(anglesDeg[j]));  // Bernardes, Wu & D'Ottaviano, §4 G2
   }
   if (behavior == FairBehavior::kUndulant || neighbours.size() < 2) return z;
 
-  // Bernardes, Wu & D'Ottaviano, §4 G3: sign(t_{i-1} t_{i+1}) = sign(N_{i-1} N_{i+1}) sign(sin(phi_{i-1} - theta) sin(phi_{i+1} - theta)).
+  // Bernardes, Wu & D'Ottaviano, §4 G3: sign(t_{i-1} t_{i+1}) = sign(N_{i-1} N_{i+1}) sign(sin(phi_{i-1} - theta)
+  // sin(phi_{i+1} - theta)).
   const size_t p = neighbours[0], q = neighbours[1];
   const Vec2 vp = unitAtDegrees(anglesDeg[p]), vq = unitAtDegrees(anglesDeg[q]);
   const int nSign = sign(cross(points[p] - points[i], vp)) * sign(cross(points[q] - points[i], vq));
@@ -126,7 +127,8 @@ std::vector<RankedValue> fairAngleMaxima(const FairDangerZones& z, int samples, 
     double lo = m.x - h, hi = m.x + h;
     for (int it = 0; it < 60; ++it) {
       const double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
-      if (fairMembership(z, a, deltaTheta) < fairMembership(z, b, deltaTheta)) lo = a; else hi = b;
+      if (fairMembership(z, a, deltaTheta) < fairMembership(z, b, deltaTheta)) lo = a;
+      else hi = b;
     }
     const double x = 0.5 * (lo + hi), mu = fairMembership(z, x, deltaTheta);
     if (mu > m.mu) m = {x, mu};
@@ -135,9 +137,8 @@ std::vector<RankedValue> fairAngleMaxima(const FairDangerZones& z, int samples, 
     // never fair.
     if (m.mu > 0 && m.mu >= threshold) out.push_back(m);
   }
-  std::sort(out.begin(), out.end(), [](const RankedValue& a, const RankedValue& b) {
-    return a.mu != b.mu ? a.mu > b.mu : a.x < b.x;
-  });
+  std::sort(out.begin(), out.end(),
+            [](const RankedValue& a, const RankedValue& b) { return a.mu != b.mu ? a.mu > b.mu : a.x < b.x; });
   return out;
 }
 

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -37,6 +38,13 @@ std::vector<Vec2> blob(int n, unsigned seed) {
 }
 const std::vector<Vec2> kZigzag = {{0, 0}, {1, 1}, {2, 0}, {3, 1}, {4, 0}};
 
+// The unit vector along v (NaN for 0), for any finite v (scaled by a power of two first).
+Vec2 direction(const Vec2& v) {
+  const int e = std::ilogb(std::max(std::abs(v.x), std::abs(v.y)));
+  const Vec2 w{std::ldexp(v.x, -e), std::ldexp(v.y, -e)};
+  return (1 / length(w)) * w;
+}
+
 void expectInterpolatesAndG1(const FairCurve& c, const std::string& what) {
   const size_t n = c.points.size();
   for (size_t k = 0; k < pieceCount(c); ++k) {
@@ -48,12 +56,12 @@ void expectInterpolatesAndG1(const FairCurve& c, const std::string& what) {
   // G1 at every joint: both one-sided tangents normal to R_i and pointing the same way.
   for (size_t k = 0; k + 1 < pieceCount(c) || (c.closed && k < pieceCount(c)); ++k) {
     const size_t next = (k + 1) % pieceCount(c), i = (k + 1) % n;
-    const Vec2 left = fairCurveDerivative(c, k, 1), right = fairCurveDerivative(c, next, 0);
-    const Vec2 r = c.radii[i];
-    ASSERT_GT(length(left), 0) << what << " point " << i;
-    ASSERT_GT(length(right), 0) << what << " point " << i;
-    EXPECT_NEAR(dot(left, r) / (length(left) * length(r)), 0, 1e-9) << what << " point " << i;
-    EXPECT_NEAR(dot(right, r) / (length(right) * length(r)), 0, 1e-9) << what << " point " << i;
+    // Directions first: at scales near 2^±600 products of two lengths leave the double range.
+    const Vec2 left = direction(fairCurveDerivative(c, k, 1)), right = direction(fairCurveDerivative(c, next, 0));
+    const Vec2 r = direction(c.radii[i]);
+    ASSERT_TRUE(std::isfinite(left.x) && std::isfinite(right.x)) << what << " point " << i << ": no tangent";
+    EXPECT_NEAR(dot(left, r), 0, 1e-9) << what << " point " << i;
+    EXPECT_NEAR(dot(right, r), 0, 1e-9) << what << " point " << i;
     EXPECT_GT(dot(left, right), 0) << what << " point " << i << ": the tangent reverses";
   }
 }
@@ -133,6 +141,66 @@ TEST(FairCurve, SamplesSharePieceEnds) {
   expectInvalidParameter([&] { sampleFairCurve(c, 1); }, "samples");
 }
 
+// The construction sees only angles and relative lengths (plane_frame.h): the curve through the
+// points scaled by 2^e (and moved) is the original curve scaled (and moved), down to subnormal
+// spacings and up to coordinates near the largest double.
+TEST(FairCurve, IsTheSameCurveAtEveryScale) {
+  const std::vector<Vec2> base = blob(7, 3);
+  for (int e : {-1070, -600, -40, 0, 40, 600, 1020}) {
+    const Vec2 shift = e == 0 ? Vec2{5, -7} : Vec2{0, 0};
+    auto up = [&](const Vec2& p) { return Vec2{std::ldexp(p.x - shift.x, -e), std::ldexp(p.y - shift.y, -e)}; };
+    std::vector<Vec2> moved, reference;  // reference: the moved points brought back (exact for e != 0)
+    for (const Vec2& p : base) moved.push_back(Vec2{std::ldexp(p.x, e), std::ldexp(p.y, e)} + shift);
+    for (const Vec2& p : moved) reference.push_back(up(p));
+    const auto angles = firstEstimationAngles(moved, true);
+    const auto referenceAngles = firstEstimationAngles(reference, true);
+    for (size_t i = 0; i < angles.size(); ++i) EXPECT_NEAR(angles[i], referenceAngles[i], 1e-9) << e;
+    const FairCurve c = buildFairCurve(moved, angles, radiusMagnitudes(moved, {}, true), true);
+    // Subnormal coordinates keep a few bits: the curve's samples round to multiples of 2^-1074.
+    const bool subnormal = e < -1000;
+    if (e > -1000 && e < 1000) expectInterpolatesAndG1(c, "scale 2^" + std::to_string(e));
+    const std::vector<Vec2> got = sampleFairCurve(c, 9);
+    const std::vector<Vec2> want =
+        sampleFairCurve(buildFairCurve(reference, referenceAngles, radiusMagnitudes(reference, {}, true), true), 9);
+    ASSERT_EQ(got.size(), want.size());
+    for (size_t k = 0; k < got.size(); ++k) {
+      ASSERT_TRUE(std::isfinite(got[k].x) && std::isfinite(got[k].y)) << e << " sample " << k;
+      EXPECT_LT(length(up(got[k]) - want[k]), subnormal ? 0.05 : 1e-9) << e << " sample " << k;
+    }
+  }
+}
+
+// Fuzz findings (tests/fuzz/regressions/curve_document): each gave NaN curve points.
+TEST(FairCurve, DegenerateAndExtremePointsGiveFiniteCurves) {
+  const std::vector<std::pair<std::vector<Vec2>, bool>> cases = {
+      {{{0, 0}, {1, 1}, {2, 2}}, true},             // closed through collinear points: a chord along a radius line
+      {{{0, 0}, {5e-324, 0}}, false},               // a subnormal distance
+      {{{1e308, 0}, {0, 0}}, false},                // near the largest double
+      {{{-1e308, 1e308}, {1e308, -1e308}}, false},  // differences beyond it
+  };
+  for (const auto& [points, closed] : cases) {
+    if (std::abs(points[0].x) > 1e307 && std::abs(points[0].x - points[1].x) > 1e308) {
+      // Points further apart than the largest double have no representable radius: refused.
+      expectInvalidParameter([&] { radiusMagnitudes(points, {}, closed); }, "points");
+      continue;
+    }
+    const auto r = radiusMagnitudes(points, {}, closed);
+    for (double angle0 = 0; angle0 < 180; angle0 += 15) {
+      std::vector<double> angles = firstEstimationAngles(points, closed);
+      angles[0] = angle0;
+      std::vector<Vec2> got;
+      try {
+        got = sampleFairCurve(buildFairCurve(points, angles, r, closed), 17);
+      } catch (const Error& e) {  // only a curve that leaves the double range may be refused
+        EXPECT_EQ(e.path(), "points") << e.what();
+        EXPECT_GT(std::abs(points[0].x), 1e307) << e.what();
+        continue;
+      }
+      for (const Vec2& p : got) ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y)) << points[0].x << " " << angle0;
+    }
+  }
+}
+
 TEST(FairCurve, RejectsBadInputNamingIt) {
   expectInvalidParameter([] { checkFairPoints({{0, 0}}, false); }, "points");
   expectInvalidParameter([] { checkFairPoints({{0, 0}, {1, 0}}, true); }, "points");
@@ -142,9 +210,41 @@ TEST(FairCurve, RejectsBadInputNamingIt) {
   expectInvalidParameter([] { radiusMagnitudes(kZigzag, {Relation::kSmoother}, false); }, "relations");
   const auto p = regularPolygon(3, 1);
   expectInvalidParameter(
-      [&] { radiusMagnitudes(p, {Relation::kSharper, Relation::kSharper, Relation::kSharper}, true); }, "relations");
+      [&] {
+        radiusMagnitudes(p, {Relation::kSharper, Relation::kSharper, Relation::kSharper}, true);
+      },
+      "relations");
   expectInvalidParameter([&] { buildFairCurve(p, {0, NAN, 0}, {1, 1, 1}, true); }, "angles[1]");
   expectInvalidParameter([&] { buildFairCurve(p, {0, 0, 0}, {1, 0, 1}, true); }, "magnitudes[1]");
+  // Distinct, but not at the size of the curve: 1e300 + 5e-324 rounds to 1e300 once scaled.
+  const std::vector<Vec2> far = {{0, 0}, {1e300, 0}, {1e300, 5e-324}};
+  expectInvalidParameter([&] { firstEstimationAngles(far, false); }, "points[2]");
+  expectInvalidParameter([&] { radiusMagnitudes(far, {}, false); }, "points[2]");
+  // A magnitude out of all proportion to the points (1e-300 across 1e300).
+  const std::vector<Vec2> big = {{0, 0}, {1e300, 0}, {0, 1e300}};
+  expectInvalidParameter([&] { buildFairCurve(big, {0, 0, 0}, {1, 1e-300, 1}, true); }, "magnitudes[1]");
+}
+
+TEST(PlaneFrame, MapsPointsToSpreadOneAndBack) {
+  for (double s : {5e-324, 1e-310, 1e-200, 1.0, 3e150, 1e300, 1.7e308}) {
+    const std::vector<Vec2> points = {{s, -s}, {0.5 * s, 0.25 * s}, {-s, 0}};
+    const PlaneFrame f = PlaneFrame::normalizing(points);
+    double largest = 0;
+    for (const Vec2& p : points) {
+      const Vec2 l = f.toLocal(p);
+      largest = std::max({largest, std::abs(l.x), std::abs(l.y)});
+      const Vec2 back = f.toWorld(l);
+      EXPECT_NEAR(back.x, p.x, 1e-15 * s) << s;
+      EXPECT_NEAR(back.y, p.y, 1e-15 * s) << s;
+    }
+    EXPECT_GE(largest, 0.5) << s;
+    EXPECT_LT(largest, 1.0) << s;
+    EXPECT_DOUBLE_EQ(f.toWorldLength(f.toLocalLength(s)), s);
+    EXPECT_DOUBLE_EQ(f.toWorldVector({1, 0}).x, f.toWorldLength(1));
+  }
+  const PlaneFrame same = PlaneFrame::normalizing({{2, 3}, {2, 3}});
+  EXPECT_EQ(same.toLocal({2, 3}).x, 0);
+  EXPECT_EQ(same.toWorld({0, 0}).y, 3);
 }
 
 }  // namespace

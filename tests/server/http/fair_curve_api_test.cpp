@@ -37,8 +37,8 @@ double distance(const json& a, const json& b) {
 
 TEST_F(FairCurveApi, ClosedFourPointsGiveRankedCandidatesThroughEveryPoint) {
   const json points = {{0, 0}, {-5, -1}, {-3, -4}, {1, -1}};
-  const json r = post({{"points", points}, {"closed", true}, {"behavior", "undulant"}, {"samples", 9},
-                       {"max_candidates", 20}});
+  const json r =
+      post({{"points", points}, {"closed", true}, {"behavior", "undulant"}, {"samples", 9}, {"max_candidates", 20}});
   const json& c = r["candidates"];
   ASSERT_GE(c.size(), 8u) << r.dump();
   std::set<std::string> distinct;
@@ -96,8 +96,9 @@ TEST_F(FairCurveApi, BadInputAnswers422WithTheJsonPath) {
   expectError({{"points", {{0, 0}, {1, 1}}}, {"relations", {"rounder"}}}, 422, "invalid_parameter", "relations[0]");
   expectError({{"points", {{0, 0}, {1, 1}, {2, 0}}}, {"relations", {"smoother"}}}, 422, "invalid_parameter",
               "relations");
-  expectError({{"points", {{0, 0}, {1, 1}, {2, 0}}}, {"closed", true}, {"relations", {"sharper", "sharper", "sharper"}}},
-              422, "invalid_parameter", "relations");
+  expectError(
+      {{"points", {{0, 0}, {1, 1}, {2, 0}}}, {"closed", true}, {"relations", {"sharper", "sharper", "sharper"}}}, 422,
+      "invalid_parameter", "relations");
   expectError({{"points", {{0, 0}, {1, 1}}}, {"alpha_threshold", 2}}, 422, "invalid_parameter", "alpha_threshold");
   expectError({{"points", {{0, 0}, {1, 1}}}, {"samples", 1}}, 422, "invalid_parameter", "samples");
   expectError({{"points", {{0, 0}, {1, 1}}}, {"samples", 2.5}}, 422, "invalid_document", "samples");
@@ -125,10 +126,32 @@ TEST_F(FairCurveApi, LimitsAnswer413NamingTheLimitAndTheServerKeepsServing) {
   EXPECT_EQ(server->get("/health").status, 200);
 }
 
-// Points near the double range: the error named "magnitudes[0]", a field no request has.
+// Points further apart than the largest double have no representable radius: once the error
+// named "magnitudes[0]", a field no request has.
 TEST_F(FairCurveApi, UnrepresentableRadiiNameThePoints) {
-  expectError({{"points", {{0, 0}, {1e308, 0}, {1e308, 1e308}}}}, 422, "invalid_parameter", "points");
-  expectError({{"points", {{-1e308, 0}, {1e308, 0}, {0, 1e308}}}, {"closed", true}}, 422, "invalid_parameter", "points");
+  expectError({{"points", {{-1e308, 1e308}, {1e308, -1e308}}}}, 422, "invalid_parameter", "points");
+  expectError({{"points", {{-1.5e308, 0}, {1.5e308, 0}, {0, 1e308}}}, {"closed", true}}, 422, "invalid_parameter",
+              "points");
+}
+
+// Fuzz findings: these answered 200 with null (NaN) curve points. A closed curve through
+// collinear points, points a subnormal distance apart and points near the largest double.
+TEST_F(FairCurveApi, DegeneratePointsAnswerFiniteCurves) {
+  for (const json& body : {json{{"points", {{0, 0}, {1, 1}, {2, 2}}}, {"closed", true}},
+                           json{{"points", {{0, 0}, {5e-324, 0}}}}, json{{"points", {{1e308, 0}, {0, 0}}}},
+                           // Near the double range, within it: computed in the points' own frame.
+                           json{{"points", {{0, 0}, {1e308, 0}, {1e308, 1e308}}}},
+                           json{{"points", {{-1e308, 0}, {1e308, 0}, {0, 1e308}}}, {"closed", true}}}) {
+    const json r = post(body);
+    ASSERT_FALSE(r["candidates"].empty()) << body.dump();
+    for (const json& c : r["candidates"])
+      for (const json& p : c["curve"]) {
+        ASSERT_TRUE(p[0].is_number() && p[1].is_number()) << body.dump() << " " << p.dump();
+        EXPECT_TRUE(std::isfinite(p[0].get<double>()) && std::isfinite(p[1].get<double>())) << body.dump();
+      }
+  }
+  // Points too close for the size of the curve to tell apart once scaled.
+  expectError({{"points", {{0, 0}, {1e300, 0}, {1e300, 5e-324}}}}, 422, "invalid_parameter", "points[2]");
 }
 
 }  // namespace
