@@ -178,7 +178,9 @@ TEST(FairCurve, DegenerateAndExtremePointsGiveFiniteCurves) {
       {{{1e308, 0}, {0, 0}}, false},                // near the largest double
       {{{-1e308, 1e308}, {1e308, -1e308}}, false},  // differences beyond it
   };
-  for (const auto& [points, closed] : cases) {
+  for (const auto& item : cases) {
+    const std::vector<Vec2>& points = item.first;  // no structured binding: C++17 lambdas cannot capture one
+    const bool closed = item.second;
     if (std::abs(points[0].x) > 1e307 && std::abs(points[0].x - points[1].x) > 1e308) {
       // Points further apart than the largest double have no representable radius: refused.
       expectInvalidParameter([&] { radiusMagnitudes(points, {}, closed); }, "points");
