@@ -11,44 +11,21 @@ namespace fsdb {
 
 namespace {
 
-// Where the parser is, for errors the parser itself raises on a value (a number literal beyond
-// double range such as 1e999): the JSON path of the value being read.
-class ParsePosition {
- public:
-  void event(nlohmann::json::parse_event_t event, const nlohmann::json& parsed) {
-    using E = nlohmann::json::parse_event_t;
-    switch (event) {
-      case E::object_start: frames_.push_back({false, "", 0}); break;
-      case E::array_start: frames_.push_back({true, "", 0}); break;
-      case E::key:
-        if (!frames_.empty() && parsed.is_string()) frames_.back().key = parsed.get<std::string>();
-        break;
-      case E::object_end:
-      case E::array_end:
-        if (!frames_.empty()) frames_.pop_back();
-        valueDone();
-        break;
-      case E::value: valueDone(); break;
-    }
+// Feeds the parser callback's events to the tracker: where the parser is, for errors the parser
+// itself raises on a value (a number literal beyond double range such as 1e999).
+void track(JsonPathTracker& position, nlohmann::json::parse_event_t event, const nlohmann::json& parsed) {
+  using E = nlohmann::json::parse_event_t;
+  switch (event) {
+    case E::object_start: position.openObject(); break;
+    case E::array_start: position.openArray(); break;
+    case E::key:
+      if (parsed.is_string()) position.key(parsed.get<std::string>());
+      break;
+    case E::object_end:
+    case E::array_end: position.close(); break;
+    case E::value: position.valueDone(); break;
   }
-  // The path of the value being parsed now.
-  std::string path() const {
-    std::string out;
-    for (const Frame& f : frames_) out = f.isArray ? joinPath(out, f.index) : joinPath(out, f.key);
-    return out;
-  }
-
- private:
-  struct Frame {
-    bool isArray;
-    std::string key;
-    std::size_t index;
-  };
-  void valueDone() {
-    if (!frames_.empty() && frames_.back().isArray) ++frames_.back().index;
-  }
-  std::vector<Frame> frames_;
-};
+}
 
 }  // namespace
 
@@ -56,11 +33,11 @@ nlohmann::json parseJsonBody(const std::string& body, int maxDepth) {
   if (body.empty()) throw Error(errc::kMalformedJson, "request body is empty; expected a JSON document", "body");
   // The parser callback sees the depth of every value; refusing deep nesting here keeps the
   // recursive destructor and every later recursive walk within bounds.
-  ParsePosition position;
+  JsonPathTracker position;
   auto depthGuard = [maxDepth, &position](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
     if (depth > maxDepth)
       throw Error(errc::kLimitExceeded, "JSON nesting deeper than max_json_depth=" + std::to_string(maxDepth), "body");
-    position.event(event, parsed);
+    track(position, event, parsed);
     return true;
   };
   try {

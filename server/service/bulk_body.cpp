@@ -29,55 +29,48 @@ class ArrayChecker {
   bool start_array(std::size_t) { return open(true); }
   bool key(json::string_t& k) {
     checkDepth();
-    frames_.back().key = k;
+    position_.key(k);
     return true;
   }
   bool end_object() { return close(); }
   bool end_array() { return close(); }
   bool parse_error(std::size_t byte, const std::string&, const nlohmann::detail::exception& e) {
     // 406: a number literal beyond double range (1e999), reported as parseJsonBody does.
-    if (e.id == 406) throw Error(errc::kInvalidDocument, std::string("a number must be finite: ") + e.what(), path());
+    if (e.id == 406)
+      throw Error(errc::kInvalidDocument, std::string("a number must be finite: ") + e.what(), position_.path());
     throw Error(errc::kMalformedJson, "body is not valid JSON at byte " + std::to_string(byte) + ": " + e.what(),
                 "body");
   }
 
  private:
-  struct Frame {
-    bool isArray;
-    std::string key;
-    std::size_t index;
-  };
   // The depth parseJsonBody's callback sees: the containers open around the value.
   void checkDepth() const {
-    if (static_cast<int>(frames_.size()) > maxDepth_)
+    if (static_cast<int>(position_.depth()) > maxDepth_)
       throw Error(errc::kLimitExceeded, "JSON nesting deeper than max_json_depth=" + std::to_string(maxDepth_), "body");
   }
   bool value() {
     checkDepth();
-    done();
+    countTopLevel();
+    position_.valueDone();
     return true;
   }
   bool open(bool isArray) {
     checkDepth();
-    frames_.push_back({isArray, "", 0});
+    if (isArray) position_.openArray();
+    else position_.openObject();
     return true;
   }
   bool close() {
-    frames_.pop_back();
-    done();
+    position_.close();
+    countTopLevel();
     return true;
   }
-  void done() {
-    if (frames_.size() == 1) ++elements;
-    if (!frames_.empty() && frames_.back().isArray) ++frames_.back().index;
-  }
-  std::string path() const {
-    std::string out;
-    for (const Frame& f : frames_) out = f.isArray ? joinPath(out, f.index) : joinPath(out, f.key);
-    return out;
+  // A value just ended inside the body's own array: one more element.
+  void countTopLevel() {
+    if (position_.depth() == 1) ++elements;
   }
   int maxDepth_;
-  std::vector<Frame> frames_;
+  JsonPathTracker position_;
 };
 
 }  // namespace

@@ -44,7 +44,7 @@ nlohmann::json BulkReport::toJson() const {
 
 void BulkReport::addFailure(size_t line, nlohmann::json error) {
   ++failed;
-  if (errorsFull_ || maxErrors == 0) {
+  if (errorsFull()) {
     errorsTruncated = true;
     return;
   }
@@ -159,9 +159,9 @@ BulkReport importLines(Store& store, Source& source, const BulkOptions& options)
     std::vector<PreparedLine> lines;
   };
   std::vector<PreparedLine> pending;  // the batch being accumulated by the writer
-  // Set by the writer once the report lists maxErrors: the lines prepared after it are of later
-  // batches, whose errors are only counted.
-  std::atomic<bool> errorsFull{options.maxErrors == 0};
+  // report.errorsFull() published to the preparing threads: the lines prepared after it is set
+  // are of later batches, whose errors are only counted.
+  std::atomic<bool> errorsFull{report.errorsFull()};
   tbb::parallel_pipeline(
       kChunksInFlight,
       tbb::make_filter<void, std::shared_ptr<Chunk>>(tbb::filter_mode::serial_in_order,
@@ -202,7 +202,7 @@ BulkReport importLines(Store& store, Source& source, const BulkOptions& options)
                                                            const size_t errorsBefore = report.errors.size();
                                                            writeBatch(store, pending, options, report);
                                                            report.closeErrors(errorsBefore);
-                                                           if (report.errors.size() >= options.maxErrors)
+                                                           if (report.errorsFull())
                                                              errorsFull.store(true, std::memory_order_relaxed);
                                                            pending.clear();
                                                            if (options.progress) options.progress(chunk->end, count);

@@ -56,6 +56,9 @@ struct BulkReport {
   //        order and keeps only the first maxErrors of all, marking the report truncated when
   //        any is dropped.
   void closeErrors(size_t from);
+  // True once closeErrors has listed maxErrors (or maxErrors is 0): later lines' errors are only
+  // counted, so their messages need not be built.
+  bool errorsFull() const { return errorsFull_ || maxErrors == 0; }
 
  private:
   bool errorsFull_ = false;  // maxErrors listed: every later line's error is dropped

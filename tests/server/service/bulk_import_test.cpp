@@ -134,6 +134,32 @@ TEST(ImportBody, ListsTheFirstMaxErrorsFailuresAndCountsTheRest) {
   }
 }
 
+// The report's own record of a full list: out-of-order failures of one batch are kept until
+// closeErrors sorts them; only then is the list full and later failures only counted.
+TEST(BulkReport, ErrorsFullOnceClosedWithMaxErrors) {
+  BulkReport r;
+  r.maxErrors = 2;
+  EXPECT_FALSE(r.errorsFull());
+  for (size_t line : {5, 3, 4}) r.addFailure(line, {{"code", "x"}});
+  EXPECT_FALSE(r.errorsFull());  // not closed yet: all three kept
+  EXPECT_EQ(r.errors.size(), 3u);
+  r.closeErrors(0);
+  EXPECT_TRUE(r.errorsFull());
+  ASSERT_EQ(r.errors.size(), 2u);
+  EXPECT_EQ(r.errors[0]["line"], 3);
+  EXPECT_EQ(r.errors[1]["line"], 4);
+  EXPECT_TRUE(r.errorsTruncated);
+  r.addFailure(9, {{"code", "x"}});
+  EXPECT_EQ(r.errors.size(), 2u);
+  EXPECT_EQ(r.failed, 4u);
+  BulkReport none;
+  none.maxErrors = 0;
+  EXPECT_TRUE(none.errorsFull());
+  none.addFailure(1, {{"code", "x"}});
+  EXPECT_TRUE(none.errors.empty());
+  EXPECT_TRUE(none.errorsTruncated);
+}
+
 TEST(ImportDocuments, WithoutARouteKindEachLineNeedsItsKind) {
   TempDir dir;
   auto store = Store::open(test::storeLocation(dir, "db.sqlite"));
