@@ -7,7 +7,7 @@ PORT ?= 8080
 SANITIZE_BUILD ?= build-sanitize
 FUZZ_SECONDS ?= 60
 
-.PHONY: deps configure build serve test bench clean sanitize-build test-sanitize fuzz
+.PHONY: deps configure build serve test bench soak clean sanitize-build test-sanitize fuzz
 
 deps:
 	scripts/install-deps
@@ -43,6 +43,12 @@ fuzz: sanitize-build
 
 bench: build
 	scripts/run-benchmarks $(BUILD)
+
+# 60 s of reads under wrk -c64 beside writes, evaluations and both searches (bench/soak.sh); exit 1
+# on any error, any 5xx, or RSS growth of 10% or more after the warm-up.
+SOAK_SECONDS ?= 60
+soak: build
+	bench/soak.sh $(BUILD) $(SOAK_SECONDS)
 
 clean:
 	rm -rf $(BUILD)

@@ -8,6 +8,7 @@
 #include <httplib.h>
 #include <nlohmann/json.hpp>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -22,6 +23,7 @@
 
 #include "tests/db/temp_dir.h"
 #include "tests/db/test_database.h"
+#include "tests/testing/sanitizer_slowdown.h"
 
 namespace fsdb::test {
 
@@ -41,9 +43,14 @@ class ServerProcess {
     db_ = extraArgs[static_cast<size_t>(std::find(extraArgs.begin(), extraArgs.end(), "--db") - extraArgs.begin()) + 1];
     int out[2];
     if (pipe(out) != 0) throw std::runtime_error("pipe failed");
+    const pid_t parent = getpid();
     pid_ = fork();
     if (pid_ < 0) throw std::runtime_error("fork failed");
     if (pid_ == 0) {
+      // A test that dies without its destructors (an abort under a sanitizer) takes its server
+      // with it: an orphan would keep the test's stderr open and ctest would wait for it forever.
+      prctl(PR_SET_PDEATHSIG, SIGKILL);
+      if (getppid() != parent) _exit(127);  // the test already died between fork and prctl
       dup2(out[1], STDOUT_FILENO);
       close(out[0]);
       close(out[1]);
@@ -111,7 +118,7 @@ class ServerProcess {
 
   httplib::Client client() const {
     httplib::Client c(host_, port_);
-    c.set_read_timeout(120, 0);
+    c.set_read_timeout(static_cast<time_t>(120 * fsdb::testing::kSlowdown), 0);
     return c;
   }
 

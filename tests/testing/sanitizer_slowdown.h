@@ -7,8 +7,12 @@ namespace fsdb::testing {
 
 #ifdef FSDB_SANITIZE
 inline constexpr double kSlowdown = 20.0;
+// Resident memory is not the program's own under ASan (shadow memory, redzones, the quarantine of
+// freed blocks): memory bounds hold in the Release build only.
+inline constexpr bool kSanitizerBuild = true;
 #else
 inline constexpr double kSlowdown = 1.0;
+inline constexpr bool kSanitizerBuild = false;
 #endif
 
 }  // namespace fsdb::testing

@@ -89,8 +89,9 @@ TEST(CsgQueryApi, ExactTreeFirstWithScoreOneAndOrderRules) {
   EXPECT_LT(swapped, 1.0);
   // limit and threshold
   EXPECT_EQ(query(c.server, {{"tree", node("union", {kBent, kSharp})}, {"limit", 1}})["results"].size(), 1u);
-  for (const json& r : query(c.server, {{"tree", node("union", {kBent, kSharp})}, {"threshold", 0.5}})["results"])
-    EXPECT_GE(r["score"].get<double>(), 0.5);
+  // Kept in a variable: a range-for over query(...)["results"] reads a destroyed temporary (ASan).
+  const json above = query(c.server, {{"tree", node("union", {kBent, kSharp})}, {"threshold", 0.5}});
+  for (const json& r : above["results"]) EXPECT_GE(r["score"].get<double>(), 0.5);
 }
 
 TEST(CsgQueryApi, TextFindsTheTreeItDescribes) {
@@ -128,9 +129,11 @@ TEST(CsgQueryApi, WeightsChangeRankingsAsDocumented) {
   EXPECT_EQ(names(byDefault), (std::vector<std::string>{"moved", "other"}));
   EXPECT_NEAR(scoreOf(byDefault, "moved"), 0.5 * 1 + 0.2 * 0 + 0.3 * 1, 1e-9);
   EXPECT_NEAR(scoreOf(byDefault, "other"), 0.5 * 0.5 + 0.2 * 0.5 + 0.3 * 2 / 3, 1e-9);
-  const json transforms = query(server, {{"tree", tree}, {"weights", {{"components", 0}, {"transforms", 1}, {"structure", 0}}}});
+  const json transforms =
+      query(server, {{"tree", tree}, {"weights", {{"components", 0}, {"transforms", 1}, {"structure", 0}}}});
   EXPECT_EQ(names(transforms), std::vector<std::string>{"other"});  // "moved" scores 0 there
-  const json structure = query(server, {{"tree", tree}, {"weights", {{"components", 0}, {"transforms", 0}, {"structure", 1}}}});
+  const json structure =
+      query(server, {{"tree", tree}, {"weights", {{"components", 0}, {"transforms", 0}, {"structure", 1}}}});
   EXPECT_EQ(names(structure), (std::vector<std::string>{"moved", "other"}));
   EXPECT_DOUBLE_EQ(scoreOf(structure, "moved"), 1.0);
 }
@@ -145,10 +148,13 @@ TEST(CsgQueryApi, StoredPartsInFormulasAndGraphsFollowPuts) {
   EXPECT_DOUBLE_EQ(answer["results"][0]["score"].get<double>(), 1.0);
   // A new version of a part the tree uses: the cached graph is rebuilt, the query (which resolves
   // "rod" again) still matches exactly, and the old rod no longer does.
-  ASSERT_EQ(server.put("/parts/" + std::to_string(rod), json{{"name", "rod"}, {"params", {{"a1", 2}, {"a3", 3}}}}).status, 200);
+  ASSERT_EQ(
+      server.put("/parts/" + std::to_string(rod), json{{"name", "rod"}, {"params", {{"a1", 2}, {"a3", 3}}}}).status,
+      200);
   answer = query(server, {{"text", "rod + cap"}});
   EXPECT_DOUBLE_EQ(answer["results"][0]["score"].get<double>(), 1.0);
-  answer = query(server, {{"tree", node("union", {{{"part", {{"params", {{"a1", 1}, {"a3", 3}}}}}}, {{"part", "cap"}}})}});
+  answer =
+      query(server, {{"tree", node("union", {{{"part", {{"params", {{"a1", 1}, {"a3", 3}}}}}}, {{"part", "cap"}}})}});
   EXPECT_LT(answer["results"][0]["score"].get<double>(), 1.0);
 }
 
@@ -276,7 +282,8 @@ TEST(CsgQueryCli, RoutesCsgTexts) {
   EXPECT_EQ(formula.exitCode, 0);
   EXPECT_EQ(json::parse(formula.out)["parsed"]["form"], "formula");
   // A list is a CSG query too; a linguistic text is not.
-  EXPECT_EQ(json::parse(runFsdb({"query", "a sphere and a box", "--db", db, "--json"}).out)["parsed"]["form"], "phrase");
+  EXPECT_EQ(json::parse(runFsdb({"query", "a sphere and a box", "--db", db, "--json"}).out)["parsed"]["form"],
+            "phrase");
   EXPECT_TRUE(json::parse(runFsdb({"query", "find a sphere", "--db", db, "--json"}).out)["parsed"].contains("subject"));
   const auto refused = runFsdb({"query", "the union of a cube and", "--db", db}, true);
   EXPECT_EQ(refused.exitCode, 1) << refused.out;

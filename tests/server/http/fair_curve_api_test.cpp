@@ -68,7 +68,8 @@ TEST_F(FairCurveApi, OpenCurveWithRelationsAndThreshold) {
   EXPECT_EQ(all["behavior"], "no_inflection");
   json high = body;
   high["alpha_threshold"] = 0.6;
-  for (const json& c : post(high)["candidates"]) EXPECT_GE(c["membership"].get<double>(), 0.6);
+  const json highAnswer = post(high);  // kept: a range-for over post(high)["candidates"] would dangle
+  for (const json& c : highAnswer["candidates"]) EXPECT_GE(c["membership"].get<double>(), 0.6);
   const json& curve = all["candidates"][0]["curve"];
   EXPECT_EQ(curve.size(), 2u * 31 + 1);  // default 32 samples per piece
   EXPECT_LT(distance(curve.front(), body["points"][0]), 1e-9);

@@ -5,6 +5,8 @@
 #include <fcntl.h>
 
 #include <atomic>
+#include <chrono>
+#include <fstream>
 #include <thread>
 
 #include "tests/server/server_process.h"
@@ -51,8 +53,8 @@ TEST(Service, BadRequestsGetJsonErrorsAndTheServerKeepsServing) {
   expectErrorBody(server.post("/operators/evaluate", std::string("{not json")), 400, "malformed_json", "body");
   expectErrorBody(server.post("/operators/evaluate", std::string("")), 400, "malformed_json", "body");
   expectErrorBody(server.post("/operators/evaluate", std::string(2000, ' ') + "{}"), 413, "limit_exceeded", "body");
-  expectErrorBody(server.post("/operators/evaluate", std::string("[[[[[[[[[[[[1]]]]]]]]]]]]")), 413,
-                  "limit_exceeded", "body");
+  expectErrorBody(server.post("/operators/evaluate", std::string("[[[[[[[[[[[[1]]]]]]]]]]]]")), 413, "limit_exceeded",
+                  "body");
   expectErrorBody(server.post("/operators/evaluate", std::string("[1,2]")), 422, "invalid_document", "");
   EXPECT_EQ(server.get("/health").status, 200);
 }
@@ -74,6 +76,37 @@ TEST(Service, StopsGracefullyOnSigterm) {
   ServerProcess server;
   ASSERT_EQ(server.get("/health").status, 200);
   EXPECT_EQ(server.terminate(), 0);
+}
+
+// The test harness: a test process that dies without its destructors (an abort under a
+// sanitizer) must not leave its server running. The orphan held the test's stderr, and ctest
+// waited for it for as long as it lived (8 minutes, until it was killed by hand).
+TEST(ServerProcessHarness, AServerDiesWithTheTestThatStartedIt) {
+  int report[2];
+  ASSERT_EQ(pipe(report), 0);
+  const pid_t test = fork();
+  if (test == 0) {
+    close(report[0]);
+    ServerProcess server;
+    const pid_t serverPid = server.pid();
+    if (write(report[1], &serverPid, sizeof serverPid) != sizeof serverPid) _exit(2);
+    _exit(0);  // no destructors: as a sanitizer's abort
+  }
+  close(report[1]);
+  pid_t serverPid = 0;
+  ASSERT_EQ(read(report[0], &serverPid, sizeof serverPid), static_cast<ssize_t>(sizeof serverPid));
+  close(report[0]);
+  int status = 0;
+  waitpid(test, &status, 0);
+  // Gone, or a zombie waiting for init to reap it, within 10 s.
+  auto running = [serverPid] {
+    std::ifstream stat("/proc/" + std::to_string(serverPid) + "/stat");
+    std::string pid, name, state;
+    return stat >> pid >> name >> state && state != "Z";
+  };
+  for (int i = 0; i < 1000 && running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_FALSE(running()) << "fsdb serve " << serverPid << " outlived its test process";
+  if (running()) ::kill(serverPid, SIGKILL);
 }
 
 TEST(Service, RefusesAPortInUse) {
