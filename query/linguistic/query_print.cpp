@@ -1,6 +1,7 @@
 // See query/linguistic/query_print.h.
 #include "query/linguistic/query_print.h"
 
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <vector>
@@ -23,6 +24,13 @@ using Kind = QueryCondition::Kind;
 
 std::string firstWord(const std::string& text) { return text.substr(0, text.find(' ')); }
 
+// Words are read in any case (query_tokens.h lower-cases them); a condition's text keeps the case
+// the user wrote, so it is compared and printed lower-cased.
+std::string lowerCase(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
 class Printer {
  public:
   explicit Printer(const Vocabulary& v) : v_(v) {}
@@ -30,7 +38,8 @@ class Printer {
   // [ intensity ] adjective [ section ]: the words as written when they say it (a synonym stays
   // itself), else the first that do; or a descriptor degree as written.
   std::string leaf(const QueryCondition& c) const {
-    if (descriptorIndex(firstWord(c.text)) >= 0 && firstWord(c.text) == c.descriptor) return c.text;
+    const std::string text = lowerCase(c.text);
+    if (descriptorIndex(firstWord(text)) >= 0 && firstWord(text) == c.descriptor) return text;
     std::string first;
     for (const std::string& word : v_.adjectiveWords()) {
       const Adjective& a = *v_.adjective(word);
@@ -46,13 +55,13 @@ class Printer {
       for (const std::string& intensity : intensities) {
         const std::string words = intensity + word;
         if (!ofSection) {
-          if (words == c.text) return words;
+          if (words == text) return words;
           if (first.empty()) first = words;
           continue;
         }
         for (const std::string& section : v_.sectionWords())
           for (const char* article : {"", "a ", "an "})
-            if (article + words + " " + section == c.text) return words + " " + section;
+            if (article + words + " " + section == text) return words + " " + section;
         if (first.empty()) first = words + " " + v_.sectionWords().front();
       }
     }

@@ -35,6 +35,10 @@ TEST(QueryPrint, CanonicalPhrasing) {
   EXPECT_EQ(printed("find a cone close to the top right of a plate"), "find a cone close to the top right of a plate");
   EXPECT_EQ(printed("a ball between 2 and 4 behind shapes"), "find a sphere between 2 and 4 to the back of a shape");
   EXPECT_EQ(printed("anything"), "find a shape");
+  // Words in any case (a fuzz finding: a descriptor degree written "bEndness" was unprintable).
+  EXPECT_EQ(printed("find shapes with bEndness at least 0.5"), "find a shape that is bendness at least 0.5");
+  EXPECT_EQ(printed("a Slightly BENT shape"), "find a shape that is slightly bent");
+  EXPECT_EQ(printed("shapes with a Square Cross-Section"), "find a shape that is square cross-section");
 }
 
 TEST(QueryPrint, PrintedTextsMeanTheQuery) {

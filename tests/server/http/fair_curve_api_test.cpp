@@ -133,6 +133,11 @@ TEST_F(FairCurveApi, UnrepresentableRadiiNameThePoints) {
   expectError({{"points", {{-1e308, 1e308}, {1e308, -1e308}}}}, 422, "invalid_parameter", "points");
   expectError({{"points", {{-1.5e308, 0}, {1.5e308, 0}, {0, 1e308}}}, {"closed", true}}, 422, "invalid_parameter",
               "points");
+  // Representable points whose curve bulges beyond the largest double (y up to 1.79e308).
+  const json beyond = post({{"points", {{0, 1.79e308}, {1e308, 1.79e308}}}}, 422);
+  EXPECT_EQ(beyond["error"]["path"], "points") << beyond.dump();
+  EXPECT_NE(beyond["error"]["message"].get<std::string>().find("leaves the range of doubles"), std::string::npos)
+      << beyond.dump();
 }
 
 // Fuzz findings: these answered 200 with null (NaN) curve points. A closed curve through
