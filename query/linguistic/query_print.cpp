@@ -24,6 +24,15 @@ using Kind = QueryCondition::Kind;
 
 std::string firstWord(const std::string& text) { return text.substr(0, text.find(' ')); }
 
+// A number as query text: formatNumber's shortest form with no '+' in its exponent (2.5e32, not
+// 2.5e+32): a '+' anywhere makes a structural query text a formula (csg_query_text.h).
+std::string numberText(double x) {
+  std::string text = formatNumber(x);
+  const size_t plus = text.find("e+");
+  if (plus != std::string::npos) text.erase(plus + 1, 1);
+  return text;
+}
+
 // Words are read in any case (query_tokens.h lower-cases them); a condition's text keeps the case
 // the user wrote, so it is compared and printed lower-cased.
 std::string lowerCase(std::string text) {
@@ -142,11 +151,11 @@ std::string distanceText(const FuzzyNumber& d, const Vocabulary& vocabulary) {
   for (const std::string& word : vocabulary.distanceWords())
     if (*vocabulary.distance(word) == d) return word;
   const Interval core = d.core(), support = d.support();
-  if (d.isCrisp()) return formatNumber(core.lo);
-  const std::string about = "about " + formatNumber(core.lo);
+  if (d.isCrisp()) return numberText(core.lo);
+  const std::string about = "about " + numberText(core.lo);
   if (core.lo == core.hi && parseNumberPhrase(about) == d) return about;
   if (core.lo == support.lo && core.hi == support.hi) {
-    const std::string between = "between " + formatNumber(core.lo) + " and " + formatNumber(core.hi);
+    const std::string between = "between " + numberText(core.lo) + " and " + numberText(core.hi);
     if (parseNumberPhrase(between) == d) return between;
   }
   unprintable("the distance " + toJson(d).dump());
@@ -167,7 +176,7 @@ std::string linguisticQueryText(const LinguisticQuery& query, const Vocabulary& 
   } else {
     out += p.nounPhrase(query.root, query.subject, "a");
   }
-  if (query.atLeast > 0) out += " at least " + formatNumber(query.atLeast);
+  if (query.atLeast > 0) out += " at least " + numberText(query.atLeast);
   if (query.aggregation != "min") out += " using " + query.aggregation;
   return out;
 }

@@ -62,6 +62,11 @@ TEST(QueryPrint, NumbersAndDistances) {
   EXPECT_EQ(distanceText(FuzzyNumber::crisp(100), v()), "100");
   EXPECT_EQ(distanceText(FuzzyNumber::crisp(1.0 / 3), v()), "0.3333333333333333");
   EXPECT_EQ(distanceText(FuzzyNumber::crisp(2.5), v()), "2.5");
+  // Nor a '+' in an exponent (fuzz_csg_query_text again: "about 2.4444444444444445e+32").
+  EXPECT_EQ(distanceText(FuzzyNumber::crisp(1e300), v()), "1e300");
+  EXPECT_EQ(distanceText(FuzzyNumber::crisp(2e-7), v()), "2e-07");
+  EXPECT_EQ(printed("a sphere about 244444444444444444444444444444444 units above a cube"),
+            "find a sphere about 2.4444444444444445e32 to the top of a cube");
   EXPECT_EQ(distanceText(FuzzyNumber::triangular(2.7, 3, 3.3), v()), "about 3");
   EXPECT_EQ(distanceText(FuzzyNumber::trapezoidal(2, 2, 4, 4), v()), "between 2 and 4");
   EXPECT_EQ(distanceText(*v().distance("near"), v()), "close");  // the first word with that set

@@ -45,7 +45,9 @@ TEST(CsgQueryPrint, PrintedTextsMeanTheQuery) {
         "a sphere intersected with a box minus a cone", "the union of a bent and twisted rod, a round box and a sphere",
         "the union of a box, a sphere in front of it and a cone to its left",
         "a cylinder with a cone about 3 units on top", "a sphere close to the top right of a cube",
-        "a box without a cylinder with bendness at least 0.5", "C = sphere + (box - cylinder) * cone"}) {
+        "a box without a cylinder with bendness at least 0.5", "C = sphere + (box - cylinder) * cone",
+        // A fuzz finding: printed "about 2.4444444444444445e+32", whose '+' made the text a formula.
+        "a cube and a sphere about 244444444444444444444444444444444 units to its right"}) {
     const CsgQuery q = parse(text);
     const std::string once = csgQueryText(q, v());
     EXPECT_EQ(testing::csgMeaning(parse(once)), testing::csgMeaning(q)) << text << " -> " << once;
