@@ -12,13 +12,10 @@
 #include <string>
 #include <vector>
 
+#include "db/sql.h"
 #include "db/store.h"
 
 namespace fsdb {
-
-namespace sql {
-class Connection;
-}
 
 constexpr int kCrispWidthClass = -1100;  // below the exponent of any positive double
 
@@ -40,7 +37,11 @@ void clearDescriptorsPending(sql::Connection& connection, int64_t objectId);
 // (appended to `rows`), pending ids.
 std::vector<DescriptorRange> descriptorRangesIn(sql::Connection& connection, const DescriptorOverlap& test);
 void descriptorRangeRowsIn(sql::Connection& connection, const std::string& kind, const DescriptorRange& range,
-                           std::vector<DescriptorCandidate>& rows);
+                           std::vector<DescriptorCandidate>& rows, const DescriptorRangeRead& read = {});
+// The statement descriptorRangeRowsIn runs (tests/db/query_plan_test.cpp checks SQLite's plan):
+// ?1 kind, ?2 descriptor, ?3 width_class, ?4 and ?5 the support_lo range, ?6 the least support_hi,
+// ?7 the limit or the id after which a walk starts, ?8 the id where it ends.
+std::string descriptorRangeSql(sql::Dialect dialect, const DescriptorRangeRead& read);
 std::vector<int64_t> pendingDescriptorIdsIn(sql::Connection& connection, const std::string& kind);
 
 std::vector<DescriptorCandidate> descriptorCandidatesIn(sql::Connection& connection, const std::string& kind,

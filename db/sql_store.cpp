@@ -259,12 +259,41 @@ std::vector<DescriptorRange> SqlStore::descriptorRanges(const DescriptorOverlap&
   return descriptorRangesIn(*connection, test);
 }
 
-std::vector<DescriptorCandidate> SqlStore::descriptorRangeRows(const std::string& kind,
-                                                               const DescriptorRange& range) const {
+std::vector<DescriptorCandidate> SqlStore::descriptorRangeRows(const std::string& kind, const DescriptorRange& range,
+                                                               const DescriptorRangeRead& read) const {
   Lease connection(*this);
   std::vector<DescriptorCandidate> rows;
-  descriptorRangeRowsIn(*connection, kind, range, rows);
+  descriptorRangeRowsIn(*connection, kind, range, rows, read);
   return rows;
+}
+
+std::vector<DescriptorCandidate> SqlStore::descriptorSupports(const std::string& descriptor,
+                                                              const std::vector<int64_t>& ids) const {
+  Lease connection(*this);
+  // kIds ids a statement, the last repeated to fill it (one prepared statement, few round trips);
+  // each is a primary-key lookup (object_id, component, descriptor).
+  constexpr int kIds = 64;
+  std::string sql =
+      "SELECT object_id, support_lo, support_hi FROM descriptor_index WHERE descriptor = ?1"
+      " AND object_id IN (";
+  for (int i = 0; i < kIds; ++i) sql += (i > 0 ? ", ?" : "?") + std::to_string(i + 2);
+  sql += ")";
+  auto statement = (*connection).prepare(sql);
+  std::vector<DescriptorCandidate> rows;
+  for (size_t from = 0; from < ids.size(); from += kIds) {
+    statement->reset();
+    statement->bind(1, descriptor);
+    for (int i = 0; i < kIds; ++i) statement->bind(i + 2, ids[std::min(ids.size() - 1, from + static_cast<size_t>(i))]);
+    while (statement->step())
+      rows.push_back({statement->columnInt(0), statement->columnDouble(1), statement->columnDouble(2), false});
+  }
+  return rows;
+}
+
+int64_t SqlStore::lastObjectId() const {
+  Lease connection(*this);
+  auto statement = (*connection).prepare("SELECT coalesce(max(id), 0) FROM objects");
+  return statement->step() ? statement->columnInt(0) : 0;
 }
 
 std::vector<int64_t> SqlStore::pendingDescriptorIds(const std::string& kind) const {

@@ -35,8 +35,11 @@ class SqlStore : public Store {
   std::vector<DescriptorCandidate> descriptorCandidates(const std::string& kind,
                                                         const DescriptorOverlap& test) const override;
   std::vector<DescriptorRange> descriptorRanges(const DescriptorOverlap& test) const override;
-  std::vector<DescriptorCandidate> descriptorRangeRows(const std::string& kind,
-                                                       const DescriptorRange& range) const override;
+  std::vector<DescriptorCandidate> descriptorRangeRows(const std::string& kind, const DescriptorRange& range,
+                                                       const DescriptorRangeRead& read) const override;
+  std::vector<DescriptorCandidate> descriptorSupports(const std::string& descriptor,
+                                                      const std::vector<int64_t>& ids) const override;
+  int64_t lastObjectId() const override;
   std::vector<int64_t> pendingDescriptorIds(const std::string& kind) const override;
   std::vector<int64_t> objectIds(const std::string& kind) const override;
   std::vector<ObjectVersion> objectVersions(const std::string& kind) const override;

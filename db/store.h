@@ -171,6 +171,19 @@ struct DescriptorRange {
   double fromLo = 0, toLo = 0, leastHi = 0;
 };
 
+// How Store::descriptorRangeRows reads a range, so the level scan of the linguistic search can
+// read a piece best rows first and stop early (server/service/linguistic_search.cpp):
+// - kAscending, kDescending: by (support_lo, support_hi, object_id) that way, at most `limit`
+//   rows (0: all); for crisp rows that is by value, then by id;
+// - kById: the rows with object_id in (afterId, throughId], by id (a walk of the objects in id
+//   order, for a piece whose rows all have the same bound, where ties go by id).
+struct DescriptorRangeRead {
+  enum class Order { kAscending, kDescending, kById };
+  Order order = Order::kAscending;
+  int64_t limit = 0;
+  int64_t afterId = 0, throughId = 0;
+};
+
 // An object as the linguistic search scores it (Store::indexedObjects): its name and the
 // encoded descriptor values of its components. pending: the rows are missing or may be stale
 // (descriptor_pending), so the caller must describe the document instead of using `components`.
@@ -279,9 +292,15 @@ class Store {
   // The same rows in parts: the range per width class present (empty ranges left out), the rows
   // of one range (pending = false), and the ids of the pending objects of `kind`.
   virtual std::vector<DescriptorRange> descriptorRanges(const DescriptorOverlap& test) const = 0;
-  virtual std::vector<DescriptorCandidate> descriptorRangeRows(const std::string& kind,
-                                                               const DescriptorRange& range) const = 0;
+  virtual std::vector<DescriptorCandidate> descriptorRangeRows(const std::string& kind, const DescriptorRange& range,
+                                                               const DescriptorRangeRead& read = {}) const = 0;
   virtual std::vector<int64_t> pendingDescriptorIds(const std::string& kind) const = 0;
+  // The supports of `descriptor` of the objects among `ids` (every component's row; ids without
+  // rows are left out), in no order: the level scan tightens a candidate's bound with them.
+  virtual std::vector<DescriptorCandidate> descriptorSupports(const std::string& descriptor,
+                                                              const std::vector<int64_t>& ids) const = 0;
+  // The largest id of a live object (0: none); ids only grow, so a walk in id order ends there.
+  virtual int64_t lastObjectId() const = 0;
   // Sorted ids of every live object of `kind` (the full scan's candidates).
   virtual std::vector<int64_t> objectIds(const std::string& kind) const = 0;
   // Every live object of `kind` by id with its name and latest version, in one read.

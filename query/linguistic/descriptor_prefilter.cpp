@@ -137,7 +137,23 @@ double maxMembership(const FuzzyNumber& set, double lo, double hi) {
   return m;
 }
 
+// How μ_set runs over [lo, hi]: through its values at the ends and every breakpoint between.
+LevelOrder membershipOrder(const FuzzyNumber& set, double lo, double hi) {
+  std::vector<double> mu{set.membership(lo)};
+  for (const Breakpoint& p : set.breakpoints())
+    if (p.x > lo && p.x < hi) mu.push_back(p.mu);
+  mu.push_back(set.membership(hi));
+  const bool rising = std::is_sorted(mu.begin(), mu.end());
+  const bool falling = std::is_sorted(mu.rbegin(), mu.rend());
+  if (rising && falling) return LevelOrder::kFlat;
+  return rising ? LevelOrder::kRising : falling ? LevelOrder::kFalling : LevelOrder::kAny;
+}
+
 }  // namespace
+
+double crispLevelBound(const PrefilterPlan& leaf, double fromLo, double toLo) {
+  return raised(maxMembership(leaf.set, fromLo, toLo));
+}
 
 std::vector<LevelPiece> levelPieces(const PrefilterPlan& leaf, double maxWidth, double fromLo, double toLo) {
   const double inf = std::numeric_limits<double>::infinity();
@@ -157,7 +173,8 @@ std::vector<LevelPiece> levelPieces(const PrefilterPlan& leaf, double maxWidth, 
   auto close = [&](double end) {  // the piece [start, end]
     LevelPiece piece{start, end, 1};
     if (maxWidth == 0) {
-      piece.bound = raised(maxMembership(leaf.set, start, end));
+      piece.bound = crispLevelBound(leaf, start, end);
+      piece.order = membershipOrder(leaf.set, start, end);
     } else if (setArea > 0) {
       // The widest support the piece holds ends at end + maxWidth; one ulp more against rounding
       // of support_hi - support_lo (widthClass).

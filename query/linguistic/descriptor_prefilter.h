@@ -82,11 +82,19 @@ double membershipIntegral(const FuzzyNumber& set, double lo, double hi);
 // breakpoint between: μ_set is piecewise linear); a wide value has support in
 // [s0, s1 + maxWidth], so S <= |A∩B|/|B| <= ∫_s0^(s1+maxWidth) μ_set / |set| (1 for a crisp set).
 // Raised like scoreBound, and never below scoreBound of a row the piece holds.
+// order (crisp pieces only, else kAny): how μ_set runs over [fromLo, toLo], so the search can read
+// the rows best first and stop early: kRising (non-decreasing: best at the top, read by value
+// descending), kFalling (read ascending), kFlat (constant: every row has the piece's bound and
+// ties go by id, so read in id order).
+enum class LevelOrder { kAny, kRising, kFalling, kFlat };
 struct LevelPiece {
   double fromLo = 0, toLo = 0;
   double bound = 1;
+  LevelOrder order = LevelOrder::kAny;
 };
 std::vector<LevelPiece> levelPieces(const PrefilterPlan& leaf, double maxWidth, double fromLo, double toLo);
+// The bound of every crisp row with value in [fromLo, toLo]: the largest μ_set there, raised.
+double crispLevelBound(const PrefilterPlan& leaf, double fromLo, double toLo);
 
 // Whether kAnd under this aggregation is 0 as soon as one child is (a t-norm).
 bool aggregationNeedsAll(const std::string& aggregation);

@@ -7,15 +7,16 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "db/descriptor_index.h"
 #include "geometry/core/error.h"
+#include "query/document/part_json.h"
+#include "query/json/json_body.h"
 #include "query/linguistic/descriptor_prefilter.h"
 #include "query/linguistic/query_print.h"
 #include "query/linguistic/vocabulary.h"
-#include "query/json/json_body.h"
-#include "query/document/part_json.h"
 #include "server/service/descriptor_rows.h"
 
 namespace fsdb {
@@ -39,6 +40,93 @@ bool better(const LinguisticHit& a, const LinguisticHit& b) {
 
 // The same order for candidates: highest bound first, ties by id (the order hits take).
 bool boundFirst(const Candidate& a, const Candidate& b) { return a.bound != b.bound ? a.bound > b.bound : a.id < b.id; }
+
+// One piece of the level scan (Scorer::scoreLevels) and how much of it has been read.
+struct LevelRead {
+  DescriptorRange range;  // what is left to read (a read by value narrows it)
+  double bound = 1;       // >= the bound of every row left
+  LevelOrder order = LevelOrder::kAny;
+  bool done = false;
+  // kFlat: the walk in id order has read every id <= walkedThrough; wholeRest: it gave up, and
+  // the rest is read by value at once (skipping the ids it read).
+  int64_t walkedThrough = 0, walkWindow = 0;
+  size_t walkRows = 0;
+  bool wholeRest = false;
+  // kRising, kFalling: rows per read, and the ids already read at the value where the rest starts.
+  int64_t page = 0;
+  std::unordered_set<int64_t> readAtEdge;
+  int64_t firstRead = 256;  // LinguisticSearchOptions::firstLevelRead
+
+  // Comes before every row not yet read, in candidate order (boundFirst).
+  Candidate frontier() const {
+    const bool walking = order == LevelOrder::kFlat && !wholeRest;
+    return {walking ? walkedThrough + 1 : std::numeric_limits<int64_t>::min(), bound};
+  }
+
+  // Reads some rows of the piece into `add` and moves the frontier (or marks the piece done).
+  template <typename Add>
+  void advance(const Store& store, const std::string& kind, const PrefilterPlan& driver, int64_t lastId,
+               const Add& add) {
+    using Order = DescriptorRangeRead::Order;
+    if (order == LevelOrder::kFlat && !wholeRest) return walk(store, kind, lastId, add);
+    if ((order == LevelOrder::kRising || order == LevelOrder::kFalling) && !wholeRest)
+      return readByValue(store, kind, driver, add);
+    for (const DescriptorCandidate& row : store.descriptorRangeRows(kind, range, {Order::kAscending}))
+      if (row.id > walkedThrough) add(row);
+    done = true;
+  }
+
+ private:
+  // A walk of the ids in windows that double, while it costs less than reading the rest by value
+  // would: a walked id reads the object's every index row (a part's 11 in the primary key) where a
+  // read by value reads one entry per row of the piece; kIdCost is that ratio as measured at 1M
+  // parts (docs/performance.md: 1.4 µs an id, 0.47 µs a row). A piece too sparse for the walk is
+  // read whole after its first window.
+  static constexpr double kIdCost = 3;
+
+  template <typename Add>
+  void walk(const Store& store, const std::string& kind, int64_t lastId, const Add& add) {
+    walkWindow = walkWindow == 0 ? firstRead : 2 * walkWindow;
+    const int64_t through = lastId - walkedThrough <= walkWindow ? lastId : walkedThrough + walkWindow;
+    const std::vector<DescriptorCandidate> rows =
+        store.descriptorRangeRows(kind, range, {DescriptorRangeRead::Order::kById, 0, walkedThrough, through});
+    for (const DescriptorCandidate& row : rows) add(row);
+    walkRows += rows.size();
+    walkedThrough = through;
+    if (walkedThrough >= lastId) {
+      done = true;
+      return;
+    }
+    const double restRows = static_cast<double>(walkRows) / static_cast<double>(walkedThrough) *
+                            static_cast<double>(lastId - walkedThrough);
+    if (restRows < kIdCost * static_cast<double>(2 * walkWindow)) wholeRest = true;
+  }
+
+  // Pages best value first (kRising: descending), each page ending at a value `edge`; the rest is
+  // the range up to and including edge, less the ids already read there (a page may end inside a
+  // run of equal values), and its bound the largest μ left.
+  template <typename Add>
+  void readByValue(const Store& store, const std::string& kind, const PrefilterPlan& driver, const Add& add) {
+    const bool descending = order == LevelOrder::kRising;
+    page = page == 0 ? firstRead : std::min<int64_t>(2 * page, 1 << 16);
+    const int64_t limit = page + static_cast<int64_t>(readAtEdge.size());
+    const std::vector<DescriptorCandidate> rows = store.descriptorRangeRows(
+        kind, range,
+        {descending ? DescriptorRangeRead::Order::kDescending : DescriptorRangeRead::Order::kAscending, limit});
+    for (const DescriptorCandidate& row : rows)
+      if (readAtEdge.count(row.id) == 0) add(row);
+    if (static_cast<int64_t>(rows.size()) < limit) {
+      done = true;
+      return;
+    }
+    const double edge = rows.back().supportLo;
+    if (edge != (descending ? range.toLo : range.fromLo)) readAtEdge.clear();
+    for (const DescriptorCandidate& row : rows)
+      if (row.supportLo == edge) readAtEdge.insert(row.id);
+    (descending ? range.toLo : range.fromLo) = edge;
+    bound = crispLevelBound(driver, range.fromLo, range.toLo);
+  }
+};
 
 class Scorer {
  public:
@@ -77,57 +165,87 @@ class Scorer {
   //   candidates are a subset), and every other object scores 0 (the prefilter's rules);
   // - a pending object's bound is 1; a row's is scoreBound of driver, <= its piece's bound; under
   //   a t-norm T(a, b) <= min(a, b) <= the driver's score, so both bound the plan's score;
-  // - a candidate is scored only when its bound is > the largest bound of the pieces not yet
-  //   read (so no unread object can be better than it, even tied with a smaller id), and the
-  //   scan ends when the best unscored candidate cannot enter (canEnter: its bound is below the
-  //   cut, or the limit-th score beats it or ties with a smaller id) with that bound > every
-  //   unread piece's, or when no unread piece can enter (bound < the limit-th score, strictly, or
-  //   below the cut): then no unscored object can be among the results.
-  void scoreLevels(const Store& store, const std::string& kind, const PrefilterPlan& driver) {
-    struct Piece {
-      DescriptorRange range;
-      double bound;
-    };
-    std::vector<Piece> pieces;
+  // - each piece has a frontier that comes, in candidate order (boundFirst), before every row of
+  //   it not yet read: (its bound, any id) for a piece not read, (the bound of the values left,
+  //   any id) for one read by value, best values first, and (its bound, the next id) for a flat
+  //   piece walked in id order (every row of it has that bound at most and a larger id);
+  // - a candidate is scored only when it comes before every frontier (so no unread object can be
+  //   better than it, even tied with a smaller id), and the scan ends when the best unscored
+  //   candidate cannot enter (canEnter: its bound is below the cut, or the limit-th score beats
+  //   it or ties with a smaller id) before every frontier, or when the best frontier cannot
+  //   enter: then no unscored object can be among the results.
+  // `plan` is driver itself or the kAnd (a t-norm) of which it is a child; the kAnd's other
+  // kOverlap children refine a candidate's bound before it is scored (refine).
+  void scoreLevels(const Store& store, const std::string& kind, const PrefilterPlan& plan,
+                   const PrefilterPlan& driver) {
+    std::vector<LevelRead> pieces;
     const SupportTest& t = driver.test;
     for (const DescriptorRange& r : store.descriptorRanges({t.descriptor, t.lo, t.hi, t.loIncluded, t.hiIncluded, t.wideStrict})) {
       const double maxWidth = r.widthClass == kCrispWidthClass ? 0 : std::ldexp(1.0, r.widthClass);
-      for (const LevelPiece& p : levelPieces(driver, maxWidth, r.fromLo, r.toLo))
-        pieces.push_back({{r.descriptor, r.widthClass, p.fromLo, p.toLo, r.leastHi}, p.bound});
+      for (const LevelPiece& p : levelPieces(driver, maxWidth, r.fromLo, r.toLo)) {
+        LevelRead piece;
+        piece.range = {r.descriptor, r.widthClass, p.fromLo, p.toLo, r.leastHi};
+        piece.bound = p.bound;
+        piece.order = p.order;
+        piece.firstRead = std::max<int64_t>(1, options_.firstLevelRead);
+        pieces.push_back(std::move(piece));
+      }
     }
-    std::stable_sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) { return a.bound > b.bound; });
-    const auto worse = [](const Candidate& a, const Candidate& b) { return boundFirst(b, a); };  // heap: best on top
-    std::vector<Candidate> pool;
+    const int64_t lastId = store.lastObjectId();
+    std::vector<const PrefilterPlan*> others;  // the kAnd's other kOverlap children
+    for (const PrefilterPlan& child : plan.children)
+      if (&child != &driver && child.kind == PrefilterPlan::Kind::kOverlap) others.push_back(&child);
+    // The pool: candidates and whether their bound is refined yet (pending objects need none).
+    struct Entry {
+      Candidate candidate;
+      bool refined;
+    };
+    const auto worse = [](const Entry& a, const Entry& b) { return boundFirst(b.candidate, a.candidate); };
+    std::vector<Entry> pool;
     const std::vector<int64_t> pendingIds = store.pendingDescriptorIds(kind);
     const std::unordered_set<int64_t> pending(pendingIds.begin(), pendingIds.end());
-    for (int64_t id : pendingIds) pool.push_back({id, 1.0});
+    for (int64_t id : pendingIds) pool.push_back({{id, 1.0}, true});
     std::make_heap(pool.begin(), pool.end(), worse);
     candidates_ += pool.size();
+    const auto add = [&](const DescriptorCandidate& row) {
+      if (pending.count(row.id) != 0) return;
+      pool.push_back({{row.id, scoreBound(driver, row.supportLo, row.supportHi, false)}, others.empty()});
+      std::push_heap(pool.begin(), pool.end(), worse);
+      ++candidates_;
+    };
     std::vector<int64_t> chunk;
-    for (size_t next = 0;;) {
+    std::vector<Candidate> unrefined;
+    for (;;) {
       checkTime();
-      const double unread = next < pieces.size() ? pieces[next].bound : 0;
+      LevelRead* next = nullptr;  // the piece with the best frontier
+      for (LevelRead& piece : pieces)
+        if (!piece.done && (next == nullptr || boundFirst(piece.frontier(), next->frontier()))) next = &piece;
       chunk.clear();
+      unrefined.clear();
       bool done = false;  // the best unscored candidate cannot enter, nor can any after it
-      while (!pool.empty() && pool.front().bound > unread && chunk.size() < kBoundedChunk) {
-        if (!canEnter(pool.front())) {
+      while (!pool.empty() && (next == nullptr || boundFirst(pool.front().candidate, next->frontier())) &&
+             chunk.size() < kBoundedChunk && unrefined.size() < kRefineChunk) {
+        if (!canEnter(pool.front().candidate)) {
           done = true;
           break;
         }
-        chunk.push_back(pool.front().id);
+        (pool.front().refined ? chunk.push_back(pool.front().candidate.id)
+                              : unrefined.push_back(pool.front().candidate));
         std::pop_heap(pool.begin(), pool.end(), worse);
         pool.pop_back();
       }
-      if (!chunk.empty()) scoreChunk(kind, chunk);
-      if (done) return;
-      if (!chunk.empty()) continue;
-      if (next == pieces.size() || !canEnter({std::numeric_limits<int64_t>::min(), unread})) return;
-      for (const DescriptorCandidate& row : store.descriptorRangeRows(kind, pieces[next++].range)) {
-        if (pending.count(row.id) != 0) continue;
-        pool.push_back({row.id, scoreBound(driver, row.supportLo, row.supportHi, false)});
-        std::push_heap(pool.begin(), pool.end(), worse);
-        ++candidates_;
+      if (!unrefined.empty()) {
+        // Back into the pool with bounds no higher (nothing scored comes before them), or out.
+        for (const Candidate& c : refine(store, others, unrefined)) {
+          pool.push_back({c, true});
+          std::push_heap(pool.begin(), pool.end(), worse);
+        }
       }
+      if (!chunk.empty()) scoreChunk(kind, chunk);
+      if (done && unrefined.empty()) return;
+      if (!chunk.empty() || !unrefined.empty()) continue;
+      if (done || next == nullptr || !canEnter(next->frontier())) return;
+      next->advance(store, kind, driver, lastId, add);
     }
   }
 
@@ -158,6 +276,34 @@ class Scorer {
   }
 
   static constexpr size_t kBoundedChunk = 64;  // small: the bound of the next one may stop it
+  static constexpr size_t kRefineChunk = 256;  // candidates refined at a time: primary-key lookups
+
+  // Tightens each candidate's bound with the other children of the kAnd: T <= min, and each
+  // child's bound is scoreBound of its row (the object's support of that descriptor), 0 where the
+  // row fails the child's support test (the child scores 0, so does the kAnd: left out).
+  static std::vector<Candidate> refine(const Store& store, const std::vector<const PrefilterPlan*>& others,
+                                       std::vector<Candidate> candidates) {
+    std::vector<int64_t> ids;
+    for (const Candidate& c : candidates) ids.push_back(c.id);
+    for (const PrefilterPlan* child : others) {
+      std::unordered_map<int64_t, double> best;  // the object's best component (a part has one)
+      for (const DescriptorCandidate& row : store.descriptorSupports(child->test.descriptor, ids)) {
+        const double b = admits(child->test, row.supportLo, row.supportHi)
+                             ? scoreBound(*child, row.supportLo, row.supportHi, false)
+                             : 0.0;
+        auto [it, fresh] = best.try_emplace(row.id, b);
+        if (!fresh) it->second = std::max(it->second, b);
+      }
+      for (Candidate& c : candidates) {
+        auto it = best.find(c.id);
+        if (it != best.end()) c.bound = std::min(c.bound, it->second);  // no row (deleted): as it was
+      }
+    }
+    candidates.erase(
+        std::remove_if(candidates.begin(), candidates.end(), [](const Candidate& c) { return !(c.bound > 0); }),
+        candidates.end());
+    return candidates;
+  }
 
   // Puts the best of candidates[from, end) in order at its front (a block that grows fourfold,
   // so a search that stops early selects instead of sorting them all); returns the block's end.
@@ -265,7 +411,7 @@ LinguisticSearchResult searchLinguistic(const Store& store, const LinguisticQuer
     };
     const PrefilterPlan plan = prefilterPlan(query, kind);
     if (const PrefilterPlan* driver = kind == "part" ? levelDriver(plan) : nullptr) {
-      scorer.scoreLevels(store, kind, *driver);
+      scorer.scoreLevels(store, kind, plan, *driver);
       continue;
     }
     scorer.score(kind, runPrefilter(plan, overlap, all, kind == "part"), true);

@@ -17,6 +17,10 @@
 //   pieces at the ends of its set's alpha-cuts (levelPieces, query/linguistic/descriptor_prefilter.h), read
 //   best piece bound first, and a candidate is scored only once its bound beats every unread
 //   piece's, so a broad query ("big": every part) reads the rows of its first levels only.
+//   A crisp piece over which the set's membership is monotone is read best values first, a page
+//   at a time; a flat one (a core: every row scores the same, ties go by id) is walked in id
+//   order while that costs less than reading it whole, so a dense core yields its first
+//   `limit` objects without reading the rest.
 //   Scan path (`scan`):
 //   every object of the kinds is scored. Both give the same results exactly (same ids,
 //   scores, order): the plan only drops objects that score 0, and both score the same values
@@ -44,6 +48,9 @@ struct LinguisticSearchOptions {
   bool scan = false;
   size_t maxNodes = 10000;  // for parsing stored shapes
   double maxMillis = 0;     // 0: no limit
+  // The level scan's first read of a piece (rows by value, or ids of a walk; each next read
+  // doubles): large enough that most pieces take one read; tests make it small to page often.
+  int64_t firstLevelRead = 256;
 };
 
 struct LinguisticHit {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <random>
 
 #include "db/content_hash.h"
@@ -283,6 +284,70 @@ TEST_P(DescriptorIndexTest, OverlapScanEqualsBruteForce) {
     EXPECT_TRUE(std::adjacent_find(classes.begin(), classes.end()) == classes.end());
   }
   EXPECT_TRUE(store->pendingDescriptorIds("part").empty());
+}
+
+// The reads of one range the level scan uses (DescriptorRangeRead): by value either way with a
+// limit (crisp rows: by value, then by id, across runs of equal values), and by id in a window.
+TEST_P(DescriptorIndexTest, RangeRowsReadByValueOrInIdWindows) {
+  EXPECT_EQ(store->lastObjectId(), 0);
+  std::vector<NewObject> items;
+  for (int i = 0; i < 40; ++i) {
+    const double x = 0.1 * (1 + i % 3);  // runs of equal values, ids interleaved
+    items.push_back(i % 5 == 4 ? part("w" + std::to_string(i), x, x + 0.05) : part("c" + std::to_string(i), x, x));
+  }
+  std::vector<std::pair<double, int64_t>> crisp;  // (value, id) of the crisp rows
+  const auto results = store->createBatch(items, BulkMode::kCreate);
+  for (size_t i = 0; i < items.size(); ++i)
+    if (i % 5 != 4) crisp.emplace_back(0.1 * (1 + i % 3), *results[i].id);
+  std::sort(crisp.begin(), crisp.end());
+  const int64_t last = *results.back().id;
+  EXPECT_EQ(store->lastObjectId(), last);
+
+  DescriptorRange range;
+  for (const DescriptorRange& r : store->descriptorRanges({"bendness", 0.0, 1.0}))
+    if (r.widthClass == kCrispWidthClass) range = r;
+  ASSERT_EQ(range.widthClass, kCrispWidthClass);
+  using Order = DescriptorRangeRead::Order;
+  const auto read = [&](const DescriptorRangeRead& how) {
+    std::vector<std::pair<double, int64_t>> out;
+    for (const DescriptorCandidate& c : store->descriptorRangeRows("part", range, how)) {
+      EXPECT_EQ(c.supportLo, c.supportHi);
+      out.emplace_back(c.supportLo, c.id);
+    }
+    return out;
+  };
+  EXPECT_EQ(read({Order::kAscending}), crisp);
+  using Rows = std::vector<std::pair<double, int64_t>>;
+  EXPECT_EQ(read({Order::kAscending, 7}), Rows(crisp.begin(), crisp.begin() + 7));
+  EXPECT_EQ(read({Order::kDescending, 7}), Rows(crisp.rbegin(), crisp.rbegin() + 7));
+  EXPECT_EQ(read({Order::kDescending, 1000}), Rows(crisp.rbegin(), crisp.rend()));
+  // A window of ids: (after, through], by id.
+  const int64_t after = *results[9].id, through = *results[25].id;
+  std::vector<std::pair<double, int64_t>> window;
+  for (const auto& row : crisp)
+    if (row.second > after && row.second <= through) window.push_back(row);
+  std::sort(window.begin(), window.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+  EXPECT_EQ(read({Order::kById, 0, after, through}), window);
+  EXPECT_TRUE(read({Order::kById, 0, last, last + 100}).empty());
+  // The walk stays inside the range: a narrower one drops the other values.
+  range.fromLo = range.toLo = 0.2;
+  range.leastHi = 0.2;
+  for (const auto& row : read({Order::kById, 0, 0, last})) EXPECT_EQ(row.first, 0.2);
+  EXPECT_EQ(read({Order::kById, 0, 0, last}).size(), read({Order::kAscending}).size());
+  // The supports of one descriptor of given objects (more ids than one statement takes, one
+  // unknown id): each object's row, found by its key.
+  std::vector<int64_t> ids{last + 7};
+  std::map<int64_t, std::pair<double, double>> expected;
+  for (size_t i = 0; i < items.size(); i += 2) {
+    ids.push_back(*results[i].id);
+    const DescriptorSpan& span = items[i].descriptors[0].spans[0];
+    expected[*results[i].id] = {span.supportLo, span.supportHi};
+  }
+  for (int copy = 0; copy < 3; ++copy) ids.insert(ids.end(), ids.begin(), ids.begin() + 20);  // 81 ids
+  std::map<int64_t, std::pair<double, double>> found;
+  for (const DescriptorCandidate& c : store->descriptorSupports("bendness", ids)) found[c.id] = {c.supportLo, c.supportHi};
+  EXPECT_EQ(found, expected);
+  EXPECT_TRUE(store->descriptorSupports("twistness", ids).empty());  // no rows of that descriptor
 }
 
 TEST_P(DescriptorIndexTest, PendingIdsAreThePendingObjectsOfTheKind) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "db/descriptor_index.h"
 #include "db/object_rows.h"
 #include "db/sqlite.h"
 #include "db/store.h"
@@ -32,6 +33,33 @@ TEST(QueryPlan, IndexedObjectsLooksObjectsUpByPrimaryKey) {
   for (const std::string& line : plan) all += line + "\n";
   EXPECT_NE(plan[0].find("SEARCH o USING INTEGER PRIMARY KEY"), std::string::npos) << all;
   EXPECT_EQ(all.find("objects_kind_name"), std::string::npos) << all;
+}
+
+std::string planText(sqlite::Connection& db, const std::string& sql) {
+  std::string all;
+  for (const std::string& line : planOf(db, sql)) all += line + "\n";
+  return all;
+}
+
+// The level scan's reads of a range: by value, the overlap index gives the order (no sorter,
+// which would read the whole range to return a page of it); in id order, the primary key walks
+// the ids (the overlap index would read the whole range, then sort it).
+TEST(QueryPlan, DescriptorRangeReadsUseTheIndexThatGivesTheirOrder) {
+  TempDir dir;
+  Store::open(dir.file("plan.sqlite"));  // migrated
+  sqlite::Connection db(dir.file("plan.sqlite"));
+  using Order = DescriptorRangeRead::Order;
+  for (const DescriptorRangeRead& read :
+       {DescriptorRangeRead{Order::kAscending}, DescriptorRangeRead{Order::kAscending, 64},
+        DescriptorRangeRead{Order::kDescending, 64}}) {
+    const std::string plan = planText(db, descriptorRangeSql(sql::Dialect::kSqlite, read));
+    EXPECT_NE(plan.find("USING COVERING INDEX descriptor_index_overlap"), std::string::npos) << plan;
+    EXPECT_EQ(plan.find("TEMP B-TREE"), std::string::npos) << plan;
+  }
+  const std::string walk = planText(db, descriptorRangeSql(sql::Dialect::kSqlite, {Order::kById, 0, 0, 100}));
+  EXPECT_NE(walk.find("USING PRIMARY KEY (object_id>? AND object_id<?)"), std::string::npos) << walk;
+  EXPECT_EQ(walk.find("descriptor_index_overlap"), std::string::npos) << walk;
+  EXPECT_EQ(walk.find("TEMP B-TREE"), std::string::npos) << walk;
 }
 
 }  // namespace

@@ -252,5 +252,61 @@ TEST(DescriptorPrefilter, LevelPiecesCoverTheRangeAndBoundTheirValues) {
   EXPECT_GT(below1, 3000);
 }
 
+// LevelPiece::order says how μ_set runs over a crisp piece, so the search may read it best values
+// first (kRising, kFalling) or in id order (kFlat); crispLevelBound bounds every value of a
+// sub-range, as the search narrows a piece it pages through.
+TEST(DescriptorPrefilter, LevelPieceOrderIsHowTheMembershipRuns) {
+  std::mt19937 rng(37);
+  int rising = 0, falling = 0, flat = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const FuzzyNumber set = i % 5 == 0 ? FuzzyNumber::fromPoints({{0, 0}, {0.3, 0.6}, {0.5, 0.2}, {0.7, 1}, {1, 0}})
+                                       : testing::randomTrapezoidal(rng);
+    PrefilterPlan leaf = prefilterPlan(query(descriptor("d", 0, 0, 0)), "part");
+    leaf.test = supportTest("d", set);
+    leaf.set = set;
+    const Interval support = set.support();
+    for (const LevelPiece& piece : levelPieces(leaf, 0, support.lo, support.hi)) {
+      double previous = set.membership(piece.fromLo);
+      for (int k = 1; k <= 16; ++k) {
+        const double x = k == 16 ? piece.toLo : piece.fromLo + (piece.toLo - piece.fromLo) * k / 16.0;
+        const double mu = set.membership(x);
+        if (piece.order == LevelOrder::kRising) {
+          EXPECT_GE(mu, previous) << x;
+        } else if (piece.order == LevelOrder::kFalling) {
+          EXPECT_LE(mu, previous) << x;
+        } else if (piece.order == LevelOrder::kFlat) {
+          EXPECT_EQ(mu, previous) << x;
+        }
+        previous = mu;
+        const double from = testing::uniform(rng, piece.fromLo, x);
+        EXPECT_GE(crispLevelBound(leaf, from, x), mu);
+        EXPECT_GE(crispLevelBound(leaf, from, x), scoreBound(leaf, x, x, false));
+      }
+      rising += piece.order == LevelOrder::kRising;
+      falling += piece.order == LevelOrder::kFalling;
+      flat += piece.order == LevelOrder::kFlat;
+    }
+    // Wide pieces have no order.
+    for (const LevelPiece& piece : levelPieces(leaf, 0.25, support.lo - 0.25, support.hi))
+      EXPECT_EQ(piece.order, LevelOrder::kAny);
+  }
+  EXPECT_GT(rising, 1000);
+  EXPECT_GT(falling, 1000);
+  EXPECT_GT(flat, 1000);
+  // A trapezoid: rising up to its core, flat over it, falling after.
+  PrefilterPlan leaf = prefilterPlan(query(descriptor("d", 0, 0, 0)), "part");
+  leaf.set = FuzzyNumber::trapezoidal(0.55, 0.75, 1, 1.2);
+  leaf.test = supportTest("d", leaf.set);
+  const std::vector<LevelPiece> pieces = levelPieces(leaf, 0, 0.55, 1.2);
+  const auto at = [&](double x) {
+    return std::find_if(pieces.begin(), pieces.end(), [&](const LevelPiece& p) { return x >= p.fromLo && x <= p.toLo; })
+        ->order;
+  };
+  EXPECT_EQ(at(0.6), LevelOrder::kRising);
+  EXPECT_EQ(at(0.8), LevelOrder::kFlat);
+  EXPECT_EQ(at(1.0), LevelOrder::kFlat);
+  EXPECT_EQ(at(1.1), LevelOrder::kFalling);
+}
+
 }  // namespace
 }  // namespace fsdb
