@@ -50,8 +50,9 @@ struct LevelRead {
   // kFlat: the walk in id order has read every id <= walkedThrough; wholeRest: it gave up, and
   // the rest is read by value at once (skipping the ids it read).
   int64_t walkedThrough = 0, walkWindow = 0;
-  size_t walkRows = 0;
+  size_t walkRows = 0, walkKept = 0;  // the walk's rows, and those the kAnd's other children kept
   bool wholeRest = false;
+  int64_t need = 10;  // results the search wants (its limit)
   // kRising, kFalling: rows per read, and the ids already read at the value where the rest starts.
   int64_t page = 0;
   std::unordered_set<int64_t> readAtEdge;
@@ -64,6 +65,8 @@ struct LevelRead {
   }
 
   // Reads some rows of the piece into `add` and moves the frontier (or marks the piece done).
+  // add(rows, refineNow) puts rows into the search's pool and returns how many it kept (refineNow:
+  // after checking them against the kAnd's other children at once).
   template <typename Add>
   void advance(const Store& store, const std::string& kind, const PrefilterPlan& driver, int64_t lastId,
                const Add& add) {
@@ -71,35 +74,39 @@ struct LevelRead {
     if (order == LevelOrder::kFlat && !wholeRest) return walk(store, kind, lastId, add);
     if ((order == LevelOrder::kRising || order == LevelOrder::kFalling) && !wholeRest)
       return readByValue(store, kind, driver, add);
-    for (const DescriptorCandidate& row : store.descriptorRangeRows(kind, range, {Order::kAscending}))
-      if (row.id > walkedThrough) add(row);
+    std::vector<DescriptorCandidate> rows = store.descriptorRangeRows(kind, range, {Order::kAscending});
+    rows.erase(std::remove_if(rows.begin(), rows.end(), [&](const DescriptorCandidate& r) { return r.id <= walkedThrough; }),
+               rows.end());
+    add(rows, false);
     done = true;
   }
 
  private:
-  // A walk of the ids in windows that double, while it costs less than reading the rest by value
-  // would: a walked id reads the object's every index row (a part's 11 in the primary key) where a
-  // read by value reads one entry per row of the piece; kIdCost is that ratio as measured at 1M
-  // parts (docs/performance.md: 1.4 µs an id, 0.47 µs a row). A piece too sparse for the walk is
-  // read whole after its first window.
+  // A walk of the ids in windows that double, while finding `need` more rows that can score (the
+  // kAnd's other children keep them) is expected to cost less than reading the rest of the piece
+  // by value, at the densities the walk has seen: a walked id reads the object's every index row
+  // (a part's 11 in the primary key) where a read by value reads one entry per row; kIdCost is
+  // that ratio as measured at 1M parts (docs/performance.md: 1.4 µs an id, 0.47 µs a row). A
+  // piece too sparse for the walk is read whole after its first window.
   static constexpr double kIdCost = 3;
 
   template <typename Add>
   void walk(const Store& store, const std::string& kind, int64_t lastId, const Add& add) {
-    walkWindow = walkWindow == 0 ? firstRead : 2 * walkWindow;
+    walkWindow = walkWindow == 0 ? 2 * firstRead : 2 * walkWindow;  // a first sample big enough to judge by
     const int64_t through = lastId - walkedThrough <= walkWindow ? lastId : walkedThrough + walkWindow;
     const std::vector<DescriptorCandidate> rows =
         store.descriptorRangeRows(kind, range, {DescriptorRangeRead::Order::kById, 0, walkedThrough, through});
-    for (const DescriptorCandidate& row : rows) add(row);
+    walkKept += add(rows, true);
     walkRows += rows.size();
     walkedThrough = through;
     if (walkedThrough >= lastId) {
       done = true;
       return;
     }
-    const double restRows = static_cast<double>(walkRows) / static_cast<double>(walkedThrough) *
-                            static_cast<double>(lastId - walkedThrough);
-    if (restRows < kIdCost * static_cast<double>(2 * walkWindow)) wholeRest = true;
+    const double walked = static_cast<double>(walkedThrough);
+    const double restRows = static_cast<double>(walkRows) / walked * static_cast<double>(lastId - walkedThrough);
+    const double walkCost = walkKept == 0 ? restRows + 1 : kIdCost * static_cast<double>(need) * walked / walkKept;
+    if (walkCost > restRows) wholeRest = true;
   }
 
   // Pages best value first (kRising: descending), each page ending at a value `edge`; the rest is
@@ -113,8 +120,10 @@ struct LevelRead {
     const std::vector<DescriptorCandidate> rows = store.descriptorRangeRows(
         kind, range,
         {descending ? DescriptorRangeRead::Order::kDescending : DescriptorRangeRead::Order::kAscending, limit});
+    std::vector<DescriptorCandidate> fresh;
     for (const DescriptorCandidate& row : rows)
-      if (readAtEdge.count(row.id) == 0) add(row);
+      if (readAtEdge.count(row.id) == 0) fresh.push_back(row);
+    add(fresh, false);
     if (static_cast<int64_t>(rows.size()) < limit) {
       done = true;
       return;
@@ -188,6 +197,7 @@ class Scorer {
         piece.bound = p.bound;
         piece.order = p.order;
         piece.firstRead = std::max<int64_t>(1, options_.firstLevelRead);
+        piece.need = static_cast<int64_t>(limit_);
         pieces.push_back(std::move(piece));
       }
     }
@@ -207,11 +217,18 @@ class Scorer {
     for (int64_t id : pendingIds) pool.push_back({{id, 1.0}, true});
     std::make_heap(pool.begin(), pool.end(), worse);
     candidates_ += pool.size();
-    const auto add = [&](const DescriptorCandidate& row) {
-      if (pending.count(row.id) != 0) return;
-      pool.push_back({{row.id, scoreBound(driver, row.supportLo, row.supportHi, false)}, others.empty()});
-      std::push_heap(pool.begin(), pool.end(), worse);
-      ++candidates_;
+    const auto add = [&](const std::vector<DescriptorCandidate>& rows, bool refineNow) {
+      std::vector<Candidate> found;
+      for (const DescriptorCandidate& row : rows)
+        if (pending.count(row.id) == 0) found.push_back({row.id, scoreBound(driver, row.supportLo, row.supportHi, false)});
+      candidates_ += found.size();
+      const bool refined = others.empty() || refineNow;
+      if (refineNow && !others.empty()) found = refine(store, others, std::move(found));
+      for (const Candidate& c : found) {
+        pool.push_back({c, refined});
+        std::push_heap(pool.begin(), pool.end(), worse);
+      }
+      return found.size();
     };
     std::vector<int64_t> chunk;
     std::vector<Candidate> unrefined;
