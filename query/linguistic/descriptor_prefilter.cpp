@@ -162,7 +162,10 @@ std::vector<LevelPiece> levelPieces(const PrefilterPlan& leaf, double maxWidth, 
     const Interval cut = leaf.set.alphaCut(level);
     for (double end : {cut.lo, std::nextafter(cut.hi, inf)}) {
       cuts.push_back(end);
-      if (maxWidth > 0) cuts.push_back(end - maxWidth);
+      // Wide rows: a piece's reach is its end + maxWidth, so cuts at quarters of maxWidth before
+      // each end give pieces whose reach stops short of it, and tighter bounds.
+      if (maxWidth > 0)
+        for (double k : {1.0, 0.75, 0.5, 0.25}) cuts.push_back(end - k * maxWidth);
     }
   }
   std::sort(cuts.begin(), cuts.end());

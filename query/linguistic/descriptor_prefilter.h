@@ -75,7 +75,7 @@ double membershipIntegral(const FuzzyNumber& set, double lo, double hi);
 // The level scan (server/service/linguistic_search.h): the rows of one index range of a kOverlap leaf,
 // support_lo in [fromLo, toLo] and widths <= maxWidth (0: crisp rows), cut into pieces at the
 // ends of the alpha-cuts of leaf.set (levels 1, 0.9, 0.75, 0.5, 0.25, 0.1; for wide rows also
-// those ends minus maxWidth), each with a bound >= the score of every row in it, so the search
+// those ends minus 1, 3/4, 1/2 and 1/4 of maxWidth), each with a bound >= the score of every row in it, so the search
 // can read the best pieces first and stop before the rest. The pieces cover [fromLo, toLo]
 // exactly (adjacent, disjoint, in order). Bounds (the rules above, over all the rows a piece can
 // hold): a crisp x in [s0, s1] scores μ_set(x) <= max of μ_set over [s0, s1] (at s0, s1 or a

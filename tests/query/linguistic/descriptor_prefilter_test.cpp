@@ -252,6 +252,28 @@ TEST(DescriptorPrefilter, LevelPiecesCoverTheRangeAndBoundTheirValues) {
   EXPECT_GT(below1, 3000);
 }
 
+// Wide pieces are cut at quarters of the width class before each alpha-cut end, so a piece whose
+// rows cannot reach the core gets a bound below 1 even when the class is wider than the set: "very"
+// (area 0.35) against widths up to 0.5, the rows starting at 0.3 reach 0.8 at most.
+TEST(DescriptorPrefilter, WidePiecesThatCannotReachTheCoreBoundBelowOne) {
+  PrefilterPlan leaf = prefilterPlan(query(descriptor("d", 0, 0, 0)), "part");
+  leaf.set = FuzzyNumber::trapezoidal(0.55, 0.75, 1, 1);
+  leaf.test = supportTest("d", leaf.set);
+  const std::vector<LevelPiece> pieces = levelPieces(leaf, 0.5, 0.05, 1.0);
+  const auto at = [&](double x) {
+    return *std::find_if(pieces.begin(), pieces.end(), [&](const LevelPiece& p) { return x >= p.fromLo && x <= p.toLo; });
+  };
+  EXPECT_LT(at(0.3).bound, 0.7);  // reach <= 0.875: ∫μ <= 0.225 of 0.35
+  EXPECT_LT(at(0.1).bound, 0.4);
+  EXPECT_EQ(at(0.55).bound, 1.0);  // a row [0.55, 1.0] scores 1
+  // Every value starting in a piece still scores at most its bound.
+  for (double lo = 0.05; lo < 1.0; lo += 0.01)
+    for (double width : {0.26, 0.3, 0.4, 0.5}) {
+      const FuzzyNumber value = FuzzyNumber::triangular(lo, lo + width / 2, lo + width);
+      EXPECT_GE(at(lo).bound, similarity(value, leaf.set)) << lo << " " << width;
+    }
+}
+
 // LevelPiece::order says how μ_set runs over a crisp piece, so the search may read it best values
 // first (kRising, kFalling) or in id order (kFlat); crispLevelBound bounds every value of a
 // sub-range, as the search narrows a piece it pages through.
