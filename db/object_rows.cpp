@@ -336,8 +336,7 @@ std::optional<StoredObject> loadObject(Connection& connection, const std::string
 }
 
 std::string indexedObjectsSql(sql::Dialect dialect, int ids) {
-  std::string in;
-  for (int i = 0; i < ids; ++i) in += (i ? ", ?" : "?") + std::to_string(i + 2);
+  const std::string in = sql::listPlaceholders(2, ids);
   return std::string(
              "SELECT o.id, o.name, CASE WHEN p.object_id IS NULL THEN 0 ELSE 1 END, v.component, v.descriptor_values,"
              " o.latest_version FROM objects o"

@@ -85,6 +85,13 @@ inline std::string rowPlaceholders(int rows, int columns) {
   return out;
 }
 
+// "?2, ?3, ?4" for first = 2, count = 3: the list of an IN (...) that a statement binds ids to.
+inline std::string listPlaceholders(int first, int count) {
+  std::string out;
+  for (int i = 0; i < count; ++i) out += (i ? ", ?" : "?") + std::to_string(first + i);
+  return out;
+}
+
 // The rows of a multi-row statement go in chunks of at most this many, so a connection caches at
 // most this many variants of one statement (one per chunk size).
 constexpr int kRowsPerStatement = 32;

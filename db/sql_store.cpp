@@ -273,12 +273,9 @@ std::vector<DescriptorCandidate> SqlStore::descriptorSupports(const std::string&
   // kIds ids a statement, the last repeated to fill it (one prepared statement, few round trips);
   // each is a primary-key lookup (object_id, component, descriptor).
   constexpr int kIds = 64;
-  std::string sql =
-      "SELECT object_id, support_lo, support_hi FROM descriptor_index WHERE descriptor = ?1"
-      " AND object_id IN (";
-  for (int i = 0; i < kIds; ++i) sql += (i > 0 ? ", ?" : "?") + std::to_string(i + 2);
-  sql += ")";
-  auto statement = (*connection).prepare(sql);
+  auto statement = (*connection).prepare(
+      "SELECT object_id, support_lo, support_hi FROM descriptor_index WHERE descriptor = ?1 AND object_id IN (" +
+      sql::listPlaceholders(2, kIds) + ")");
   std::vector<DescriptorCandidate> rows;
   for (size_t from = 0; from < ids.size(); from += kIds) {
     statement->reset();

@@ -217,6 +217,10 @@ class Scorer {
     for (int64_t id : pendingIds) pool.push_back({{id, 1.0}, true});
     std::make_heap(pool.begin(), pool.end(), worse);
     candidates_ += pool.size();
+    const auto push = [&](const Candidate& c, bool refined) {
+      pool.push_back({c, refined});
+      std::push_heap(pool.begin(), pool.end(), worse);
+    };
     const auto add = [&](const std::vector<DescriptorCandidate>& rows, bool refineNow) {
       std::vector<Candidate> found;
       for (const DescriptorCandidate& row : rows)
@@ -224,10 +228,7 @@ class Scorer {
       candidates_ += found.size();
       const bool refined = others.empty() || refineNow;
       if (refineNow && !others.empty()) found = refine(store, others, std::move(found));
-      for (const Candidate& c : found) {
-        pool.push_back({c, refined});
-        std::push_heap(pool.begin(), pool.end(), worse);
-      }
+      for (const Candidate& c : found) push(c, refined);
       return found.size();
     };
     std::vector<int64_t> chunk;
@@ -246,17 +247,16 @@ class Scorer {
           done = true;
           break;
         }
-        (pool.front().refined ? chunk.push_back(pool.front().candidate.id)
-                              : unrefined.push_back(pool.front().candidate));
+        if (pool.front().refined)
+          chunk.push_back(pool.front().candidate.id);
+        else
+          unrefined.push_back(pool.front().candidate);
         std::pop_heap(pool.begin(), pool.end(), worse);
         pool.pop_back();
       }
       if (!unrefined.empty()) {
         // Back into the pool with bounds no higher (nothing scored comes before them), or out.
-        for (const Candidate& c : refine(store, others, unrefined)) {
-          pool.push_back({c, true});
-          std::push_heap(pool.begin(), pool.end(), worse);
-        }
+        for (const Candidate& c : refine(store, others, unrefined)) push(c, true);
       }
       if (!chunk.empty()) scoreChunk(kind, chunk);
       if (done && unrefined.empty()) return;

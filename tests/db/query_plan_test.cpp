@@ -62,5 +62,13 @@ TEST(QueryPlan, DescriptorRangeReadsUseTheIndexThatGivesTheirOrder) {
   EXPECT_EQ(walk.find("TEMP B-TREE"), std::string::npos) << walk;
 }
 
+// The placeholder lists the store's statements are built from.
+TEST(SqlText, PlaceholderLists) {
+  EXPECT_EQ(sql::rowPlaceholders(2, 2), "(?1, ?2), (?3, ?4)");
+  EXPECT_EQ(sql::listPlaceholders(2, 3), "?2, ?3, ?4");
+  EXPECT_EQ(sql::listPlaceholders(1, 1), "?1");
+  EXPECT_EQ(sql::listPlaceholders(5, 0), "");
+}
+
 }  // namespace
 }  // namespace fsdb
