@@ -3,7 +3,7 @@
 // one run. Goals: p50 < 50 ms at 1M parts, indexed >= 10x faster than the scan.
 //
 // Usage: bench_linguistic [--sizes 100000,1000000] [--dir DIR] [--reps R] [--scan-reps S]
-//                         [--benchmark_out=FILE.json] (other --benchmark_* flags are ignored, so
+//                         [--only TEXT] [--benchmark_out=FILE.json] (other --benchmark_* flags are ignored, so
 //                         scripts/run-benchmarks can run it; it then measures 100000 parts)
 // A catalogue is built once per size into DIR/parts-N.sqlite (default build/bench-data) and
 // reused by later runs: random parts (seeded) go through the same code as POST /parts/bulk
@@ -118,6 +118,7 @@ int main(int argc, char** argv) {
       std::printf("%-45s %9s %9s %9s %10s %7s %9s %6s\n", "query", "hits", "cands", "p50 ms", "p95 ms", "scan ms",
                   "ratio", "equal");
       for (const std::string& text : kQueries) {
+        if (text.find(args.only) == std::string::npos) continue;  // --only
         const fsdb::LinguisticQuery q = fsdb::parseLinguisticQuery(text, fsdb::Vocabulary::builtin());
         fsdb::LinguisticSearchOptions options;
         options.kinds = fsdb::searchKinds(q, "");

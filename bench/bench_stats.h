@@ -74,6 +74,7 @@ Comparison compareRuns(const std::vector<double>& fast, const std::vector<double
 struct Args {
   std::vector<size_t> sizes;  // empty: the bench's default
   std::string dir = "build/bench-data", out;
+  std::string only;   // --only TEXT: just the cases whose name contains TEXT (profiling one)
   int reps, refReps;  // fast path, reference path
 };
 
@@ -87,6 +88,7 @@ inline bool parseArgs(int argc, char** argv, const std::string& refFlag, Args& a
       for (std::string s; std::getline(ss, s, ',');) args.sizes.push_back(std::stoul(s));
     } else if (a == "--dir") args.dir = next();
     else if (a == "--reps") args.reps = std::stoi(next());
+    else if (a == "--only") args.only = next();
     else if (a == refFlag) args.refReps = std::stoi(next());
     else if (a.rfind("--benchmark_out=", 0) == 0) args.out = a.substr(16);
     else if (a.rfind("--benchmark_", 0) == 0) continue;

@@ -133,19 +133,13 @@ std::vector<DescriptorRange> descriptorRangesIn(sql::Connection& connection, con
   return ranges;
 }
 
-std::string descriptorRangeSql(sql::Dialect dialect, const DescriptorRangeRead& read) {
+std::string descriptorRangeSql(const DescriptorRangeRead& read) {
   using Order = DescriptorRangeRead::Order;
-  const bool sqlite = dialect == sql::Dialect::kSqlite;
-  if (read.order == Order::kById) {
-    // The primary key (object_id, component, descriptor) walks the objects in id order; on SQLite
-    // the unary + keeps the planner off descriptor_index_overlap, which would read the whole range.
-    const std::string plus = sqlite ? "+" : "";
-    return "SELECT object_id, support_lo, support_hi FROM descriptor_index WHERE object_id > ?7 AND object_id <= ?8"
-           " AND " +
-           plus + "kind = ?1 AND " + plus + "descriptor = ?2 AND " + plus +
-           "width_class = ?3"
-           " AND support_lo BETWEEN ?4 AND ?5 AND support_hi >= ?6 ORDER BY object_id";
-  }
+  if (read.order == Order::kById)
+    // descriptor_index_walk (migration 006) holds the class's rows in id order: one entry an id.
+    return "SELECT object_id, support_lo, support_hi FROM descriptor_index WHERE kind = ?1 AND descriptor = ?2"
+           " AND width_class = ?3 AND object_id > ?7 AND object_id <= ?8 AND support_lo BETWEEN ?4 AND ?5"
+           " AND support_hi >= ?6 ORDER BY object_id";
   const std::string way = read.order == Order::kDescending ? " DESC" : "";
   return "SELECT object_id, support_lo, support_hi FROM descriptor_index WHERE kind = ?1 AND descriptor = ?2"
          " AND width_class = ?3 AND support_lo BETWEEN ?4 AND ?5 AND support_hi >= ?6 ORDER BY support_lo" +
@@ -154,7 +148,7 @@ std::string descriptorRangeSql(sql::Dialect dialect, const DescriptorRangeRead& 
 
 void descriptorRangeRowsIn(sql::Connection& connection, const std::string& kind, const DescriptorRange& range,
                            std::vector<DescriptorCandidate>& rows, const DescriptorRangeRead& read) {
-  auto scan = connection.prepare(descriptorRangeSql(connection.dialect(), read));
+  auto scan = connection.prepare(descriptorRangeSql(read));
   scan->bind(1, kind).bind(2, range.descriptor).bind(3, range.widthClass).bind(4, range.fromLo).bind(5, range.toLo);
   scan->bind(6, range.leastHi);
   if (read.order == DescriptorRangeRead::Order::kById) scan->bind(7, read.afterId).bind(8, read.throughId);

@@ -41,7 +41,7 @@ void descriptorRangeRowsIn(sql::Connection& connection, const std::string& kind,
 // The statement descriptorRangeRowsIn runs (tests/db/query_plan_test.cpp checks SQLite's plan):
 // ?1 kind, ?2 descriptor, ?3 width_class, ?4 and ?5 the support_lo range, ?6 the least support_hi,
 // ?7 the limit or the id after which a walk starts, ?8 the id where it ends.
-std::string descriptorRangeSql(sql::Dialect dialect, const DescriptorRangeRead& read);
+std::string descriptorRangeSql(const DescriptorRangeRead& read);
 std::vector<int64_t> pendingDescriptorIdsIn(sql::Connection& connection, const std::string& kind);
 
 std::vector<DescriptorCandidate> descriptorCandidatesIn(sql::Connection& connection, const std::string& kind,

@@ -84,11 +84,12 @@ struct LevelRead {
  private:
   // A walk of the ids in windows that double, while finding `need` more rows that can score (the
   // kAnd's other children keep them) is expected to cost less than reading the rest of the piece
-  // by value, at the densities the walk has seen: a walked id reads the object's every index row
-  // (a part's 11 in the primary key) where a read by value reads one entry per row; kIdCost is
-  // that ratio as measured at 1M parts (docs/performance.md: 1.4 µs an id, 0.47 µs a row). A
+  // by value, at the densities the walk has seen: a walk reads one entry of descriptor_index_walk
+  // per object of the class, most of which SQLite drops (their value is outside the piece), where
+  // a read by value hands every row it reads to the scan; kIdCost is the ratio of the two as
+  // measured at 1M parts (docs/performance.md: 0.075 µs a walked id, 0.3 µs a row by value). A
   // piece too sparse for the walk is read whole after its first window.
-  static constexpr double kIdCost = 3;
+  static constexpr double kIdCost = 0.25;
 
   template <typename Add>
   void walk(const Store& store, const std::string& kind, int64_t lastId, const Add& add) {
