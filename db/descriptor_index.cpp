@@ -21,8 +21,16 @@ double lowestSupportLo(double lo, int widthClass) {
   return std::nextafter(lo - std::ldexp(1.0, widthClass), -std::numeric_limits<double>::infinity());
 }
 
+DescriptorClasses descriptorClassesIn(sql::Connection& connection) {
+  auto statement = connection.prepare("SELECT descriptor, width_class FROM descriptor_classes");
+  DescriptorClasses classes;
+  while (statement->step()) classes.emplace(statement->columnText(0), static_cast<int>(statement->columnInt(1)));
+  return classes;
+}
+
 void writeDescriptorRows(sql::Connection& connection, int64_t objectId, const std::string& kind,
-                         const std::vector<DescriptorComponent>& components, bool fresh) {
+                         const std::vector<DescriptorComponent>& components, bool fresh,
+                         const DescriptorClasses* present) {
   if (!fresh)
     for (const char* sql :
          {"DELETE FROM descriptor_index WHERE object_id = ?1", "DELETE FROM descriptor_values WHERE object_id = ?1"}) {
@@ -41,7 +49,8 @@ void writeDescriptorRows(sql::Connection& connection, int64_t objectId, const st
   for (const DescriptorComponent& component : components)
     for (const DescriptorSpan& span : component.spans) {
       rows.push_back({component.component, &span, widthClass(span.supportHi - span.supportLo)});
-      classes.emplace_back(span.descriptor, rows.back().widthClass);
+      std::pair<std::string, int> pair(span.descriptor, rows.back().widthClass);
+      if (present == nullptr || present->count(pair) == 0) classes.push_back(std::move(pair));
     }
   std::sort(classes.begin(), classes.end());
   classes.erase(std::unique(classes.begin(), classes.end()), classes.end());

@@ -9,7 +9,9 @@
 // Strict and excluded ends become inclusive bounds one double further in (x > lo is
 // x >= nextafter(lo, +inf)), so every test is BETWEEN on the index.
 #include <cstdint>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "db/sql.h"
@@ -24,10 +26,19 @@ int widthClass(double width);
 // The least support_lo a row of class c can have and still meet [lo, ...]: lo - 2^c rounded down.
 double lowestSupportLo(double lo, int widthClass);
 
+// (descriptor, width class) pairs of descriptor_classes, the classes the search reads ranges of.
+using DescriptorClasses = std::set<std::pair<std::string, int>>;
+// The pairs in descriptor_classes now. Rows of that table are never deleted, so pairs read before a
+// transaction writes anything stay there whatever it rolls back: writeDescriptorRows may skip them.
+DescriptorClasses descriptorClassesIn(sql::Connection& connection);
+
 // Replaces the rows of `objectId` (of `kind`) with `components`. fresh: the object was created in
 // this transaction, so it has no rows to delete (ids are never reused) and the deletes are skipped.
+// present: classes known to be in descriptor_classes (descriptorClassesIn before the transaction
+// wrote), whose insert is skipped; a bulk import's parts rarely bring a class that is not there.
 void writeDescriptorRows(sql::Connection& connection, int64_t objectId, const std::string& kind,
-                         const std::vector<DescriptorComponent>& components, bool fresh = false);
+                         const std::vector<DescriptorComponent>& components, bool fresh = false,
+                         const DescriptorClasses* present = nullptr);
 // Marks `objectId` pending with a new generation (higher than any before).
 void markDescriptorsPending(sql::Connection& connection, int64_t objectId);
 // Clears the mark of `objectId` (its rows were just written from what the write stored).

@@ -123,7 +123,7 @@ std::vector<int64_t> sortedUnique(std::vector<int64_t> ids) {
 // it has no edges, descriptor rows or pending mark to replace, and those deletes are skipped
 // (four of the eight statements a part's creation ran).
 void writeVersion(Connection& connection, const ObjectRow& row, int version, const NewObject& object,
-                  const std::vector<int64_t>& children, const std::string& now) {
+                  const std::vector<int64_t>& children, const std::string& now, const DescriptorClasses* present) {
   const bool fresh = version == 1;
   {
     auto statement = connection.prepare(
@@ -173,7 +173,7 @@ void writeVersion(Connection& connection, const ObjectRow& row, int version, con
       statement->bind(2 * r + 1, row.id).bind(2 * r + 2, edges[from + static_cast<size_t>(r)]);
     statement->run();
   }
-  writeDescriptorRows(connection, row.id, row.kind, object.descriptors, fresh);
+  writeDescriptorRows(connection, row.id, row.kind, object.descriptors, fresh, present);
   // Rows computed from referenced documents the caller read before this transaction may already
   // be stale: the server recomputes them after the commit (db/store.h, the descriptor index).
   if (object.references.empty()) {
@@ -200,7 +200,7 @@ StoredObject written(const ObjectRow& row, int version, const NewObject& object,
 }
 
 // create inside the caller's transaction.
-StoredObject createIn(Connection& connection, const NewObject& object) {
+StoredObject createIn(Connection& connection, const NewObject& object, const DescriptorClasses* present) {
   checkKind(object.kind);
   if (auto existing = idByName(connection, object.kind, object.name))
     throw Error(errc::kConflict, describe(object.kind, object.name, *existing) + " already exists", "name");
@@ -217,7 +217,7 @@ StoredObject createIn(Connection& connection, const NewObject& object) {
     statement->run();
   }
   ObjectRow row{id, object.kind, object.name, 1};
-  writeVersion(connection, row, 1, object, children, now);
+  writeVersion(connection, row, 1, object, children, now, present);
   logChange(connection, id);
   return written(row, 1, object, children, now);
 }
@@ -244,7 +244,8 @@ void logChange(Connection& connection, int64_t id) {
 }
 
 // put inside the caller's transaction.
-StoredObject putIn(Connection& connection, int64_t id, const NewObject& object, std::optional<int> ifVersion) {
+StoredObject putIn(Connection& connection, int64_t id, const NewObject& object, std::optional<int> ifVersion,
+                   const DescriptorClasses* present) {
   auto row = objectRow(connection, id);
   if (!row || row->kind != object.kind)
     throw Error(errc::kNotFound, object.kind + " " + std::to_string(id) + " not found");
@@ -265,16 +266,16 @@ StoredObject putIn(Connection& connection, int64_t id, const NewObject& object, 
     statement->bind(1, id).bind(2, version);
     statement->run();
   }
-  writeVersion(connection, *row, version, object, children, now);
+  writeVersion(connection, *row, version, object, children, now, present);
   logChange(connection, id);
   return written(*row, version, object, children, now);
 }
 
 // createBatch's kUpsert item inside the caller's transaction.
-StoredObject upsertIn(Connection& connection, const NewObject& object) {
+StoredObject upsertIn(Connection& connection, const NewObject& object, const DescriptorClasses* present) {
   checkKind(object.kind);
   auto id = idByName(connection, object.kind, object.name);
-  if (!id) return createIn(connection, object);
+  if (!id) return createIn(connection, object, present);
   auto statement = connection.prepare(
       "SELECT v.version, v.content_hash FROM objects o JOIN versions v"
       " ON v.object_id = o.id AND v.version = o.latest_version WHERE o.id = ?1");
@@ -285,7 +286,7 @@ StoredObject upsertIn(Connection& connection, const NewObject& object) {
     same.version = same.latestVersion = static_cast<int>(statement->columnInt(0));
     return same;
   }
-  return putIn(connection, *id, object);
+  return putIn(connection, *id, object, std::nullopt, present);
 }
 
 std::string objectColumnsSql(sql::Dialect dialect) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "db/descriptor_index.h"
 #include "db/sql.h"
 #include "db/store.h"
 
@@ -37,16 +38,19 @@ std::string describe(const std::string& kind, const std::string& name, int64_t i
 std::vector<int64_t> dependentsOf(sql::Connection& connection, int64_t id);
 std::optional<ObjectRow> objectRow(sql::Connection& connection, int64_t id);
 // Store::create, put and upsert (createBatch's modes), inside the caller's transaction.
-StoredObject createIn(sql::Connection& connection, const NewObject& object);
+// present: as writeDescriptorRows's (db/descriptor_index.h), descriptor classes known to be stored.
+StoredObject createIn(sql::Connection& connection, const NewObject& object,
+                      const DescriptorClasses* present = nullptr);
 StoredObject putIn(sql::Connection& connection, int64_t id, const NewObject& object,
-                   std::optional<int> ifVersion = std::nullopt);
+                   std::optional<int> ifVersion = std::nullopt, const DescriptorClasses* present = nullptr);
 // precondition_failed unless ifVersion is empty or the object's latest version.
 void checkVersion(const ObjectRow& row, std::optional<int> ifVersion);
 // Appends `id` to the change log (migration 004) under the next sequence number, and drops the
 // entries older than the newest kChangeLogKept now and then.
 constexpr int64_t kChangeLogKept = 100000;
 void logChange(sql::Connection& connection, int64_t id);
-StoredObject upsertIn(sql::Connection& connection, const NewObject& object);
+StoredObject upsertIn(sql::Connection& connection, const NewObject& object,
+                      const DescriptorClasses* present = nullptr);
 // One row of objectColumnsSql, references sorted (empty for an older version).
 StoredObject readObject(sql::Statement& row);
 // The object of `kind` with this id (or, without one, this name) at `version` (else the latest).

@@ -112,13 +112,16 @@ std::vector<int64_t> SqlStore::remove(const std::string& kind, int64_t id, bool 
 std::vector<BulkItemResult> SqlStore::createBatch(const std::vector<NewObject>& items, BulkMode mode) {
   Lease connection(*this);
   Transaction transaction(*connection);
+  // Read before the batch writes, so every pair is committed and stays (db/descriptor_index.h).
+  const DescriptorClasses present = descriptorClassesIn(*connection);
   std::vector<BulkItemResult> results;
   results.reserve(items.size());
   for (const auto& item : items) {
     BulkItemResult result;
     sql::Savepoint savepoint(*connection, "bulk_item");
     try {
-      auto stored = mode == BulkMode::kCreate ? createIn(*connection, item) : upsertIn(*connection, item);
+      auto stored =
+          mode == BulkMode::kCreate ? createIn(*connection, item, &present) : upsertIn(*connection, item, &present);
       savepoint.release();
       result.id = stored.id;
       result.version = stored.version;

@@ -189,6 +189,28 @@ TEST_P(DescriptorIndexTest, CreateBatchWritesRowsOfEveryItemThatCommits) {
             (std::vector<int64_t>{*results[0].id, *results[2].id}));
 }
 
+// createBatch skips the class rows it read before writing (descriptorClassesIn); a class an item
+// brings is still recorded, in its batch and in later ones, so the overlap scan finds its rows.
+TEST_P(DescriptorIndexTest, CreateBatchRecordsTheClassesItsItemsBring) {
+  store->create(part("first", 0.2, 0.4));
+  const auto one = store->createBatch({part("same class", 0.25, 0.45), part("wider", 0.0, 3.0)}, BulkMode::kCreate);
+  const auto two = store->createBatch({part("wider too", 0.1, 3.1), part("widest", -40, 40), part("crisp", 0.3, 0.3)},
+                                      BulkMode::kCreate);
+  for (const auto& results : {one, two})
+    for (const BulkItemResult& r : results) ASSERT_TRUE(r.id) << r.errorMessage;
+  EXPECT_EQ(ids(*store, "part", {"bendness", 0.3, 0.3}).size(), 6u);
+  EXPECT_EQ(ids(*store, "part", {"bendness", 2.5, 2.5}),
+            (std::vector<int64_t>{*one[1].id, *two[0].id, *two[1].id}));
+}
+
+TEST(DescriptorClasses, AreThePairsOfTheTable) {
+  TempDir dir;
+  Store::open(dir.file("classes.sqlite"))->create(part("p", 0.2, 0.4));
+  sqlite::Connection db(dir.file("classes.sqlite"));
+  EXPECT_EQ(descriptorClassesIn(db),
+            (DescriptorClasses{{"bendness", widthClass(0.2)}, {"size", kCrispWidthClass}}));
+}
+
 TEST_P(DescriptorIndexTest, ReferencesAndNewVersionsMarkPending) {
   const int64_t bolt = store->create(part("bolt", 0.2, 0.4)).id;
   const int64_t plain = store->create(part("plain", 0.2, 0.4)).id;
