@@ -248,6 +248,9 @@ class Scorer {
           done = true;
           break;
         }
+        // One run at a time, refined ones to score or others to refine: the scores of a run may
+        // raise the limit-th score enough that the candidates after it need no lookups.
+        if (pool.front().refined ? !unrefined.empty() : !chunk.empty()) break;
         if (pool.front().refined)
           chunk.push_back(pool.front().candidate.id);
         else
