@@ -24,8 +24,8 @@ using Kind = QueryCondition::Kind;
 
 std::string firstWord(const std::string& text) { return text.substr(0, text.find(' ')); }
 
-// A number as query text: formatNumber's shortest form with no '+' in its exponent (2.5e32, not
-// 2.5e+32): a '+' anywhere makes a structural query text a formula (csg_query_text.h).
+// A number as query text: formatNumber's shortest form without the '+' of its exponent (2.5e32,
+// not 2.5e+32), which both parsers read and which is shorter.
 std::string numberText(double x) {
   std::string text = formatNumber(x);
   const size_t plus = text.find("e+");

@@ -695,9 +695,27 @@ CsgQuery csgQueryFromDocument(const nlohmann::json& tree, size_t maxNodes, const
   return q;
 }
 
+namespace {
+
+// Whether text[i] is inside a word (as `words` splits them) that is a number as a whole:
+// "2.5e+32" or "-3" in "about 2.5e+32 units", where a sign is no operator.
+bool insideNumberWord(const std::string& text, size_t i) {
+  const auto separates = [](char c) { return std::isspace(static_cast<unsigned char>(c)) || c == '(' || c == ')' || c == ','; };
+  size_t from = i, to = i;
+  while (from > 0 && !separates(text[from - 1])) --from;
+  while (to < text.size() && !separates(text[to])) ++to;
+  const std::string word = text.substr(from, to - from);
+  char* end = nullptr;
+  std::strtod(word.c_str(), &end);
+  return end == word.c_str() + word.size() && word.find_first_of("0123456789") != std::string::npos;
+}
+
+}  // namespace
+
 bool isCsgFormula(const std::string& text) {
   for (size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
+    if ((c == '+' || c == '-') && insideNumberWord(text, i)) continue;
     if (c == '+' || c == '*' || c == '=' || c == '"') return true;
     if (c == '-' && !(i > 0 && isWordChar(text[i - 1]) && i + 1 < text.size() && isWordChar(text[i + 1]))) return true;
   }

@@ -99,6 +99,7 @@ CsgQuery csgQueryFromDocument(const nlohmann::json& tree, size_t maxNodes, const
 
 // Whether a text is the formula form: it holds one of + * = " or a "-" that is not inside a word
 // (a word is letters, digits, "-", "'", "."; so "A - B" and "A -B" are formulas, "cube-like" is not).
+// A sign inside a number ("about 2.5e+32 units", "-3") is no operator.
 bool isCsgFormula(const std::string& text);
 
 // Whether `fsdb query` should send a text to the CSG search rather than the linguistic one: a

@@ -212,6 +212,14 @@ TEST(CsgQueryText, FormIsChosenByCharacters) {
   EXPECT_TRUE(isCsgFormula("C = A"));
   EXPECT_FALSE(isCsgFormula("a cube-like box minus a sphere"));
   EXPECT_FALSE(isCsgFormula("the union of a sphere and a box"));
+  // A sign inside a number is no operator: such a text was sent to the formula parser and refused.
+  EXPECT_FALSE(isCsgFormula("a sphere about 2.5e+3 units above a cube"));
+  EXPECT_FALSE(isCsgFormula("a sphere about 1E+2 units above a cube"));
+  EXPECT_FALSE(isCsgFormula("a sphere between -3 and 2e-1 units above a cube"));
+  EXPECT_TRUE(isCsgFormula("part1e+2"));
+  EXPECT_TRUE(isCsgFormula("A +B"));
+  EXPECT_TRUE(isCsgFormula("2e+3 + B"));
+  EXPECT_TRUE(isCsgFormula("(A)+(B)"));
 }
 
 TEST(CsgQueryText, RoutingOfQueryTexts) {
@@ -260,6 +268,8 @@ TEST(CsgQueryText, SpatialRelations) {
   EXPECT_EQ(shape(parse("a sphere behind a cube")), "union('a sphere'<back 'a cube'>, 'a cube')");
   EXPECT_EQ(shape(parse("a sphere below a cube")), "union('a sphere'<bottom 'a cube'>, 'a cube')");
   EXPECT_EQ(shape(parse("a sphere 3 units below a cube")), "union('a sphere'<bottom 'a cube' ~3>, 'a cube')");
+  // A number with a signed exponent is a number of the phrase, not a formula's operator.
+  EXPECT_EQ(shape(parse("a sphere 2.5e+3 units below a cube")), "union('a sphere'<bottom 'a cube' ~2500>, 'a cube')");
   EXPECT_EQ(shape(parse("a sphere close to the top right of a cube")),
             "union('a sphere'<top right 'a cube' ~0.5>, 'a cube')");
   EXPECT_EQ(shape(parse("a cube with a sphere on the left side")), "union('a cube', 'a sphere'<left 'a cube'>)");
