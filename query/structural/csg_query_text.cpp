@@ -50,6 +50,14 @@ struct Word {
 };
 
 // The words of the phrase form: runs of characters other than blanks and "(),", and those three.
+// A word that is a number as a whole: "3", "-0.5", "2.5e+32" (not "inf", "+3" or "3x").
+bool isNumberWord(const std::string& w) {
+  char* end = nullptr;
+  std::strtod(w.c_str(), &end);
+  return !w.empty() && end == w.c_str() + w.size() &&
+         (std::isdigit(static_cast<unsigned char>(w[0])) || w[0] == '-' || w[0] == '.');
+}
+
 std::vector<Word> words(const std::string& text) {
   std::vector<Word> out;
   for (size_t i = 0; i < text.size();) {
@@ -400,14 +408,7 @@ class PhraseParser {
     }
   }
 
-  bool isNumberAt(size_t i) const {
-    if (i >= words_.size()) return false;
-    const std::string& w = words_[i].text;
-    char* end = nullptr;
-    std::strtod(w.c_str(), &end);
-    return !w.empty() && end == w.c_str() + w.size() && (std::isdigit(static_cast<unsigned char>(w[0])) || w[0] == '-' ||
-                                                         w[0] == '.');
-  }
+  bool isNumberAt(size_t i) const { return i < words_.size() && isNumberWord(words_[i].text); }
 
   // The longest direction word or phrase of the vocabulary at word i ("top right", "in front of").
   const Direction* directionWordAt(size_t i, std::string* which) const {
@@ -695,29 +696,15 @@ CsgQuery csgQueryFromDocument(const nlohmann::json& tree, size_t maxNodes, const
   return q;
 }
 
-namespace {
-
-// Whether text[i] is inside a word (as `words` splits them) that is a number as a whole:
-// "2.5e+32" or "-3" in "about 2.5e+32 units", where a sign is no operator.
-bool insideNumberWord(const std::string& text, size_t i) {
-  const auto separates = [](char c) { return std::isspace(static_cast<unsigned char>(c)) || c == '(' || c == ')' || c == ','; };
-  size_t from = i, to = i;
-  while (from > 0 && !separates(text[from - 1])) --from;
-  while (to < text.size() && !separates(text[to])) ++to;
-  const std::string word = text.substr(from, to - from);
-  char* end = nullptr;
-  std::strtod(word.c_str(), &end);
-  return end == word.c_str() + word.size() && word.find_first_of("0123456789") != std::string::npos;
-}
-
-}  // namespace
-
 bool isCsgFormula(const std::string& text) {
-  for (size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if ((c == '+' || c == '-') && insideNumberWord(text, i)) continue;
-    if (c == '+' || c == '*' || c == '=' || c == '"') return true;
-    if (c == '-' && !(i > 0 && isWordChar(text[i - 1]) && i + 1 < text.size() && isWordChar(text[i + 1]))) return true;
+  for (const Word& w : words(text)) {
+    if (isNumberWord(w.text)) continue;  // "2.5e+32", "-3": a sign inside a number is no operator
+    const std::string& t = w.text;
+    for (size_t i = 0; i < t.size(); ++i) {
+      const char c = t[i];
+      if (c == '+' || c == '*' || c == '=' || c == '"') return true;
+      if (c == '-' && !(i > 0 && isWordChar(t[i - 1]) && i + 1 < t.size() && isWordChar(t[i + 1]))) return true;
+    }
   }
   return false;
 }
