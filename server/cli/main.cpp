@@ -1,7 +1,6 @@
 // The fsdb executable: `fsdb serve`, `fsdb import`, `fsdb eval`, `fsdb query` (docs/api.md §1).
 #include <CLI/CLI.hpp>
 #include <httplib.h>
-#include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include <chrono>
@@ -21,6 +20,7 @@
 #include "server/service/bulk_import.h"
 #include "server/service/descriptor_rows.h"
 #include "server/cli/eval_command.h"
+#include "server/cli/log_sink.h"
 #include "server/cli/file_io.h"
 #include "server/http/http_server.h"
 #include "server/cli/import_command.h"
@@ -167,8 +167,11 @@ int runServe(const fsdb::ServerOptions& options, const std::string& dbPath, cons
 }  // namespace
 
 int main(int argc, char** argv) {
-  spdlog::set_default_logger(spdlog::stderr_color_mt("fsdb"));
-  spdlog::set_pattern("%Y-%m-%dT%H:%M:%S.%e %^%l%$ %v");
+  fsdb::installLogger();
+  // Writes the buffered log lines however main returns (CLI11_PARSE returns from inside).
+  struct LogShutdown {
+    ~LogShutdown() { spdlog::shutdown(); }
+  } logShutdown;
 
   CLI::App app{"fsdb: a fuzzy shape database server"};
   app.set_version_flag("--version", FSDB_VERSION);
