@@ -3,7 +3,10 @@
 
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
+#include <pthread.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <cerrno>
 
@@ -41,7 +44,14 @@ void installLogger() {
   } else {
     logger = std::make_shared<spdlog::logger>("fsdb", std::make_shared<BufferedFdSink>(STDERR_FILENO));
     logger->flush_on(spdlog::level::warn);
+    // The flushing thread starts with every signal blocked: a thread inherits its creator's mask,
+    // and one that left SIGTERM open would take `fsdb serve`'s SIGTERM with the default action
+    // (death, exit 143) before the server's own waiter could stop it cleanly.
+    sigset_t all, previous;
+    sigfillset(&all);
+    pthread_sigmask(SIG_SETMASK, &all, &previous);
     spdlog::flush_every(kLogFlushInterval);  // flushes every registered logger; the default is one
+    pthread_sigmask(SIG_SETMASK, &previous, nullptr);
   }
   spdlog::set_default_logger(logger);
   spdlog::set_pattern("%Y-%m-%dT%H:%M:%S.%e %^%l%$ %v");
