@@ -116,11 +116,16 @@ class Connection {
   virtual void setSchemaVersion(int version) = 0;
 };
 
-// A transaction, rolled back on destruction unless committed.
+// A transaction, rolled back on destruction unless committed. A read transaction begun on a
+// connection already in one (Store::readSnapshot's) joins it: it neither begins nor ends it.
 class Transaction {
  public:
   using Mode = TransactionMode;
   explicit Transaction(Connection& connection, Mode mode = Mode::kWrite) : connection_(connection) {
+    if (mode == Mode::kRead && connection_.inTransaction()) {
+      done_ = joined_ = true;
+      return;
+    }
     connection_.begin(mode);
   }
   ~Transaction() {
@@ -129,6 +134,7 @@ class Transaction {
   Transaction(const Transaction&) = delete;
   Transaction& operator=(const Transaction&) = delete;
   void commit() {
+    if (joined_) return;
     connection_.exec("COMMIT");
     done_ = true;
   }
@@ -136,6 +142,7 @@ class Transaction {
  private:
   Connection& connection_;
   bool done_ = false;
+  bool joined_ = false;
 };
 
 // A nested unit inside a transaction: release() keeps its changes; otherwise destruction rolls

@@ -17,7 +17,23 @@ using namespace object_rows;
 
 // --- The connection pool ------------------------------------------------------------------------
 
-SqlStore::Lease::Lease(const SqlStore& store) : store_(store) {
+namespace {
+
+// The connection of this thread's readSnapshot, and its store (one at a time per thread).
+struct SnapshotPin {
+  const SqlStore* store = nullptr;
+  sql::Connection* connection = nullptr;
+};
+thread_local SnapshotPin tSnapshot;
+
+}  // namespace
+
+SqlStore::Lease::Lease(const SqlStore& store, Use use) : store_(store) {
+  if (use == Use::kRead && tSnapshot.store == &store_) {
+    connection_ = tSnapshot.connection;
+    shared_ = true;
+    return;
+  }
   {
     std::unique_lock<std::mutex> lock(store_.mutex_);
     store_.available_.wait(lock, [&] { return !store_.idle_.empty(); });
@@ -37,11 +53,26 @@ SqlStore::Lease::Lease(const SqlStore& store) : store_(store) {
 }
 
 SqlStore::Lease::~Lease() {
+  if (shared_) return;
   {
     std::lock_guard<std::mutex> lock(store_.mutex_);
     store_.idle_.push_back(connection_);
   }
   store_.available_.notify_one();
+}
+
+void SqlStore::readSnapshot(const std::function<void()>& body) const {
+  if (tSnapshot.store == this) return body();  // nested: the outer snapshot
+  Lease connection(*this, Lease::Use::kOwn);
+  Transaction transaction(*connection, Transaction::Mode::kRead);
+  const SnapshotPin outer = tSnapshot;  // another store's snapshot, restored after
+  struct Restore {
+    SnapshotPin outer;
+    ~Restore() { tSnapshot = outer; }
+  } restore{outer};
+  tSnapshot = {this, &*connection};
+  body();
+  transaction.commit();
 }
 
 void SqlStore::addConnection(std::unique_ptr<sql::Connection> connection) {
@@ -53,7 +84,7 @@ void SqlStore::addConnection(std::unique_ptr<sql::Connection> connection) {
 // --- Writes -------------------------------------------------------------------------------------
 
 StoredObject SqlStore::create(const NewObject& object) {
-  Lease connection(*this);
+  Lease connection(*this, Lease::Use::kOwn);
   Transaction transaction(*connection);
   auto result = createIn(*connection, object);
   transaction.commit();
@@ -61,7 +92,7 @@ StoredObject SqlStore::create(const NewObject& object) {
 }
 
 StoredObject SqlStore::put(int64_t id, const NewObject& object, std::optional<int> ifVersion) {
-  Lease connection(*this);
+  Lease connection(*this, Lease::Use::kOwn);
   Transaction transaction(*connection);
   auto result = putIn(*connection, id, object, ifVersion);
   transaction.commit();
@@ -69,7 +100,7 @@ StoredObject SqlStore::put(int64_t id, const NewObject& object, std::optional<in
 }
 
 std::vector<int64_t> SqlStore::remove(const std::string& kind, int64_t id, bool cascade, std::optional<int> ifVersion) {
-  Lease connection(*this);
+  Lease connection(*this, Lease::Use::kOwn);
   Transaction transaction(*connection);
   auto row = objectRow(*connection, id);
   if (!row || row->kind != kind) throw Error(errc::kNotFound, kind + " " + std::to_string(id) + " not found");
@@ -110,7 +141,7 @@ std::vector<int64_t> SqlStore::remove(const std::string& kind, int64_t id, bool 
 }
 
 std::vector<BulkItemResult> SqlStore::createBatch(const std::vector<NewObject>& items, BulkMode mode) {
-  Lease connection(*this);
+  Lease connection(*this, Lease::Use::kOwn);
   Transaction transaction(*connection);
   // Read before the batch writes, so every pair is committed and stays (db/descriptor_index.h).
   const DescriptorClasses present = descriptorClassesIn(*connection);
@@ -141,7 +172,7 @@ std::vector<BulkItemResult> SqlStore::createBatch(const std::vector<NewObject>& 
 }
 
 void SqlStore::storeEvaluation(int64_t objectId, const std::string& key, const CachedEvaluation& value) {
-  Lease connection(*this);
+  Lease connection(*this, Lease::Use::kOwn);
   Transaction transaction(*connection);
   if (!objectRow(*connection, objectId))
     throw Error(errc::kNotFound, "object " + std::to_string(objectId) + " not found");
@@ -410,7 +441,7 @@ std::vector<PendingDescriptors> SqlStore::pendingDescriptors(int64_t afterId, in
 
 size_t SqlStore::replaceDescriptors(
     const std::vector<std::pair<PendingDescriptors, std::vector<DescriptorComponent>>>& refreshed) {
-  Lease connection(*this);
+  Lease connection(*this, Lease::Use::kOwn);
   Transaction transaction(*connection);
   size_t replaced = 0;
   for (const auto& [pending, components] : refreshed) {

@@ -50,12 +50,16 @@ class SqlStore : public Store {
       const std::vector<std::pair<PendingDescriptors, std::vector<DescriptorComponent>>>& refreshed) override;
   std::optional<CachedEvaluation> cachedEvaluation(const std::string& key) const override;
   void storeEvaluation(int64_t objectId, const std::string& key, const CachedEvaluation& value) override;
+  void readSnapshot(const std::function<void()>& body) const override;
 
  protected:
-  // A connection on loan for one public call; returned to the pool on destruction.
+  // A connection on loan for one public call; returned to the pool on destruction. A read
+  // (kRead) inside readSnapshot on this thread takes the snapshot's connection instead and gives
+  // nothing back; kOwn (writes, and the snapshot itself) always takes a connection of its own.
   class Lease {
    public:
-    explicit Lease(const SqlStore& store);
+    enum class Use { kRead, kOwn };
+    explicit Lease(const SqlStore& store, Use use = Use::kRead);
     ~Lease();
     Lease(const Lease&) = delete;
     Lease& operator=(const Lease&) = delete;
@@ -64,6 +68,7 @@ class SqlStore : public Store {
    private:
     const SqlStore& store_;
     sql::Connection* connection_ = nullptr;
+    bool shared_ = false;  // the snapshot's connection
   };
 
   explicit SqlStore(std::string location) : location_(std::move(location)) {}

@@ -29,7 +29,7 @@ std::unique_ptr<Store> SqliteStore::open(const std::string& path, const StoreOpt
 }
 
 void SqliteStore::checkpoint() {
-  Lease connection(*this);
+  Lease connection(*this, Lease::Use::kOwn);
   auto statement = (*connection).prepare("PRAGMA wal_checkpoint(TRUNCATE)");
   statement->run();
 }

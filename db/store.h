@@ -43,6 +43,7 @@
 // cascade), precondition_failed (412: the object moved past the version a conditional write
 // expected), unknown_reference / reference_cycle (422), storage_error (503: engine failures).
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -327,6 +328,13 @@ class Store {
   // "ok" or the first problem (SQLite: PRAGMA integrity_check; PostgreSQL: the store's own
   // invariants: every object has its latest version, every edge names live objects).
   virtual std::string integrityCheck() const = 0;
+
+  // Runs `body`, and every read this thread makes on the store until it returns sees one
+  // snapshot: the reads share one pooled connection in one read transaction, instead of a
+  // transaction and a pool loan per call (a linguistic search makes ten to fifty calls). Writes
+  // inside `body` take other connections and are not seen by its reads. Nested calls join the
+  // outer snapshot. The default (a store without transactions) runs `body` as it is.
+  virtual void readSnapshot(const std::function<void()>& body) const { body(); }
 
  protected:
   Store() = default;

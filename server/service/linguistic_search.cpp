@@ -409,9 +409,8 @@ const PrefilterPlan* levelDriver(const PrefilterPlan& plan) {
   return nullptr;
 }
 
-}  // namespace
-
-LinguisticSearchResult searchLinguistic(const Store& store, const LinguisticQuery& query,
+// The search itself; searchLinguistic runs it in one snapshot.
+LinguisticSearchResult searchInSnapshot(const Store& store, const LinguisticQuery& query,
                                         const LinguisticSearchOptions& options) {
   Scorer scorer(store, query, options);
   for (const std::string& kind : options.kinds) {
@@ -438,6 +437,17 @@ LinguisticSearchResult searchLinguistic(const Store& store, const LinguisticQuer
     scorer.score(kind, runPrefilter(plan, overlap, all, kind == "part"), true);
   }
   return scorer.result();
+}
+
+}  // namespace
+
+LinguisticSearchResult searchLinguistic(const Store& store, const LinguisticQuery& query,
+                                        const LinguisticSearchOptions& options) {
+  // Its reads (ten to fifty store calls) see one state of the catalogue, and pay one read
+  // transaction and one pool loan instead of one each.
+  LinguisticSearchResult result;
+  store.readSnapshot([&] { result = searchInSnapshot(store, query, options); });
+  return result;
 }
 
 std::vector<std::string> searchKinds(const LinguisticQuery& query, const std::string& requestKind) {

@@ -506,6 +506,61 @@ TEST_P(StoreTest, TwoStoresOnOneDatabaseSeeEachOthersWrites) {
 
 // Two writers close a cycle from both ends at once (a -> b and b -> a): the write lock orders
 // them, so exactly one of each pair lands and the other is a reference_cycle; never both.
+TEST_P(StoreTest, ReadsInOneSnapshotMissWritesMadeAfterItsFirstRead) {
+  const int64_t first = store->create(part("first")).id;
+  auto other = Store::open(path);  // another store on the database (another process, say)
+  int64_t second = 0, third = 0;
+  store->readSnapshot([&] {
+    EXPECT_EQ(store->counts()["part"], 1);  // the snapshot starts with the first read
+    second = other->create(part("second")).id;
+    third = store->create(part("third")).id;  // a write inside takes a connection of its own
+    EXPECT_EQ(store->counts()["part"], 1);
+    EXPECT_EQ(store->lastObjectId(), first);
+    EXPECT_FALSE(store->find(byId("part", second)));
+    EXPECT_EQ(store->objectIds("part"), std::vector<int64_t>{first});
+    // Reads that open a read transaction of their own join the snapshot's.
+    EXPECT_EQ(store->changesSince(0).changes.size(), 1u);
+    EXPECT_EQ(store->descriptorCandidates("part", {"bendness", 0, 1, true, true, false}).size(), 0u);
+    store->readSnapshot([&] { EXPECT_EQ(store->counts()["part"], 1); });  // nested: the same snapshot
+  });
+  EXPECT_EQ(store->counts()["part"], 3);
+  EXPECT_EQ(store->objectIds("part"), (std::vector<int64_t>{first, second, third}));
+}
+
+TEST_P(StoreTest, ReadSnapshotEndsWhenItsBodyThrows) {
+  store->create(part("first"));
+  EXPECT_THROW(store->readSnapshot([&] {
+    EXPECT_EQ(store->counts()["part"], 1);
+    throw Error(errc::kNotFound, "gone");
+  }),
+               Error);
+  store->create(part("second"));
+  EXPECT_EQ(store->counts()["part"], 2);  // this thread reads the latest again
+  // Every pooled connection is back, and none is left inside a transaction: as many snapshots
+  // at once as the pool holds, each seeing the latest state.
+  std::vector<std::thread> readers;
+  std::atomic<int> sawBoth{0};
+  for (int i = 0; i < 8; ++i)
+    readers.emplace_back([&] { store->readSnapshot([&] { sawBoth += store->counts()["part"] == 2; }); });
+  for (auto& reader : readers) reader.join();
+  EXPECT_EQ(sawBoth.load(), 8);
+}
+
+TEST_P(StoreTest, SnapshotsOfTwoStoresOnOneThreadStayApart) {
+  auto other = Store::open(path);
+  store->create(part("first"));
+  store->readSnapshot([&] {
+    EXPECT_EQ(store->counts()["part"], 1);
+    other->readSnapshot([&] {
+      EXPECT_EQ(other->counts()["part"], 1);
+      other->create(part("second"));
+      EXPECT_EQ(other->counts()["part"], 1);  // other's snapshot began before its write
+    });
+    EXPECT_EQ(store->counts()["part"], 1);  // still store's own snapshot
+  });
+  EXPECT_EQ(store->counts()["part"], 2);
+}
+
 TEST_P(StoreTest, CycleRejectionHoldsUnderConcurrentWriters) {
   auto second = Store::open(database.location());
   store->create(part("leaf"));
