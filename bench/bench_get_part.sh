@@ -4,8 +4,12 @@
 # cycles through the ids), against bench/bare_httplib (a bare cpp-httplib server returning the
 # same JSON body on the same route, same thread pool size) under the same load. Both set
 # TCP_NODELAY. fsdb runs with its request log on (--log-level info: a line per request, the
-# default) and off (warn). REPS rounds, alternating; medians and ratios of medians.
-# Usage: bench/bench_get_part.sh [BUILD_DIR] [DURATION] [REPS]   (default build, 5s, 3)
+# default) and off (warn). Each server first gets WARMUP (default 2s) of the same load, not
+# counted: fsdb builds the structural search's graphs of its 1000 shapes in the background when it
+# starts (about 0.2 s of both cores), and the measured run is of a server that has been up a while,
+# as in bench_linguistic_wrk.sh; COLD=1 leaves the warm-up out. REPS rounds, alternating; medians
+# and ratios of medians.
+# Usage: [WARMUP=2s] [COLD=1] bench/bench_get_part.sh [BUILD_DIR] [DURATION] [REPS]   (default build, 5s, 3)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/service_lib.sh"
@@ -42,8 +46,10 @@ print("request = function()\n  i = i % #ids + 1\n  return wrk.format(\"GET\", \"
 }
 
 # load NAME KIND: wrk on the server cycling KIND's ids; appends "rps p50 p99" (ms) to $work/NAME.
+warmup=${WARMUP:-2s}
 load() {
   local out
+  [[ ${COLD:-0} == 1 ]] || wrk -t2 -c16 -d"$warmup" -s "$work/cycle.$2.lua" "$SERVER_URL" >/dev/null
   out=$(wrk -t2 -c16 -d"$duration" --latency -s "$work/cycle.$2.lua" "$SERVER_URL")
   if grep -qE 'Non-2xx|Socket errors' <<<"$out"; then echo "$1: $(grep -E 'Non-2xx|Socket errors' <<<"$out")" >&2; exit 1; fi
   python3 - "$out" >>"$work/$1" <<'PY'
@@ -77,7 +83,7 @@ for _ in $(seq 1 "$reps"); do
   done
 done
 
-echo "== GET /{parts,shapes}/{id}, 1000 of each, wrk -t2 -c16 -d$duration, server threads $threads, medians of $reps"
+echo "== GET /{parts,shapes}/{id}, 1000 of each, wrk -t2 -c16 -d$duration, server threads $threads, medians of $reps, $([[ ${COLD:-0} == 1 ]] && echo "measured from the start" || echo "after $warmup of warm-up")"
 python3 - "$work" <<'PY'
 import statistics, sys, os
 work = sys.argv[1]
