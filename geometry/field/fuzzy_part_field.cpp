@@ -1,6 +1,7 @@
 #include "geometry/field/fuzzy_part_field.h"
 
 #include <algorithm>
+#include <mutex>
 #include <limits>
 #include <cmath>
 #include <vector>
@@ -70,7 +71,17 @@ double FuzzyPartField::valueAt(const PlacedSuperquadric& theta, const Vec3& p) c
 }
 
 bool FuzzyPartField::decide(const Vec3& p, const PartBox& box, Question q) const {
+  const Decision d = decideOrUnknown(p, box, q);
+  // Conservative on exhaustion: upper grows (possibly true), lower shrinks (necessarily false).
+  return d == Decision::kUnknown ? q == Question::kPossibly : d == Decision::kYes;
+}
+
+FuzzyPartField::Decision FuzzyPartField::decideOrUnknown(const Vec3& p, const PartBox& box,
+                                                         Question q) const {
   const bool possibly = q == Question::kPossibly;
+  // The answer "possibly" (∃θ inside) or "not necessarily" (∃θ outside), and its negation.
+  const Decision found = possibly ? Decision::kYes : Decision::kNo;
+  const Decision none = possibly ? Decision::kNo : Decision::kYes;
   const Interval px{p.x, p.x}, py{p.y, p.y}, pz{p.z, p.z};
   struct Item {
     PartBox box;
@@ -84,7 +95,7 @@ bool FuzzyPartField::decide(const Vec3& p, const PartBox& box, Question q) const
   while (!stack.empty()) {
     if (evaluations >= options_.evaluationBudget) {
       ++exhaustions_;
-      return possibly;  // conservative: upper grows, lower shrinks
+      return Decision::kUnknown;
     }
     const Item item = std::move(stack.back());
     stack.pop_back();
@@ -94,7 +105,7 @@ bool FuzzyPartField::decide(const Vec3& p, const PartBox& box, Question q) const
     // The enclosure excludes the box from the question (no witness can lie in it).
     if (excludes(f, possibly)) continue;
     // A crisp witness: inside (possibly) or outside (not necessarily).
-    if (settles(item.centre)) return possibly;
+    if (settles(item.centre)) return found;
     // Split the value that is widest relative to its support: a common yardstick for sizes, angles
     // and exponents.
     int widest = -1;
@@ -116,15 +127,14 @@ bool FuzzyPartField::decide(const Vec3& p, const PartBox& box, Question q) const
     slot(b.box, widest) = {m, v.hi};
     a.centre = centreValue(a.box, p);
     b.centre = centreValue(b.box, p);
-    if (settles(a.centre) || settles(b.centre)) return possibly;
+    if (settles(a.centre) || settles(b.centre)) return found;
     // Depth first, most promising half on top: the smaller F for a witness inside, the larger for a
     // witness outside.
     const bool aFirst = possibly ? a.centre <= b.centre : a.centre >= b.centre;
     stack.push_back(aFirst ? std::move(b) : std::move(a));
     stack.push_back(aFirst ? std::move(a) : std::move(b));
   }
-  return !possibly;  // every sub-box excluded: no θ inside (possibly), none
-                     // outside (necessarily)
+  return none;  // every sub-box excluded: no θ inside (possibly), none outside (necessarily)
 }
 
 PartBox FuzzyPartField::levelBox(double alpha) const {
@@ -164,11 +174,22 @@ AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
   if (up.exhausted) {
     // Conservative: an upper bound of u (upper grows); l is not sought below u = 1.
     out.upper = floatUp(std::min(1.0, std::max(up.incumbent, up.pruned)));
+    // u = 1 says p ∈ upper(1). The open bound reaches 1 wherever a box around the core stayed
+    // open, so ask P(1) itself (one θ for triangular numbers): where no θ of it puts p inside,
+    // u_true < 1 and the largest float below 1 is still an upper bound of it.
+    if (out.upper == 1.0f && decideOrUnknown(p, core_, Question::kPossibly) == Decision::kNo)
+      out.upper = std::nextafter(1.0f, 0.0f);
     if (out.upper < 1.0f) return out;
   } else {
     if (up.incumbent < 0.0) return out;  // no θ of P(0) puts p inside: u = 0, l = never
     // Round down, keeping the witness: p ∈ upper(u) is shown by θ ∈ P(u).
-    const float u = roundedUpper(up.incumbent, up.witness);
+    float u = roundedUpper(up.incumbent, up.witness);
+    // Within τ of 1 the search may stop at a witness below the core although one in P(1) exists
+    // (its bound, 1, did not beat the incumbent by τ). upper(1) must hold every point of the
+    // true upper(1), so ask P(1) itself: a witness there makes u = 1.
+    if (u < 1.0f && u + tau >= 1.0 - kMargin &&
+        decideOrUnknown(p, core_, Question::kPossibly) == Decision::kYes)
+      u = 1.0f;
     out.upper = u;
     if (u < 1.0f) return out;  // l <= 1 needs p ∈ lower(1) ⊆ upper(1)
   }
@@ -310,6 +331,13 @@ AlphaLevelBounds FuzzyPartField::boundsOver(const Vec3& lo, const Vec3& hi) cons
 }
 
 void FuzzyPartField::boundingBox(Vec3* lo, Vec3* hi) const {
+  // Computed on first use: parsing a part (imports, searches) never pays for it.
+  std::call_once(boxOnce_, [this] { tightenBoundingBox(); });
+  *lo = boxLo_;
+  *hi = boxHi_;
+}
+
+void FuzzyPartField::looseBoundingBox(Vec3* lo, Vec3* hi) const {
   const PlacementBox& pl = support_.placement;
   double X, Y, Z;
   deformedHalfExtents(support_.params, &X, &Y, &Z);
@@ -331,6 +359,61 @@ void FuzzyPartField::boundingBox(Vec3* lo, Vec3* hi) const {
   const double pad = 2.0 * std::sin(0.5 * delta) * norm(half);
   *lo = {pl.tx.lo - extent.x - pad, pl.ty.lo - extent.y - pad, pl.tz.lo - extent.z - pad};
   *hi = {pl.tx.hi + extent.x + pad, pl.ty.hi + extent.y + pad, pl.tz.hi + extent.z + pad};
+}
+
+
+// The loose box (deformation and placement bounds over the support box) can be much larger than
+// upper(0): a bend's bound takes the largest deflection at every height, and the rotation pad the
+// box's whole diagonal. Cells of the loose box that boundsOver proves outside upper(0) are cut
+// away, down to cells of 1/kTightCells of its sides: the result is the hull of the cells that
+// could not be excluded (so it holds upper(0) whenever the loose box does). Cells already inside
+// the hull found so far are skipped, and children nearer the box's centre go first, so the hull
+// grows from the inside and most cells are never tested. (Splitting P(0) as well for the cells
+// boundsOver keeps, 48 enclosures each, cost 100x the time for a few percent:
+// docs/design/fuzzy-part-field.md.)
+void FuzzyPartField::tightenBoundingBox() const {
+  looseBoundingBox(&boxLo_, &boxHi_);
+  constexpr int kTightCells = 96;  // finest cell: 1/96 of the loose box's side per axis
+  const Vec3 lo = boxLo_, hi = boxHi_;
+  const Vec3 centre = (lo + hi) * 0.5;
+  const Vec3 finest = (hi - lo) / double(kTightCells);
+  Vec3 hullLo{INFINITY, INFINITY, INFINITY}, hullHi{-INFINITY, -INFINITY, -INFINITY};
+  const auto within = [&](const Vec3& a, const Vec3& b) {
+    return a.x >= hullLo.x && a.y >= hullLo.y && a.z >= hullLo.z && b.x <= hullHi.x &&
+           b.y <= hullHi.y && b.z <= hullHi.z;
+  };
+  // Depth first with an explicit stack; a cell is split across its widest side (relative to the
+  // finest cell) until every side is at most the finest cell.
+  std::vector<std::pair<Vec3, Vec3>> stack{{lo, hi}};
+  while (!stack.empty()) {
+    const auto [a, b] = stack.back();
+    stack.pop_back();
+    if (within(a, b)) continue;
+    if (boundsOver(a, b).upperMax == 0.0f) continue;  // outside upper(0): nothing to hold
+    const auto cells = [](double w, double f) { return f > 0.0 ? w / f : 0.0; };
+    const double rx = cells(b.x - a.x, finest.x), ry = cells(b.y - a.y, finest.y),
+                 rz = cells(b.z - a.z, finest.z);
+    const double widest = std::max({rx, ry, rz});
+    if (!(widest > 1.0 + 1e-9)) {
+      hullLo = {std::min(hullLo.x, a.x), std::min(hullLo.y, a.y), std::min(hullLo.z, a.z)};
+      hullHi = {std::max(hullHi.x, b.x), std::max(hullHi.y, b.y), std::max(hullHi.z, b.z)};
+      continue;
+    }
+    Vec3 midLo = b, midHi = a;  // the two halves: [a, midLo] and [midHi, b]
+    if (widest == rx) midLo.x = midHi.x = 0.5 * (a.x + b.x);
+    else if (widest == ry) midLo.y = midHi.y = 0.5 * (a.y + b.y);
+    else midLo.z = midHi.z = 0.5 * (a.z + b.z);
+    std::pair<Vec3, Vec3> first{a, midLo}, second{midHi, b};
+    const auto distance = [&](const std::pair<Vec3, Vec3>& c) { return norm((c.first + c.second) * 0.5 - centre); };
+    if (distance(first) > distance(second)) std::swap(first, second);
+    stack.push_back(second);  // popped after the nearer half
+    stack.push_back(first);
+  }
+  // Every cell excluded would mean an empty upper(0), which a valid part never has (S(core) has
+  // volume): keep the loose box rather than trust that.
+  if (hullLo.x > hullHi.x) return;
+  boxLo_ = {std::max(lo.x, hullLo.x), std::max(lo.y, hullLo.y), std::max(lo.z, hullLo.z)};
+  boxHi_ = {std::min(hi.x, hullHi.x), std::min(hi.y, hullHi.y), std::min(hi.z, hullHi.z)};
 }
 
 }  // namespace fsdb

@@ -10,7 +10,10 @@
 //  * A query has a budget of enclosure evaluations. When it runs out the answer is the
 //    conservative one (upper can only grow, lower only shrink) and budgetExhaustions() counts it.
 //  * boundsOver(lo, hi) bounds the levels of every point of the box; levelsAt answers lie within
-//    them unless a point query ran out of budget. boundingBox() is a sound box around upper(0).
+//    them unless a point query ran out of budget. boundingBox() is a sound box around upper(0),
+//    cut down on first use to the cells boundsOver cannot exclude (a few ms).
+//  * u = 1 exactly where P(1) was shown to put p inside, or where that decision ran out of
+//    budget (counted): within τ of 1, or on an exhausted search, P(1) itself is asked.
 //  * possiblyInside / necessarilyInside decide one level by branch and bound (same budget).
 //  * Thread-safe: queries only read the part; the exhaustion counter is atomic.
 // How: a certified max-min branch and bound over the parameter box (fuzzy_part_search.cpp), with
@@ -18,6 +21,7 @@
 // (fuzzy_part_monotone.cpp); docs/design/fuzzy-part-field.md explains both and their proofs.
 #include <atomic>
 #include <cstdint>
+#include <mutex>
 #include <optional>
 
 #include "geometry/numeric/affine_form.h"
@@ -68,7 +72,13 @@ class FuzzyPartField : public AlphaFieldSource {
 
  private:
   enum class Question { kPossibly, kNecessarily };
+  enum class Decision { kYes, kNo, kUnknown };  // kUnknown: the budget ran out (counted)
+  // decideOrUnknown with the conservative answer on exhaustion (possibly: true, necessarily:
+  // false).
   bool decide(const Vec3& p, const PartBox& box, Question q) const;
+  // Depth-first branch and bound of one question over `box`: kYes / kNo proven (by a crisp
+  // witness or by every sub-box excluded), kUnknown when the budget ran out.
+  Decision decideOrUnknown(const Vec3& p, const PartBox& box, Question q) const;
   // One max-min search (docs/design/fuzzy-part-field.md): incumbent = the best m(θ) of a witness (-1: none), witness
   // its θ; pruned = the largest bound of a box dropped without a witness (-1: none) or, when
   // exhausted, of the boxes still open.
@@ -109,6 +119,10 @@ class FuzzyPartField : public AlphaFieldSource {
   PlacedSuperquadric cornerAt(double alpha, const signed char* sign, bool least) const;
   // u rounded down to a float whose cut still holds the witness (p ∈ upper(u) stays shown).
   float roundedUpper(double u, const PlacedSuperquadric& witness) const;
+  // The box of deformation and placement bounds over the support box (sound, often loose).
+  void looseBoundingBox(Vec3* lo, Vec3* hi) const;
+  // boxLo_, boxHi_: the loose box with the cells boundsOver proves outside upper(0) cut away.
+  void tightenBoundingBox() const;
   PartBox levelBox(double alpha) const;  // P(alpha), the stored support and core at 0 and 1
   double valueAt(const PlacedSuperquadric& theta, const Vec3& p) const;  // F(p; θ)
   // Signs of monotoneSigns over a whole block, computed when first needed.
@@ -139,6 +153,8 @@ class FuzzyPartField : public AlphaFieldSource {
   double sizeReference_ = 1.0;              // v_ref, the core's midpoint
   PlacedSuperquadric sizeReferencePart_;    // the part at v_ref
   mutable std::atomic<std::uint64_t> exhaustions_{0};
+  mutable std::once_flag boxOnce_;  // boundingBox(): tightenBoundingBox on first use
+  mutable Vec3 boxLo_, boxHi_;
 };
 
 namespace reference {

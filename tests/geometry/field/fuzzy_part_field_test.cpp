@@ -610,5 +610,162 @@ TEST(FuzzyPartFieldTest, ExhaustedSearchesKeepUpperOneAtTheCore) {
       << "upper(1) " << v[0].upper_volume << " lower(1) " << v[0].lower_volume;
 }
 
+// Two parts an independent brute-force reference (global search over α-cut boxes) flagged, with
+// the points where the field answered on the unsafe side of upper(1).
+FuzzyPart thinBentRod() {  // all triangular: P(1) is one θ
+  FuzzyPart part;
+  part.eps1 = tri(0.095, 0.1, 0.10500000000000001);
+  part.eps2 = tri(0.95, 1, 1.05);
+  part.a1 = tri(0.11399999999999999, 0.12, 0.126);
+  part.a2 = tri(0.95, 1, 1.05);
+  part.a3 = tri(6.65, 7, 7.35);
+  part.kx = tri(0.15000000000000002, 0.2, 0.25);
+  part.ky = tri(0.05, 0.1, 0.15000000000000002);
+  part.kv = tri(1.52, 1.6, 1.6800000000000002);
+  part.t = tri(0.45, 0.5, 0.55);
+  part.tx = tri(0.27999999999999997, 0.3, 0.32);
+  part.ty = tri(-0.22, -0.2, -0.18000000000000002);
+  part.tz = tri(0.08, 0.1, 0.12000000000000001);
+  part.axis = {0, 1, 1};
+  part.deg = tri(28.5, 30, 31.5);
+  part.scale = tri(0.95, 1, 1.05);
+  return part;
+}
+
+FuzzyPart mixedMembershipPart() {  // trapezoids and point lists: P(1) is a box
+  FuzzyPart part;
+  part.eps1 = FuzzyNumber::crisp(0.8909661874018617);
+  part.eps2 = tri(2.0378137158018914, 2.21037716014386, 2.382940604485829);
+  part.a1 = FuzzyNumber::crisp(0.558004844827056);
+  part.a2 = FuzzyNumber::crisp(1.0946576860061445);
+  part.a3 = tri(2.628587500925802, 2.8511780691394972, 3.0737686373531923);
+  part.kx = FuzzyNumber::trapezoidal(-0.639414694706711, -0.6019146947067109, -0.5644146947067109,
+                                     -0.5394146947067109);
+  part.ky = FuzzyNumber::fromPoints({{0.5021189133992847, 0}, {0.5271189133992847, 0.6},
+                                     {0.5521189133992848, 1}, {0.5687855800659515, 0.5},
+                                     {0.6021189133992848, 0}});
+  part.kv = FuzzyNumber::fromPoints({{0.4436919409514721, 0}, {0.46247800784356546, 0.6},
+                                     {0.48126407473565885, 1}, {0.4937881193303878, 0.5},
+                                     {0.5188362085198457, 0}});
+  part.t = FuzzyNumber::crisp(2.4235007291755606);
+  part.tx = FuzzyNumber::crisp(0.13943829571855448);
+  part.ty = FuzzyNumber::trapezoidal(-0.7644377505641476, -0.7229195069996466, -0.6814012634351454,
+                                     -0.6537224343921447);
+  part.tz = FuzzyNumber::crisp(-0.6150730100633353);
+  part.axis = {-0.011521468038548173, -0.4435812229744192, 1.1661277761902227};
+  part.deg = FuzzyNumber::crisp(77.02302325401439);
+  part.scale = FuzzyNumber::trapezoidal(1.2247749592102648, 1.302561038428238, 1.3803471176462112,
+                                        1.4322045037915265);
+  return part;
+}
+
+// u = 1 claims p ∈ upper(1). On an all-triangular part P(1) is one θ, so where F > 1 at the core
+// the point is not in upper(1), whatever the searches' budgets (it answered 1 with F = 304 here).
+TEST(FuzzyPartFieldTest, UpperOneOnlyWhereTheCorePutsThePointInside) {
+  const FuzzyPart part = thinBentRod();
+  const FuzzyPartField field(part);
+  const Vec3 p{0.9402043674143239, -0.1187008650745276, 0.3760387797516726};
+  const double fCore = part.coreRepresentative().insideOutside(p);
+  ASSERT_GT(fCore, 100.0);  // the reference's F at P(1)
+  EXPECT_LT(field.levelsAt(p).upper, 1.0f);
+  // And over random points of the box, with the search starved so that many run out of budget:
+  // an exhausted answer may be loose, never 1 outside S(core).
+  FuzzyPartFieldOptions starvedOptions;
+  starvedOptions.evaluationBudget = 16;
+  const FuzzyPartField starved(part, starvedOptions);
+  Vec3 lo, hi;
+  field.boundingBox(&lo, &hi);
+  std::mt19937_64 rng(5);
+  int outsideCore = 0;
+  for (int i = 0; i < 400; ++i) {
+    const Vec3 q = randomPoint(rng, lo, hi);
+    if (part.coreRepresentative().insideOutside(q) <= 1.0 + 1e-9) continue;
+    ++outsideCore;
+    EXPECT_LT(field.levelsAt(q).upper, 1.0f) << q.x << " " << q.y << " " << q.z;
+    EXPECT_LT(starved.levelsAt(q).upper, 1.0f) << q.x << " " << q.y << " " << q.z;
+  }
+  EXPECT_GT(outsideCore, 100);
+  EXPECT_GT(starved.budgetExhaustions(), 0u);  // the starved case is the one this is about
+}
+
+// upper(1) is an outer bound: a point that some θ of P(1) puts inside has u = 1, not a level
+// within τ below it (it answered 0.9998 here, where a θ of P(1) gives F = 0.858).
+TEST(FuzzyPartFieldTest, PointsThatTheCorePutsInsideHaveUpperOne) {
+  const FuzzyPart part = mixedMembershipPart();
+  const FuzzyPartField field(part);
+  PlacedSuperquadric theta = part.coreRepresentative();
+  theta.params.eps1 = 0.8909661874018617;
+  theta.params.eps2 = 2.21037716014386;
+  theta.params.a3 = 2.8511780691394972;
+  theta.params.kx = -0.6019146947067109;
+  theta.params.ky = 0.5521189133992848;
+  theta.params.kv = 0.48126407473565885;
+  theta.placement.translate.y = -0.6814012634351454;
+  theta.placement.scale = 1.3803471176462112;
+  ASSERT_TRUE(contains(part.boxAt(1.0), theta));
+  const Vec3 p{0.8961905740017211, -0.11067796850933344, -0.6696945766274232};
+  ASSERT_LE(theta.insideOutside(p), 1.0);
+  EXPECT_EQ(field.levelsAt(p).upper, 1.0f);
+  // And every point of the bounding box that a sampled θ of P(1) puts inside.
+  Vec3 lo, hi;
+  field.boundingBox(&lo, &hi);
+  std::mt19937_64 rng(9);
+  const PartBox core = part.boxAt(1.0);
+  int checked = 0;
+  for (int i = 0; i < 4000 && checked < 60; ++i) {
+    const Vec3 q = randomPoint(rng, lo, hi);
+    bool inside = false;
+    for (int s = 0; s < 16 && !inside; ++s) inside = sampleTheta(rng, core, s < 8).insideOutside(q) <= 1.0;
+    if (!inside) continue;
+    ++checked;
+    EXPECT_EQ(field.levelsAt(q).upper, 1.0f) << q.x << " " << q.y << " " << q.z;
+  }
+  EXPECT_GE(checked, 30);  // 40 with this seed
+}
+
+// The bounding box of a thin bent rod was twice upper(0)'s extent (the bend's bound and the
+// rotation pad), so a resolution bought half the voxels asked for. The box holds upper(0) (no
+// sampled member reaches beyond it) and is within 1.25 times upper(0)'s extent, as the grid sees
+// it, on its longest side. (Parts with a large twist or many fuzzy values stay looser: the mixed
+// part above is at 1.7, the bench part at 1.45; docs/design/fuzzy-part-field.md.)
+TEST(FuzzyPartFieldTest, BoundingBoxOfAThinBentRodIsNearUpperZero) {
+  {
+    const FuzzyPart part = thinBentRod();
+    const FuzzyPartField field(part);
+    Vec3 lo, hi;
+    field.boundingBox(&lo, &hi);
+    const double longest = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+    // Sound: no point of a sampled member of P(0) (corners and inner θ) lies beyond the box.
+    std::mt19937_64 rng(3);
+    const PartBox support = part.boxAt(0.0);
+    std::vector<PlacedSuperquadric> members;
+    for (int s = 0; s < 48; ++s) members.push_back(sampleTheta(rng, support, s < 32));
+    members.push_back(part.coreRepresentative());
+    const double coarse = longest / 32;
+    for (double x = lo.x - 2 * coarse; x <= hi.x + 2 * coarse; x += coarse)
+      for (double y = lo.y - 2 * coarse; y <= hi.y + 2 * coarse; y += coarse)
+        for (double z = lo.z - 2 * coarse; z <= hi.z + 2 * coarse; z += coarse) {
+          if (x >= lo.x && x <= hi.x && y >= lo.y && y <= hi.y && z >= lo.z && z <= hi.z) continue;
+          for (const PlacedSuperquadric& m : members)
+            ASSERT_GT(m.insideOutside({x, y, z}), 1.0) << x << " " << y << " " << z;
+        }
+    // Near: upper(0)'s extent as the grid at 24 voxels across sees it (voxels with u > 0).
+    const double h = longest / 24;
+    const EnvelopeGrid grid = EnvelopeGrid::build(field, h);
+    Vec3 seenLo{INFINITY, INFINITY, INFINITY}, seenHi{-INFINITY, -INFINITY, -INFINITY};
+    for (int i = int(std::floor(lo.x / h)) - 1; i <= int(std::ceil(hi.x / h)); ++i)
+      for (int j = int(std::floor(lo.y / h)) - 1; j <= int(std::ceil(hi.y / h)); ++j)
+        for (int l = int(std::floor(lo.z / h)) - 1; l <= int(std::ceil(hi.z / h)); ++l) {
+          const Vec3 q{(i + 0.5) * h, (j + 0.5) * h, (l + 0.5) * h};
+          if (!(grid.levelsAt(q).upper > 0.0f)) continue;
+          seenLo = {std::min(seenLo.x, q.x - 0.5 * h), std::min(seenLo.y, q.y - 0.5 * h), std::min(seenLo.z, q.z - 0.5 * h)};
+          seenHi = {std::max(seenHi.x, q.x + 0.5 * h), std::max(seenHi.y, q.y + 0.5 * h), std::max(seenHi.z, q.z + 0.5 * h)};
+        }
+    const double seen = std::max({seenHi.x - seenLo.x, seenHi.y - seenLo.y, seenHi.z - seenLo.z});
+    ASSERT_GT(seen, 0.0);
+    EXPECT_LE(longest, 1.25 * seen) << "box " << longest << " members " << seen;
+  }
+}
+
 }  // namespace
 }  // namespace fsdb
