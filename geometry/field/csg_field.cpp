@@ -1,6 +1,7 @@
 #include "geometry/field/csg_field.h"
 
 #include <algorithm>
+#include <mutex>
 
 #include "geometry/core/error.h"
 
@@ -32,9 +33,16 @@ CsgField::CsgField(CsgOp op, std::vector<std::shared_ptr<const AlphaFieldSource>
     throw Error(errc::kInvalidDocument, "a Boolean node needs at least two children", "children");
   for (const auto& c : children_)
     if (!c) throw Error(errc::kInvalidDocument, "a Boolean node has an empty child", "children");
-  childLo_.resize(children_.size());
-  childHi_.resize(children_.size());
-  for (size_t i = 0; i < children_.size(); ++i) children_[i]->boundingBox(&childLo_[i], &childHi_[i]);
+}
+
+// On first use, not in the constructor: a fuzzy part's box is a subdivision (fuzzy_part_field.h),
+// and parsing a shape to store it or search it never needs the boxes.
+void CsgField::ensureChildBoxes() const {
+  std::call_once(boxesOnce_, [this] {
+    childLo_.resize(children_.size());
+    childHi_.resize(children_.size());
+    for (size_t i = 0; i < children_.size(); ++i) children_[i]->boundingBox(&childLo_[i], &childHi_[i]);
+  });
 }
 
 namespace {
@@ -64,6 +72,7 @@ AlphaLevelBounds boundsCombine(CsgOp op, const AlphaLevelBounds& a, const AlphaL
 void CsgField::sampleBlock(const BlockLattice& b, AlphaLevels* out) const {
   constexpr int n = BlockLattice::kSize;
   const Vec3 lo = b.lo(), hi = b.hi();
+  ensureChildBoxes();
   // A child's value over the block when it is one value there (`*uniform` set), else false.
   const auto constantOver = [&](size_t i, AlphaLevels* value) {
     if (!boxesMeet(lo, hi, childLo_[i], childHi_[i])) {
@@ -102,6 +111,7 @@ void CsgField::sampleBlock(const BlockLattice& b, AlphaLevels* out) const {
 
 AlphaLevels CsgField::levelsAt(const Vec3& p) const {
   // A child whose bounding box misses p is background there (boundingBox holds upper(0)).
+  ensureChildBoxes();
   const auto childAt = [&](size_t i) {
     return boxesMeet(p, p, childLo_[i], childHi_[i]) ? children_[i]->levelsAt(p) : AlphaLevels{};
   };

@@ -16,6 +16,7 @@
 // - boundingBox: union → hull of the children's; intersection → their overlap (an empty
 //   overlap collapses to a point: nothing is inside); difference → the first child's.
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "geometry/field/alpha_field.h"
@@ -46,7 +47,9 @@ class CsgField : public AlphaFieldSource {
  private:
   CsgOp op_;
   std::vector<std::shared_ptr<const AlphaFieldSource>> children_;
-  std::vector<Vec3> childLo_, childHi_;  // the children's bounding boxes
+  void ensureChildBoxes() const;  // fills childLo_, childHi_ once
+  mutable std::once_flag boxesOnce_;
+  mutable std::vector<Vec3> childLo_, childHi_;  // the children's bounding boxes
 };
 
 // Exact combination of bounds for each operation (interval extension of alpha_field.h's

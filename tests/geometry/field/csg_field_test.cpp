@@ -106,7 +106,7 @@ TEST(CsgField, SampleBlockMatchesLevelsAtVoxelByVoxel) {
   auto a = ball({0, 0, 0}, 0.5, 0.8, 1.0), b = ball({0.9, 0, 0}, 0.3, 0.6, 0.7);
   auto c = ball({3, 3, 3}, 0.2, 0.3, 0.4);  // far away: pruned by its bounding box
   const CsgField u(CsgOp::kUnion, {a, b, c}), n(CsgOp::kIntersection, {a, b, c});
-  const CsgField m(CsgOp::kDifference, {a, b, c}), nested(CsgOp::kDifference, {std::make_shared<CsgField>(u), b});
+  const CsgField m(CsgOp::kDifference, {a, b, c}), nested(CsgOp::kDifference, {std::make_shared<CsgField>(CsgOp::kUnion, std::vector<std::shared_ptr<const AlphaFieldSource>>{a, b, c}), b});
   const double h = 0.05;
   for (const Vec3 first : {Vec3{-1.1, -0.2, -0.2}, Vec3{0.5, -0.1, -0.1}, Vec3{-0.2, -0.2, -0.2},
                            Vec3{0.55, 0.3, -0.1}, Vec3{2.8, 2.8, 2.8}, Vec3{5, 5, 5}})
