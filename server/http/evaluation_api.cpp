@@ -124,7 +124,7 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
           result["cached"] = true;
           return ApiResponse{200, result};
         }
-        nlohmann::json result = evaluateParsedShape(request, shape.parsed, limits).result;
+        nlohmann::json result = evaluateParsedShape(request, shape.parsed, limits, shape.fingerprint).result;
         result["shape_id"] = shape.object.id;
         result["shape_version"] = shape.object.version;
         store.storeEvaluation(shape.object.id, key, {result.dump(), ""});
@@ -142,14 +142,19 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
     server.addRoute("GET", "/" + kind + "s/{id}/membership", [limits, &store, kind](const ApiRequest& req) {
       const Vec3 p{numberParam(req, "x", std::nullopt), numberParam(req, "y", std::nullopt),
                    numberParam(req, "z", std::nullopt)};
-      const AlphaLevels levels = loadShape(store, shapeId(req), limits.maxNodes, kind).parsed.field->levelsAt(p);
+      const StoredShape shape = loadShape(store, shapeId(req), limits.maxNodes, kind);
+      const AlphaLevels levels = shape.parsed.field->levelsAt(p);
+      // The field is fresh per request, so its count is this point's searches alone.
+      const std::uint64_t exhausted = shape.parsed.field->budgetExhaustions();
       const bool everInLower = levels.lower <= 1.0f;
       return ApiResponse{200,
                          {{"point", {p.x, p.y, p.z}},
                           {"upper", levels.upper},
                           {"lower", everInLower ? 1.0 : 0.0},
                           {"lower_from", everInLower ? nlohmann::json(levels.lower) : nlohmann::json(nullptr)},
-                          {"necessity", everInLower ? 1.0 - levels.lower : 0.0}}};
+                          {"necessity", everInLower ? 1.0 - levels.lower : 0.0},
+                          {"exhausted_searches", exhausted},
+                          {"exact", exhausted == 0}}};
     });
   }
 
@@ -177,7 +182,7 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
                                                       {"surface", "smooth"}}
                                            .dump());
       if (auto hit = store.cachedEvaluation(key)) return bytesResponse(hit->vdb, contentType, filename, true);
-      const Evaluation e = evaluateParsedShape({{"resolution", resolution}, {"alphas", {alpha}}}, shape.parsed, limits);
+      const Evaluation e = evaluateParsedShape({{"resolution", resolution}, {"alphas", {alpha}}}, shape.parsed, limits, shape.fingerprint);
       std::string bytes;
       size_t triangles = 0;
       if (glb) {
@@ -210,7 +215,7 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
       const std::string key = cacheKey("thumbnail", shape, nlohmann::json{{"alpha", alpha}, {"size", size}}.dump());
       if (auto hit = store.cachedEvaluation(key)) return bytesResponse(hit->vdb, "image/png", filename, true, true);
       const Evaluation e =
-          evaluateParsedShape({{"resolution", kThumbnailResolution}, {"alphas", {alpha}}}, shape.parsed, limits);
+          evaluateParsedShape({{"resolution", kThumbnailResolution}, {"alphas", {alpha}}}, shape.parsed, limits, shape.fingerprint);
       std::string bytes = toPng(renderThumbnail(extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kLower),
                                                 extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kUpper),
                                                 static_cast<int>(size)));
@@ -226,7 +231,7 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
     const std::string key = cacheKey("vdb", shape, std::to_string(resolution));
     if (auto hit = store.cachedEvaluation(key))
       return bytesResponse(hit->vdb, "application/octet-stream", filename, true);
-    const Evaluation e = evaluateParsedShape({{"resolution", resolution}, {"alphas", {1.0}}}, shape.parsed, limits);
+    const Evaluation e = evaluateParsedShape({{"resolution", resolution}, {"alphas", {1.0}}}, shape.parsed, limits, shape.fingerprint);
     std::string bytes = vdbBytes(*e.grid);
     store.storeEvaluation(shape.object.id, key, {"{}", bytes});
     return bytesResponse(std::move(bytes), "application/octet-stream", filename, false);

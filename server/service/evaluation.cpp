@@ -4,6 +4,9 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <future>
+#include <map>
+#include <mutex>
 
 #include "geometry/field/boundary_method.h"
 #include "geometry/voxel/envelope_grid.h"
@@ -76,10 +79,62 @@ EnvelopeGrid buildGrid(const AlphaFieldSource& source, double voxelSize, int res
   }
 }
 
+// One grid build and what the searches in it counted.
+struct BuiltGrid {
+  std::shared_ptr<const EnvelopeGrid> grid;
+  std::shared_ptr<const AlphaFieldSource> source;  // the field the grid sampled
+  std::uint64_t exhaustedSearches = 0;
+};
+
+// Builds in flight, by key (the shape's content and the resolution): a request that asks for a
+// build already running waits for it and shares its grid (or its error) instead of running the
+// same work again. The entry goes when the build ends, so nothing is kept beyond the requests
+// that waited (the caches above keep results).
+class GridFlights {
+ public:
+  BuiltGrid buildOnce(const std::string& key, const std::function<BuiltGrid()>& build) {
+    std::shared_future<BuiltGrid> running;
+    std::promise<BuiltGrid> mine;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      auto it = flights_.find(key);
+      if (it != flights_.end()) {
+        running = it->second;
+      } else {
+        flights_.emplace(key, mine.get_future().share());
+      }
+    }
+    if (running.valid()) return running.get();  // rethrows the leader's error
+    try {
+      BuiltGrid built = build();
+      mine.set_value(built);
+      finish(key);
+      return built;
+    } catch (...) {
+      mine.set_exception(std::current_exception());
+      finish(key);
+      throw;
+    }
+  }
+
+ private:
+  void finish(const std::string& key) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    flights_.erase(key);
+  }
+  std::mutex mutex_;
+  std::map<std::string, std::shared_future<BuiltGrid>> flights_;
+};
+
+GridFlights& gridFlights() {
+  static GridFlights flights;
+  return flights;
+}
+
 // The one evaluation path: `parse` yields the shape (parsed from the request, or already parsed
 // by the caller); `withShape` says whether the request carries "shape" itself.
 Evaluation evaluate(const nlohmann::json& request, const EvaluationLimits& limits, bool withShape,
-                    const std::function<ParsedShape()>& parse) {
+                    const std::function<ParsedShape()>& parse, const std::string& flightKey = "") {
   requireObject(request, "");
   for (auto it = request.begin(); it != request.end(); ++it)
     if ((!withShape || it.key() != "shape") && it.key() != "resolution" && it.key() != "alphas" &&
@@ -119,9 +174,21 @@ Evaluation evaluate(const nlohmann::json& request, const EvaluationLimits& limit
                     " gives voxels of " + formatNumber(voxelSize) + ", outside [" + formatNumber(kMinVoxelSize) +
                     ", " + formatNumber(kMaxVoxelSize) + "]",
                 "shape");
-  const std::uint64_t exhaustedBefore = shape.field->budgetExhaustions();
-  auto grid = std::make_shared<const EnvelopeGrid>(buildGrid(*shape.field, voxelSize, resolution, limits, started));
-  const std::uint64_t exhaustedSearches = shape.field->budgetExhaustions() - exhaustedBefore;
+  const auto buildEnvelope = [&] {
+    const std::uint64_t exhaustedBefore = shape.field->budgetExhaustions();
+    BuiltGrid built;
+    built.grid = std::make_shared<const EnvelopeGrid>(buildGrid(*shape.field, voxelSize, resolution, limits, started));
+    built.exhaustedSearches = shape.field->budgetExhaustions() - exhaustedBefore;
+    built.source = shape.field;
+    return built;
+  };
+  // The same shape at the same voxel size asked for at the same moment (a thumbnail, a mesh and
+  // the chart of a part just made) is built once.
+  const BuiltGrid built = flightKey.empty()
+                              ? buildEnvelope()
+                              : gridFlights().buildOnce(flightKey + "\n" + std::to_string(resolution), buildEnvelope);
+  std::shared_ptr<const EnvelopeGrid> grid = built.grid;
+  const std::uint64_t exhaustedSearches = built.exhaustedSearches;
   std::vector<LevelVolume> volumes = grid->volumes(alphas);
   if (boundary) {
     // Zhang, Pham & Chen, eq. 4: per level, the crisp lower and upper boundary solids, on the same
@@ -157,7 +224,7 @@ Evaluation evaluate(const nlohmann::json& request, const EvaluationLimits& limit
             {"tiles", stats.activeTiles},
             {"tile_voxels", stats.tileVoxels},
             {"memory_bytes", stats.memoryBytes}}}};
-  return {std::move(result), std::move(grid), shape.field};
+  return {std::move(result), std::move(grid), built.source};
 }
 
 }  // namespace
@@ -175,8 +242,8 @@ nlohmann::json evaluateRequest(const nlohmann::json& request, const EvaluationLi
 }
 
 Evaluation evaluateParsedShape(const nlohmann::json& request, const ParsedShape& shape,
-                               const EvaluationLimits& limits) {
-  return evaluate(request, limits, false, [&] { return shape; });
+                               const EvaluationLimits& limits, const std::string& flightKey) {
+  return evaluate(request, limits, false, [&] { return shape; }, flightKey);
 }
 
 }  // namespace fsdb

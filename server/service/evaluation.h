@@ -29,6 +29,7 @@
 //   Nothing of a stopped evaluation is kept or cached.
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <nlohmann/json.hpp>
 
 #include "query/document/shape_json.h"
@@ -55,9 +56,12 @@ Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& 
                          const ReferenceResolver& resolver = {});
 
 // The same for a shape the caller has parsed already (a stored shape): `request` holds only
-// resolution, alphas and method ("shape" is an unknown field there).
+// resolution, alphas and method ("shape" is an unknown field there). flightKey, when not empty,
+// names the shape's content (a hash of its documents): builds of one key at one resolution that
+// run at the same moment are one build, whose grid, field and exhausted_searches every caller
+// shares (an error of that build reaches every caller; its deadline is the first caller's).
 Evaluation evaluateParsedShape(const nlohmann::json& request, const ParsedShape& shape,
-                               const EvaluationLimits& limits);
+                               const EvaluationLimits& limits, const std::string& flightKey = "");
 
 // evaluateShape(...).result
 nlohmann::json evaluateRequest(const nlohmann::json& request, const EvaluationLimits& limits,

@@ -1,0 +1,84 @@
+#include "server/service/evaluation.h"
+
+#include <gtest/gtest.h>
+
+#include <thread>
+#include <vector>
+
+#include "geometry/core/error.h"
+#include "query/document/part_json.h"
+#include "query/document/shape_json.h"
+#include "tests/testing/fuzzy_bench_part.h"
+
+namespace fsdb {
+namespace {
+
+// The bench part with all fourteen values fuzzy: its grid takes long enough (about a second at
+// this resolution) that requests started together all arrive while the first one builds.
+ParsedShape slowPart() {
+  return parseShapeField(partToJson(testing::allValuesFuzzyPart()), "", 10000, {});
+}
+
+// Requests for the same shape (one content key) at the same resolution at the same moment (a
+// thumbnail, a mesh and the chart of a part just made) share one grid build: the grid, the field
+// it sampled and the exhausted-search count are the first request's.
+TEST(EvaluationTest, ConcurrentBuildsOfOneKeyRunOnce) {
+  const ParsedShape shape = slowPart();
+  const EvaluationLimits limits;
+  const nlohmann::json request = {{"resolution", 24}, {"alphas", {0.5}}};
+  constexpr int kRequests = 4;
+  std::vector<Evaluation> got(kRequests);
+  std::vector<std::thread> threads;
+  for (int i = 0; i < kRequests; ++i)
+    threads.emplace_back([&, i] { got[i] = evaluateParsedShape(request, shape, limits, "same-content"); });
+  for (std::thread& t : threads) t.join();
+  for (int i = 1; i < kRequests; ++i) {
+    EXPECT_EQ(got[i].grid.get(), got[0].grid.get()) << i;
+    EXPECT_EQ(got[i].result["alphas"], got[0].result["alphas"]);
+    EXPECT_EQ(got[i].result["exhausted_searches"], got[0].result["exhausted_searches"]);
+  }
+  // Once the build is over nothing is kept: the next request builds again.
+  const Evaluation later = evaluateParsedShape(request, shape, limits, "same-content");
+  EXPECT_NE(later.grid.get(), got[0].grid.get());
+  EXPECT_EQ(later.result["alphas"], got[0].result["alphas"]);
+}
+
+TEST(EvaluationTest, DifferentKeysOrResolutionsBuildApart) {
+  const ParsedShape shape = slowPart();
+  const EvaluationLimits limits;
+  Evaluation a, b, c;
+  std::thread ta([&] { a = evaluateParsedShape({{"resolution", 24}}, shape, limits, "content-a"); });
+  std::thread tb([&] { b = evaluateParsedShape({{"resolution", 24}}, shape, limits, "content-b"); });
+  std::thread tc([&] { c = evaluateParsedShape({{"resolution", 20}}, shape, limits, "content-a"); });
+  ta.join();
+  tb.join();
+  tc.join();
+  EXPECT_NE(a.grid.get(), b.grid.get());
+  EXPECT_NE(a.grid.get(), c.grid.get());
+  EXPECT_EQ(a.result["resolution"], 24);
+  EXPECT_EQ(c.result["resolution"], 20);
+}
+
+// A build that fails (here: past max_eval_ms) fails every request that waited for it, with the
+// same error, and leaves nothing behind.
+TEST(EvaluationTest, AnErrorOfTheSharedBuildReachesEveryRequest) {
+  const ParsedShape shape = slowPart();
+  EvaluationLimits limits;
+  limits.maxEvalMs = 1;
+  constexpr int kRequests = 3;
+  std::vector<std::string> errors(kRequests);
+  std::vector<std::thread> threads;
+  for (int i = 0; i < kRequests; ++i)
+    threads.emplace_back([&, i] {
+      try {
+        evaluateParsedShape({{"resolution", 64}}, shape, limits, "failing");
+      } catch (const Error& e) {
+        errors[i] = e.code();
+      }
+    });
+  for (std::thread& t : threads) t.join();
+  for (const std::string& e : errors) EXPECT_EQ(e, errc::kLimitExceeded);
+}
+
+}  // namespace
+}  // namespace fsdb
