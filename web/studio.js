@@ -150,15 +150,20 @@ function resize() {
 }
 window.addEventListener('resize', resize);
 
-async function loadMesh() {
-  const alpha = Number($('alpha').value);
-  const { kind, id } = current;
-  const response = await fetch(`/${kind}s/${id}/mesh?format=glb&alpha=${alpha}&resolution=64`);
+// The view at α: a coarse mesh first (24 voxels across, a fraction of the time), then the full
+// one (64), so that a slow part (many fuzzy values, a part just made from words) never leaves the
+// view blank; #view-status says what is on screen. A newer request (another α or object) makes
+// older answers stale: they are dropped, not shown.
+let meshRequest = 0;
+async function fetchScene(kind, id, alpha, resolution) {
+  const response = await fetch(`/${kind}s/${id}/mesh?format=glb&alpha=${alpha}&resolution=${resolution}`);
   if (!response.ok) throw new Error((await response.json()).error.message);
-  const gltf = await new GLTFLoader().parseAsync(await response.arrayBuffer(), '');
-  if (current.id !== id) return;  // another object was opened meanwhile
+  return (await new GLTFLoader().parseAsync(await response.arrayBuffer(), '')).scene;
+}
+
+function showModel(next) {
   if (model) scene.remove(model);
-  model = gltf.scene;
+  model = next;
   model.traverse((o) => {
     if (o.isMesh) {
       o.material = materials[o.name] || materials.lower;
@@ -179,6 +184,25 @@ async function loadMesh() {
     fitted = true;
   }
   render();
+}
+
+async function loadMesh() {
+  const alpha = Number($('alpha').value);
+  const { kind, id } = current;
+  const request = ++meshRequest;
+  const stale = () => request !== meshRequest || current.id !== id;
+  const started = performance.now();
+  $('view-status').textContent = `computing α = ${alpha.toFixed(2)}…`;
+  const coarse = await fetchScene(kind, id, alpha, 24);
+  if (stale()) return;
+  showModel(coarse);
+  $('canvas').dataset.coarse = `${kind}/${id}@${alpha}`;
+  $('view-status').textContent = `coarse preview at α = ${alpha.toFixed(2)}; refining…`;
+  const fine = await fetchScene(kind, id, alpha, 64);
+  if (stale()) return;
+  showModel(fine);
+  const seconds = ((performance.now() - started) / 1000).toFixed(1);
+  $('view-status').textContent = `α = ${alpha.toFixed(2)} (${seconds} s)`;
   $('canvas').dataset.shown = `${kind}/${id}@${alpha}`;  // for the page test: what the view shows
 }
 
@@ -203,7 +227,8 @@ $('canvas').addEventListener('click', async (event) => {
   try {
     const m = await api(`/${current.kind}s/${current.id}/membership?x=${p.x}&y=${p.y}&z=${p.z}`);
     $('membership').textContent = `${where} on ${hit.object.name}: possibly inside up to α = ${m.upper.toFixed(2)}, ` +
-      (m.lower_from !== null ? `necessarily inside from α = ${m.lower_from.toFixed(2)}` : 'never necessarily inside');
+      (m.lower_from !== null ? `necessarily inside from α = ${m.lower_from.toFixed(2)}` : 'never necessarily inside') +
+      (m.exact ? '' : ' (bounds only: a search ran out of its budget)');
   } catch (e) {
     $('membership').textContent = e.message;
   }

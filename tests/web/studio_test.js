@@ -106,6 +106,11 @@ async function main() {
     await page.click('#results > li');
     await page.waitForSelector('#view:not([hidden])');
     await shown('0.5');
+    // The coarse preview came first and the status line says what the view shows now.
+    const coarse = await page.$eval('#canvas', (c) => c.dataset.coarse);
+    if (coarse !== `${first}@0.5`) throw new Error(`no coarse preview before the full mesh: ${coarse}`);
+    const viewStatus = await page.$eval('#view-status', (p) => p.textContent);
+    if (!/^α = 0\.50 \(\d+\.\d s\)$/.test(viewStatus)) throw new Error(`view status: ${viewStatus}`);
     await page.waitForSelector('#chart path[stroke="#eb8232"]');
     await page.waitForTimeout(300);
     const atHalf = await page.locator('#canvas-box').screenshot({ path: path.join(out, 'studio-alpha-0.5.png') });
