@@ -132,6 +132,7 @@ void buildSuperBlock(const BlockSampler& s, const Coord& origin, const CoordBBox
   const CoordBBox super = CoordBBox::createCube(origin, kSuperDim);
   const bool uniform = s.uniformOver(super, &v);
   if (uniform && isBackground(v)) return;
+  std::vector<Coord> leaves;
   for (int i = 0; i < kSuperDim; i += kLeafDim)
     for (int j = 0; j < kSuperDim; j += kLeafDim)
       for (int k = 0; k < kSuperDim; k += kLeafDim) {
@@ -140,8 +141,21 @@ void buildSuperBlock(const BlockSampler& s, const Coord& origin, const CoordBBox
         if (uniform)
           out->push_back({o, v, nullptr, nullptr});
         else
-          buildLeafBlock(s, o, guard, out);
+          leaves.push_back(o);
       }
+  if (leaves.empty()) return;
+  // The 8³ blocks of an undecided super-block are tasks of their own: the cost of a block varies
+  // by orders of magnitude (a fuzzy part's hardest voxels cluster where the band is thin), so
+  // super-blocks alone left cores idle behind the one that held them (the part with all fourteen
+  // values fuzzy at N = 32 ran 1.57x faster on 2 cores than on 1).
+  std::vector<std::vector<Block>> perLeaf(leaves.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size(), 1),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i != r.end(); ++i)
+                        buildLeafBlock(s, leaves[i], guard, &perLeaf[i]);
+                    });
+  for (auto& list : perLeaf)
+    for (Block& b : list) out->push_back(std::move(b));
 }
 
 openvdb::math::Transform::Ptr cellCentredTransform(double h) {
