@@ -218,6 +218,7 @@ Evaluation evaluate(const nlohmann::json& request, const EvaluationLimits& limit
           {"parts", shape.partCount},
           {"nodes", shape.nodeCount},
           {"exhausted_searches", exhaustedSearches},
+          {"exact", exhaustedSearches == 0},
           {"bounding_box", {{"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}}},
           {"grid",
            {{"leaf_nodes", stats.leafCount},

@@ -11,7 +11,7 @@
 //               geometry/field/boundary_method.h: one crisp grid per level and bound); only with
 //               zadeh node operators, else invalid_parameter at the first smooth operator's path.
 // Response: {"alphas":[{"alpha","lower_volume","upper_volume"}], "voxel_size", "active_voxels",
-//            "millis", "parts", "nodes", "exhausted_searches", "grid":{"leaf_nodes","tiles","memory_bytes"}}
+//            "millis", "parts", "nodes", "exhausted_searches", "exact", "grid":{"leaf_nodes","tiles","memory_bytes"}}
 //   exhausted_searches: how many per-voxel searches of the fuzzy parts ran out of their budget
 //               during this evaluation's grid build (AlphaFieldSource::budgetExhaustions, the
 //               difference before and after; the parsed fields are fresh per request). Each one
@@ -20,6 +20,7 @@
 //               bounds, not exact; 0 means every level is exact to the tolerance. Counted per
 //               search (a voxel has up to two), a part that occurs twice in the tree twice.
 //               A cached stored-shape answer keeps the count of the evaluation that made it.
+//   exact:      exhausted_searches == 0.
 // Limits (all limit_exceeded, HTTP 413, path "resolution", the message naming the limit):
 //   max_resolution: the resolution asked for, before anything is built;
 //   max_grid_mb:    the grid's 8³ leaves (both float grids, EnvelopeGrid::leafPairBytes each),
