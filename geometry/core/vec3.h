@@ -2,6 +2,7 @@
 // Vec3: a point or direction in 3-space, in double precision. Deliberately minimal: the
 // geometry layer needs addition, scaling, dot and cross products and a length that neither
 // overflows nor underflows; anything more belongs to a real linear-algebra library.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -37,6 +38,14 @@ inline double norm(const Vec3& a) {
   if (std::isinf(a.x) || std::isinf(a.y) || std::isinf(a.z))
     return std::numeric_limits<double>::infinity();
   return std::hypot(a.x, a.y, a.z);
+}
+
+// Per coordinate: the corners of the hull (min) and of the overlap (max) of boxes.
+inline Vec3 componentMin(const Vec3& a, const Vec3& b) {
+  return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
+}
+inline Vec3 componentMax(const Vec3& a, const Vec3& b) {
+  return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
 }
 
 inline bool isFinite(const Vec3& a) {

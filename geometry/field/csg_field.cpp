@@ -141,18 +141,14 @@ void csgBoundingBox(CsgOp op, const std::vector<std::shared_ptr<const AlphaField
     Vec3 clo, chi;
     children[i]->boundingBox(&clo, &chi);
     if (op == CsgOp::kUnion) {
-      *lo = {std::min(lo->x, clo.x), std::min(lo->y, clo.y), std::min(lo->z, clo.z)};
-      *hi = {std::max(hi->x, chi.x), std::max(hi->y, chi.y), std::max(hi->z, chi.z)};
+      *lo = componentMin(*lo, clo);
+      *hi = componentMax(*hi, chi);
     } else {
-      *lo = {std::max(lo->x, clo.x), std::max(lo->y, clo.y), std::max(lo->z, clo.z)};
-      *hi = {std::min(hi->x, chi.x), std::min(hi->y, chi.y), std::min(hi->z, chi.z)};
+      *lo = componentMax(*lo, clo);
+      *hi = componentMin(*hi, chi);
     }
   }
-  if (op == CsgOp::kIntersection) {  // an empty overlap collapses to a point
-    hi->x = std::max(hi->x, lo->x);
-    hi->y = std::max(hi->y, lo->y);
-    hi->z = std::max(hi->z, lo->z);
-  }
+  if (op == CsgOp::kIntersection) *hi = componentMax(*hi, *lo);  // an empty overlap: a point
 }
 
 }  // namespace fsdb

@@ -71,17 +71,7 @@ double FuzzyPartField::valueAt(const PlacedSuperquadric& theta, const Vec3& p) c
 }
 
 bool FuzzyPartField::decide(const Vec3& p, const PartBox& box, Question q) const {
-  const Decision d = decideOrUnknown(p, box, q);
-  // Conservative on exhaustion: upper grows (possibly true), lower shrinks (necessarily false).
-  return d == Decision::kUnknown ? q == Question::kPossibly : d == Decision::kYes;
-}
-
-FuzzyPartField::Decision FuzzyPartField::decideOrUnknown(const Vec3& p, const PartBox& box,
-                                                         Question q) const {
   const bool possibly = q == Question::kPossibly;
-  // The answer "possibly" (∃θ inside) or "not necessarily" (∃θ outside), and its negation.
-  const Decision found = possibly ? Decision::kYes : Decision::kNo;
-  const Decision none = possibly ? Decision::kNo : Decision::kYes;
   const Interval px{p.x, p.x}, py{p.y, p.y}, pz{p.z, p.z};
   struct Item {
     PartBox box;
@@ -95,7 +85,7 @@ FuzzyPartField::Decision FuzzyPartField::decideOrUnknown(const Vec3& p, const Pa
   while (!stack.empty()) {
     if (evaluations >= options_.evaluationBudget) {
       ++exhaustions_;
-      return Decision::kUnknown;
+      return possibly;  // conservative: upper grows, lower shrinks
     }
     const Item item = std::move(stack.back());
     stack.pop_back();
@@ -105,7 +95,7 @@ FuzzyPartField::Decision FuzzyPartField::decideOrUnknown(const Vec3& p, const Pa
     // The enclosure excludes the box from the question (no witness can lie in it).
     if (excludes(f, possibly)) continue;
     // A crisp witness: inside (possibly) or outside (not necessarily).
-    if (settles(item.centre)) return found;
+    if (settles(item.centre)) return possibly;
     // Split the value that is widest relative to its support: a common yardstick for sizes, angles
     // and exponents.
     int widest = -1;
@@ -127,14 +117,15 @@ FuzzyPartField::Decision FuzzyPartField::decideOrUnknown(const Vec3& p, const Pa
     slot(b.box, widest) = {m, v.hi};
     a.centre = centreValue(a.box, p);
     b.centre = centreValue(b.box, p);
-    if (settles(a.centre) || settles(b.centre)) return found;
+    if (settles(a.centre) || settles(b.centre)) return possibly;
     // Depth first, most promising half on top: the smaller F for a witness inside, the larger for a
     // witness outside.
     const bool aFirst = possibly ? a.centre <= b.centre : a.centre >= b.centre;
     stack.push_back(aFirst ? std::move(b) : std::move(a));
     stack.push_back(aFirst ? std::move(a) : std::move(b));
   }
-  return none;  // every sub-box excluded: no θ inside (possibly), none outside (necessarily)
+  return !possibly;  // every sub-box excluded: no θ inside (possibly), none
+                     // outside (necessarily)
 }
 
 PartBox FuzzyPartField::levelBox(double alpha) const {
@@ -175,9 +166,10 @@ AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
     // Conservative: an upper bound of u (upper grows); l is not sought below u = 1.
     out.upper = floatUp(std::min(1.0, std::max(up.incumbent, up.pruned)));
     // u = 1 says p ∈ upper(1). The open bound reaches 1 wherever a box around the core stayed
-    // open, so ask P(1) itself (one θ for triangular numbers): where no θ of it puts p inside,
-    // u_true < 1 and the largest float below 1 is still an upper bound of it.
-    if (out.upper == 1.0f && decideOrUnknown(p, core_, Question::kPossibly) == Decision::kNo)
+    // open, so ask P(1) itself (one θ for triangular numbers): where no θ of it puts p inside
+    // (proven: decide answers true when its own budget runs out), u_true < 1 and the largest
+    // float below 1 is still an upper bound of it.
+    if (out.upper == 1.0f && !decide(p, core_, Question::kPossibly))
       out.upper = std::nextafter(1.0f, 0.0f);
     if (out.upper < 1.0f) return out;
   } else {
@@ -186,10 +178,9 @@ AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
     float u = roundedUpper(up.incumbent, up.witness);
     // Within τ of 1 the search may stop at a witness below the core although one in P(1) exists
     // (its bound, 1, did not beat the incumbent by τ). upper(1) must hold every point of the
-    // true upper(1), so ask P(1) itself: a witness there makes u = 1.
-    if (u < 1.0f && u + tau >= 1.0 - kMargin &&
-        decideOrUnknown(p, core_, Question::kPossibly) == Decision::kYes)
-      u = 1.0f;
+    // true upper(1), so ask P(1) itself, as the l search below does for lower(1): a witness
+    // there, or a decision that ran out of budget (conservative), makes u = 1.
+    if (u < 1.0f && u + tau >= 1.0 - kMargin && decide(p, core_, Question::kPossibly)) u = 1.0f;
     out.upper = u;
     if (u < 1.0f) return out;  // l <= 1 needs p ∈ lower(1) ⊆ upper(1)
   }
@@ -361,7 +352,6 @@ void FuzzyPartField::looseBoundingBox(Vec3* lo, Vec3* hi) const {
   *hi = {pl.tx.hi + extent.x + pad, pl.ty.hi + extent.y + pad, pl.tz.hi + extent.z + pad};
 }
 
-
 // The loose box (deformation and placement bounds over the support box) can be much larger than
 // upper(0): a bend's bound takes the largest deflection at every height, and the rotation pad the
 // box's whole diagonal. Cells of the loose box that boundsOver proves outside upper(0) are cut
@@ -382,6 +372,10 @@ void FuzzyPartField::tightenBoundingBox() const {
     return a.x >= hullLo.x && a.y >= hullLo.y && a.z >= hullLo.z && b.x <= hullHi.x &&
            b.y <= hullHi.y && b.z <= hullHi.z;
   };
+  const auto cells = [](double w, double f) { return f > 0.0 ? w / f : 0.0; };  // finest cells across
+  const auto distance = [&](const std::pair<Vec3, Vec3>& c) {
+    return norm((c.first + c.second) * 0.5 - centre);
+  };
   // Depth first with an explicit stack; a cell is split across its widest side (relative to the
   // finest cell) until every side is at most the finest cell.
   std::vector<std::pair<Vec3, Vec3>> stack{{lo, hi}};
@@ -390,13 +384,12 @@ void FuzzyPartField::tightenBoundingBox() const {
     stack.pop_back();
     if (within(a, b)) continue;
     if (boundsOver(a, b).upperMax == 0.0f) continue;  // outside upper(0): nothing to hold
-    const auto cells = [](double w, double f) { return f > 0.0 ? w / f : 0.0; };
     const double rx = cells(b.x - a.x, finest.x), ry = cells(b.y - a.y, finest.y),
                  rz = cells(b.z - a.z, finest.z);
     const double widest = std::max({rx, ry, rz});
     if (!(widest > 1.0 + 1e-9)) {
-      hullLo = {std::min(hullLo.x, a.x), std::min(hullLo.y, a.y), std::min(hullLo.z, a.z)};
-      hullHi = {std::max(hullHi.x, b.x), std::max(hullHi.y, b.y), std::max(hullHi.z, b.z)};
+      hullLo = componentMin(hullLo, a);
+      hullHi = componentMax(hullHi, b);
       continue;
     }
     Vec3 midLo = b, midHi = a;  // the two halves: [a, midLo] and [midHi, b]
@@ -404,7 +397,6 @@ void FuzzyPartField::tightenBoundingBox() const {
     else if (widest == ry) midLo.y = midHi.y = 0.5 * (a.y + b.y);
     else midLo.z = midHi.z = 0.5 * (a.z + b.z);
     std::pair<Vec3, Vec3> first{a, midLo}, second{midHi, b};
-    const auto distance = [&](const std::pair<Vec3, Vec3>& c) { return norm((c.first + c.second) * 0.5 - centre); };
     if (distance(first) > distance(second)) std::swap(first, second);
     stack.push_back(second);  // popped after the nearer half
     stack.push_back(first);
@@ -412,8 +404,8 @@ void FuzzyPartField::tightenBoundingBox() const {
   // Every cell excluded would mean an empty upper(0), which a valid part never has (S(core) has
   // volume): keep the loose box rather than trust that.
   if (hullLo.x > hullHi.x) return;
-  boxLo_ = {std::max(lo.x, hullLo.x), std::max(lo.y, hullLo.y), std::max(lo.z, hullLo.z)};
-  boxHi_ = {std::min(hi.x, hullHi.x), std::min(hi.y, hullHi.y), std::min(hi.z, hullHi.z)};
+  boxLo_ = hullLo;  // cells of the loose box: the hull lies in it
+  boxHi_ = hullHi;
 }
 
 }  // namespace fsdb

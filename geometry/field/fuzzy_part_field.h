@@ -13,7 +13,7 @@
 //    them unless a point query ran out of budget. boundingBox() is a sound box around upper(0),
 //    cut down on first use to the cells boundsOver cannot exclude (a few ms).
 //  * u = 1 exactly where P(1) was shown to put p inside, or where that decision ran out of
-//    budget (counted): within τ of 1, or on an exhausted search, P(1) itself is asked.
+//    budget (counted, conservative): within τ of 1, or on an exhausted search, P(1) is asked.
 //  * possiblyInside / necessarilyInside decide one level by branch and bound (same budget).
 //  * Thread-safe: queries only read the part; the exhaustion counter is atomic.
 // How: a certified max-min branch and bound over the parameter box (fuzzy_part_search.cpp), with
@@ -72,13 +72,7 @@ class FuzzyPartField : public AlphaFieldSource {
 
  private:
   enum class Question { kPossibly, kNecessarily };
-  enum class Decision { kYes, kNo, kUnknown };  // kUnknown: the budget ran out (counted)
-  // decideOrUnknown with the conservative answer on exhaustion (possibly: true, necessarily:
-  // false).
   bool decide(const Vec3& p, const PartBox& box, Question q) const;
-  // Depth-first branch and bound of one question over `box`: kYes / kNo proven (by a crisp
-  // witness or by every sub-box excluded), kUnknown when the budget ran out.
-  Decision decideOrUnknown(const Vec3& p, const PartBox& box, Question q) const;
   // One max-min search (docs/design/fuzzy-part-field.md): incumbent = the best m(θ) of a witness (-1: none), witness
   // its θ; pruned = the largest bound of a box dropped without a witness (-1: none) or, when
   // exhausted, of the boxes still open.

@@ -147,7 +147,8 @@ void buildSuperBlock(const BlockSampler& s, const Coord& origin, const CoordBBox
   // The 8³ blocks of an undecided super-block are tasks of their own: the cost of a block varies
   // by orders of magnitude (a fuzzy part's hardest voxels cluster where the band is thin), so
   // super-blocks alone left cores idle behind the one that held them (the part with all fourteen
-  // values fuzzy at N = 32 ran 1.57x faster on 2 cores than on 1).
+  // values fuzzy at N = 40: 1 -> 2 cores 1.69x with super-block tasks, 1.94x with block tasks).
+  // Tasks of four blocks took that back to 1.70x (hard blocks sit next to one another).
   std::vector<std::vector<Block>> perLeaf(leaves.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size(), 1),
                     [&](const tbb::blocked_range<std::size_t>& r) {

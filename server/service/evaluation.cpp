@@ -182,14 +182,14 @@ Evaluation evaluate(const nlohmann::json& request, const EvaluationLimits& limit
     built.source = shape.field;
     return built;
   };
-  // The same shape at the same voxel size asked for at the same moment (a thumbnail, a mesh and
+  // The same shape at the same resolution asked for at the same moment (a thumbnail, a mesh and
   // the chart of a part just made) is built once.
   const BuiltGrid built = flightKey.empty()
                               ? buildEnvelope()
                               : gridFlights().buildOnce(flightKey + "\n" + std::to_string(resolution), buildEnvelope);
-  std::shared_ptr<const EnvelopeGrid> grid = built.grid;
+  const EnvelopeGrid& grid = *built.grid;
   const std::uint64_t exhaustedSearches = built.exhaustedSearches;
-  std::vector<LevelVolume> volumes = grid->volumes(alphas);
+  std::vector<LevelVolume> volumes = grid.volumes(alphas);
   if (boundary) {
     // Zhang, Pham & Chen, eq. 4: per level, the crisp lower and upper boundary solids, on the same
     // lattice.
@@ -208,12 +208,12 @@ Evaluation evaluate(const nlohmann::json& request, const EvaluationLimits& limit
   nlohmann::json levels = nlohmann::json::array();
   for (const LevelVolume& v : volumes)
     levels.push_back({{"alpha", v.alpha}, {"lower_volume", v.lower_volume}, {"upper_volume", v.upper_volume}});
-  const EnvelopeGridStats& stats = grid->stats();
+  const EnvelopeGridStats& stats = grid.stats();
   nlohmann::json result = {{"alphas", levels},
           {"voxel_size", voxelSize},
           {"resolution", resolution},
           {"method", boundary ? "boundary" : "envelope"},
-          {"active_voxels", grid->activeVoxelCount()},
+          {"active_voxels", grid.activeVoxelCount()},
           {"millis", millis},
           {"parts", shape.partCount},
           {"nodes", shape.nodeCount},
@@ -225,7 +225,7 @@ Evaluation evaluate(const nlohmann::json& request, const EvaluationLimits& limit
             {"tiles", stats.activeTiles},
             {"tile_voxels", stats.tileVoxels},
             {"memory_bytes", stats.memoryBytes}}}};
-  return {std::move(result), std::move(grid), built.source};
+  return {std::move(result), built.grid, built.source};
 }
 
 }  // namespace

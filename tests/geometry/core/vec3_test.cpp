@@ -52,6 +52,21 @@ TEST(Vec3, IsFinite) {
 }
 
 }  // namespace
+TEST(Vec3, ComponentMinAndMaxTakeEachCoordinateApart) {
+  const Vec3 a{1, -2, 3}, b{0, 5, 3};
+  const Vec3 lo = componentMin(a, b), hi = componentMax(a, b);
+  EXPECT_EQ(lo.x, 0);
+  EXPECT_EQ(lo.y, -2);
+  EXPECT_EQ(lo.z, 3);
+  EXPECT_EQ(hi.x, 1);
+  EXPECT_EQ(hi.y, 5);
+  EXPECT_EQ(hi.z, 3);
+  // The hull of a box with the empty box (+inf, -inf) is the box itself.
+  const Vec3 inf{INFINITY, INFINITY, INFINITY};
+  EXPECT_EQ(componentMin(inf, a).y, -2);
+  EXPECT_EQ(componentMax(-inf, b).y, 5);
+}
+
 TEST(Vec3, BoxesMeetWhenTheyShareAPointTouchingIncluded) {
   EXPECT_TRUE(boxesMeet({0, 0, 0}, {1, 1, 1}, {0.5, 0.5, 0.5}, {2, 2, 2}));
   EXPECT_TRUE(boxesMeet({0, 0, 0}, {1, 1, 1}, {1, 1, 1}, {2, 2, 2}));  // one corner
