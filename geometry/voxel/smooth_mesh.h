@@ -14,7 +14,7 @@
 //    reach, 1.5 voxels, are the exception).
 //  * A vertex v with unit normal n (the area-weighted mean of its triangles') moves to the
 //    sign change of membership(v + t·n) nearest t = 0 among t = ±h/4, ±h/2, …, ±3h/2 (h the
-//    voxel size), refined by 24 bisections (to h·2^-26); with no sign change in reach it stays.
+//    voxel size), refined by 8 bisections (to h·2^-10); with no sign change in reach it stays.
 //    Membership is the exact one: u(p) ≥ α and u(p) > 0 for upper(α), l(p) ≤ α for lower(α).
 //  * Vertices are moved in parallel (TBB); the result does not depend on the thread count.
 // Throws fsdb::Error(invalid_parameter, "alpha") unless 0 <= alpha <= 1.
