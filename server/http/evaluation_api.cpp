@@ -21,6 +21,7 @@
 #include "server/service/evaluation.h"
 #include "server/service/mesh_format.h"
 #include "server/service/png_format.h"
+#include "server/service/single_flight.h"
 #include "server/service/thumbnail.h"
 
 namespace fsdb {
@@ -85,6 +86,14 @@ int exportResolution(const ApiRequest& req, int maxResolution) {
                     " exceeds max_resolution=" + std::to_string(maxResolution),
                 "resolution");
   return static_cast<int>(r);
+}
+
+// Exports and thumbnails being made, by cache key: a request for one already being made (the
+// page and the warm-up asking for the same thumbnail, a double click on an export) waits for it
+// instead of extracting the same meshes again; the first request stores it in the cache.
+SingleFlight<std::string>& exportFlights() {
+  static SingleFlight<std::string> flights;
+  return flights;
 }
 
 ApiResponse bytesResponse(std::string bytes, const std::string& contentType, const std::string& filename, bool cached,
@@ -182,21 +191,25 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
                                                       {"surface", "smooth"}}
                                            .dump());
       if (auto hit = store.cachedEvaluation(key)) return bytesResponse(hit->vdb, contentType, filename, true);
-      const Evaluation e = evaluateParsedShape({{"resolution", resolution}, {"alphas", {alpha}}}, shape.parsed, limits, shape.fingerprint);
-      std::string bytes;
-      size_t triangles = 0;
-      if (glb) {
-        std::vector<NamedMesh> both = {{"lower", extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kLower)},
-                                       {"upper", extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kUpper)}};
-        for (const NamedMesh& m : both) triangles += m.second.triangles.size();
-        bytes = toGlb(both);
-      } else {
-        const TriangleMesh mesh = extractSmoothMesh(*e.grid, *e.source, alpha,
-                                                    bound == "lower" ? EnvelopeBound::kLower : EnvelopeBound::kUpper);
-        triangles = mesh.triangles.size();
-        bytes = format == "obj" ? toObj(mesh) : toBinaryStl(mesh);
-      }
-      store.storeEvaluation(shape.object.id, key, {nlohmann::json{{"triangles", triangles}}.dump(), bytes});
+      std::string bytes = exportFlights().run(key, [&] {
+        const Evaluation e = evaluateParsedShape({{"resolution", resolution}, {"alphas", {alpha}}}, shape.parsed,
+                                                 limits, shape.fingerprint);
+        std::string made;
+        size_t triangles = 0;
+        if (glb) {
+          std::vector<NamedMesh> both = {{"lower", extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kLower)},
+                                         {"upper", extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kUpper)}};
+          for (const NamedMesh& m : both) triangles += m.second.triangles.size();
+          made = toGlb(both);
+        } else {
+          const TriangleMesh mesh = extractSmoothMesh(*e.grid, *e.source, alpha,
+                                                      bound == "lower" ? EnvelopeBound::kLower : EnvelopeBound::kUpper);
+          triangles = mesh.triangles.size();
+          made = format == "obj" ? toObj(mesh) : toBinaryStl(mesh);
+        }
+        store.storeEvaluation(shape.object.id, key, {nlohmann::json{{"triangles", triangles}}.dump(), made});
+        return made;
+      });
       return bytesResponse(std::move(bytes), contentType, filename, false);
     });
   }
@@ -214,12 +227,15 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
       const std::string filename = shape.object.name + ".png";
       const std::string key = cacheKey("thumbnail", shape, nlohmann::json{{"alpha", alpha}, {"size", size}}.dump());
       if (auto hit = store.cachedEvaluation(key)) return bytesResponse(hit->vdb, "image/png", filename, true, true);
-      const Evaluation e =
-          evaluateParsedShape({{"resolution", kThumbnailResolution}, {"alphas", {alpha}}}, shape.parsed, limits, shape.fingerprint);
-      std::string bytes = toPng(renderThumbnail(extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kLower),
-                                                extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kUpper),
-                                                static_cast<int>(size)));
-      store.storeEvaluation(shape.object.id, key, {"{}", bytes});
+      std::string bytes = exportFlights().run(key, [&] {
+        const Evaluation e = evaluateParsedShape({{"resolution", kThumbnailResolution}, {"alphas", {alpha}}},
+                                                 shape.parsed, limits, shape.fingerprint);
+        std::string made = toPng(renderThumbnail(extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kLower),
+                                                 extractSmoothMesh(*e.grid, *e.source, alpha, EnvelopeBound::kUpper),
+                                                 static_cast<int>(size)));
+        store.storeEvaluation(shape.object.id, key, {"{}", made});
+        return made;
+      });
       return bytesResponse(std::move(bytes), "image/png", filename, false, true);
     });
   }
@@ -231,9 +247,13 @@ void registerEvaluationRoutes(HttpServer& server, Store& store) {
     const std::string key = cacheKey("vdb", shape, std::to_string(resolution));
     if (auto hit = store.cachedEvaluation(key))
       return bytesResponse(hit->vdb, "application/octet-stream", filename, true);
-    const Evaluation e = evaluateParsedShape({{"resolution", resolution}, {"alphas", {1.0}}}, shape.parsed, limits, shape.fingerprint);
-    std::string bytes = vdbBytes(*e.grid);
-    store.storeEvaluation(shape.object.id, key, {"{}", bytes});
+    std::string bytes = exportFlights().run(key, [&] {
+      const Evaluation e =
+          evaluateParsedShape({{"resolution", resolution}, {"alphas", {1.0}}}, shape.parsed, limits, shape.fingerprint);
+      std::string made = vdbBytes(*e.grid);
+      store.storeEvaluation(shape.object.id, key, {"{}", made});
+      return made;
+    });
     return bytesResponse(std::move(bytes), "application/octet-stream", filename, false);
   });
 }

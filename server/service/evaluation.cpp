@@ -4,9 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
-#include <future>
-#include <map>
-#include <mutex>
 
 #include "geometry/field/boundary_method.h"
 #include "geometry/voxel/envelope_grid.h"
@@ -14,6 +11,7 @@
 #include "geometry/core/number_format.h"
 #include "query/json/json_body.h"
 #include "query/document/shape_json.h"
+#include "server/service/single_flight.h"
 
 namespace fsdb {
 namespace {
@@ -86,48 +84,9 @@ struct BuiltGrid {
   std::uint64_t exhaustedSearches = 0;
 };
 
-// Builds in flight, by key (the shape's content and the resolution): a request that asks for a
-// build already running waits for it and shares its grid (or its error) instead of running the
-// same work again. The entry goes when the build ends, so nothing is kept beyond the requests
-// that waited (the caches above keep results).
-class GridFlights {
- public:
-  BuiltGrid buildOnce(const std::string& key, const std::function<BuiltGrid()>& build) {
-    std::shared_future<BuiltGrid> running;
-    std::promise<BuiltGrid> mine;
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      auto it = flights_.find(key);
-      if (it != flights_.end()) {
-        running = it->second;
-      } else {
-        flights_.emplace(key, mine.get_future().share());
-      }
-    }
-    if (running.valid()) return running.get();  // rethrows the leader's error
-    try {
-      BuiltGrid built = build();
-      mine.set_value(built);
-      finish(key);
-      return built;
-    } catch (...) {
-      mine.set_exception(std::current_exception());
-      finish(key);
-      throw;
-    }
-  }
-
- private:
-  void finish(const std::string& key) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    flights_.erase(key);
-  }
-  std::mutex mutex_;
-  std::map<std::string, std::shared_future<BuiltGrid>> flights_;
-};
-
-GridFlights& gridFlights() {
-  static GridFlights flights;
+// Grid builds in flight, by the shape's content and the resolution (evaluateParsedShape).
+SingleFlight<BuiltGrid>& gridFlights() {
+  static SingleFlight<BuiltGrid> flights;
   return flights;
 }
 
@@ -186,7 +145,7 @@ Evaluation evaluate(const nlohmann::json& request, const EvaluationLimits& limit
   // the chart of a part just made) is built once.
   const BuiltGrid built = flightKey.empty()
                               ? buildEnvelope()
-                              : gridFlights().buildOnce(flightKey + "\n" + std::to_string(resolution), buildEnvelope);
+                              : gridFlights().run(flightKey + "\n" + std::to_string(resolution), buildEnvelope);
   const EnvelopeGrid& grid = *built.grid;
   const std::uint64_t exhaustedSearches = built.exhaustedSearches;
   std::vector<LevelVolume> volumes = grid.volumes(alphas);

@@ -59,7 +59,7 @@ Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& 
 // The same for a shape the caller has parsed already (a stored shape): `request` holds only
 // resolution, alphas and method ("shape" is an unknown field there). flightKey, when not empty,
 // names the shape's content (a hash of its documents): builds of one key at one resolution that
-// run at the same moment are one build, whose grid, field and exhausted_searches every caller
+// run at the same moment are one build (SingleFlight, single_flight.h), whose grid, field and exhausted_searches every caller
 // shares (an error of that build reaches every caller; its deadline is the first caller's).
 Evaluation evaluateParsedShape(const nlohmann::json& request, const ParsedShape& shape,
                                const EvaluationLimits& limits, const std::string& flightKey = "");
