@@ -7,6 +7,7 @@
 
 #include "db/descriptor_index.h"
 #include "geometry/core/error.h"
+#include "geometry/core/closest_names.h"
 
 namespace fsdb::object_rows {
 
@@ -182,7 +183,7 @@ void writeVersion(Connection& connection, const ObjectRow& row, int version, con
 }
 
 void checkKind(const std::string& kind) {
-  if (!knownKind(kind)) throw Error(errc::kInvalidDocument, "unknown kind '" + kind + "'", "kind");
+  if (!knownKind(kind)) throw Error(errc::kInvalidDocument, "unknown kind '" + quotedWord(kind) + "'", "kind");
 }
 
 // The record of a write: what get() would return for the new version.

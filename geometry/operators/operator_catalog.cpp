@@ -504,7 +504,7 @@ OperatorConfig validateOperator(const OperatorConfig& config) {
   const OperatorSpec* found = findOperator(config.name);
   if (!found)
     throw Error(errc::kUnknownName,
-                "unknown operator '" + config.name + "'; closest: " + closestOperatorNames(config.name),
+                "unknown operator '" + quotedWord(config.name) + "'; closest: " + closestOperatorNames(config.name),
                 "name");
   const OperatorSpec& spec = *found;
   for (const auto& given : config.params) {

@@ -4,6 +4,7 @@
 
 #include "geometry/core/error.h"
 #include "query/json/json_body.h"
+#include "geometry/core/closest_names.h"
 
 namespace fsdb {
 
@@ -78,7 +79,7 @@ Combine parseCombine(const nlohmann::json& j, const std::string& path) {
   if (s == "union") return Combine::Union;
   if (s == "difference") return Combine::Difference;
   throw Error(errc::kInvalidParameter,
-              "unknown combination '" + s + "'; expected intersection, union or difference", path);
+              "unknown combination '" + quotedWord(s) + "'; expected intersection, union or difference", path);
 }
 
 const char* combineName(Combine c) {

@@ -7,6 +7,7 @@
 #include "query/json/json_body.h"
 #include "query/document/part_from_words.h"
 #include "query/linguistic/vocabulary.h"
+#include "geometry/core/closest_names.h"
 
 namespace fsdb {
 namespace {
@@ -98,7 +99,7 @@ FuzzyPart parsePart(const nlohmann::json& doc, const std::string& path) {
     for (const NamedParam& np : kParams) known = known || it.key() == np.name;
     if (!known)
       throw Error(errc::kInvalidDocument,
-                  "unknown parameter '" + it.key() + "'; expected eps1, eps2, a1, a2, a3, kx, ky, kv, t",
+                  "unknown parameter '" + quotedWord(it.key()) + "'; expected eps1, eps2, a1, a2, a3, kx, ky, kv, t",
                   joinPath(pp, it.key()));
   }
   if (!fromWords && !params.contains("a1"))

@@ -36,7 +36,7 @@ PlacementWords parsePlacementWords(const nlohmann::json& transform, const std::s
   const Direction* d = vocabulary.direction(direction);
   if (!d)
     throw Error(errc::kInvalidDocument,
-                "unknown direction '" + direction + "'; closest: " + closestNames(direction, vocabulary.directionWords()),
+                "unknown direction '" + quotedWord(direction) + "'; closest: " + closestNames(direction, vocabulary.directionWords()),
                 dp);
   words.direction = directionCandidates(*d).at(0).vector;
   if (place.contains("distance")) {

@@ -12,6 +12,7 @@
 #include "query/document/part_json.h"
 #include "query/document/placement_words.h"
 #include "query/linguistic/vocabulary.h"
+#include "geometry/core/closest_names.h"
 
 namespace fsdb {
 namespace {
@@ -154,7 +155,7 @@ struct Walker {
     if (op == "union") csg = CsgOp::kUnion;
     else if (op == "intersection") csg = CsgOp::kIntersection;
     else if (op == "difference") csg = CsgOp::kDifference;
-    else throw Error(errc::kInvalidDocument, "unknown op '" + op + "'; expected union, intersection, difference", opPath);
+    else throw Error(errc::kInvalidDocument, "unknown op '" + quotedWord(op) + "'; expected union, intersection, difference", opPath);
     rejectUnknownKeys(node, path, {"op", "operator", "children", "range", "step"}, " in a Boolean node");
     OperatorConfig config{"zadeh", {}, {}};
     if (node.contains("operator")) config = parseOperatorConfig(node["operator"], joinPath(path, "operator"));

@@ -6,6 +6,7 @@
 #include "geometry/core/error.h"
 #include "geometry/core/number_format.h"
 #include "query/json/json_path.h"
+#include "geometry/core/closest_names.h"
 
 namespace fsdb {
 
@@ -133,7 +134,7 @@ void rejectUnknownKeys(const nlohmann::json& obj, const std::string& path, std::
       list += (list.empty() ? "" : ", ") + std::string(k);
     }
     if (!ok)
-      throw Error(errc::kInvalidDocument, "unknown field '" + it.key() + "'" + where + "; expected one of: " + list,
+      throw Error(errc::kInvalidDocument, "unknown field '" + quotedWord(it.key()) + "'" + where + "; expected one of: " + list,
                   joinPath(path, it.key()));
   }
 }

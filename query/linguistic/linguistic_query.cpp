@@ -28,6 +28,9 @@ using query_tokens::tokenize;
 using query_tokens::requestLength;
 using query_tokens::withoutFillers;
 
+// A did-you-mean quotes the whole text back; past this many bytes it would be no help to read.
+constexpr size_t kLongestSuggestedText = 1000;
+
 // The words of the grammar itself (the vocabulary supplies the rest).
 const std::vector<std::string>& grammarWords() {
   static const std::vector<std::string> words = {
@@ -251,25 +254,26 @@ class Parser {
       known.insert(known.end(), grammarWords().begin(), grammarWords().end());
       known.insert(known.end(), descriptorNames().begin(), descriptorNames().end());
       throw Error(errc::kInvalidParameter,
-                  "unknown word '" + t.text + "' at character " + std::to_string(t.offset) + "; closest known words: " +
+                  "unknown word '" + quotedWord(t.text) + "' at character " + std::to_string(t.offset) + "; closest known words: " +
                       closestNames(t.text, known) + didYouMean(t, known),
                   "text");
     }
     throw Error(errc::kInvalidParameter,
-                "unexpected '" + t.text + "' at character " + std::to_string(t.offset) + "; expected " + joinList(expected),
+                "unexpected '" + quotedWord(t.text) + "' at character " + std::to_string(t.offset) + "; expected " + joinList(expected),
                 "text");
   }
 
   // "; did you mean \"...\"?": the text with the unknown word t replaced by the nearest known word
   // (of the five nearest) with which the whole text reads, or "" when none does. Only for whole
-  // texts (queries and part descriptions), and not again inside such a trial.
+  // texts (queries and part descriptions), and not again inside such a trial; not for a word no
+  // known word is within kEditDistanceLimit edits of, nor for a text too long to quote back.
   std::string didYouMean(const Token& t, const std::vector<std::string>& known) const {
-    if (prefix_ || !suggest_) return "";
+    if (prefix_ || !suggest_ || text_.size() > kLongestSuggestedText) return "";
     std::vector<std::pair<size_t, std::string>> nearest;
     for (const std::string& k : known) nearest.emplace_back(editDistance(t.text, k), k);
     std::sort(nearest.begin(), nearest.end());
     nearest.erase(std::unique(nearest.begin(), nearest.end()), nearest.end());
-    for (size_t i = 0; i < nearest.size() && i < 5; ++i) {
+    for (size_t i = 0; i < nearest.size() && i < 5 && nearest[i].first <= kEditDistanceLimit; ++i) {
       const std::string trial = text_.substr(0, t.offset) + nearest[i].second + text_.substr(t.end);
       try {
         Parser parser(trial, v_);

@@ -7,6 +7,7 @@
 #include "geometry/fuzzy/fuzzy_similarity.h"
 #include "query/linguistic/linguistic_query.h"
 #include "query/linguistic/vocabulary.h"
+#include "geometry/core/closest_names.h"
 
 namespace fsdb {
 namespace {
@@ -34,14 +35,14 @@ double aggregate(const std::string& how, const std::vector<double>& scores) {
     for (double s : scores) sum += s;
     return sum / static_cast<double>(scores.size());
   }
-  throw Error(errc::kInvalidParameter, "unknown aggregation '" + how + "'; expected min, product or mean",
+  throw Error(errc::kInvalidParameter, "unknown aggregation '" + quotedWord(how) + "'; expected min, product or mean",
               "aggregation");
 }
 
 const Direction* directionOf(const QueryCondition& c) {
   if (c.directionSets) return &*c.directionSets;
   const Direction* d = activeVocabulary().direction(c.direction);
-  if (!d) throw Error(errc::kInvalidParameter, "unknown direction '" + c.direction + "'", "direction");
+  if (!d) throw Error(errc::kInvalidParameter, "unknown direction '" + quotedWord(c.direction) + "'", "direction");
   return d;
 }
 

@@ -11,6 +11,7 @@
 #include "query/json/fuzzy_json.h"
 #include "query/json/number_phrases.h"
 #include "query/linguistic/query_tokens.h"
+#include "geometry/core/closest_names.h"
 
 namespace fsdb {
 namespace {
@@ -552,7 +553,7 @@ class PhraseParser {
       throw Error(errc::kInvalidParameter,
                   "the query ends too early (character " + std::to_string(text_.size()) + "); expected " + list, "text");
     throw Error(errc::kInvalidParameter,
-                "unexpected '" + words_[pos_].text + "' at character " + std::to_string(words_[pos_].offset) +
+                "unexpected '" + quotedWord(words_[pos_].text) + "' at character " + std::to_string(words_[pos_].offset) +
                     "; expected " + list,
                 "text");
   }

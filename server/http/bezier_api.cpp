@@ -26,6 +26,7 @@
 #include "query/json/json_body.h"
 #include "server/http/api.h"
 #include "server/http/http_server.h"
+#include "server/http/response_encoding.h"
 #include "server/service/mesh_format.h"
 #include "server/service/svg_format.h"
 
@@ -233,7 +234,7 @@ TriangleMesh meshOfSurface(const FuzzyBezierSurface& surface, double alpha, cons
 
 ApiResponse download(std::string bytes, const std::string& contentType, const std::string& filename) {
   ApiResponse out{200, nullptr, std::move(bytes), contentType};
-  out.headers.emplace_back("Content-Disposition", "attachment; filename=\"" + filename + "\"");
+  out.headers.emplace_back("Content-Disposition", contentDisposition("attachment", filename));
   return out;
 }
 

@@ -17,6 +17,7 @@
 #include "query/json/json_body.h"
 #include "server/http/api.h"
 #include "server/http/http_server.h"
+#include "server/http/response_encoding.h"
 #include "server/service/documents.h"
 #include "server/service/evaluation.h"
 #include "server/service/mesh_format.h"
@@ -100,8 +101,7 @@ ApiResponse bytesResponse(std::string bytes, const std::string& contentType, con
                           bool inlineView = false) {
   ApiResponse out{200, nullptr, std::move(bytes), contentType};
   // Pictures open in the browser; mesh and grid files download.
-  out.headers.emplace_back("Content-Disposition",
-                           std::string(inlineView ? "inline" : "attachment") + "; filename=\"" + filename + "\"");
+  out.headers.emplace_back("Content-Disposition", contentDisposition(inlineView ? "inline" : "attachment", filename));
   out.headers.emplace_back("X-Fsdb-Cache", cached ? "hit" : "miss");
   return out;
 }

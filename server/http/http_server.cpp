@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <mutex>
 #include <regex>
 #include <thread>
 
@@ -20,6 +21,9 @@
 
 namespace fsdb {
 namespace {
+
+// The studio page's paths (served by GET when --web names a folder).
+const char* const kStudioPaths = R"(/|/index\.html|/studio\.(js|css)|/vendor/[A-Za-z0-9_.-]+(/[A-Za-z0-9_.-]+)*)";
 
 // Start time of the request a worker thread is serving; set by the pre-routing handler and
 // read by the logger, both of which run on the thread that serves the request.
@@ -38,14 +42,52 @@ void sendJson(httplib::Response& res, int status, const nlohmann::json& body) {
   res.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), "application/json");
 }
 
-// Compares in time independent of where the strings differ, so the token cannot be guessed
-// byte by byte from response times.
+// Compares in time that depends on the token's length only, never on where or whether the
+// header differs (its length included), so the token cannot be found byte by byte, nor its
+// length, from response times.
 bool bearerMatches(const std::string& header, const std::string& token) {
-  const std::string prefix = "Bearer ";
-  if (header.size() != prefix.size() + token.size() || header.compare(0, prefix.size(), prefix) != 0) return false;
-  unsigned char diff = 0;
-  for (size_t i = 0; i < token.size(); ++i) diff |= static_cast<unsigned char>(header[prefix.size() + i] ^ token[i]);
+  const std::string expected = "Bearer " + token;
+  size_t diff = header.size() ^ expected.size();
+  for (size_t i = 0; i < expected.size(); ++i) {
+    const unsigned char got = i < header.size() ? static_cast<unsigned char>(header[i]) : 0;
+    diff |= static_cast<unsigned char>(got ^ static_cast<unsigned char>(expected[i]));
+  }
   return diff == 0;
+}
+
+// An unauthenticated write's body is not wanted: it is read and dropped, never kept or parsed.
+// It is still read to its end, because httplib keeps the connection open after any answer and
+// would read what is left of the body as the next requests. A client that asks first
+// (Expect: 100-continue; curl does for bodies over 1 MiB) is answered 401 before it sends one.
+void drainUnauthorizedBody(const httplib::ContentReader& content) {
+  content([](const char*, size_t) { return true; });
+}
+
+Error unauthorizedError() {
+  return Error(errc::kUnauthorized,
+               "this server requires \"Authorization: Bearer <token>\" for writes (fsdb serve --token)", "");
+}
+
+// The store failed (storage_error, 503): an operator must see why in the log, not only the
+// client. During an outage every request fails the same way, so one line a second at most,
+// with the count of those not written.
+void warnStorageFailure(const httplib::Request& req, const Error& e) {
+  static std::mutex mutex;
+  static std::chrono::steady_clock::time_point last{};
+  static size_t unwritten = 0;
+  const auto now = std::chrono::steady_clock::now();
+  std::lock_guard<std::mutex> lock(mutex);
+  if (last != std::chrono::steady_clock::time_point{} && now - last < std::chrono::seconds(1)) {
+    ++unwritten;
+    return;
+  }
+  last = now;
+  const size_t before = unwritten;
+  unwritten = 0;
+  if (before == 0) spdlog::warn("{} {}: database failure (503): {}", req.method, req.path, e.what());
+  else
+    spdlog::warn("{} {}: database failure (503): {} ({} more failures in the last second)", req.method, req.path,
+                 e.what(), before);
 }
 
 // Reads a POST or PUT body through httplib's ContentReader into *body (see addRoute for why).
@@ -117,8 +159,12 @@ void serveStatic(const std::string& root, const httplib::Request& req, httplib::
     sendJson(res, 404, errorBody(errc::kNotFound, "no file " + req.path, ""));
     return;
   }
-  std::ifstream in(std::filesystem::path(root) / relative, std::ios::binary);
-  if (!in) {
+  // A folder (/vendor/addons) opens as a stream too, and its first read throws: only plain files.
+  const std::filesystem::path file = std::filesystem::path(root) / relative;
+  std::error_code notAFile;
+  std::ifstream in;
+  if (std::filesystem::is_regular_file(file, notAFile)) in.open(file, std::ios::binary);
+  if (!in.is_open()) {
     sendJson(res, 404, errorBody(errc::kNotFound, "no file " + req.path + " in the studio page", ""));
     return;
   }
@@ -178,6 +224,7 @@ HttpServer::~HttpServer() = default;
 void HttpServer::addRoute(const std::string& method, const std::string& openapiPath, ApiHandler handler,
                           RouteOptions routeOptions) {
   routes_.push_back({method, openapiPath});
+  routeWrites_.push_back(routeOptions.write);
   routePatterns_.emplace_back(routeRegex(openapiPath));
   const int maxDepth = options_.limits.maxJsonDepth;
   const size_t maxBody = options_.limits.maxBodyBytes;
@@ -193,12 +240,13 @@ void HttpServer::addRoute(const std::string& method, const std::string& openapiP
     try {
       // The whole body first, as httplib did before any handler ran, so that an early error
       // never leaves unread bytes on a keep-alive connection.
-      if (content) readBody(req, *content, maxBody, &api.bodyBytes, res);
+      // The token before the body: an unauthenticated client's body is never read whole.
       if (!token.empty() && !bearerMatches(req.get_header_value("Authorization"), token)) {
+        if (content) drainUnauthorizedBody(*content);
         res.set_header("WWW-Authenticate", "Bearer");
-        throw Error(errc::kUnauthorized,
-                    "this server requires \"Authorization: Bearer <token>\" for writes (fsdb serve --token)", "");
+        throw unauthorizedError();
       }
+      if (content) readBody(req, *content, maxBody, &api.bodyBytes, res);
       for (size_t i = 1; i < req.matches.size(); ++i) api.pathParams.push_back(req.matches[i].str());
       if (content && !routeOptions.rawBody) api.body = parseJsonBody(api.bodyBytes, maxDepth);
       ApiResponse out = handler(api);
@@ -211,6 +259,7 @@ void HttpServer::addRoute(const std::string& method, const std::string& openapiP
       }
       if (req.method == "GET" && res.status == 200) conditionalAndEncoded(req, res);
     } catch (const Error& e) {
+      if (e.code() == errc::kStorage) warnStorageFailure(req, e);
       sendError(res, e);
     }
     // Anything else propagates to the exception handler: a 500 with a JSON body.
@@ -272,11 +321,33 @@ void HttpServer::installHandlers() {
     if (!std::filesystem::is_directory(options_.webRoot))
       spdlog::warn("no studio page: '{}' is not a folder (fsdb serve --web DIR)", options_.webRoot);
     else
-      s.Get(R"(/|/index\.html|/studio\.(js|css)|/vendor/[A-Za-z0-9_.-]+(/[A-Za-z0-9_.-]+)*)",
+      s.Get(kStudioPaths,
             [root = options_.webRoot](const httplib::Request& req, httplib::Response& res) {
               serveStatic(root, req, res);
             });
   }
+
+  // Expect: 100-continue: a write without the token is refused before its body is sent.
+  if (!options_.token.empty()) {
+    s.set_expect_100_continue_handler([this](const httplib::Request& req, httplib::Response& res) {
+      bool write = false;
+      for (size_t i = 0; i < routes_.size() && !write; ++i)
+        write = routeWrites_[i] && routes_[i].method == req.method && std::regex_match(req.path, routePatterns_[i]);
+      if (!write || bearerMatches(req.get_header_value("Authorization"), options_.token)) return 100;
+      res.set_header("WWW-Authenticate", "Bearer");
+      sendError(res, unauthorizedError());
+      return res.status;
+    });
+  }
+
+  // No route takes PATCH. Left to httplib, a PATCH without Content-Length waited 5 s for a body
+  // to its end and was then 400; here any body it announces is read and dropped (so the
+  // connection stays in step), and the answer is 405 with the path's methods, or 404.
+  s.Patch(".*", [this](const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& content) {
+    if (req.has_header("Content-Length") || req.has_header("Transfer-Encoding"))
+      content([](const char*, size_t) { return true; });
+    if (!refuseMethod(req.method, req.path, res)) res.status = 404;
+  });
 
   s.set_pre_routing_handler([](const httplib::Request&, httplib::Response&) {
     tRequestStart = std::chrono::steady_clock::now();
@@ -302,6 +373,11 @@ void HttpServer::installHandlers() {
       return;
     }
     if (res.status == 400) {
+      // httplib answers 400 before routing for a method it does not know (PROPFIND); where the
+      // path has routes, that is 405 with the methods it has. req.path is not parsed yet then:
+      // the target up to its query.
+      if (refuseMethod(req.method, req.path.empty() ? req.target.substr(0, req.target.find('?')) : req.path, res))
+        return;
       sendError(res, Error("bad_request",
                            "malformed HTTP request: a request or header line longer than " +
                                std::to_string(CPPHTTPLIB_HEADER_MAX_LENGTH) +
@@ -311,17 +387,7 @@ void HttpServer::installHandlers() {
       return;
     }
     if (res.status == 404) {
-      std::vector<std::string> allowed;
-      for (size_t i = 0; i < routes_.size(); ++i)
-        if (std::regex_match(req.path, routePatterns_[i])) allowed.push_back(routes_[i].method);
-      if (!allowed.empty()) {
-        std::string allow;
-        for (const auto& m : allowed) allow += (allow.empty() ? "" : ", ") + m;
-        res.set_header("Allow", allow);
-        sendError(res, Error("method_not_allowed",
-                             req.method + " is not allowed on " + req.path + "; allowed: " + allow, ""));
-        return;
-      }
+      if (refuseMethod(req.method, req.path, res)) return;
       sendError(res,
                 Error(errc::kNotFound,
                       "no endpoint " + req.method + " " + req.path + "; GET /openapi.json lists every endpoint", ""));
@@ -347,6 +413,30 @@ void HttpServer::installHandlers() {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - tRequestStart).count();
     spdlog::info("{} {} {} {}B {:.2f}ms", req.method, req.path, res.status, res.body.size(), ms);
   });
+}
+
+bool HttpServer::refuseMethod(const std::string& method, const std::string& path, httplib::Response& res) const {
+  const std::string allow = method.empty() ? std::string() : allowedMethods(path);
+  if (allow.empty() || (", " + allow + ", ").find(", " + method + ", ") != std::string::npos) return false;
+  res.set_header("Allow", allow);
+  // Both echoed: cut, so that a long method or path cannot make a long answer.
+  sendError(res, Error("method_not_allowed",
+                       method.substr(0, 32) + " is not allowed on " + path.substr(0, 200) + "; allowed: " + allow, ""));
+  return true;
+}
+
+std::string HttpServer::allowedMethods(const std::string& path) const {
+  std::vector<std::string> allowed;
+  const auto add = [&allowed](const std::string& method) {
+    if (std::find(allowed.begin(), allowed.end(), method) == allowed.end()) allowed.push_back(method);
+  };
+  for (size_t i = 0; i < routes_.size(); ++i)
+    if (std::regex_match(path, routePatterns_[i])) add(routes_[i].method);
+  static const std::regex studio(kStudioPaths);
+  if (!options_.webRoot.empty() && std::regex_match(path, studio)) add("GET");
+  std::string allow;
+  for (const auto& m : allowed) allow += (allow.empty() ? "" : ", ") + m;
+  return allow;
 }
 
 bool validCorsOrigin(const std::string& origin) {

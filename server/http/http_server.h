@@ -124,11 +124,18 @@ class HttpServer {
 
  private:
   void installHandlers();
+  // The methods of the routes whose pattern matches `path` ("GET, PUT"), the studio page's GET
+  // included; "" when none does.
+  std::string allowedMethods(const std::string& path) const;
+  // Answers 405 method_not_allowed with Allow when `path` has routes but none for `method`;
+  // false (nothing written) otherwise.
+  bool refuseMethod(const std::string& method, const std::string& path, httplib::Response& res) const;
 
   ServerOptions options_;
   std::unique_ptr<httplib::Server> server_;
   std::vector<Route> routes_;
   std::vector<std::regex> routePatterns_;  // routes_[i]'s path pattern, compiled once (405 lookup)
+  std::vector<bool> routeWrites_;          // routes_[i] needs the token (RouteOptions::write)
   std::atomic<bool> stopRequested_{false};
   std::atomic<bool> listenReturned_{false};
   int listenSocket_ = -1;  // set by httplib's socket callback when it binds

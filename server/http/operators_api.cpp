@@ -8,6 +8,7 @@
 #include "query/document/operator_json.h"
 #include "server/http/api.h"
 #include "server/http/http_server.h"
+#include "geometry/core/closest_names.h"
 
 namespace fsdb {
 namespace {
@@ -40,7 +41,7 @@ ApiResponse evaluate(const ApiRequest& req, const ServerLimits& limits) {
   const nlohmann::json& body = requireObject(req.body, "");
   for (auto it = body.begin(); it != body.end(); ++it)
     if (it.key() != "operator" && it.key() != "op" && it.key() != "points")
-      throw Error(errc::kInvalidDocument, "unknown field '" + it.key() + "'; expected operator, op, points", it.key());
+      throw Error(errc::kInvalidDocument, "unknown field '" + quotedWord(it.key()) + "'; expected operator, op, points", it.key());
   const OperatorConfig config = parseOperatorConfig(requireField(body, "operator", ""), "operator");
   const OperatorSpec& spec = *findOperator(config.name);
   const nlohmann::json& points = requireArray(requireField(body, "points", ""), "points");

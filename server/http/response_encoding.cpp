@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 
 namespace fsdb {
@@ -89,6 +90,26 @@ std::string gzipBody(const std::string& bytes) {
   if (rc != Z_STREAM_END) throw std::runtime_error("zlib: deflate did not finish");
   out.resize(written);
   return out;
+}
+
+std::string contentDisposition(const std::string& type, const std::string& filename) {
+  std::string plain;
+  std::string encoded;
+  for (unsigned char c : filename) {
+    const bool alnum = (c >= '0' && c <= '9') || (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
+    plain += alnum || c == ' ' || c == '.' || c == '_' || c == '-' || c == '+' || c == '(' || c == ')'
+                 ? static_cast<char>(c)
+                 : '_';
+    // RFC 5987 attr-char: ALPHA DIGIT ! # $ & + - . ^ _ ` | ~; every other byte percent-encoded.
+    if (alnum || (c != 0 && std::strchr("!#$&+-.^_`|~", c) != nullptr)) {
+      encoded += static_cast<char>(c);
+    } else {
+      char hex[4];
+      std::snprintf(hex, sizeof hex, "%%%02X", c);
+      encoded += hex;
+    }
+  }
+  return type + "; filename=\"" + plain + "\"; filename*=UTF-8''" + encoded;
 }
 
 }  // namespace fsdb

@@ -13,6 +13,11 @@
 //   `bytes`; acceptsGzip(header) reads Accept-Encoding (gzip with a q-value above 0).
 // - compressedHere(contentType): the media types fsdb gzips itself: model/* (OBJ, STL, glTF) and
 //   application/octet-stream (VDB grids).
+// - contentDisposition(type, filename) is a Content-Disposition value (RFC 6266) for an object's
+//   file: `type; filename="..."; filename*=UTF-8''...`. The quoted name keeps letters, digits,
+//   space and . _ - + ( ) of the name and writes every other byte as _, so a quote, backslash,
+//   semicolon or control byte in a stored name can end neither the string nor the header; the
+//   RFC 5987 form carries the name's exact UTF-8 bytes, percent-encoded, for clients that read it.
 #include <string>
 
 namespace fsdb {
@@ -24,5 +29,7 @@ bool acceptsGzip(const std::string& acceptEncoding);
 bool compressedHere(const std::string& contentType);
 // Throws std::runtime_error only when zlib itself fails (out of memory).
 std::string gzipBody(const std::string& bytes);
+
+std::string contentDisposition(const std::string& type, const std::string& filename);
 
 }  // namespace fsdb

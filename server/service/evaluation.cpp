@@ -12,6 +12,7 @@
 #include "query/json/json_body.h"
 #include "query/document/shape_json.h"
 #include "server/service/single_flight.h"
+#include "geometry/core/closest_names.h"
 
 namespace fsdb {
 namespace {
@@ -99,14 +100,14 @@ Evaluation evaluate(const nlohmann::json& request, const EvaluationLimits& limit
     if ((!withShape || it.key() != "shape") && it.key() != "resolution" && it.key() != "alphas" &&
         it.key() != "method")
       throw Error(errc::kInvalidDocument,
-                  "unknown field '" + it.key() + "'; expected " + (withShape ? "shape, " : "") +
+                  "unknown field '" + quotedWord(it.key()) + "'; expected " + (withShape ? "shape, " : "") +
                       "resolution, alphas, method",
                   it.key());
   bool boundary = false;
   if (request.contains("method")) {
     const std::string& method = requireString(request["method"], "method");
     if (method != "envelope" && method != "boundary")
-      throw Error(errc::kInvalidParameter, "unknown method '" + method + "'; expected envelope or boundary", "method");
+      throw Error(errc::kInvalidParameter, "unknown method '" + quotedWord(method) + "'; expected envelope or boundary", "method");
     boundary = method == "boundary";
   }
   const int resolution = parseResolution(request, limits);

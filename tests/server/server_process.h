@@ -4,15 +4,23 @@
 // and reaps the child, so a failing test never leaves a server behind. Extra arguments
 // (--db, --token, limits) go after `serve --port 0`; kill9() simulates a crash, and a new
 // ServerProcess with the same --db is a restart; without --db it gets a temporary database.
-// TempDir gives each test its own directory.
+// TempDir gives each test its own directory. stderrFile, when given, receives the server's log
+// (warnings and errors: it runs with --log-level warn); exchange() sends raw bytes and reads one
+// answer, for requests an HTTP client library will not send.
 #include <httplib.h>
 #include <nlohmann/json.hpp>
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <poll.h>
 #include <signal.h>
+#include <sys/socket.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -32,7 +40,7 @@ using fsdb::TempDir;
 
 class ServerProcess {
  public:
-  explicit ServerProcess(std::vector<std::string> extraArgs = {}) {
+  explicit ServerProcess(std::vector<std::string> extraArgs = {}, const std::string& stderrFile = "") {
     // Without --db each server gets a database of its own (never data/fsdb.sqlite of the cwd): a
     // temporary file, or a new schema on the test cluster when the suite runs on PostgreSQL.
     if (std::find(extraArgs.begin(), extraArgs.end(), "--db") == extraArgs.end()) {
@@ -52,6 +60,10 @@ class ServerProcess {
       prctl(PR_SET_PDEATHSIG, SIGKILL);
       if (getppid() != parent) _exit(127);  // the test already died between fork and prctl
       dup2(out[1], STDOUT_FILENO);
+      if (!stderrFile.empty()) {
+        const int err = open(stderrFile.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+        if (err >= 0) dup2(err, STDERR_FILENO);
+      }
       close(out[0]);
       close(out[1]);
       std::vector<std::string> args = {FSDB_BINARY, "--log-level", "warn", "serve", "--port", "0"};
@@ -151,6 +163,51 @@ class ServerProcess {
   Reply del(const std::string& path) const {
     auto c = client();
     return toReply(c.Delete(path.c_str(), headers()));
+  }
+
+  // Sends `bytes` on a new connection and returns what comes back until one whole answer (its
+  // headers and Content-Length bytes of body) has arrived, the server closes, or timeoutMs passes
+  // (then what arrived so far, maybe nothing). *elapsedMs, when given, gets the time it took.
+  std::string exchange(const std::string& bytes, int timeoutMs, double* elapsedMs = nullptr) const {
+    const auto start = std::chrono::steady_clock::now();
+    const int fd = socket(AF_INET, SOCK_STREAM, 0);
+    if (fd < 0) throw std::runtime_error("socket failed");
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_port = htons(static_cast<uint16_t>(port_));
+    inet_pton(AF_INET, host_.c_str(), &addr.sin_addr);
+    if (connect(fd, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) {
+      close(fd);
+      throw std::runtime_error("connect failed");
+    }
+    for (size_t sent = 0; sent < bytes.size();) {
+      const ssize_t n = ::send(fd, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL);
+      if (n <= 0) break;  // the server may close early: read what it answered
+      sent += static_cast<size_t>(n);
+    }
+    std::string in;
+    const auto deadline = start + std::chrono::milliseconds(timeoutMs);
+    for (;;) {
+      const size_t head = in.find("\r\n\r\n");
+      if (head != std::string::npos) {
+        size_t length = 0;
+        const size_t at = in.find("Content-Length: ");
+        if (at != std::string::npos && at < head) length = std::stoul(in.substr(at + 16));
+        if (in.size() >= head + 4 + length) break;
+      }
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+      if (left.count() <= 0) break;
+      pollfd p{fd, POLLIN, 0};
+      if (poll(&p, 1, static_cast<int>(left.count())) <= 0) break;
+      char buf[4096];
+      const ssize_t n = ::recv(fd, buf, sizeof buf, 0);
+      if (n <= 0) break;
+      in.append(buf, static_cast<size_t>(n));
+    }
+    close(fd);
+    if (elapsedMs)
+      *elapsedMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return in;
   }
 
   // The --db the server runs on (a second server on the same database takes it).

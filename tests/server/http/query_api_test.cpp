@@ -199,6 +199,22 @@ TEST(QueryApi, Errors) {
   EXPECT_EQ(server.get("/query/linguistic").status, 405);
 }
 
+// A 5 MB unknown word cost 14 s of edit distances and came back whole in the 422; the
+// suggestions are banded (geometry/core/closest_names.h) and the message quotes 100 characters.
+TEST(QueryApi, AHugeUnknownWordIsRefusedWithAShortMessage) {
+  ServerProcess server;
+  const std::string word(5'000'000, 'q');
+  for (const char* route : {"/query/linguistic", "/query"}) {
+    auto r = server.post(route, json{{"text", "find a " + word + " cylinder"}});
+    EXPECT_EQ(r.status, 422) << route << " " << r.body.substr(0, 300);
+    const std::string message = r.json["error"].value("message", "");
+    EXPECT_LT(message.size(), 600u) << route << " " << message.substr(0, 300);
+    EXPECT_NE(message.find(std::string(100, 'q') + "... (5000000 characters)"), std::string::npos)
+        << route << " " << message.substr(0, 300);
+  }
+  EXPECT_EQ(server.get("/health").status, 200);
+}
+
 TEST(QueryApi, QueryTimeLimit) {
   ServerProcess server({"--max-query-ms", "1"});
   std::string body;

@@ -67,6 +67,19 @@ TEST(ResponseEncoding, GzipAndWhatIsCompressedHere) {
   EXPECT_FALSE(compressedHere("image/png"));
 }
 
+// A stored name may hold any character; the header must stay one well-formed parameter list.
+TEST(ResponseEncoding, ContentDispositionSanitisesTheNameAndCarriesItExactly) {
+  EXPECT_EQ(contentDisposition("attachment", "knob-upper-0.5.obj"),
+            "attachment; filename=\"knob-upper-0.5.obj\"; filename*=UTF-8''knob-upper-0.5.obj");
+  EXPECT_EQ(contentDisposition("inline", "a\"b\\c;d.png"),
+            "inline; filename=\"a_b_c_d.png\"; filename*=UTF-8''a%22b%5Cc%3Bd.png");
+  // UTF-8 bytes: replaced in the quoted form, percent-encoded in the RFC 5987 form.
+  EXPECT_EQ(contentDisposition("attachment", "w\xC3\xBCrfel 1.glb"),
+            "attachment; filename=\"w__rfel 1.glb\"; filename*=UTF-8''w%C3%BCrfel%201.glb");
+  EXPECT_EQ(contentDisposition("attachment", std::string("a\r\nX: y", 7)),
+            "attachment; filename=\"a__X_ y\"; filename*=UTF-8''a%0D%0AX%3A%20y");
+}
+
 TEST(ResponseEncoding, CorsOrigins) {
   EXPECT_TRUE(validCorsOrigin("*"));
   EXPECT_TRUE(validCorsOrigin("http://localhost:5173"));
@@ -126,6 +139,22 @@ TEST(ResponseEncodingApi, ObjectsAndMeshesHaveETagsAnd304) {
   auto missing = rawGet(server, "/parts/999999", {});
   EXPECT_EQ(missing->status, 404);
   EXPECT_EQ(missing->get_header_value("ETag"), "");
+}
+
+// A name with a quote ended the quoted filename early: `filename="say "hi"-upper-...`.
+TEST(ResponseEncodingApi, DownloadsOfANameWithAQuoteHaveAWellFormedFilename) {
+  ServerProcess server;
+  auto created = server.post("/parts", json{{"name", "say \"hi\"; ok"}, {"params", {{"a1", 1}}}});
+  ASSERT_EQ(created.status, 201) << created.body;
+  const std::string id = std::to_string(created.json["id"].get<int64_t>());
+  // Raw bytes: httplib's client decodes %XX in header values.
+  const std::string answer =
+      server.exchange("GET /parts/" + id + "/mesh?alpha=0.5&resolution=16&format=stl HTTP/1.1\r\nHost: t\r\n\r\n", 60000);
+  ASSERT_EQ(answer.rfind("HTTP/1.1 200", 0), 0u) << answer.substr(0, 400);
+  EXPECT_NE(answer.find("\r\nContent-Disposition: attachment; filename=\"say _hi__ ok-upper-0.500000.stl\"; "
+                        "filename*=UTF-8''say%20%22hi%22%3B%20ok-upper-0.500000.stl\r\n"),
+            std::string::npos)
+      << answer.substr(0, 400);
 }
 
 TEST(ResponseEncodingApi, MeshesAndJsonAreGzippedWhenAccepted) {
