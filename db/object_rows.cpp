@@ -6,8 +6,8 @@
 #include <ctime>
 
 #include "db/descriptor_index.h"
-#include "geometry/core/error.h"
 #include "geometry/core/closest_names.h"
+#include "geometry/core/error.h"
 
 namespace fsdb::object_rows {
 

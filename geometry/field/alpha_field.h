@@ -25,6 +25,7 @@
 // in α, and for one requested α a set of measure zero in space; volumes are unaffected.
 #include <cmath>
 #include <cstdint>
+#include <unordered_set>
 
 #include "geometry/core/vec3.h"
 
@@ -111,16 +112,31 @@ class AlphaFieldSource {
   // How many point searches ran out of their budget since construction and answered with a
   // conservative bound instead of the level to the tolerance (upper too high, lower too low):
   // fuzzy parts count theirs (geometry/field/fuzzy_part_field.h), CSG nodes report the sum over their
-  // children (a child shared twice in a DAG counts twice), exact sources 0. A caller that wants
-  // the count of one evaluation takes the difference before and after it.
+  // children (sumBudgetExhaustions: a node shared in a DAG counts once), exact sources 0. A caller
+  // that wants the count of one evaluation takes the difference before and after it.
   virtual std::uint64_t budgetExhaustions() const { return 0; }
 };
 
-// The sum of budgetExhaustions() over a node's children (shared pointers to sources).
+// The sum of budgetExhaustions() over a node's children (shared pointers to sources), each
+// distinct source of the whole call once: a DAG's shared nodes are visited once, so the count of a
+// shape naming the previous one twice, 30 deep, takes 30 steps, not 2^30. The outermost call on
+// a thread keeps the set of sources visited; the nested calls of the children's own sums use it.
 template <class Children>
 std::uint64_t sumBudgetExhaustions(const Children& children) {
+  thread_local std::unordered_set<const AlphaFieldSource*>* visited = nullptr;
+  std::unordered_set<const AlphaFieldSource*> own;
+  const bool outermost = visited == nullptr;
+  if (outermost) visited = &own;
+  struct Reset {
+    bool outermost;
+    std::unordered_set<const AlphaFieldSource*>** visited;
+    ~Reset() {
+      if (outermost) *visited = nullptr;
+    }
+  } reset{outermost, &visited};
   std::uint64_t n = 0;
-  for (const auto& child : children) n += child->budgetExhaustions();
+  for (const auto& child : children)
+    if (visited->insert(&*child).second) n += child->budgetExhaustions();
   return n;
 }
 

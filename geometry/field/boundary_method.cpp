@@ -1,7 +1,12 @@
 #include "geometry/field/boundary_method.h"
 
+#include <map>
+#include <unordered_map>
+#include <utility>
+
 #include "geometry/core/error.h"
 #include "geometry/field/fuzzy_part_field.h"
+#include "geometry/field/shared_field.h"
 #include "geometry/superquadric/superquadric_bounds.h"
 #include "geometry/superquadric/superquadric_volume.h"
 
@@ -45,16 +50,49 @@ PlacedSuperquadric boundaryShape(const FuzzyPart& part, double alpha, bool large
   return shape;
 }
 
-std::shared_ptr<const AlphaFieldSource> boundarySolid(const CsgTree& tree, double alpha, bool upper) {
-  if (tree.leaf) return std::make_shared<FuzzyPartField>(FuzzyPart::fromCrisp(boundaryShape(tree.part, alpha, upper)));
-  std::vector<std::shared_ptr<const AlphaFieldSource>> children;
-  for (size_t i = 0; i < tree.children.size(); ++i) {
-    // docs/api.md §3: A − B = (lower_A − upper_B, upper_A − lower_B): subtrahends take the other
-    // bound.
-    const bool childUpper = (tree.op == CsgOp::kDifference && i > 0) ? !upper : upper;
-    children.push_back(boundarySolid(*tree.children[i], alpha, childUpper));
+namespace {
+
+// Parent edges of each node of the DAG, each node visited once.
+void countParents(const CsgTree& node, std::unordered_map<const CsgTree*, int>* parents) {
+  for (const auto& c : node.children)
+    if (++(*parents)[c.get()] == 1) countParents(*c, parents);
+}
+
+struct BoundaryBuilder {
+  double alpha;
+  std::unordered_map<const CsgTree*, int> parents;
+  std::map<std::pair<const CsgTree*, bool>, std::shared_ptr<const AlphaFieldSource>> made;
+
+  // Each (node, bound) once; a node with several parents is a SharedField, so the solid of a
+  // DAG is built and evaluated in the DAG's size, not its expansion's.
+  std::shared_ptr<const AlphaFieldSource> build(const CsgTree& tree, bool upper) {
+    const auto key = std::make_pair(&tree, upper);
+    if (auto it = made.find(key); it != made.end()) return it->second;
+    std::shared_ptr<const AlphaFieldSource> solid;
+    if (tree.leaf) {
+      solid = std::make_shared<FuzzyPartField>(FuzzyPart::fromCrisp(boundaryShape(tree.part, alpha, upper)));
+    } else {
+      std::vector<std::shared_ptr<const AlphaFieldSource>> children;
+      for (size_t i = 0; i < tree.children.size(); ++i) {
+        // docs/api.md §3: A − B = (lower_A − upper_B, upper_A − lower_B): subtrahends take the
+        // other bound.
+        const bool childUpper = (tree.op == CsgOp::kDifference && i > 0) ? !upper : upper;
+        children.push_back(build(*tree.children[i], childUpper));
+      }
+      solid = std::make_shared<CsgField>(tree.op, std::move(children));
+      if (parents[&tree] > 1) solid = std::make_shared<SharedField>(solid);
+    }
+    made[key] = solid;
+    return solid;
   }
-  return std::make_shared<CsgField>(tree.op, std::move(children));
+};
+
+}  // namespace
+
+std::shared_ptr<const AlphaFieldSource> boundarySolid(const CsgTree& tree, double alpha, bool upper) {
+  BoundaryBuilder builder{alpha, {}, {}};
+  countParents(tree, &builder.parents);
+  return builder.build(tree, upper);
 }
 
 }  // namespace fsdb

@@ -131,24 +131,40 @@ AlphaLevelBounds CsgField::boundsOver(const Vec3& lo, const Vec3& hi) const {
   return acc;
 }
 
-void CsgField::boundingBox(Vec3* lo, Vec3* hi) const { csgBoundingBox(op_, children_, lo, hi); }
+namespace {
 
-void csgBoundingBox(CsgOp op, const std::vector<std::shared_ptr<const AlphaFieldSource>>& children, Vec3* lo,
-                    Vec3* hi) {
-  children[0]->boundingBox(lo, hi);
+// The contract's box rule over the children's boxes.
+void combineBoxes(CsgOp op, const std::vector<Vec3>& los, const std::vector<Vec3>& his, Vec3* lo, Vec3* hi) {
+  *lo = los[0];
+  *hi = his[0];
   if (op == CsgOp::kDifference) return;
-  for (size_t i = 1; i < children.size(); ++i) {
-    Vec3 clo, chi;
-    children[i]->boundingBox(&clo, &chi);
+  for (size_t i = 1; i < los.size(); ++i) {
     if (op == CsgOp::kUnion) {
-      *lo = componentMin(*lo, clo);
-      *hi = componentMax(*hi, chi);
+      *lo = componentMin(*lo, los[i]);
+      *hi = componentMax(*hi, his[i]);
     } else {
-      *lo = componentMax(*lo, clo);
-      *hi = componentMin(*hi, chi);
+      *lo = componentMax(*lo, los[i]);
+      *hi = componentMin(*hi, his[i]);
     }
   }
   if (op == CsgOp::kIntersection) *hi = componentMax(*hi, *lo);  // an empty overlap: a point
+}
+
+}  // namespace
+
+// From the children's boxes found once (ensureChildBoxes): asking the children again each time
+// made the box of a DAG cost its expansion (a shape naming the previous one twice, 30 deep:
+// 2^30 calls).
+void CsgField::boundingBox(Vec3* lo, Vec3* hi) const {
+  ensureChildBoxes();
+  combineBoxes(op_, childLo_, childHi_, lo, hi);
+}
+
+void csgBoundingBox(CsgOp op, const std::vector<std::shared_ptr<const AlphaFieldSource>>& children, Vec3* lo,
+                    Vec3* hi) {
+  std::vector<Vec3> los(children.size()), his(children.size());
+  for (size_t i = 0; i < children.size(); ++i) children[i]->boundingBox(&los[i], &his[i]);
+  combineBoxes(op, los, his, lo, hi);
 }
 
 }  // namespace fsdb

@@ -1,7 +1,10 @@
 #include "geometry/field/smooth_csg_field.h"
 
+#include <map>
+
 #include "geometry/core/error.h"
 #include "geometry/field/fuzzy_part_field.h"
+#include "geometry/field/shared_field.h"
 
 namespace fsdb {
 namespace {
@@ -44,13 +47,33 @@ auto foldChildren(const Children& children, Value value, CsgOp op, const NodeOpe
 
 }  // namespace
 
-std::shared_ptr<const AlphaFieldSource> smoothCrispParts(const std::shared_ptr<const AlphaFieldSource>& field,
-                                                         const LeafSmoothing& smoothing) {
+namespace {
+
+// smoothCrispParts with what it made for each node of the DAG so far: a node shared by several
+// parents (a SharedField) is smoothed once and stays shared, so the walk and the copies it makes
+// are linear in the DAG, not in its expansion.
+using SmoothedNodes = std::map<const AlphaFieldSource*, std::shared_ptr<const AlphaFieldSource>>;
+
+std::shared_ptr<const AlphaFieldSource> smoothCrispPartsOnce(const std::shared_ptr<const AlphaFieldSource>& field,
+                                                             const LeafSmoothing& smoothing, SmoothedNodes* made) {
   if (const auto* part = dynamic_cast<const FuzzyPartField*>(field.get()))
     return part->isCrisp() ? std::make_shared<SmoothedPartField>(*part, smoothing) : field;
+  if (const auto* shared = dynamic_cast<const SharedField*>(field.get())) {
+    auto it = made->find(shared);
+    if (it != made->end()) return it->second;
+    // The source is held by `field` for the whole call: its address is not reused meanwhile.
+    const std::shared_ptr<const AlphaFieldSource> source(field, &shared->source());
+    auto smoothed = smoothCrispPartsOnce(source, smoothing, made);
+    // Still a plain alpha source: keep it shared. A membership (all parts smoothed) is what
+    // the smooth nodes above combine; it stays unwrapped, as before.
+    if (smoothed.get() == &shared->source()) smoothed = field;
+    else if (!std::dynamic_pointer_cast<const MembershipField>(smoothed)) smoothed = std::make_shared<SharedField>(smoothed);
+    (*made)[shared] = smoothed;
+    return smoothed;
+  }
   if (const auto* csg = dynamic_cast<const CsgField*>(field.get())) {
     std::vector<std::shared_ptr<const AlphaFieldSource>> children;
-    for (const auto& c : csg->children()) children.push_back(smoothCrispParts(c, smoothing));
+    for (const auto& c : csg->children()) children.push_back(smoothCrispPartsOnce(c, smoothing, made));
     std::vector<std::shared_ptr<const MembershipField>> memberships = asMemberships(children);
     if (!memberships.empty())
       return std::make_shared<MembershipCsgField>(csg->op(), NodeOperator({"zadeh", {}, {}}), std::move(memberships));
@@ -59,13 +82,22 @@ std::shared_ptr<const AlphaFieldSource> smoothCrispParts(const std::shared_ptr<c
   return field;
 }
 
+}  // namespace
+
+std::shared_ptr<const AlphaFieldSource> smoothCrispParts(const std::shared_ptr<const AlphaFieldSource>& field,
+                                                         const LeafSmoothing& smoothing) {
+  SmoothedNodes made;
+  return smoothCrispPartsOnce(field, smoothing, &made);
+}
+
 std::shared_ptr<const AlphaFieldSource> makeSmoothCsgNode(CsgOp op, const OperatorConfig& config,
                                                           const LeafSmoothing& smoothing,
                                                           std::vector<std::shared_ptr<const AlphaFieldSource>> children) {
   NodeOperator node = checkedOperator(config);
   validateLeafSmoothing(smoothing);
   checkChildren(children);
-  for (auto& c : children) c = smoothCrispParts(c, smoothing);
+  SmoothedNodes made;  // one walk for all children: siblings that share a node share its copy
+  for (auto& c : children) c = smoothCrispPartsOnce(c, smoothing, &made);
   std::vector<std::shared_ptr<const MembershipField>> memberships = asMemberships(children);
   if (!memberships.empty()) return std::make_shared<MembershipCsgField>(op, std::move(node), std::move(memberships));
   return std::make_shared<SmoothCsgField>(op, std::move(node), std::move(children));

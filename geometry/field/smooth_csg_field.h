@@ -96,7 +96,8 @@ class MembershipCsgField : public MembershipField {
 
 // `field` with every crisp FuzzyPartField reached through CsgField nodes replaced by its
 // SmoothedPartField, and every such CsgField whose children all become MembershipFields by a
-// zadeh MembershipCsgField (other fields are returned as they are).
+// zadeh MembershipCsgField (other fields are returned as they are). A SharedField (a node several
+// parents share) is smoothed once per call and stays shared while it is still an alpha source.
 std::shared_ptr<const AlphaFieldSource> smoothCrispParts(const std::shared_ptr<const AlphaFieldSource>& field,
                                                          const LeafSmoothing& smoothing);
 

@@ -5,11 +5,11 @@
 #include <limits>
 #include <utility>
 
-#include "geometry/operators/bezier_operator.h"
 #include "geometry/core/closest_names.h"
-#include "geometry/operators/blending.h"
 #include "geometry/core/error.h"
 #include "geometry/core/parameter_check.h"
+#include "geometry/operators/bezier_operator.h"
+#include "geometry/operators/blending.h"
 #include "geometry/operators/smooth_absolute.h"
 #include "geometry/operators/smooth_unit_step.h"
 #include "geometry/operators/step_functions.h"

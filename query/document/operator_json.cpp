@@ -2,9 +2,9 @@
 
 #include <cmath>
 
+#include "geometry/core/closest_names.h"
 #include "geometry/core/error.h"
 #include "query/json/json_body.h"
-#include "geometry/core/closest_names.h"
 
 namespace fsdb {
 

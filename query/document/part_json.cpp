@@ -2,12 +2,12 @@
 
 #include <cmath>
 
+#include "geometry/core/closest_names.h"
 #include "geometry/core/error.h"
+#include "query/document/part_from_words.h"
 #include "query/json/fuzzy_json.h"
 #include "query/json/json_body.h"
-#include "query/document/part_from_words.h"
 #include "query/linguistic/vocabulary.h"
-#include "geometry/core/closest_names.h"
 
 namespace fsdb {
 namespace {

@@ -2,17 +2,18 @@
 
 #include <map>
 
-#include "geometry/field/csg_field.h"
+#include "geometry/core/closest_names.h"
 #include "geometry/core/error.h"
+#include "geometry/field/csg_field.h"
 #include "geometry/field/fuzzy_part_field.h"
-#include "query/document/csg_text.h"
+#include "geometry/field/shared_field.h"
 #include "geometry/field/smooth_csg_field.h"
-#include "query/json/json_body.h"
+#include "query/document/csg_text.h"
 #include "query/document/operator_json.h"
 #include "query/document/part_json.h"
 #include "query/document/placement_words.h"
+#include "query/json/json_body.h"
 #include "query/linguistic/vocabulary.h"
-#include "geometry/core/closest_names.h"
 
 namespace fsdb {
 namespace {
@@ -138,6 +139,9 @@ struct Walker {
     // Errors inside the stored shape name the reference, then the path inside that shape.
     auto field = this->node(shapeTree(doc, rp, resolver), joinPath(rp, doc.contains("tree") ? "tree" : "csg"), &t);
     expanding.pop_back();
+    // Every parent that names this shape gets the same node, evaluated once per point, box or
+    // block however many name it (geometry/field/shared_field.h).
+    field = std::make_shared<SharedField>(std::move(field));
     built[r.id] = {field, t};
     *tree = t;
     return field;

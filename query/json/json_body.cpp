@@ -3,10 +3,10 @@
 #include <cmath>
 #include <vector>
 
+#include "geometry/core/closest_names.h"
 #include "geometry/core/error.h"
 #include "geometry/core/number_format.h"
 #include "query/json/json_path.h"
-#include "geometry/core/closest_names.h"
 
 namespace fsdb {
 

@@ -176,7 +176,9 @@ QueryScore scoreShape(const LinguisticQuery& query, const std::vector<ShapeCompo
 
 // The leaves of a parsed CSG tree as components, in pre-order; paths "tree", "tree.children[1]",
 // "tree.children[1].children[0]", ... (positions in the resolved tree: a referenced shape's
-// leaves continue below the leaf that references it).
+// leaves continue below the leaf that references it). A subtree shared in the DAG (a stored
+// shape referenced several times, parsed once) gives its leaves once, at its first occurrence:
+// linear in the DAG, never its expansion; scores are the same (linguistic_score.cpp).
 std::vector<ShapeComponent> shapeComponents(const CsgTree& tree);
 
 // The fuzzy distance between the centres of two parts (exact alpha-cuts of the norm of the

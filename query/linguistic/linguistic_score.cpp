@@ -2,12 +2,13 @@
 // Zhang, Pham & Chen, §2.2 and §5).
 #include <algorithm>
 #include <cmath>
+#include <unordered_set>
 
+#include "geometry/core/closest_names.h"
 #include "geometry/core/error.h"
 #include "geometry/fuzzy/fuzzy_similarity.h"
 #include "query/linguistic/linguistic_query.h"
 #include "query/linguistic/vocabulary.h"
-#include "geometry/core/closest_names.h"
 
 namespace fsdb {
 namespace {
@@ -135,13 +136,21 @@ bool readsComponent(const QueryCondition& c) {
   return false;
 }
 
-void collectComponents(const CsgTree& node, const std::string& path, std::vector<ShapeComponent>* out) {
+// Pre-order over the DAG: a subtree shared by several parents (a stored shape named more than
+// once) is listed at its first occurrence only. Its later occurrences are the same leaves at the
+// same placements, which change no score: a descriptor condition takes the best component, and
+// a relation between a leaf and its own copy has a zero offset, which no direction admits
+// (directionMembership is 0). Listing them cost 2^depth components (a shape naming the previous
+// one twice, 16 deep: 131,072) and scoring relations the square of that.
+void collectComponents(const CsgTree& node, const std::string& path, std::vector<ShapeComponent>* out,
+                       std::unordered_set<const CsgTree*>* seen) {
+  if (!seen->insert(&node).second) return;
   if (node.leaf) {
     out->push_back({path, node.part, describePart(node.part)});
     return;
   }
   for (size_t i = 0; i < node.children.size(); ++i)
-    collectComponents(*node.children[i], path + ".children[" + std::to_string(i) + "]", out);
+    collectComponents(*node.children[i], path + ".children[" + std::to_string(i) + "]", out, seen);
 }
 
 }  // namespace
@@ -183,7 +192,8 @@ nlohmann::json explainJson(const QueryScore& score) {
 
 std::vector<ShapeComponent> shapeComponents(const CsgTree& tree) {
   std::vector<ShapeComponent> out;
-  collectComponents(tree, "tree", &out);
+  std::unordered_set<const CsgTree*> seen;
+  collectComponents(tree, "tree", &out, &seen);
   return out;
 }
 

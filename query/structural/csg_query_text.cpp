@@ -6,12 +6,12 @@
 #include <cstdlib>
 #include <map>
 
+#include "geometry/core/closest_names.h"
 #include "geometry/core/error.h"
 #include "query/document/csg_text.h"
 #include "query/json/fuzzy_json.h"
 #include "query/json/number_phrases.h"
 #include "query/linguistic/query_tokens.h"
-#include "geometry/core/closest_names.h"
 
 namespace fsdb {
 namespace {

@@ -18,8 +18,8 @@
 
 #include "db/store.h"
 #include "geometry/core/error.h"
-#include "geometry/curves/fuzzy_bezier.h"
 #include "geometry/core/number_format.h"
+#include "geometry/curves/fuzzy_bezier.h"
 #include "query/document/bezier_json.h"
 #include "query/document/curve_document.h"
 #include "query/document/fair_curve_json.h"

@@ -2,13 +2,13 @@
 // Li, and evaluation of one operator at many points (plots, client-side checks, tests).
 #include <cmath>
 
+#include "geometry/core/closest_names.h"
 #include "geometry/core/error.h"
 #include "geometry/operators/operator_catalog.h"
-#include "query/json/json_body.h"
 #include "query/document/operator_json.h"
+#include "query/json/json_body.h"
 #include "server/http/api.h"
 #include "server/http/http_server.h"
-#include "geometry/core/closest_names.h"
 
 namespace fsdb {
 namespace {

@@ -3,12 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <optional>
 
 #include "geometry/core/error.h"
 #include "geometry/fuzzy/fuzzy_similarity.h"
-#include "query/linguistic/linguistic_query.h"
 #include "query/document/part_json.h"
 #include "query/document/shape_json.h"
+#include "query/linguistic/linguistic_query.h"
 #include "query/linguistic/vocabulary.h"
 
 namespace fsdb {
@@ -232,6 +234,37 @@ TEST(LinguisticScore, CylinderLeftOfACube) {
   EXPECT_EQ(explainJson(scoreDescriptors(q, {}))[0].count("component"), 0u);
   // One component cannot be in a relation with itself.
   EXPECT_EQ(scoreShape(q, componentsOf(leaf("cylinder", 0, 0, 0))).score, 0.0);
+}
+
+// A stored shape naming the previous one twice, 30 deep (2^30 leaves expanded), has the
+// components of the bottom one, each once, and scores as it does; a shared subtree's later
+// occurrences are the same leaves at the same places, which change no score.
+TEST(LinguisticScore, ADagOfSharedShapesListsEachLeafOnce) {
+  std::map<std::string, nlohmann::json> stored;
+  stored["s0"] = {{"kind", "shape"},
+                  {"tree", {{"op", "union"}, {"children", {leaf("cube", 0, 0, 0), leaf("cylinder", -3, 0, 0.5)}}}}};
+  for (int k = 1; k <= 30; ++k) {
+    const std::string below = "s" + std::to_string(k - 1);
+    stored["s" + std::to_string(k)] = {
+        {"kind", "shape"}, {"tree", {{"op", "union"}, {"children", {{{"ref", below}}, {{"ref", below}}}}}}};
+  }
+  int64_t ids = 0;
+  const ReferenceResolver resolver = [&](const std::string&, const nlohmann::json& key) -> std::optional<ResolvedReference> {
+    auto it = stored.find(key.get<std::string>());
+    if (it == stored.end()) return std::nullopt;
+    return ResolvedReference{++ids, it->second};
+  };
+  const auto components = [&](const std::string& name) {
+    return shapeComponents(*parseShapeField(stored[name], "shape", 1000, rememberingResolver(resolver)).tree);
+  };
+  const auto top = components("s30"), bottom = components("s0");
+  ASSERT_EQ(top.size(), 2u);
+  const LinguisticQuery q = parseLinguisticQuery("find a cylinder to the left of a cube", Vocabulary::builtin());
+  EXPECT_DOUBLE_EQ(scoreShape(q, top).score, 1.0);
+  EXPECT_DOUBLE_EQ(scoreShape(q, top).score, scoreShape(q, bottom).score);
+  // Beside a copy of itself a leaf is in no relation: the expansion scores the same.
+  const auto twice = componentsOf({{"op", "union"}, {"children", {leaf("cylinder", 0, 0, 0), leaf("cylinder", 0, 0, 0)}}});
+  EXPECT_EQ(scoreShape(q, twice).score, 0.0);
 }
 
 TEST(LinguisticScore, SphereAbout3AboveABox) {

@@ -1,0 +1,45 @@
+#pragma once
+// SharedField: a node of a CSG DAG that several parents name (a stored shape referenced twice,
+// parsed once), evaluated once per point, box or block however many parents ask.
+//
+// Without it a DAG costs its expansion at every point: a shape naming the previous one twice,
+// 16 levels deep, asks its bottom part 65,536 times per voxel (10 s for 16³ voxels; 30 levels
+// would never end). The Booleans of alpha_field.h read each child once per call, so what a
+// shared node answered for the call just made is what its next parent in the same call needs:
+// the voxel layer evaluates a block depth first, and every parent of a shared node asks it
+// for the same block (sampleBlock), box (boundsOver) or point (levelsAt) in turn.
+//
+// Contract:
+// - The same answers as the wrapped source, call for call (it forwards, or repeats the answer
+//   the source gave to the same arguments on this thread).
+// - Per thread, it remembers its last point, box and block and their answers; that is all the
+//   memory it takes (a block's answer: 4 KiB, made on its first block). Thread-safe like every
+//   AlphaFieldSource: each thread has its own memory, keyed by a number no other SharedField of
+//   the process ever has (so a new one at a freed address never reads an old one's answers).
+// - boundingBox and budgetExhaustions forward (the latter counted once per source however many
+//   parents share it: sumBudgetExhaustions).
+#include <cstdint>
+#include <memory>
+
+#include "geometry/field/alpha_field.h"
+
+namespace fsdb {
+
+class SharedField : public AlphaFieldSource {
+ public:
+  explicit SharedField(std::shared_ptr<const AlphaFieldSource> source);
+
+  AlphaLevels levelsAt(const Vec3& p) const override;
+  AlphaLevelBounds boundsOver(const Vec3& lo, const Vec3& hi) const override;
+  void boundingBox(Vec3* lo, Vec3* hi) const override { source_->boundingBox(lo, hi); }
+  void sampleBlock(const BlockLattice& b, AlphaLevels* out) const override;
+  std::uint64_t budgetExhaustions() const override;
+
+  const AlphaFieldSource& source() const { return *source_; }
+
+ private:
+  std::shared_ptr<const AlphaFieldSource> source_;
+  std::uint64_t id_;  // its key in each thread's memory
+};
+
+}  // namespace fsdb
