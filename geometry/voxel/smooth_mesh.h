@@ -17,7 +17,11 @@
 //    voxel size), refined by 8 bisections (to h·2^-10); with no sign change in reach it stays.
 //    Membership is the exact one: u(p) ≥ α and u(p) > 0 for upper(α), l(p) ≤ α for lower(α).
 //  * Vertices are moved in parallel (TBB); the result does not depend on the thread count.
+//  * `deadline` is checked before each run of 256 vertices (every TBB task checks it), so a
+//    mesh stops within the time of one run past it: Error(limit_exceeded, ..., kDeadlinePath of
+//    envelope_grid.h), and nothing is returned.
 // Throws fsdb::Error(invalid_parameter, "alpha") unless 0 <= alpha <= 1.
+#include <chrono>
 #include <cstdint>
 
 #include "geometry/field/alpha_field.h"
@@ -32,7 +36,9 @@ struct SmoothMeshStats {
   std::uint64_t evaluations = 0;  // levelsAt calls
 };
 
-TriangleMesh extractSmoothMesh(const EnvelopeGrid& grid, const AlphaFieldSource& source, double alpha,
-                               EnvelopeBound bound, SmoothMeshStats* stats = nullptr);
+TriangleMesh extractSmoothMesh(
+    const EnvelopeGrid& grid, const AlphaFieldSource& source, double alpha, EnvelopeBound bound,
+    SmoothMeshStats* stats = nullptr,
+    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max());
 
 }  // namespace fsdb

@@ -5,14 +5,15 @@
 #include <cmath>
 #include <functional>
 
-#include "geometry/field/boundary_method.h"
-#include "geometry/voxel/envelope_grid.h"
+#include "geometry/core/closest_names.h"
 #include "geometry/core/error.h"
 #include "geometry/core/number_format.h"
-#include "query/json/json_body.h"
+#include "geometry/field/boundary_method.h"
+#include "geometry/voxel/envelope_grid.h"
+#include "geometry/voxel/smooth_mesh.h"
 #include "query/document/shape_json.h"
+#include "query/json/json_body.h"
 #include "server/service/single_flight.h"
-#include "geometry/core/closest_names.h"
 
 namespace fsdb {
 namespace {
@@ -205,6 +206,22 @@ nlohmann::json evaluateRequest(const nlohmann::json& request, const EvaluationLi
 Evaluation evaluateParsedShape(const nlohmann::json& request, const ParsedShape& shape,
                                const EvaluationLimits& limits, const std::string& flightKey) {
   return evaluate(request, limits, false, [&] { return shape; }, flightKey);
+}
+
+TriangleMesh evaluationMesh(const Evaluation& evaluation, double alpha, EnvelopeBound bound,
+                            const EvaluationLimits& limits, std::chrono::steady_clock::time_point started) {
+  const auto deadline = limits.maxEvalMs > 0 ? started + std::chrono::milliseconds(limits.maxEvalMs)
+                                             : std::chrono::steady_clock::time_point::max();
+  try {
+    return extractSmoothMesh(*evaluation.grid, *evaluation.source, alpha, bound, nullptr, deadline);
+  } catch (const Error& e) {
+    if (e.code() != errc::kLimitExceeded || e.path() != kDeadlinePath) throw;
+    throw Error(errc::kLimitExceeded,
+                "the grid and its smooth mesh ran longer than max_eval_ms=" + std::to_string(limits.maxEvalMs) +
+                    " ms at resolution " + std::to_string(evaluation.result.value("resolution", 0)) +
+                    "; lower the resolution (fewer fuzzy values also help) or raise --max-eval-ms",
+                "resolution");
+  }
 }
 
 }  // namespace fsdb

@@ -28,11 +28,13 @@
 //   max_eval_ms:    wall time from the start of the evaluation (parse and every grid build; the
 //                   builds check it before each 8³ block, so they stop within one block's time).
 //   Nothing of a stopped evaluation is kept or cached.
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <nlohmann/json.hpp>
 
+#include "geometry/voxel/envelope_mesh.h"
 #include "query/document/shape_json.h"
 
 namespace fsdb {
@@ -63,6 +65,12 @@ Evaluation evaluateShape(const nlohmann::json& request, const EvaluationLimits& 
 // shares (an error of that build reaches every caller; its deadline is the first caller's).
 Evaluation evaluateParsedShape(const nlohmann::json& request, const ParsedShape& shape,
                                const EvaluationLimits& limits, const std::string& flightKey = "");
+
+// The smooth mesh of bound(α) of an evaluation (geometry/voxel/smooth_mesh.h) under its time
+// limit: the grid and its meshes together end by `started` + max_eval_ms, else 413
+// limit_exceeded naming max_eval_ms (path "resolution").
+TriangleMesh evaluationMesh(const Evaluation& evaluation, double alpha, EnvelopeBound bound,
+                            const EvaluationLimits& limits, std::chrono::steady_clock::time_point started);
 
 // evaluateShape(...).result
 nlohmann::json evaluateRequest(const nlohmann::json& request, const EvaluationLimits& limits,

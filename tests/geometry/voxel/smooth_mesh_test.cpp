@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -71,6 +72,26 @@ TEST(SmoothMesh, CrispSpheresLieOnTheirSurface) {
 // A superellipsoid (eps1 = eps2 = 0.5, unit half-lengths: a rounded cube, F(p) = x⁴ + y⁴ + z⁴).
 // F(s·p) = s^(2/eps1)·F(p), so the surface point on the ray through v is v·F(v)^(−eps1/2), and
 // |v|·|1 − F(v)^(−eps1/2)| bounds v's distance to the surface from above.
+// A deadline already past stops the mesh with limit_exceeded at kDeadlinePath; one far away
+// changes nothing.
+TEST(SmoothMesh, StopsAtItsDeadline) {
+  const FuzzyBall ball({0, 0, 0}, 0.8, 1.0, 1.2);
+  const EnvelopeGrid grid = EnvelopeGrid::build(ball, 0.1);
+  try {
+    extractSmoothMesh(grid, ball, 0.5, EnvelopeBound::kUpper, nullptr,
+                      std::chrono::steady_clock::now() - std::chrono::seconds(1));
+    ADD_FAILURE() << "no limit_exceeded";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), errc::kLimitExceeded);
+    EXPECT_EQ(e.path(), kDeadlinePath);
+  }
+  const TriangleMesh later = extractSmoothMesh(grid, ball, 0.5, EnvelopeBound::kUpper, nullptr,
+                                               std::chrono::steady_clock::now() + std::chrono::hours(1));
+  const TriangleMesh never = extractSmoothMesh(grid, ball, 0.5, EnvelopeBound::kUpper);
+  ASSERT_EQ(later.vertices.size(), never.vertices.size());
+  for (size_t i = 0; i < never.vertices.size(); ++i) EXPECT_EQ(norm(later.vertices[i] - never.vertices[i]), 0.0);
+}
+
 TEST(SmoothMesh, ASuperellipsoidLiesOnItsSurface) {
   PlacedSuperquadric s;
   s.params.eps1 = 0.5;

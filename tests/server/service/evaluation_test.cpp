@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <thread>
 #include <vector>
 
@@ -41,6 +42,28 @@ TEST(EvaluationTest, ConcurrentBuildsOfOneKeyRunOnce) {
   const Evaluation later = evaluateParsedShape(request, shape, limits, "same-content");
   EXPECT_NE(later.grid.get(), got[0].grid.get());
   EXPECT_EQ(later.result["alphas"], got[0].result["alphas"]);
+}
+
+// The mesh of an evaluation is held to max_eval_ms counted from the request's start, the grid's
+// time included: 413 naming the option, in the request's terms.
+TEST(EvaluationTest, MeshesAreHeldToTheEvaluationTimeLimit) {
+  const ParsedShape sphere = parseShapeField({{"kind", "part"}, {"params", {{"a1", 1}}}}, "", 100, {});
+  EvaluationLimits limits;
+  limits.maxEvalMs = 1000;
+  const Evaluation e = evaluateParsedShape({{"resolution", 16}, {"alphas", {0.5}}}, sphere, limits);
+  try {
+    evaluationMesh(e, 0.5, EnvelopeBound::kUpper, limits, std::chrono::steady_clock::now() - std::chrono::seconds(2));
+    ADD_FAILURE() << "no limit_exceeded";
+  } catch (const Error& err) {
+    EXPECT_EQ(err.code(), errc::kLimitExceeded);
+    EXPECT_EQ(err.path(), "resolution");
+    EXPECT_NE(std::string(err.what()).find("max_eval_ms=1000"), std::string::npos) << err.what();
+  }
+  EXPECT_FALSE(evaluationMesh(e, 0.5, EnvelopeBound::kUpper, limits, std::chrono::steady_clock::now()).triangles.empty());
+  limits.maxEvalMs = 0;  // no limit
+  EXPECT_FALSE(
+      evaluationMesh(e, 0.5, EnvelopeBound::kUpper, limits, std::chrono::steady_clock::now() - std::chrono::hours(1))
+          .triangles.empty());
 }
 
 TEST(EvaluationTest, DifferentKeysOrResolutionsBuildApart) {
