@@ -20,6 +20,7 @@ std::unique_ptr<Store> PostgresStore::open(const std::string& url, const StoreOp
     }
     store->addConnection(std::move(connection));
   }
+  store->setMaxCacheBytes(options.maxCacheBytes);
   return store;
 }
 

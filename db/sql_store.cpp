@@ -4,6 +4,7 @@
 #include "db/sql_store.h"
 
 #include <algorithm>
+#include <chrono>
 #include <unordered_map>
 
 #include "db/descriptor_index.h"
@@ -171,7 +172,21 @@ std::vector<BulkItemResult> SqlStore::createBatch(const std::vector<NewObject>& 
   return results;
 }
 
+namespace {
+
+int64_t nowMs() {
+  return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+// A read refreshes its entry's `used` at most this often: a hit is a read, not a write each time.
+constexpr int64_t kTouchEveryMs = 10000;
+
+}  // namespace
+
 void SqlStore::storeEvaluation(int64_t objectId, const std::string& key, const CachedEvaluation& value) {
+  const std::uint64_t bytes = value.resultJson.size() + value.vdb.size();
+  if (maxCacheBytes_ > 0 && bytes > maxCacheBytes_) return;  // it alone would not fit
   Lease connection(*this, Lease::Use::kOwn);
   Transaction transaction(*connection);
   if (!objectRow(*connection, objectId))
@@ -179,12 +194,34 @@ void SqlStore::storeEvaluation(int64_t objectId, const std::string& key, const C
   auto statement =
       (*connection)
           .prepare(
-              "INSERT INTO eval_cache (key, object_id, result, vdb) VALUES (?1, ?2, ?3, ?4) ON CONFLICT (key)"
-              " DO UPDATE SET object_id = excluded.object_id, result = excluded.result, vdb = excluded.vdb");
+              "INSERT INTO eval_cache (key, object_id, result, vdb, bytes, used) VALUES (?1, ?2, ?3, ?4, ?5, ?6)"
+              " ON CONFLICT (key) DO UPDATE SET object_id = excluded.object_id, result = excluded.result,"
+              " vdb = excluded.vdb, bytes = excluded.bytes, used = excluded.used");
   statement->bind(1, key).bind(2, objectId).bind(3, value.resultJson);
   if (value.vdb.empty()) statement->bindNull(4);
   else statement->bindBlob(4, value.vdb);
+  statement->bind(5, static_cast<int64_t>(bytes)).bind(6, nowMs());
   statement->run();
+  if (maxCacheBytes_ > 0) {
+    // Least recently used first out, until the entries fit (the new one is the most recent).
+    auto total = (*connection).prepare("SELECT COALESCE(SUM(bytes), 0) FROM eval_cache");
+    total->step();
+    int64_t excess = total->columnInt(0) - static_cast<int64_t>(maxCacheBytes_);
+    if (excess > 0) {
+      auto oldest = (*connection).prepare("SELECT key, bytes FROM eval_cache WHERE key <> ?1 ORDER BY used, key");
+      oldest->bind(1, key);
+      std::vector<std::string> evicted;
+      while (excess > 0 && oldest->step()) {
+        evicted.push_back(oldest->columnText(0));
+        excess -= oldest->columnInt(1);
+      }
+      auto remove = (*connection).prepare("DELETE FROM eval_cache WHERE key = ?1");
+      for (const std::string& k : evicted) {
+        remove->reset();
+        remove->bind(1, k).run();
+      }
+    }
+  }
   transaction.commit();
 }
 
@@ -461,11 +498,28 @@ size_t SqlStore::replaceDescriptors(
 }
 
 std::optional<CachedEvaluation> SqlStore::cachedEvaluation(const std::string& key) const {
-  Lease connection(*this);
-  auto statement = (*connection).prepare("SELECT result, vdb FROM eval_cache WHERE key = ?1");
-  statement->bind(1, key);
-  if (!statement->step()) return std::nullopt;
-  return CachedEvaluation{statement->columnText(0), statement->columnBlob(1)};
+  std::optional<CachedEvaluation> hit;
+  int64_t used = 0;
+  {
+    Lease connection(*this);
+    auto statement = (*connection).prepare("SELECT result, vdb, used FROM eval_cache WHERE key = ?1");
+    statement->bind(1, key);
+    if (!statement->step()) return std::nullopt;
+    hit = CachedEvaluation{statement->columnText(0), statement->columnBlob(1)};
+    used = statement->columnInt(2);
+  }
+  const int64_t now = nowMs();
+  if (maxCacheBytes_ > 0 && now - used > kTouchEveryMs) {
+    // Best effort: a busy database or a lost race costs the entry its place in the order, never
+    // the read.
+    try {
+      Lease connection(*this, Lease::Use::kOwn);
+      auto touch = (*connection).prepare("UPDATE eval_cache SET used = ?2 WHERE key = ?1 AND used < ?2");
+      touch->bind(1, key).bind(2, now).run();
+    } catch (const Error&) {
+    }
+  }
+  return hit;
 }
 
 }  // namespace fsdb

@@ -75,12 +75,14 @@ class SqlStore : public Store {
   // Adds a pooled connection (open() adds poolSize of them; the first migrates).
   void addConnection(std::unique_ptr<sql::Connection> connection);
   void setSchemaVersion(int version) { schemaVersion_ = version; }
+  void setMaxCacheBytes(std::uint64_t bytes) { maxCacheBytes_ = bytes; }
   // Called on a connection before it is lent (PostgreSQL: reconnect when the server dropped it).
   virtual void beforeUse(sql::Connection& connection) const {}
 
  private:
   std::string location_;
   int schemaVersion_ = 0;
+  std::uint64_t maxCacheBytes_ = 0;  // StoreOptions::maxCacheBytes
   mutable std::mutex mutex_;
   mutable std::condition_variable available_;
   std::vector<std::unique_ptr<sql::Connection>> connections_;

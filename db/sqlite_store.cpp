@@ -25,6 +25,7 @@ std::unique_ptr<Store> SqliteStore::open(const std::string& path, const StoreOpt
     if (i == 0) store->setSchemaVersion(applyMigrations(*connection, embeddedMigrations()));
     store->addConnection(std::move(connection));
   }
+  store->setMaxCacheBytes(options.maxCacheBytes);
   return store;
 }
 

@@ -141,6 +141,10 @@ struct StoreOptions {
   int busyTimeoutMs = 5000;
   bool synchronousFull = false;  // NORMAL (default) survives process crashes; FULL survives power loss
   int poolSize = 8;
+  // The evaluation cache's bound (fsdb serve --max-cache-mb): storeEvaluation evicts the least
+  // recently used entries (stored or read) until the entries' bytes fit; an entry larger than
+  // the whole bound is not kept. 0: no bound.
+  std::uint64_t maxCacheBytes = std::uint64_t(1024) << 20;
 };
 
 // A support test of the descriptor index: which rows of `descriptor` a prefilter wants (the

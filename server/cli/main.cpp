@@ -95,7 +95,9 @@ int runServe(const fsdb::ServerOptions& options, const std::string& dbPath, cons
 
   std::unique_ptr<fsdb::Store> store;
   try {
-    store = fsdb::Store::open(dbPath);
+    fsdb::StoreOptions storeOptions;
+    storeOptions.maxCacheBytes = options.maxCacheMb << 20;
+    store = fsdb::Store::open(dbPath, storeOptions);
     spdlog::info("database {} on {} (schema version {})", store->path(), store->backend(), store->schemaVersion());
     // A database never written to gets the demo (loaded by upsert: two servers starting on one new
     // PostgreSQL database both load it, and the second changes nothing).
@@ -256,6 +258,9 @@ int main(int argc, char** argv) {
       });
   serveCmd->add_flag_callback("--no-warm-graphs", [&serve]() { serve.warmGraphs = false; },
                               "do not build the graphs of structural search at start (the first query does)");
+  serveCmd->add_option("--max-cache-mb", serve.maxCacheMb,
+                       "MiB of cached evaluations and exports (least recently used evicted first); 0: no limit")
+      ->check(CLI::Range(std::uint64_t(0), std::uint64_t(1) << 40))->capture_default_str();
   serveCmd->add_option("--max-query-ms", serve.limits.maxQueryMs,
                        "longest POST /query/linguistic or /query/csg search in milliseconds (413 beyond); 0: no limit")
       ->check(CLI::Range(0, 86400000))->capture_default_str();

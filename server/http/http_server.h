@@ -55,6 +55,9 @@ struct ServerOptions {
   // shape and part that has none cached, in the background, as a browser would ask for them, so
   // the studio page's first view finds them ready (`make serve` turns it on).
   bool warmThumbnails = false;
+  // --max-cache-mb: the bound of the store's evaluation cache (db/store.h StoreOptions::
+  // maxCacheBytes), least recently used out first; 0: none.
+  std::uint64_t maxCacheMb = 1024;
   ServerLimits limits;
 };
 

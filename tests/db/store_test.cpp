@@ -321,6 +321,42 @@ TEST_P(StoreTest, EvaluationCacheRoundTripAndInvalidationThroughChain) {
   EXPECT_TRUE(store->cachedEvaluation("key-q"));   // untouched
 }
 
+// --max-cache-mb: every new request (alpha=0.400001, ...) kept a mesh for ever. The cache holds
+// at most maxCacheBytes of entries (result and grid bytes), the least recently used out first;
+// an entry larger than the bound is not kept, and nothing is evicted for it.
+TEST_P(StoreTest, EvaluationCacheEvictsTheLeastRecentlyUsedPastItsBound) {
+  store.reset();
+  StoreOptions options;
+  options.maxCacheBytes = 3000;
+  store = Store::open(database.location(), options);
+  auto p = store->create(part("P"));
+  const std::string grid(990, 'g');  // 992 bytes an entry with its "{}"
+  for (const char* key : {"k1", "k2", "k3"}) store->storeEvaluation(p.id, key, {"{}", grid});
+  for (const char* key : {"k1", "k2", "k3"}) EXPECT_TRUE(store->cachedEvaluation(key)) << key;
+  store->storeEvaluation(p.id, "k4", {"{}", grid});  // 3968 > 3000: the oldest goes
+  EXPECT_FALSE(store->cachedEvaluation("k1"));
+  for (const char* key : {"k2", "k3", "k4"}) EXPECT_TRUE(store->cachedEvaluation(key)) << key;
+  store->storeEvaluation(p.id, "big", {"{}", std::string(3001, 'g')});  // larger than the bound
+  EXPECT_FALSE(store->cachedEvaluation("big"));
+  for (const char* key : {"k2", "k3", "k4"}) EXPECT_TRUE(store->cachedEvaluation(key)) << key;
+  store->storeEvaluation(p.id, "k3", {"{}", grid});  // stored again: now the most recent
+  store->storeEvaluation(p.id, "k5", {"{}", grid});
+  EXPECT_FALSE(store->cachedEvaluation("k2"));
+  for (const char* key : {"k3", "k4", "k5"}) EXPECT_TRUE(store->cachedEvaluation(key)) << key;
+  auto db = database.connect();
+  auto total = db->prepare("SELECT SUM(bytes), COUNT(*) FROM eval_cache");
+  ASSERT_TRUE(total->step());
+  EXPECT_EQ(total->columnInt(0), 3 * 992);
+  EXPECT_EQ(total->columnInt(1), 3);
+
+  // 0: no bound.
+  store.reset();
+  options.maxCacheBytes = 0;
+  store = Store::open(database.location(), options);
+  for (int i = 0; i < 6; ++i) store->storeEvaluation(p.id, "n" + std::to_string(i), {"{}", grid});
+  for (int i = 0; i < 6; ++i) EXPECT_TRUE(store->cachedEvaluation("n" + std::to_string(i))) << i;
+}
+
 TEST_P(StoreTest, CreateBatchReportsBadItemAndCommitsOthers) {
   std::vector<NewObject> items = {part("a"), shape("s", {byName("part", "missing")}), part("b"), part("a")};
   auto results = store->createBatch(items, BulkMode::kCreate);

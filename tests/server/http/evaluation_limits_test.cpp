@@ -121,3 +121,40 @@ TEST(EvalCommandLimits, FlagsDefaultToNoLimitAndStopWhenGiven) {
 }
 
 }  // namespace
+
+// Anonymous GETs filled the disk: every new alpha (0.400001, 0.400002, ...) cached a new mesh
+// for ever. With --max-cache-mb 1 the cached entries stay within 1 MiB (least recently used
+// out first) while every request is still answered, and the latest is still a hit.
+namespace {
+TEST(CacheBound, NewAlphasDoNotGrowTheCachePastMaxCacheMb) {
+  fsdb::test::TempDir dir;
+  const std::string db = fsdb::test::storeLocation(dir, "cache.sqlite");
+  ServerProcess server({"--db", db, "--max-cache-mb", "1"});
+  auto created = server.post("/parts", json{{"name", "ball"}, {"params", {{"a1", {{"tri", {0.9, 1, 1.1}}}}}}});
+  ASSERT_EQ(created.status, 201) << created.body;
+  const std::string mesh = "/parts/" + std::to_string(created.json["id"].get<int64_t>()) + "/mesh?resolution=32&alpha=";
+  size_t served = 0;
+  std::string last;
+  for (int i = 1; i <= 24; ++i) {
+    last = mesh + "0.40000" + std::to_string(i);
+    auto r = server.get(last);
+    ASSERT_EQ(r.status, 200) << r.body.substr(0, 200);
+    served += r.body.size();
+  }
+  ASSERT_GT(served, 2u << 20) << "the meshes must pass the bound for the test to mean anything";
+  httplib::Client c = server.client();
+  auto again = c.Get(last.c_str());
+  ASSERT_TRUE(again);
+  EXPECT_EQ(again->get_header_value("X-Fsdb-Cache"), "hit");
+  // The cache's rows, read through the store's own connection type: the sum of their sizes.
+  std::unique_ptr<fsdb::sql::Connection> connection;
+  if (db.rfind("postgresql://", 0) == 0)
+    connection = std::make_unique<fsdb::postgres::Connection>(fsdb::postgres::parseAddress(db));
+  else
+    connection = std::make_unique<fsdb::sqlite::Connection>(db);
+  auto total = connection->prepare("SELECT COALESCE(SUM(bytes), 0), COUNT(*) FROM eval_cache");
+  ASSERT_TRUE(total->step());
+  EXPECT_LE(total->columnInt(0), 1 << 20);
+  EXPECT_GT(total->columnInt(1), 0);
+}
+}  // namespace
