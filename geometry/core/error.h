@@ -25,6 +25,7 @@ inline constexpr const char* kReferenceCycle = "reference_cycle";      // 422 (a
 inline constexpr const char* kUnauthorized = "unauthorized";            // 401 (write without the bearer token)
 inline constexpr const char* kUnsupportedMediaType = "unsupported_media_type";  // 415 (a multipart body)
 inline constexpr const char* kStorage = "storage_error";                // 503 (database busy, disk full, I/O error)
+inline constexpr const char* kOverloaded = "overloaded";                // 503 + Retry-After (the memory budget is spent)
 inline constexpr const char* kPreconditionFailed = "precondition_failed";  // 412 (If-Match names a version the object moved past)
 }  // namespace errc
 

@@ -71,6 +71,7 @@ class BuildGuard {
   }
   // Before a leaf pair is made: counts it, and throws when the leaves would pass the limit.
   void countLeafPair() {
+    if (limits_.reserveLeafBytes) limits_.reserveLeafBytes(EnvelopeGrid::leafPairBytes());
     if (limits_.maxLeafBytes == 0) return;
     const std::uint64_t n = leafPairs_.fetch_add(1, std::memory_order_relaxed) + 1;
     if (n * EnvelopeGrid::leafPairBytes() > limits_.maxLeafBytes)

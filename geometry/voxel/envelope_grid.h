@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -52,6 +53,10 @@ struct EnvelopeBuildLimits {
   // Checked before every 8³ block is sampled (every TBB task checks it), so a build stops within
   // the time of one block's samples past it: Error(limit_exceeded, ..., kDeadlinePath).
   std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+  // Called with leafPairBytes() before each leaf pair is made (from any task of the build), so a
+  // caller can hold the memory to a budget shared with other builds; whatever it throws stops
+  // the build like the limits above. Empty: nothing to call.
+  std::function<void(std::uint64_t)> reserveLeafBytes;
 };
 inline constexpr const char* kMaxLeafBytesPath = "max_leaf_bytes";
 inline constexpr const char* kDeadlinePath = "deadline";

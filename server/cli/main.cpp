@@ -16,6 +16,7 @@
 #include "db/store.h"
 #include "geometry/core/error.h"
 #include "query/linguistic/vocabulary.h"
+#include "server/service/memory_budget.h"
 #include "server/http/api.h"
 #include "server/service/bulk_import.h"
 #include "server/service/descriptor_rows.h"
@@ -258,6 +259,11 @@ int main(int argc, char** argv) {
       });
   serveCmd->add_flag_callback("--no-warm-graphs", [&serve]() { serve.warmGraphs = false; },
                               "do not build the graphs of structural search at start (the first query does)");
+  serve.limits.maxMemoryMb = fsdb::MemoryBudget::defaultLimitBytes() >> 20;
+  serveCmd->add_option("--max-memory-mb", serve.limits.maxMemoryMb,
+                       "MiB that all evaluations and meshes may hold at once (503 overloaded beyond); "
+                       "default: half the machine's memory; 0: no limit")
+      ->check(CLI::Range(std::uint64_t(0), std::uint64_t(1) << 40))->capture_default_str();
   serveCmd->add_option("--max-cache-mb", serve.maxCacheMb,
                        "MiB of cached evaluations and exports (least recently used evicted first); 0: no limit")
       ->check(CLI::Range(std::uint64_t(0), std::uint64_t(1) << 40))->capture_default_str();

@@ -18,6 +18,7 @@
 #include "query/json/json_body.h"
 #include "server/http/response_encoding.h"
 #include "server/service/error_json.h"
+#include "server/service/memory_budget.h"
 
 namespace fsdb {
 namespace {
@@ -198,6 +199,8 @@ void serveStatic(const std::string& root, const httplib::Request& req, httplib::
 }
 
 void sendError(httplib::Response& res, const Error& e) {
+  // The memory budget is spent for now (server/service/memory_budget.h): say when to come back.
+  if (e.code() == errc::kOverloaded) res.set_header("Retry-After", std::to_string(kOverloadedRetrySeconds));
   sendJson(res, httpStatusFor(e.code()), errorBody(e.code(), e.what(), e.path()));
 }
 

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <optional>
 
 #include "geometry/core/closest_names.h"
 #include "geometry/core/error.h"
@@ -54,11 +55,17 @@ int parseResolution(const nlohmann::json& request, const EvaluationLimits& limit
 
 // EnvelopeGrid::build under the evaluation's limits; a limit the build hits comes back in the
 // terms of the request (its resolution) and of the option that sets it.
+// The grid's leaves are reserved from limits.memory as they are made, into `reservation` (which
+// the caller keeps while the grid lives).
 EnvelopeGrid buildGrid(const AlphaFieldSource& source, double voxelSize, int resolution,
-                       const EvaluationLimits& limits, std::chrono::steady_clock::time_point started) {
+                       const EvaluationLimits& limits, std::chrono::steady_clock::time_point started,
+                       MemoryBudget::Reservation* reservation) {
   EnvelopeBuildLimits buildLimits;
   buildLimits.maxLeafBytes = limits.maxGridMb << 20;
   if (limits.maxEvalMs > 0) buildLimits.deadline = started + std::chrono::milliseconds(limits.maxEvalMs);
+  const std::string what = "the grid at resolution " + std::to_string(resolution);
+  if (reservation)
+    buildLimits.reserveLeafBytes = [reservation, &what](std::uint64_t bytes) { reservation->grow(bytes, what); };
   try {
     return EnvelopeGrid::build(source, voxelSize, buildLimits);
   } catch (const Error& e) {
@@ -138,7 +145,16 @@ Evaluation evaluate(const nlohmann::json& request, const EvaluationLimits& limit
   const auto buildEnvelope = [&] {
     const std::uint64_t exhaustedBefore = shape.field->budgetExhaustions();
     BuiltGrid built;
-    built.grid = std::make_shared<const EnvelopeGrid>(buildGrid(*shape.field, voxelSize, resolution, limits, started));
+    // The grid holds its reservation: the memory goes back to the budget when the last holder
+    // of the grid (this request, a shared build's other callers, a mesh) lets it go.
+    struct HeldGrid {
+      std::shared_ptr<MemoryBudget::Reservation> reservation;
+      std::optional<EnvelopeGrid> grid;
+    };
+    auto held = std::make_shared<HeldGrid>();
+    if (limits.memory) held->reservation = limits.memory->reserve(0, "the grid");
+    held->grid.emplace(buildGrid(*shape.field, voxelSize, resolution, limits, started, held->reservation.get()));
+    built.grid = std::shared_ptr<const EnvelopeGrid>(held, &*held->grid);
     built.exhaustedSearches = shape.field->budgetExhaustions() - exhaustedBefore;
     built.source = shape.field;
     return built;
@@ -156,8 +172,10 @@ Evaluation evaluate(const nlohmann::json& request, const EvaluationLimits& limit
     // lattice.
     for (LevelVolume& v : volumes) {
       for (bool upper : {false, true}) {
-        const EnvelopeGrid crisp =
-            buildGrid(*boundarySolid(*shape.tree, v.alpha, upper), voxelSize, resolution, limits, started);
+        std::shared_ptr<MemoryBudget::Reservation> reservation;
+        if (limits.memory) reservation = limits.memory->reserve(0, "a boundary solid's grid");
+        const EnvelopeGrid crisp = buildGrid(*boundarySolid(*shape.tree, v.alpha, upper), voxelSize, resolution,
+                                             limits, started, reservation.get());
         const double volume = crisp.volumes({1.0})[0].lower_volume;
         (upper ? v.upper_volume : v.lower_volume) = volume;
       }
@@ -208,10 +226,19 @@ Evaluation evaluateParsedShape(const nlohmann::json& request, const ParsedShape&
   return evaluate(request, limits, false, [&] { return shape; }, flightKey);
 }
 
+// A surface crosses a leaf (8³ voxels) on about 64 of them; a vertex costs its position, its
+// normal while it is moved and two triangles' indices: 72 bytes.
+constexpr std::uint64_t kMeshBytesPerLeaf = 64 * 72;
+
 TriangleMesh evaluationMesh(const Evaluation& evaluation, double alpha, EnvelopeBound bound,
                             const EvaluationLimits& limits, std::chrono::steady_clock::time_point started) {
   const auto deadline = limits.maxEvalMs > 0 ? started + std::chrono::milliseconds(limits.maxEvalMs)
                                              : std::chrono::steady_clock::time_point::max();
+  std::shared_ptr<MemoryBudget::Reservation> reservation;
+  if (limits.memory)
+    reservation = limits.memory->reserve(evaluation.grid->stats().leafCount * kMeshBytesPerLeaf,
+                                         "the mesh at resolution " +
+                                             std::to_string(evaluation.result.value("resolution", 0)));
   try {
     return extractSmoothMesh(*evaluation.grid, *evaluation.source, alpha, bound, nullptr, deadline);
   } catch (const Error& e) {

@@ -36,6 +36,7 @@
 
 #include "geometry/voxel/envelope_mesh.h"
 #include "query/document/shape_json.h"
+#include "server/service/memory_budget.h"
 
 namespace fsdb {
 
@@ -46,6 +47,9 @@ struct EvaluationLimits {
   size_t maxNodes = 10000;  // --max-nodes: CSG nodes per shape
   std::uint64_t maxGridMb = 1024;  // --max-grid-mb: MiB of grid leaves per evaluation; 0: no limit
   int maxEvalMs = 60000;           // --max-eval-ms: wall time per evaluation; 0: no limit
+  // --max-memory-mb: the budget grids and meshes reserve from before they allocate (503
+  // overloaded past it); null: none. Not owned.
+  MemoryBudget* memory = nullptr;
 };
 
 // The answer and the grid it was computed on (for mesh and .vdb exports).
@@ -68,7 +72,9 @@ Evaluation evaluateParsedShape(const nlohmann::json& request, const ParsedShape&
 
 // The smooth mesh of bound(α) of an evaluation (geometry/voxel/smooth_mesh.h) under its time
 // limit: the grid and its meshes together end by `started` + max_eval_ms, else 413
-// limit_exceeded naming max_eval_ms (path "resolution").
+// limit_exceeded naming max_eval_ms (path "resolution"). It reserves an estimate of its memory
+// from limits.memory while it is made (72 bytes a vertex, 64 vertices a leaf of the grid; 503
+// overloaded when the budget cannot take it).
 TriangleMesh evaluationMesh(const Evaluation& evaluation, double alpha, EnvelopeBound bound,
                             const EvaluationLimits& limits, std::chrono::steady_clock::time_point started);
 

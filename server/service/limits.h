@@ -19,6 +19,8 @@ struct ServerLimits {
                                     // counted; errors_truncated)
   std::uint64_t maxGridMb = 1024;   // --max-grid-mb: MiB of leaves of one evaluation's grid (413 beyond); 0: none
   int maxEvalMs = 60000;            // --max-eval-ms: longest grid evaluation (413 beyond); 0: none
+  std::uint64_t maxMemoryMb = 0;    // --max-memory-mb: MiB all evaluations and meshes hold at once (503
+                                    // overloaded beyond); 0: none (fsdb serve's default: half the machine)
   int maxQueryMs = 10000;           // --max-query-ms: longest linguistic search (413 beyond); 0: none
   size_t maxCsgPairs = 4u << 20;    // --max-csg-pairs: query leaves x stored leaves of one CSG match (two
                                     // tables of doubles: 64 MiB at the default; 413 beyond)

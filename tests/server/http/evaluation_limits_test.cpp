@@ -158,3 +158,26 @@ TEST(CacheBound, NewAlphasDoNotGrowTheCachePastMaxCacheMb) {
   EXPECT_GT(total->columnInt(1), 0);
 }
 }  // namespace
+
+// --max-memory-mb: evaluations and meshes reserve their memory before they allocate it; past the
+// budget the answer is 503 overloaded with Retry-After (16 evaluations at 512 at once reached
+// 8.2 GB and were still rising), while a request that fits is answered.
+namespace {
+TEST(MemoryBound, PastTheBudgetIs503WithRetryAfter) {
+  ServerProcess server({"--max-memory-mb", "1"});
+  const json sphere = {{"kind", "part"}, {"params", {{"a1", {{"tri", {0.9, 1, 1.1}}}}}}};
+  auto small = server.post("/evaluate", json{{"shape", sphere}, {"resolution", 16}});
+  EXPECT_EQ(small.status, 200) << small.body;
+  httplib::Client c = server.client();
+  auto big = c.Post("/evaluate", json{{"shape", sphere}, {"resolution", 96}}.dump(), "application/json");
+  ASSERT_TRUE(big);
+  EXPECT_EQ(big->status, 503) << big->body;
+  EXPECT_EQ(big->get_header_value("Retry-After"), "5");
+  const json error = json::parse(big->body)["error"];
+  EXPECT_EQ(error["code"], "overloaded");
+  EXPECT_NE(error["message"].get<std::string>().find("max_memory_mb=1"), std::string::npos) << big->body;
+  // Nothing stays reserved: the small one is answered again.
+  EXPECT_EQ(server.post("/evaluate", json{{"shape", sphere}, {"resolution", 16}}).status, 200);
+  EXPECT_EQ(server.get("/health").status, 200);
+}
+}  // namespace
