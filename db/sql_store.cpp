@@ -37,7 +37,9 @@ SqlStore::Lease::Lease(const SqlStore& store, Use use) : store_(store) {
   }
   {
     std::unique_lock<std::mutex> lock(store_.mutex_);
+    ++store_.waiting_;
     store_.available_.wait(lock, [&] { return !store_.idle_.empty(); });
+    --store_.waiting_;
     connection_ = store_.idle_.back();
     store_.idle_.pop_back();
   }
@@ -220,6 +222,7 @@ void SqlStore::storeEvaluation(int64_t objectId, const std::string& key, const C
         remove->reset();
         remove->bind(1, k).run();
       }
+      evictions_ += evicted.size();
     }
   }
   transaction.commit();
@@ -495,6 +498,24 @@ size_t SqlStore::replaceDescriptors(
   }
   transaction.commit();
   return replaced;
+}
+
+StoreStats SqlStore::stats() const {
+  StoreStats out;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    out.poolConnections = static_cast<int>(connections_.size());
+    out.poolIdle = static_cast<int>(idle_.size());
+  }
+  out.poolWaiting = waiting_.load();
+  out.cacheEvictions = evictions_.load();
+  Lease connection(*this);
+  auto statement = (*connection).prepare("SELECT COALESCE(SUM(bytes), 0), COUNT(*) FROM eval_cache");
+  if (statement->step()) {
+    out.cacheBytes = static_cast<std::uint64_t>(statement->columnInt(0));
+    out.cacheEntries = static_cast<std::uint64_t>(statement->columnInt(1));
+  }
+  return out;
 }
 
 std::optional<CachedEvaluation> SqlStore::cachedEvaluation(const std::string& key) const {

@@ -4,6 +4,7 @@
 // descriptor_index.h) once; SqliteStore and PostgresStore only open the connections, apply their
 // engine's migrations and answer the few engine-specific calls (checkpoint, integrityCheck).
 // Internal to db/: callers use Store::open.
+#include <atomic>
 #include <condition_variable>
 #include <functional>
 #include <memory>
@@ -48,6 +49,7 @@ class SqlStore : public Store {
   std::vector<PendingDescriptors> pendingDescriptors(int64_t afterId, int limit) const override;
   size_t replaceDescriptors(
       const std::vector<std::pair<PendingDescriptors, std::vector<DescriptorComponent>>>& refreshed) override;
+  StoreStats stats() const override;
   std::optional<CachedEvaluation> cachedEvaluation(const std::string& key) const override;
   void storeEvaluation(int64_t objectId, const std::string& key, const CachedEvaluation& value) override;
   void readSnapshot(const std::function<void()>& body) const override;
@@ -83,6 +85,8 @@ class SqlStore : public Store {
   std::string location_;
   int schemaVersion_ = 0;
   std::uint64_t maxCacheBytes_ = 0;  // StoreOptions::maxCacheBytes
+  std::atomic<std::uint64_t> evictions_{0};
+  mutable std::atomic<int> waiting_{0};  // Lease constructors waiting for a connection
   mutable std::mutex mutex_;
   mutable std::condition_variable available_;
   std::vector<std::unique_ptr<sql::Connection>> connections_;

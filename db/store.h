@@ -207,6 +207,15 @@ struct PendingDescriptors {
   int64_t generation = 0;
 };
 
+// What GET /metrics reports of a store (Store::stats).
+struct StoreStats {
+  int poolConnections = 0;  // connections in the pool
+  int poolIdle = 0;         // of them, not lent to a call now
+  int poolWaiting = 0;      // calls waiting for one
+  std::uint64_t cacheBytes = 0, cacheEntries = 0;  // the evaluation cache's entries (result and grid bytes)
+  std::uint64_t cacheEvictions = 0;                // entries this process evicted (--max-cache-mb)
+};
+
 struct CachedEvaluation {
   std::string resultJson;
   std::string vdb;  // may be empty
@@ -322,6 +331,10 @@ class Store {
   // rows from documents it read after pendingDescriptors.
   virtual size_t replaceDescriptors(
       const std::vector<std::pair<PendingDescriptors, std::vector<DescriptorComponent>>>& refreshed) = 0;
+
+  // The pool and the evaluation cache now (one query of the cache's sums); a store without a pool
+  // answers zeros.
+  virtual StoreStats stats() const { return {}; }
 
   virtual std::optional<CachedEvaluation> cachedEvaluation(const std::string& key) const = 0;
   virtual void storeEvaluation(int64_t objectId, const std::string& key, const CachedEvaluation& value) = 0;

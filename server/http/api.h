@@ -8,12 +8,14 @@
 namespace fsdb {
 class HttpServer;
 class Store;
+class MemoryBudget;
 struct ApiRequest;
 struct BezierJsonLimits;
 struct ServerLimits;
 
-// GET /health (with the store's counts), GET /openapi.json
-void registerServiceRoutes(HttpServer& server, const Store& store);
+// GET /health (with the store's counts), GET /openapi.json, GET /metrics (server/http/metrics.h,
+// with the gauges of the server, the store and `memory`)
+void registerServiceRoutes(HttpServer& server, const Store& store, const MemoryBudget& memory);
 // GET /operators, POST /operators/evaluate
 void registerOperatorRoutes(HttpServer& server);
 // GET /vocabulary (query/linguistic/vocabulary.h: activeVocabulary())
@@ -21,7 +23,8 @@ void registerVocabularyRoutes(HttpServer& server);
 
 // POST /evaluate (references in inline documents resolve against the store), and the stored-shape
 // forms: POST /shapes/{id}/evaluate (cached), GET /shapes/{id}/membership, /mesh, /grid.vdb
-void registerEvaluationRoutes(HttpServer& server, Store& store);
+// Grids and meshes reserve their memory from `memory` (when --max-memory-mb is not 0).
+void registerEvaluationRoutes(HttpServer& server, Store& store, MemoryBudget* memory);
 
 // POST/GET /parts, GET/PUT/DELETE /parts/{id}, POST /parts/bulk, and the same for /shapes,
 // /curves and /surfaces

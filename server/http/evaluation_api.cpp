@@ -108,14 +108,10 @@ ApiResponse bytesResponse(std::string bytes, const std::string& contentType, con
 
 }  // namespace
 
-void registerEvaluationRoutes(HttpServer& server, Store& store) {
+void registerEvaluationRoutes(HttpServer& server, Store& store, MemoryBudget* memory) {
   const ServerLimits& serverLimits = server.options().limits;
-  // One budget for every evaluation and mesh of this server. Kept for the process's life: a grid
-  // that a background task still holds gives its reservation back to it after the server stops.
-  static std::vector<std::unique_ptr<MemoryBudget>> budgets;
-  budgets.push_back(std::make_unique<MemoryBudget>(serverLimits.maxMemoryMb << 20));
   const EvaluationLimits limits{serverLimits.maxResolution, serverLimits.maxNodes, serverLimits.maxGridMb,
-                                serverLimits.maxEvalMs, serverLimits.maxMemoryMb > 0 ? budgets.back().get() : nullptr};
+                                serverLimits.maxEvalMs, serverLimits.maxMemoryMb > 0 ? memory : nullptr};
   const int maxDepth = server.options().limits.maxJsonDepth;
 
   server.addRoute("POST", "/evaluate", [limits, &store](const ApiRequest& req) {

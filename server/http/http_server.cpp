@@ -29,6 +29,10 @@ const char* const kStudioPaths = R"(/|/index\.html|/studio\.(js|css)|/vendor/[A-
 // Start time of the request a worker thread is serving; set by the pre-routing handler and
 // read by the logger, both of which run on the thread that serves the request.
 thread_local std::chrono::steady_clock::time_point tRequestStart;
+// The route template that answered (set by addRoute's wrapper), and the error code of an error
+// answer (set by sendError), read by the logger for the metrics; reset per request.
+thread_local const std::string* tRoute = nullptr;
+thread_local std::string tErrorCode;
 
 // "/parts/{id}/mesh" -> "^/parts/([^/]+)/mesh$"
 std::string routeRegex(const std::string& openapiPath) {
@@ -198,7 +202,26 @@ void serveStatic(const std::string& root, const httplib::Request& req, httplib::
   }
 }
 
+// httplib's pool, counting the connections that wait for a worker (fsdb_http_connections_queued).
+class CountingPool : public httplib::TaskQueue {
+ public:
+  CountingPool(size_t threads, std::atomic<int>* queued) : pool_(threads), queued_(queued) {}
+  void enqueue(std::function<void()> fn) override {
+    ++*queued_;
+    pool_.enqueue([fn = std::move(fn), queued = queued_] {
+      --*queued;
+      fn();
+    });
+  }
+  void shutdown() override { pool_.shutdown(); }
+
+ private:
+  httplib::ThreadPool pool_;
+  std::atomic<int>* queued_;
+};
+
 void sendError(httplib::Response& res, const Error& e) {
+  tErrorCode = e.code();
   // The memory budget is spent for now (server/service/memory_budget.h): say when to come back.
   if (e.code() == errc::kOverloaded) res.set_header("Retry-After", std::to_string(kOverloadedRetrySeconds));
   sendJson(res, httpStatusFor(e.code()), errorBody(e.code(), e.what(), e.path()));
@@ -237,8 +260,10 @@ void HttpServer::addRoute(const std::string& method, const std::string& openapiP
   // form and answers 413 when it is over 8 KiB, so every JSON document over 8 KiB sent with
   // `curl -d` was refused as "larger than max_body_bytes". It also does not bound chunked bodies;
   // readBody does. (httplib still refuses a Content-Length over max_body_bytes first.)
-  auto wrapped = [handler = std::move(handler), maxDepth, maxBody, token, routeOptions](
+  auto route = std::make_shared<const std::string>(openapiPath);
+  auto wrapped = [handler = std::move(handler), maxDepth, maxBody, token, routeOptions, route](
                      const httplib::Request& req, httplib::Response& res, const httplib::ContentReader* content) {
+    tRoute = route.get();
     ApiRequest api{req, nullptr, {}, {}};
     try {
       // The whole body first, as httplib did before any handler ran, so that an early error
@@ -300,7 +325,8 @@ void HttpServer::installHandlers() {
   // with 8 workers and 51-54 ms with 16, at the same throughput (docs/performance.md). The
   // store's connection pool, not the workers, bounds the database work in flight.
   const int threads = options_.threads > 0 ? options_.threads : std::max(16u, std::thread::hardware_concurrency());
-  s.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<size_t>(threads)); };
+  workerThreads_ = threads;
+  s.new_task_queue = [this, threads] { return new CountingPool(static_cast<size_t>(threads), &queued_); };
 
   if (!options_.corsOrigin.empty()) {
     // Every answer, errors included, names the origin; a preflight is answered for any path.
@@ -352,8 +378,13 @@ void HttpServer::installHandlers() {
     if (!refuseMethod(req.method, req.path, res)) res.status = 404;
   });
 
-  s.set_pre_routing_handler([](const httplib::Request&, httplib::Response&) {
+  s.set_pre_routing_handler([this](const httplib::Request&, httplib::Response&) {
+    // A request whose answer could not be written never reached the logger: it is over now.
+    if (tRequestStart != std::chrono::steady_clock::time_point{}) --inFlight_;
     tRequestStart = std::chrono::steady_clock::now();
+    tRoute = nullptr;
+    tErrorCode.clear();
+    ++inFlight_;
     return httplib::Server::HandlerResponse::Unhandled;
   });
 
@@ -411,10 +442,22 @@ void HttpServer::installHandlers() {
     sendJson(res, 500, errorBody("internal", "internal error: " + what, ""));
   });
 
-  s.set_logger([](const httplib::Request& req, const httplib::Response& res) {
+  s.set_logger([this](const httplib::Request& req, const httplib::Response& res) {
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - tRequestStart).count();
     spdlog::info("{} {} {} {}B {:.2f}ms", req.method, req.path, res.status, res.body.size(), ms);
+    // Requests that passed the pre-routing handler (those httplib refused before it are not
+    // logged either). Their series: the route's template, "page" or "none".
+    if (tRequestStart != std::chrono::steady_clock::time_point{}) {
+      --inFlight_;
+      static const std::string page = "page", none = "none";
+      static const std::regex studio(kStudioPaths);
+      const std::string& route =
+          tRoute ? *tRoute : (!options_.webRoot.empty() && std::regex_match(req.path, studio) ? page : none);
+      metrics_.observe(req.method, route, res.status, ms / 1000.0);
+      if (!tErrorCode.empty()) metrics_.reject(tErrorCode);
+      tRequestStart = {};
+    }
   });
 }
 

@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "server/http/metrics.h"
 #include "server/service/limits.h"
 
 namespace httplib {
@@ -125,6 +126,13 @@ class HttpServer {
   // listen() to be called (which then returns at once), so a stop is never lost.
   void stop();
 
+  // What GET /metrics counts (server/http/metrics.h); connections are queued while they wait for
+  // a worker, and requests in flight from their request line to their answer.
+  Metrics& metrics() { return metrics_; }
+  int connectionsQueued() const { return queued_.load(); }
+  int requestsInFlight() const { return inFlight_.load(); }
+  int workerThreads() const { return workerThreads_; }
+
  private:
   void installHandlers();
   // The methods of the routes whose pattern matches `path` ("GET, PUT"), the studio page's GET
@@ -142,6 +150,9 @@ class HttpServer {
   std::atomic<bool> stopRequested_{false};
   std::atomic<bool> listenReturned_{false};
   int listenSocket_ = -1;  // set by httplib's socket callback when it binds
+  Metrics metrics_;
+  std::atomic<int> queued_{0}, inFlight_{0};
+  int workerThreads_ = 0;
 };
 
 }  // namespace fsdb

@@ -2,7 +2,8 @@
 #include "server/http/metrics.h"
 
 #include <cmath>
-#include <cstdio>
+
+#include "geometry/core/number_format.h"
 
 namespace fsdb {
 namespace {
@@ -21,11 +22,11 @@ std::string label(const std::string& value) {
   return out;
 }
 
+// The text format's numbers: formatNumber's shortest round-trip form, and its spelling of the
+// infinities.
 std::string number(double v) {
   if (std::isinf(v)) return v > 0 ? "+Inf" : "-Inf";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
+  return formatNumber(v);
 }
 
 }  // namespace

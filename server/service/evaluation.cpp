@@ -1,6 +1,7 @@
 #include "server/service/evaluation.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -86,6 +87,16 @@ EnvelopeGrid buildGrid(const AlphaFieldSource& source, double voxelSize, int res
   }
 }
 
+std::atomic<int> gRunning{0};  // evaluationsRunning()
+
+// Counts one running grid build or mesh while it lives.
+struct Running {
+  Running() { ++gRunning; }
+  ~Running() { --gRunning; }
+  Running(const Running&) = delete;
+  Running& operator=(const Running&) = delete;
+};
+
 // One grid build and what the searches in it counted.
 struct BuiltGrid {
   std::shared_ptr<const EnvelopeGrid> grid;
@@ -143,6 +154,7 @@ Evaluation evaluate(const nlohmann::json& request, const EvaluationLimits& limit
                     ", " + formatNumber(kMaxVoxelSize) + "]",
                 "shape");
   const auto buildEnvelope = [&] {
+    const Running running;
     const std::uint64_t exhaustedBefore = shape.field->budgetExhaustions();
     BuiltGrid built;
     // The grid holds its reservation: the memory goes back to the budget when the last holder
@@ -230,10 +242,13 @@ Evaluation evaluateParsedShape(const nlohmann::json& request, const ParsedShape&
 // normal while it is moved and two triangles' indices: 72 bytes.
 constexpr std::uint64_t kMeshBytesPerLeaf = 64 * 72;
 
+int evaluationsRunning() { return gRunning.load(); }
+
 TriangleMesh evaluationMesh(const Evaluation& evaluation, double alpha, EnvelopeBound bound,
                             const EvaluationLimits& limits, std::chrono::steady_clock::time_point started) {
   const auto deadline = limits.maxEvalMs > 0 ? started + std::chrono::milliseconds(limits.maxEvalMs)
                                              : std::chrono::steady_clock::time_point::max();
+  const Running running;
   std::shared_ptr<MemoryBudget::Reservation> reservation;
   if (limits.memory)
     reservation = limits.memory->reserve(evaluation.grid->stats().leafCount * kMeshBytesPerLeaf,

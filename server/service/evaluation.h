@@ -78,6 +78,9 @@ Evaluation evaluateParsedShape(const nlohmann::json& request, const ParsedShape&
 TriangleMesh evaluationMesh(const Evaluation& evaluation, double alpha, EnvelopeBound bound,
                             const EvaluationLimits& limits, std::chrono::steady_clock::time_point started);
 
+// Grid builds and smooth meshes running now in this process (GET /metrics).
+int evaluationsRunning();
+
 // evaluateShape(...).result
 nlohmann::json evaluateRequest(const nlohmann::json& request, const EvaluationLimits& limits,
                                const ReferenceResolver& resolver = {});

@@ -55,7 +55,9 @@ void MemoryBudget::take(Reservation& r, std::uint64_t bytes, const std::string& 
                          });
     if (younger) younger->stop_.store(true, std::memory_order_relaxed);
     if (!waiting || std::chrono::steady_clock::now() >= giveUp) refuse(bytes, what);
+    ++waiting_;
     released_.wait_for(lock, std::chrono::milliseconds(50));
+    --waiting_;
   }
 }
 

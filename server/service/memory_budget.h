@@ -67,6 +67,8 @@ class MemoryBudget {
   std::uint64_t limit() const { return limit_; }
   // Grows refused since the start (those told to give way included).
   std::uint64_t refusals() const { return refusals_.load(std::memory_order_relaxed); }
+  // Grows waiting now for a younger reservation to give its memory back.
+  int waiting() const { return waiting_.load(std::memory_order_relaxed); }
 
   // Half of the machine's physical memory (the default of --max-memory-mb).
   static std::uint64_t defaultLimitBytes();
@@ -84,6 +86,7 @@ class MemoryBudget {
   std::atomic<std::uint64_t> reserved_{0};
   std::atomic<std::uint64_t> refusals_{0};
   std::atomic<std::uint64_t> nextOrder_{0};
+  std::atomic<int> waiting_{0};
   std::mutex mutex_;
   std::condition_variable released_;
   std::set<Reservation*, ByOrder> live_;  // every reservation not yet destroyed

@@ -195,6 +195,10 @@ class Client:
         """GET /openapi.json: the server's OpenAPI document."""
         return self._http.json("GET", "/openapi.json")
 
+    def metrics(self) -> str:
+        """GET /metrics: the server's counters and gauges in the Prometheus text format."""
+        return self._http.request("GET", "/metrics")[2].decode("utf-8")
+
     def vocabulary(self) -> Json:
         """GET /vocabulary: the words the searches understand."""
         return self._http.json("GET", "/vocabulary")
@@ -356,6 +360,7 @@ def _progress(total: int):
 ROUTES: Dict[Tuple[str, str], str] = {
     ("GET", "/health"): "Client.health",
     ("GET", "/openapi.json"): "Client.openapi",
+    ("GET", "/metrics"): "Client.metrics",
     ("GET", "/operators"): "Client.operators",
     ("POST", "/operators/evaluate"): "Client.evaluate_operator",
     ("GET", "/vocabulary"): "Client.vocabulary",
