@@ -45,10 +45,13 @@ bench: build
 	scripts/run-benchmarks $(BUILD)
 
 # 60 s of reads under wrk -c64 beside writes, evaluations and both searches (bench/soak.sh); exit 1
-# on any error, any 5xx, or RSS growth of 10% or more after the warm-up.
+# on any error, any 5xx, or RSS growth of 10% or more after the warm-up. Then rounds of 16
+# evaluations at once under a 1 GiB memory budget (bench/soak_evaluations.sh): exit 1 on any answer
+# but 200 or 503 overloaded, an RSS past the budget or not given back, or a slow /health.
 SOAK_SECONDS ?= 60
 soak: build
 	bench/soak.sh $(BUILD) $(SOAK_SECONDS)
+	bench/soak_evaluations.sh $(BUILD)
 
 clean:
 	rm -rf $(BUILD)

@@ -114,9 +114,14 @@ void registerEvaluationRoutes(HttpServer& server, Store& store, MemoryBudget* me
                                 serverLimits.maxEvalMs, serverLimits.maxMemoryMb > 0 ? memory : nullptr};
   const int maxDepth = server.options().limits.maxJsonDepth;
 
-  server.addRoute("POST", "/evaluate", [limits, &store](const ApiRequest& req) {
-    return ApiResponse{200, evaluateRequest(req.body, limits, storeResolver(store))};
-  });
+  // Grid builds and meshes are heavy (RouteOptions::heavy): at most half the workers serve them.
+  const RouteOptions heavy{false, false, true};
+  server.addRoute(
+      "POST", "/evaluate",
+      [limits, &store](const ApiRequest& req) {
+        return ApiResponse{200, evaluateRequest(req.body, limits, storeResolver(store))};
+      },
+      heavy);
 
   // The body ({"resolution","alphas","method"}) may be empty: the defaults of POST /evaluate.
   server.addRoute(
@@ -140,7 +145,7 @@ void registerEvaluationRoutes(HttpServer& server, Store& store, MemoryBudget* me
         result["cached"] = false;
         return ApiResponse{200, result};
       },
-      RouteOptions{false, true});
+      RouteOptions{false, true, true});
 
   // docs/api.md §4: "upper" is the highest α with the point in upper(α). "lower" as docs/api.md
   // words it (the highest α with the point in lower(α)) is 1 or 0, because lower(α) grows with α;
@@ -214,7 +219,7 @@ void registerEvaluationRoutes(HttpServer& server, Store& store, MemoryBudget* me
         return made;
       });
       return bytesResponse(std::move(bytes), contentType, filename, false);
-    });
+    }, heavy);
   }
 
   // Thumbnails of stored shapes and parts: lower(α) solid and upper(α) translucent
@@ -241,7 +246,7 @@ void registerEvaluationRoutes(HttpServer& server, Store& store, MemoryBudget* me
         return made;
       });
       return bytesResponse(std::move(bytes), "image/png", filename, false, true);
-    });
+    }, heavy);
   }
 
   server.addRoute("GET", "/shapes/{id}/grid.vdb", [limits, &store](const ApiRequest& req) {
@@ -259,7 +264,7 @@ void registerEvaluationRoutes(HttpServer& server, Store& store, MemoryBudget* me
       return made;
     });
     return bytesResponse(std::move(bytes), "application/octet-stream", filename, false);
-  });
+  }, heavy);
 }
 
 }  // namespace fsdb

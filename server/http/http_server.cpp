@@ -60,7 +60,8 @@ bool bearerMatches(const std::string& header, const std::string& token) {
   return diff == 0;
 }
 
-// An unauthenticated write's body is not wanted: it is read and dropped, never kept or parsed.
+// An unauthenticated write's body (or any refused before it is read) is not wanted: it is read
+// and dropped, never kept or parsed.
 // It is still read to its end, because httplib keeps the connection open after any answer and
 // would read what is left of the body as the next requests. A client that asks first
 // (Expect: 100-continue; curl does for bodies over 1 MiB) is answered 401 before it sends one.
@@ -261,11 +262,31 @@ void HttpServer::addRoute(const std::string& method, const std::string& openapiP
   // `curl -d` was refused as "larger than max_body_bytes". It also does not bound chunked bodies;
   // readBody does. (httplib still refuses a Content-Length over max_body_bytes first.)
   auto route = std::make_shared<const std::string>(openapiPath);
-  auto wrapped = [handler = std::move(handler), maxDepth, maxBody, token, routeOptions, route](
+  std::atomic<int>* heavy = routeOptions.heavy ? &heavy_ : nullptr;
+  const int maxHeavy = std::max(1, workerThreads_ / 2);
+  auto wrapped = [handler = std::move(handler), maxDepth, maxBody, token, routeOptions, route, heavy, maxHeavy](
                      const httplib::Request& req, httplib::Response& res, const httplib::ContentReader* content) {
     tRoute = route.get();
     ApiRequest api{req, nullptr, {}, {}};
+    struct HeavySlot {
+      std::atomic<int>* count;
+      ~HeavySlot() {
+        if (count) --*count;
+      }
+    } slot{nullptr};
     try {
+      if (heavy) {
+        if (++*heavy > maxHeavy) {
+          --*heavy;
+          if (content) drainUnauthorizedBody(*content);  // not wanted: dropped, never kept
+          throw Error(errc::kOverloaded,
+                      "the server is building " + std::to_string(maxHeavy) +
+                          " grids or meshes, the most it takes at once (half its --threads workers, so that other "
+                          "requests always find one); retry in a few seconds",
+                      "");
+        }
+        slot.count = heavy;
+      }
       // The whole body first, as httplib did before any handler ran, so that an early error
       // never leaves unread bytes on a keep-alive connection.
       // The token before the body: an unauthenticated client's body is never read whole.
@@ -318,13 +339,15 @@ void HttpServer::installHandlers() {
     setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, reinterpret_cast<const void*>(&yes), sizeof(yes));
     setsockopt(sock, IPPROTO_TCP, TCP_NODELAY, reinterpret_cast<const void*>(&yes), sizeof(yes));
   });
-  // At least 16: a keep-alive connection holds its worker until it closes (after 5 requests or
-  // 5 s idle), so a client beyond the workers waits for another's whole session. A browser opens
+  // At least 32 (it was 16): a keep-alive connection holds its worker until it closes (after 5
+  // requests or 5 s idle), so a client beyond the workers waits for another's whole session, and
+  // half of them at most serve grid builds and meshes (RouteOptions::heavy): 16 evaluations at
+  // once then leave 16 workers for everything else. A browser opens
   // six at once for one page (with two workers the third file of the studio page waited for a
   // keep-alive timeout); 16 clients of POST /query/linguistic at 1M parts had a p99 of 58-64 ms
   // with 8 workers and 51-54 ms with 16, at the same throughput (docs/performance.md). The
   // store's connection pool, not the workers, bounds the database work in flight.
-  const int threads = options_.threads > 0 ? options_.threads : std::max(16u, std::thread::hardware_concurrency());
+  const int threads = options_.threads > 0 ? options_.threads : std::max(32u, std::thread::hardware_concurrency());
   workerThreads_ = threads;
   s.new_task_queue = [this, threads] { return new CountingPool(static_cast<size_t>(threads), &queued_); };
 

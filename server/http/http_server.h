@@ -42,7 +42,7 @@ struct ServerOptions {
   // unauthorized otherwise). Reads never need it.
   std::string token;
   int port = 8080;  // 0: pick a free port
-  int threads = 0;  // 0: hardware concurrency, at least 16 (a keep-alive connection holds a worker)
+  int threads = 0;  // 0: hardware concurrency, at least 32 (a keep-alive connection holds a worker)
   // Build the stored shapes' graphs of structural search in the background at start
   // (server/service/graph_warmup.h); --no-warm-graphs turns it off.
   bool warmGraphs = true;
@@ -93,6 +93,11 @@ struct ApiResponse {
 struct RouteOptions {
   bool write = false;    // changes the database: needs the bearer token when one is set
   bool rawBody = false;  // the handler reads raw.body itself (JSON Lines); body stays null
+  // Builds a grid or a mesh (seconds, and a worker all the while): at most half the workers
+  // serve such requests at once, the next is 503 overloaded with Retry-After, so that cheap
+  // requests (/health, reads, searches) always find a worker. 16 evaluations at once held all
+  // 16 workers and /health waited 10 s.
+  bool heavy = false;
 };
 
 using ApiHandler = std::function<ApiResponse(const ApiRequest&)>;
@@ -152,6 +157,7 @@ class HttpServer {
   int listenSocket_ = -1;  // set by httplib's socket callback when it binds
   Metrics metrics_;
   std::atomic<int> queued_{0}, inFlight_{0};
+  std::atomic<int> heavy_{0};  // requests of heavy routes being served
   int workerThreads_ = 0;
 };
 

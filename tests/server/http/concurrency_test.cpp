@@ -18,7 +18,9 @@ namespace {
 
 TEST(Concurrency, EightClientsMixingReadsAndWrites) {
   TempDir dir;
-  ServerProcess server({"--db", dir.file("concurrent.sqlite"), "--threads", "8"});
+  // 16 workers: at most half of them build grids (RouteOptions::heavy), so eight clients that may
+  // all evaluate at once stay within the server's bounds and every answer must succeed.
+  ServerProcess server({"--db", dir.file("concurrent.sqlite"), "--threads", "16"});
   constexpr int kThreads = 8;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(4);
   std::atomic<int> parts{0}, shapes{0}, requests{0}, serverErrors{0}, transportErrors{0}, unexpected{0};

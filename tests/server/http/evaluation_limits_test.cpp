@@ -6,6 +6,8 @@
 #include <chrono>
 #include <fstream>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "query/document/part_json.h"
 #include "tests/server/shared_server.h"
@@ -179,5 +181,37 @@ TEST(MemoryBound, PastTheBudgetIs503WithRetryAfter) {
   // Nothing stays reserved: the small one is answered again.
   EXPECT_EQ(server.post("/evaluate", json{{"shape", sphere}, {"resolution", 16}}).status, 200);
   EXPECT_EQ(server.get("/health").status, 200);
+}
+}  // namespace
+
+// Grid builds and meshes take at most half the workers: with --threads 4, a third evaluation
+// sent while two run is 503 overloaded with Retry-After at once, and /health is answered
+// meanwhile (16 evaluations at once held all 16 workers and /health waited 10 s).
+namespace {
+TEST(HeavyRoutes, AtMostHalfTheWorkersBuildGrids) {
+  ServerProcess server({"--threads", "4", "--max-eval-ms", "0"});
+  const std::string body = json{{"shape", slowPart()}, {"resolution", 32}}.dump();
+  std::vector<std::thread> clients;
+  std::vector<int> statuses(3, 0);
+  std::vector<std::string> retry(3);
+  for (int i = 0; i < 3; ++i)
+    clients.emplace_back([&, i] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(i == 2 ? 300 : 0));  // the third comes last
+      httplib::Client c = server.client();
+      auto r = c.Post("/evaluate", body, "application/json");
+      if (r) {
+        statuses[i] = r->status;
+        retry[i] = r->get_header_value("Retry-After");
+      }
+    });
+  std::this_thread::sleep_for(std::chrono::milliseconds(600));
+  const auto t = std::chrono::steady_clock::now();
+  EXPECT_EQ(server.get("/health").status, 200);
+  EXPECT_LT(std::chrono::steady_clock::now() - t, std::chrono::seconds(5));
+  for (auto& c : clients) c.join();
+  EXPECT_EQ(statuses[0], 200);
+  EXPECT_EQ(statuses[1], 200);
+  EXPECT_EQ(statuses[2], 503);
+  EXPECT_EQ(retry[2], "5");
 }
 }  // namespace
