@@ -12,14 +12,19 @@
 // Contract:
 // - The same answers as the wrapped source, call for call (it forwards, or repeats the answer
 //   the source gave to the same arguments on this thread).
-// - Per thread, it remembers its last point, box and block and their answers; that is all the
-//   memory it takes (a block's answer: 4 KiB, made on its first block). Thread-safe like every
-//   AlphaFieldSource: each thread has its own memory, keyed by a number no other SharedField of
-//   the process ever has (so a new one at a freed address never reads an old one's answers).
+// - Per thread that calls it, it remembers its last point, box and block and their answers;
+//   that is all the memory it takes (a block's answer: 4 KiB, made on its first block), and it
+//   goes with the SharedField. Thread-safe like every AlphaFieldSource: each thread reads and
+//   writes only its own entry (found under a shared lock, added under an exclusive one). (A
+//   first version kept the entries in thread-local maps keyed by an id: they outlived their
+//   fields, up to 4096 per thread, and the soak's RSS grew with every evaluation.)
 // - boundingBox and budgetExhaustions forward (the latter counted once per source however many
 //   parents share it: sumBudgetExhaustions).
 #include <cstdint>
 #include <memory>
+#include <shared_mutex>
+#include <thread>
+#include <unordered_map>
 
 #include "geometry/field/alpha_field.h"
 
@@ -28,6 +33,7 @@ namespace fsdb {
 class SharedField : public AlphaFieldSource {
  public:
   explicit SharedField(std::shared_ptr<const AlphaFieldSource> source);
+  ~SharedField() override;
 
   AlphaLevels levelsAt(const Vec3& p) const override;
   AlphaLevelBounds boundsOver(const Vec3& lo, const Vec3& hi) const override;
@@ -38,8 +44,12 @@ class SharedField : public AlphaFieldSource {
   const AlphaFieldSource& source() const { return *source_; }
 
  private:
+  struct Remembered;
+  Remembered& memory() const;  // this thread's entry
+
   std::shared_ptr<const AlphaFieldSource> source_;
-  std::uint64_t id_;  // its key in each thread's memory
+  mutable std::shared_mutex mutex_;
+  mutable std::unordered_map<std::thread::id, std::unique_ptr<Remembered>> memory_;
 };
 
 }  // namespace fsdb

@@ -199,7 +199,7 @@ int main(int argc, char** argv) {
   serveCmd->add_option("--host", serve.host, "address to bind")->capture_default_str();
   serveCmd->add_option("--port", serve.port, "port; 0 picks a free one")
       ->check(CLI::Range(0, 65535))->capture_default_str();
-  serveCmd->add_option("--threads", serve.threads, "worker threads; 0 = number of cores, at least 32 (half of them at most build grids and meshes)")
+  serveCmd->add_option("--threads", serve.threads, "worker threads; 0 = number of cores, at least 16 (half of them at most build grids and meshes)")
       ->check(CLI::Range(0, 1024))->capture_default_str();
   serveCmd->add_option("--max-body-bytes", serve.limits.maxBodyBytes, "largest accepted request body")
       ->check(CLI::PositiveNumber)->capture_default_str();

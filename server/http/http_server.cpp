@@ -339,15 +339,16 @@ void HttpServer::installHandlers() {
     setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, reinterpret_cast<const void*>(&yes), sizeof(yes));
     setsockopt(sock, IPPROTO_TCP, TCP_NODELAY, reinterpret_cast<const void*>(&yes), sizeof(yes));
   });
-  // At least 32 (it was 16): a keep-alive connection holds its worker until it closes (after 5
-  // requests or 5 s idle), so a client beyond the workers waits for another's whole session, and
-  // half of them at most serve grid builds and meshes (RouteOptions::heavy): 16 evaluations at
-  // once then leave 16 workers for everything else. A browser opens
+  // At least 16: a keep-alive connection holds its worker until it closes (after 5 requests or
+  // 5 s idle), so a client beyond the workers waits for another's whole session, and half of
+  // them at most serve grid builds and meshes (RouteOptions::heavy), so 16 evaluations at once
+  // leave 8 workers for everything else. (32 workers by default made the soak's RSS grow past
+  // its bound after the warm-up: each thread's stack and heap warm up as it first serves.) A browser opens
   // six at once for one page (with two workers the third file of the studio page waited for a
   // keep-alive timeout); 16 clients of POST /query/linguistic at 1M parts had a p99 of 58-64 ms
   // with 8 workers and 51-54 ms with 16, at the same throughput (docs/performance.md). The
   // store's connection pool, not the workers, bounds the database work in flight.
-  const int threads = options_.threads > 0 ? options_.threads : std::max(32u, std::thread::hardware_concurrency());
+  const int threads = options_.threads > 0 ? options_.threads : std::max(16u, std::thread::hardware_concurrency());
   workerThreads_ = threads;
   s.new_task_queue = [this, threads] { return new CountingPool(static_cast<size_t>(threads), &queued_); };
 

@@ -42,7 +42,7 @@ struct ServerOptions {
   // unauthorized otherwise). Reads never need it.
   std::string token;
   int port = 8080;  // 0: pick a free port
-  int threads = 0;  // 0: hardware concurrency, at least 32 (a keep-alive connection holds a worker)
+  int threads = 0;  // 0: hardware concurrency, at least 16 (a keep-alive connection holds a worker)
   // Build the stored shapes' graphs of structural search in the background at start
   // (server/service/graph_warmup.h); --no-warm-graphs turns it off.
   bool warmGraphs = true;
