@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include "query/document/part_json.h"
 #include "tests/server/shared_server.h"
 #include "tests/testing/fuzzy_bench_part.h"
+#include "tests/testing/sanitizer_slowdown.h"
 
 using fsdb::test::SharedServerTest;
 using nlohmann::json;
@@ -24,6 +26,11 @@ const char* kMixedPart =
 
 class MembershipExactness : public SharedServerTest<MembershipExactness> {
  public:
+  // The default 60 s limit on an evaluation, times the sanitizer build's slowdown (the rod's grid
+  // takes about 10 s in Release; under ASan, beside another test's evaluations, it passed 60 s).
+  static std::vector<std::string> serverArgs() {
+    return {"--max-eval-ms", std::to_string(static_cast<int>(60000 * fsdb::testing::kSlowdown))};
+  }
   std::string storePart(const std::string& name, json doc) {
     doc["kind"] = "part";
     doc["name"] = name;
