@@ -5,4 +5,6 @@
 ALTER TABLE eval_cache ADD COLUMN bytes INTEGER NOT NULL DEFAULT 0;
 ALTER TABLE eval_cache ADD COLUMN used INTEGER NOT NULL DEFAULT 0;
 UPDATE eval_cache SET bytes = length(CAST(result AS BLOB)) + COALESCE(length(vdb), 0);
-CREATE INDEX eval_cache_used ON eval_cache (used);
+-- Covering: the sum of sizes and the eviction order read the index, not every cached grid (bytes
+-- is stored after the blobs in a row, so reading it from the table reads them).
+CREATE INDEX eval_cache_used ON eval_cache (used, bytes, key);

@@ -26,6 +26,12 @@ namespace {
 // The studio page's paths (served by GET when --web names a folder).
 const char* const kStudioPaths = R"(/|/index\.html|/studio\.(js|css)|/vendor/[A-Za-z0-9_.-]+(/[A-Za-z0-9_.-]+)*)";
 
+// kStudioPaths compiled once, for the 405 lookup and the metrics' "page" series.
+bool isStudioPath(const std::string& path) {
+  static const std::regex studio(kStudioPaths);
+  return std::regex_match(path, studio);
+}
+
 // Start time of the request a worker thread is serving; set by the pre-routing handler and
 // read by the logger, both of which run on the thread that serves the request.
 thread_local std::chrono::steady_clock::time_point tRequestStart;
@@ -475,9 +481,7 @@ void HttpServer::installHandlers() {
     if (tRequestStart != std::chrono::steady_clock::time_point{}) {
       --inFlight_;
       static const std::string page = "page", none = "none";
-      static const std::regex studio(kStudioPaths);
-      const std::string& route =
-          tRoute ? *tRoute : (!options_.webRoot.empty() && std::regex_match(req.path, studio) ? page : none);
+      const std::string& route = tRoute ? *tRoute : (!options_.webRoot.empty() && isStudioPath(req.path) ? page : none);
       metrics_.observe(req.method, route, res.status, ms / 1000.0);
       if (!tErrorCode.empty()) metrics_.reject(tErrorCode);
       tRequestStart = {};
@@ -502,8 +506,7 @@ std::string HttpServer::allowedMethods(const std::string& path) const {
   };
   for (size_t i = 0; i < routes_.size(); ++i)
     if (std::regex_match(path, routePatterns_[i])) add(routes_[i].method);
-  static const std::regex studio(kStudioPaths);
-  if (!options_.webRoot.empty() && std::regex_match(path, studio)) add("GET");
+  if (!options_.webRoot.empty() && isStudioPath(path)) add("GET");
   std::string allow;
   for (const auto& m : allowed) allow += (allow.empty() ? "" : ", ") + m;
   return allow;
