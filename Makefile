@@ -47,11 +47,14 @@ bench: build
 # 60 s of reads under wrk -c64 beside writes, evaluations and both searches (bench/soak.sh); exit 1
 # on any error, any 5xx, or RSS growth of 10% or more after the warm-up. Then rounds of 16
 # evaluations at once under a 1 GiB memory budget (bench/soak_evaluations.sh): exit 1 on any answer
-# but 200 or 503 overloaded, an RSS past the budget or not given back, or a slow /health.
+# but 200 or 503 overloaded, an RSS past the budget or not given back, or a slow /health. Then 200
+# clients sending their headers or bodies a byte a second for 30 s (bench/soak_slow_clients.sh):
+# exit 1 when a normal client's request fails or its p99 reaches 100 ms.
 SOAK_SECONDS ?= 60
 soak: build
 	bench/soak.sh $(BUILD) $(SOAK_SECONDS)
 	bench/soak_evaluations.sh $(BUILD)
+	bench/soak_slow_clients.sh $(BUILD) 200 30
 
 clean:
 	rm -rf $(BUILD)

@@ -27,6 +27,8 @@ inline constexpr const char* kUnsupportedMediaType = "unsupported_media_type";  
 inline constexpr const char* kStorage = "storage_error";                // 503 (database busy, disk full, I/O error)
 inline constexpr const char* kOverloaded = "overloaded";                // 503 + Retry-After (the memory budget is spent)
 inline constexpr const char* kPreconditionFailed = "precondition_failed";  // 412 (If-Match names a version the object moved past)
+inline constexpr const char* kRequestTimeout = "request_timeout";      // 408 (a request's head or body arrived too slowly)
+inline constexpr const char* kHeaderTooLarge = "header_too_large";     // 431 (a request head past its bound)
 }  // namespace errc
 
 class Error : public std::runtime_error {

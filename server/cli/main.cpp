@@ -267,6 +267,10 @@ int main(int argc, char** argv) {
   serveCmd->add_option("--max-cache-mb", serve.maxCacheMb,
                        "MiB of cached evaluations and exports (least recently used evicted first); 0: no limit")
       ->check(CLI::Range(std::uint64_t(0), std::uint64_t(1) << 40))->capture_default_str();
+  serveCmd->add_option("--read-timeout-ms", serve.readTimeoutMs,
+                       "a request's head and its body's first MiB must arrive within this from its first byte "
+                       "(the body at 64 KiB/s more); 408 beyond")
+      ->check(CLI::Range(100, 3600000))->capture_default_str();
   serveCmd->add_option("--max-query-ms", serve.limits.maxQueryMs,
                        "longest POST /query/linguistic or /query/csg search in milliseconds (413 beyond); 0: no limit")
       ->check(CLI::Range(0, 86400000))->capture_default_str();

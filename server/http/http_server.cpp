@@ -16,6 +16,7 @@
 
 #include "geometry/core/error.h"
 #include "query/json/json_body.h"
+#include "server/http/connection_front.h"
 #include "server/http/response_encoding.h"
 #include "server/service/error_json.h"
 #include "server/service/memory_budget.h"
@@ -209,7 +210,16 @@ void serveStatic(const std::string& root, const httplib::Request& req, httplib::
   }
 }
 
-// httplib's pool, counting the connections that wait for a worker (fsdb_http_connections_queued).
+// cpp-httplib's request processing without its accept loop: the connection front reads each
+// request first (server/http/connection_front.h) and hands it here on a worker.
+class FrontedServer : public httplib::Server {
+ public:
+  bool serveOne(httplib::Stream& stream, bool closeConnection, bool& connectionClosed) {
+    return process_request(stream, closeConnection, connectionClosed, nullptr);
+  }
+};
+
+// The workers, counting the requests that wait for one (fsdb_http_connections_queued).
 class CountingPool : public httplib::TaskQueue {
  public:
   CountingPool(size_t threads, std::atomic<int>* queued) : pool_(threads), queued_(queued) {}
@@ -248,7 +258,7 @@ std::optional<std::string> ApiRequest::header(const std::string& name) const {
 }
 
 HttpServer::HttpServer(ServerOptions options)
-    : options_(std::move(options)), server_(std::make_unique<httplib::Server>()) {
+    : options_(std::move(options)), server_(std::make_unique<FrontedServer>()) {
   installHandlers();
 }
 
@@ -345,18 +355,20 @@ void HttpServer::installHandlers() {
     setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, reinterpret_cast<const void*>(&yes), sizeof(yes));
     setsockopt(sock, IPPROTO_TCP, TCP_NODELAY, reinterpret_cast<const void*>(&yes), sizeof(yes));
   });
-  // At least 16: a keep-alive connection holds its worker until it closes (after 5 requests or
-  // 5 s idle), so a client beyond the workers waits for another's whole session, and half of
-  // them at most serve grid builds and meshes (RouteOptions::heavy), so 16 evaluations at once
-  // leave 8 workers for everything else. (32 workers by default made the soak's RSS grow past
-  // its bound after the warm-up: each thread's stack and heap warm up as it first serves.) A browser opens
-  // six at once for one page (with two workers the third file of the studio page waited for a
-  // keep-alive timeout); 16 clients of POST /query/linguistic at 1M parts had a p99 of 58-64 ms
-  // with 8 workers and 51-54 ms with 16, at the same throughput (docs/performance.md). The
-  // store's connection pool, not the workers, bounds the database work in flight.
+  // At least 16. Workers take whole requests from the connection front, so idle and slow
+  // connections hold none; half of them at most serve grid builds and meshes
+  // (RouteOptions::heavy), so 16 evaluations at once leave 8 workers for everything else. (32
+  // workers by default made the soak's RSS grow past its bound after the warm-up: each thread's
+  // stack and heap warm up as it first serves.) 16 clients of POST /query/linguistic at 1M parts
+  // had a p99 of 58-64 ms with 8 workers and 51-54 ms with 16, at the same throughput
+  // (docs/performance.md). The store's connection pool, not the workers, bounds the database
+  // work in flight.
   const int threads = options_.threads > 0 ? options_.threads : std::max(16u, std::thread::hardware_concurrency());
   workerThreads_ = threads;
   s.new_task_queue = [this, threads] { return new CountingPool(static_cast<size_t>(threads), &queued_); };
+  // As many requests a connection as the front serves (FrontOptions::maxRequestsPerConnection),
+  // named in each answer's Keep-Alive header.
+  s.set_keep_alive_max_count(static_cast<size_t>(FrontOptions{}.maxRequestsPerConnection));
 
   if (!options_.corsOrigin.empty()) {
     // Every answer, errors included, names the origin; a preflight is answered for any path.
@@ -386,13 +398,11 @@ void HttpServer::installHandlers() {
             });
   }
 
-  // Expect: 100-continue: a write without the token is refused before its body is sent.
+  // Expect: 100-continue: a write without the token is refused before its body is sent. The front
+  // answers 100 Continue itself to the requests this allows (mayContinue); the rest come here.
   if (!options_.token.empty()) {
     s.set_expect_100_continue_handler([this](const httplib::Request& req, httplib::Response& res) {
-      bool write = false;
-      for (size_t i = 0; i < routes_.size() && !write; ++i)
-        write = routeWrites_[i] && routes_[i].method == req.method && std::regex_match(req.path, routePatterns_[i]);
-      if (!write || bearerMatches(req.get_header_value("Authorization"), options_.token)) return 100;
+      if (mayContinue(req.method, req.path, req.get_header_value("Authorization"))) return 100;
       res.set_header("WWW-Authenticate", "Bearer");
       sendError(res, unauthorizedError());
       return res.status;
@@ -526,27 +536,65 @@ int HttpServer::bind() {
     throw std::runtime_error("cannot bind " + options_.host + ":" + std::to_string(port) +
                              " (in use, or not an address of this machine); try --port 0");
   }
-  // httplib listens with a backlog of 5 and closes a keep-alive connection after 5 requests, so
-  // 64 clients reconnect all the time; connections beyond the queue were dropped and retried by
-  // the client's kernel after 1 s (bench/soak.sh: wrk timeouts, 1.1 s latencies, a reset). A
-  // second listen() on the bound socket sets the kernel's largest queue instead.
+  // httplib listens with a backlog of 5: 64 clients reconnecting at once overflowed it, and the
+  // connections beyond the queue were dropped and retried by the client's kernel after 1 s
+  // (bench/soak.sh: wrk timeouts, 1.1 s latencies, a reset). A second listen() on the bound
+  // socket sets the kernel's largest queue instead.
   if (listenSocket_ >= 0 && ::listen(listenSocket_, SOMAXCONN) != 0)
     spdlog::warn("cannot widen the listen backlog: {}", std::strerror(errno));
   return port;
 }
 
+bool HttpServer::mayContinue(const std::string& method, const std::string& path,
+                              const std::string& authorization) const {
+  if (options_.token.empty()) return true;
+  bool write = false;
+  for (size_t i = 0; i < routes_.size() && !write; ++i)
+    write = routeWrites_[i] && routes_[i].method == method && std::regex_match(path, routePatterns_[i]);
+  return !write || bearerMatches(authorization, options_.token);
+}
+
+int HttpServer::connectionsOpen() const {
+  const ConnectionFront* front = front_.load();
+  return front ? front->openConnections() : 0;
+}
+
 void HttpServer::listen() {
-  if (!stopRequested_.load()) server_->listen_after_bind();
+  if (!stopRequested_.load()) {
+    std::unique_ptr<httplib::TaskQueue> workers(server_->new_task_queue());
+    FrontOptions frontOptions;
+    frontOptions.readTimeoutMs = options_.readTimeoutMs;
+    frontOptions.refused = [this](const std::string& code) { metrics_.reject(code); };
+    auto* server = static_cast<FrontedServer*>(server_.get());
+    ConnectionFront front(
+        listenSocket_, frontOptions, *workers,
+        [server](httplib::Stream& stream, bool close, bool& closed) { return server->serveOne(stream, close, closed); },
+        [this](const RequestHead& head) {
+          return mayContinue(head.method, head.path(), head.header("Authorization"));
+        });
+    front_.store(&front);
+    // stop() may have come between the check above and front_ being set: it waits for one or the other.
+    if (stopRequested_.load()) front.stop();
+    front.run();
+    workers->shutdown();
+    front_.store(nullptr);
+  }
   listenReturned_.store(true);
 }
 
 void HttpServer::stop() {
   stopRequested_.store(true);
-  // httplib's stop() acts only while listen() runs: a SIGTERM right after the port line (before
-  // listen() started) was lost and the server served on. listen() checks stopRequested_ first, so
-  // wait until it either runs (then httplib's stop() ends it) or has returned.
-  while (!server_->is_running() && !listenReturned_.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  server_->stop();
+  // A SIGTERM right after the port line (before listen() started) must not be lost: listen()
+  // checks stopRequested_ first, so wait until it either serves (then the front's stop() ends it)
+  // or has returned.
+  for (;;) {
+    if (ConnectionFront* front = front_.load()) {
+      front->stop();
+      return;
+    }
+    if (listenReturned_.load()) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
 }
 
 }  // namespace fsdb

@@ -36,13 +36,15 @@ struct Response;
 
 namespace fsdb {
 
+class ConnectionFront;
+
 struct ServerOptions {
   std::string host = "127.0.0.1";
   // --token / FSDB_TOKEN: when set, write routes need "Authorization: Bearer <token>" (401
   // unauthorized otherwise). Reads never need it.
   std::string token;
   int port = 8080;  // 0: pick a free port
-  int threads = 0;  // 0: hardware concurrency, at least 16 (a keep-alive connection holds a worker)
+  int threads = 0;  // 0: hardware concurrency, at least 16 (workers take whole requests from the front)
   // Build the stored shapes' graphs of structural search in the background at start
   // (server/service/graph_warmup.h); --no-warm-graphs turns it off.
   bool warmGraphs = true;
@@ -59,6 +61,10 @@ struct ServerOptions {
   // --max-cache-mb: the bound of the store's evaluation cache (db/store.h StoreOptions::
   // maxCacheBytes), least recently used out first; 0: none.
   std::uint64_t maxCacheMb = 1024;
+  // --read-timeout-ms: from its first byte, a request's head and its body up to 1 MiB must arrive
+  // within this (plus the body at 64 KiB/s), else 408 and the connection closes
+  // (server/http/connection_front.h). Slow connections wait there, never on a worker.
+  int readTimeoutMs = 10000;
   ServerLimits limits;
 };
 
@@ -131,10 +137,11 @@ class HttpServer {
   // listen() to be called (which then returns at once), so a stop is never lost.
   void stop();
 
-  // What GET /metrics counts (server/http/metrics.h); connections are queued while they wait for
-  // a worker, and requests in flight from their request line to their answer.
+  // What GET /metrics counts (server/http/metrics.h); requests are queued while they wait for a
+  // worker (whole, from the front), and in flight from their request line to their answer.
   Metrics& metrics() { return metrics_; }
   int connectionsQueued() const { return queued_.load(); }
+  int connectionsOpen() const;  // in the front (idle, or a request arriving) and with workers
   int requestsInFlight() const { return inFlight_.load(); }
   int workerThreads() const { return workerThreads_; }
 
@@ -146,6 +153,8 @@ class HttpServer {
   // Answers 405 method_not_allowed with Allow when `path` has routes but none for `method`;
   // false (nothing written) otherwise.
   bool refuseMethod(const std::string& method, const std::string& path, httplib::Response& res) const;
+  // Whether a request may send its body: not a write route without the bearer token (when one is set).
+  bool mayContinue(const std::string& method, const std::string& path, const std::string& authorization) const;
 
   ServerOptions options_;
   std::unique_ptr<httplib::Server> server_;
@@ -155,6 +164,7 @@ class HttpServer {
   std::atomic<bool> stopRequested_{false};
   std::atomic<bool> listenReturned_{false};
   int listenSocket_ = -1;  // set by httplib's socket callback when it binds
+  std::atomic<ConnectionFront*> front_{nullptr};  // while listen() serves
   Metrics metrics_;
   std::atomic<int> queued_{0}, inFlight_{0};
   std::atomic<int> heavy_{0};  // requests of heavy routes being served

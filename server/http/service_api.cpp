@@ -59,8 +59,10 @@ void registerServiceRoutes(HttpServer& server, const Store& store, const MemoryB
     const std::vector<MetricGauge> gauges = {
         {"fsdb_http_requests_in_flight", "Requests between their request line and their answer.",
          static_cast<double>(server.requestsInFlight())},
-        {"fsdb_http_connections_queued", "Connections accepted and waiting for a worker thread.",
+        {"fsdb_http_connections_queued", "Requests read whole and waiting for a worker thread.",
          static_cast<double>(server.connectionsQueued())},
+        {"fsdb_http_connections_open", "Open client connections: idle, arriving, or with a worker.",
+         static_cast<double>(server.connectionsOpen())},
         {"fsdb_http_worker_threads", "Worker threads (--threads).", static_cast<double>(server.workerThreads())},
         {"fsdb_evaluations_running", "Grid builds and smooth meshes running now.",
          static_cast<double>(evaluationsRunning())},

@@ -13,7 +13,8 @@ int httpStatusFor(const std::string& code) {
       {errc::kDomainError, 422},      {"method_not_allowed", 405},   {errc::kUnsupportedMediaType, 415},
       {errc::kConflict, 409},         {errc::kInUse, 409},           {errc::kPreconditionFailed, 412},
       {errc::kUnknownReference, 422}, {errc::kReferenceCycle, 422},  {errc::kUnauthorized, 401},
-      {errc::kStorage, 503},          {errc::kOverloaded, 503},      {"bad_request", 400}};
+      {errc::kStorage, 503},          {errc::kOverloaded, 503},      {"bad_request", 400},
+      {errc::kRequestTimeout, 408},   {errc::kHeaderTooLarge, 431}};
   auto it = kStatus.find(code);
   return it == kStatus.end() ? 500 : it->second;
 }
