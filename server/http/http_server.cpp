@@ -217,6 +217,8 @@ class FrontedServer : public httplib::Server {
   bool serveOne(httplib::Stream& stream, bool closeConnection, bool& connectionClosed) {
     return process_request(stream, closeConnection, connectionClosed, nullptr);
   }
+  // The bound socket, which the front owns from now on (cpp-httplib forgets it).
+  int releaseListenSocket() { return static_cast<int>(svr_sock_.exchange(INVALID_SOCKET)); }
 };
 
 // The workers, counting the requests that wait for one (fsdb_http_connections_queued).
@@ -566,17 +568,22 @@ void HttpServer::listen() {
     frontOptions.readTimeoutMs = options_.readTimeoutMs;
     frontOptions.refused = [this](const std::string& code) { metrics_.reject(code); };
     auto* server = static_cast<FrontedServer*>(server_.get());
+    listenSocket_ = -1;
     ConnectionFront front(
-        listenSocket_, frontOptions, *workers,
+        server->releaseListenSocket(), frontOptions, *workers,
         [server](httplib::Stream& stream, bool close, bool& closed) { return server->serveOne(stream, close, closed); },
         [this](const RequestHead& head) {
           return mayContinue(head.method, head.path(), head.header("Authorization"));
         });
-    front_.store(&front);
+    {
+      std::lock_guard<std::mutex> lock(frontMutex_);
+      front_.store(&front);
+    }
     // stop() may have come between the check above and front_ being set: it waits for one or the other.
     if (stopRequested_.load()) front.stop();
     front.run();
     workers->shutdown();
+    std::lock_guard<std::mutex> lock(frontMutex_);  // no stop() holds the front while it ends
     front_.store(nullptr);
   }
   listenReturned_.store(true);
@@ -588,9 +595,12 @@ void HttpServer::stop() {
   // checks stopRequested_ first, so wait until it either serves (then the front's stop() ends it)
   // or has returned.
   for (;;) {
-    if (ConnectionFront* front = front_.load()) {
-      front->stop();
-      return;
+    {
+      std::lock_guard<std::mutex> lock(frontMutex_);
+      if (ConnectionFront* front = front_.load()) {
+        front->stop();
+        return;
+      }
     }
     if (listenReturned_.load()) return;
     std::this_thread::sleep_for(std::chrono::milliseconds(1));

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <regex>
 #include <string>
@@ -165,6 +166,7 @@ class HttpServer {
   std::atomic<bool> listenReturned_{false};
   int listenSocket_ = -1;  // set by httplib's socket callback when it binds
   std::atomic<ConnectionFront*> front_{nullptr};  // while listen() serves
+  std::mutex frontMutex_;                         // stop() against the front's end
   Metrics metrics_;
   std::atomic<int> queued_{0}, inFlight_{0};
   std::atomic<int> heavy_{0};  // requests of heavy routes being served
