@@ -78,12 +78,37 @@ function show(items, append = false) {
   applyFilter();
 }
 
+// How the text was read: the grammar's words; the words not understood (each with its closest
+// known words) and the text searched instead; and, when the search left out words it could have
+// corrected, the corrected text as a link that runs it.
+function showReading(answer) {
+  const p = $('read-as');
+  p.replaceChildren();
+  if (answer.parsed && answer.parsed.read_as) p.append(`Read as: ${answer.parsed.read_as}`);
+  if (answer.ignored && answer.ignored.length) {
+    const words = answer.ignored.map((w) => `“${w.word}”${w.did_you_mean.length ? ` (${w.did_you_mean.join(', ')}?)` : ''}`);
+    p.append(`${p.childNodes.length ? ' · ' : ''}Searched for “${answer.read_text}”; not understood: ${words.join(', ')}`);
+  }
+  if (answer.did_you_mean) {
+    const link = document.createElement('a');
+    link.href = '#';
+    link.dataset.action = 'did-you-mean';
+    link.textContent = answer.did_you_mean;
+    link.addEventListener('click', (event) => {
+      event.preventDefault();
+      $('query').value = answer.did_you_mean;
+      search(answer.did_you_mean);
+    });
+    p.append(' · Did you mean ', link, '?');
+  }
+}
+
 async function search(text) {
   status('Searching…');
   $('more').hidden = true;
   try {
     const answer = await api('/query', { method: 'POST', body: JSON.stringify({ text, limit: 12 }) });
-    $('read-as').textContent = answer.parsed && answer.parsed.read_as ? `Read as: ${answer.parsed.read_as}` : '';
+    showReading(answer);
     const items = answer.results.map((r) => ({
       ...r,
       kind: r.kind || 'shape',

@@ -1,6 +1,7 @@
 #include "geometry/core/closest_names.h"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 namespace fsdb {
@@ -30,13 +31,37 @@ size_t editDistance(const std::string& a, const std::string& b, size_t limit) {
   return std::min(row[t.size()], far);
 }
 
-std::string closestNames(const std::string& name, const std::vector<std::string>& known, size_t count) {
+bool isAdjacentSwap(const std::string& a, const std::string& b) {
+  if (a.size() != b.size()) return false;
+  size_t first = 0;
+  while (first < a.size() && a[first] == b[first]) ++first;
+  return first + 1 < a.size() && a[first] == b[first + 1] && a[first + 1] == b[first] &&
+         a.compare(first + 2, std::string::npos, b, first + 2, std::string::npos) == 0;
+}
+
+std::vector<std::string> nearestNames(const std::string& name, const std::vector<std::string>& known, size_t count,
+                                      size_t maxDistance) {
   std::vector<std::pair<size_t, std::string>> ranked;
-  for (const std::string& k : known) ranked.emplace_back(editDistance(name, k), k);
+  // Distances past kEditDistanceLimit are not told apart, so a bound beyond it is that limit,
+  // unless there is none at all (closestNames: every name, the far ones last).
+  const bool unbounded = maxDistance == std::numeric_limits<size_t>::max();
+  const size_t limit = std::min(maxDistance, kEditDistanceLimit);
+  for (const std::string& k : known) {
+    size_t d = editDistance(name, k, limit);
+    // Two letters swapped are one slip of the fingers ("bnet"), not two substitutions.
+    if (d == 2 && isAdjacentSwap(name, k)) d = 1;
+    if (d <= limit || unbounded) ranked.emplace_back(d, k);
+  }
   std::sort(ranked.begin(), ranked.end());
   ranked.erase(std::unique(ranked.begin(), ranked.end()), ranked.end());
+  std::vector<std::string> out;
+  for (size_t i = 0; i < ranked.size() && i < count; ++i) out.push_back(ranked[i].second);
+  return out;
+}
+
+std::string closestNames(const std::string& name, const std::vector<std::string>& known, size_t count) {
   std::string list;
-  for (size_t i = 0; i < ranked.size() && i < count; ++i) list += (i ? ", " : "") + ranked[i].second;
+  for (const std::string& n : nearestNames(name, known, count, std::numeric_limits<size_t>::max())) list += (list.empty() ? "" : ", ") + n;
   return list;
 }
 

@@ -20,6 +20,20 @@ size_t editDistance(const std::string& a, const std::string& b, size_t limit = k
 // Up to `count` names of `known`, nearest to `name` first, joined by ", ".
 std::string closestNames(const std::string& name, const std::vector<std::string>& known, size_t count = 3);
 
+// Whether b is a with two neighbouring letters swapped ("bnet", "bent").
+bool isAdjacentSwap(const std::string& a, const std::string& b);
+
+// Up to `count` names of `known` at most `maxDistance` edits from `name`, nearest first (ties
+// alphabetical); none when no name is that near. A swap of two neighbouring letters counts as one
+// edit. A bound over kEditDistanceLimit is that limit; SIZE_MAX is none (every name qualifies).
+std::vector<std::string> nearestNames(const std::string& name, const std::vector<std::string>& known, size_t count,
+                                      size_t maxDistance);
+
+// The edits a misspelling of a word of `length` characters may plausibly have (a swap counting
+// one): one up to five letters, two up to ten, a fifth of longer words ("bnet" -> "bent",
+// "slighly" -> "slightly"; not "pole" -> "cone" or "purple" -> "curved").
+inline size_t plausibleTypoDistance(size_t length) { return length <= 5 ? 1 : length <= 10 ? 2 : length / 5; }
+
 // How much of a user's word an error message quotes.
 inline constexpr size_t kQuotedChars = 100;
 

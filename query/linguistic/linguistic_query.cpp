@@ -238,9 +238,7 @@ class Parser {
     return text_.substr(tokens_[from].offset, tokens_[to - 1].end - tokens_[from].offset);
   }
 
-  bool knows(const std::string& word) const {
-    return v_.knowsWord(word) || contains(grammarWords(), word) || descriptorIndex(word) >= 0;
-  }
+  bool knows(const std::string& word) const { return knowsLinguisticWord(word, v_); }
 
   [[noreturn]] void fail(const std::vector<std::string>& expected) const {
     if (pos_ >= tokens_.size())
@@ -630,6 +628,28 @@ class Parser {
 
 LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary) {
   return Parser(text, vocabulary).parse();
+}
+
+bool knowsLinguisticWord(const std::string& word, const Vocabulary& vocabulary) {
+  return vocabulary.knowsWord(word) || contains(grammarWords(), word) || descriptorIndex(word) >= 0;
+}
+
+std::vector<std::string> correctableWords(const Vocabulary& vocabulary) {
+  std::vector<std::string> words(descriptorNames().begin(), descriptorNames().end());
+  for (const auto* list : {&vocabulary.intensityWords(), &vocabulary.adjectiveWords(), &vocabulary.nounWords(),
+                           &vocabulary.directionWords(), &vocabulary.distanceWords(), &vocabulary.sectionWords()})
+    for (const std::string& phrase : *list)
+      for (size_t at = 0; at < phrase.size();) {
+        size_t end = phrase.find(' ', at);
+        if (end == std::string::npos) end = phrase.size();
+        // The content words of the phrases ("in front of" gives "front"), not the little ones.
+        const std::string word = phrase.substr(at, end - at);
+        if (word.size() >= 3 && !contains(grammarWords(), word)) words.push_back(word);
+        at = end + 1;
+      }
+  std::sort(words.begin(), words.end());
+  words.erase(std::unique(words.begin(), words.end()), words.end());
+  return words;
 }
 
 bool isLinguisticQuery(const std::string& text, const Vocabulary& vocabulary) {

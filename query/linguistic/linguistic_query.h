@@ -98,6 +98,15 @@ LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& 
 // that are not (no "did you mean" is looked for), for routing texts between the two searches.
 bool isLinguisticQuery(const std::string& text, const Vocabulary& vocabulary);
 
+// Whether the linguistic grammar knows `word` (lower case): a word of the vocabulary, of the
+// grammar itself ("that", "at least") or a descriptor name. The parser's "unknown word" is one it
+// does not.
+bool knowsLinguisticWord(const std::string& word, const Vocabulary& vocabulary);
+// The words a misspelt word may be corrected to, sorted: the descriptor names and the words of the
+// vocabulary's intensities, adjectives, nouns, directions, distances and sections, without the
+// grammar's little words and words under three letters ("purple" is no typo of "are").
+std::vector<std::string> correctableWords(const Vocabulary& vocabulary);
+
 // The grammar's opening verbs (each may be followed by "for") and its articles, in the grammar's
 // order; the phrase form of structural queries (query/structural/csg_query_text.h) opens with the same verbs
 // and names operations after the same articles.

@@ -710,6 +710,23 @@ bool isCsgFormula(const std::string& text) {
   return false;
 }
 
+const std::vector<std::string>& csgPhraseWords() {
+  static const std::vector<std::string> words = [] {
+    std::vector<std::string> w = kOperationWords;
+    for (const auto& [a, b] : kUnionPhrases) w.insert(w.end(), {a, b});
+    for (const auto& [a, b] : kCutOutPhrases) w.insert(w.end(), {a, b});
+    // The other words the phrase parser reads (holes, relations, distances, lead-ins).
+    w.insert(w.end(), {"drilled", "through", "by", "hole", "part", "inside", "within", "in", "of", "and", "with",
+                       "on", "top", "to", "at", "the", "its", "it", "side", "between", "unit", "units", "which",
+                       "that", "is", "are", "made", "composed", "built", "formed", "consisting", "from"});
+    std::sort(w.begin(), w.end());
+    w.erase(std::unique(w.begin(), w.end()), w.end());
+    w.erase(std::remove(w.begin(), w.end(), std::string()), w.end());
+    return w;
+  }();
+  return words;
+}
+
 bool isCsgQueryText(const std::string& text, const Vocabulary& vocabulary) {
   if (isCsgFormula(text)) return true;
   for (const Word& w : words(text))

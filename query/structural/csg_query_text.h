@@ -110,4 +110,8 @@ bool isCsgQueryText(const std::string& text, const Vocabulary& vocabulary);
 // {"form","tree","nodes","leaves"} for the "parsed" member of POST /query/csg.
 nlohmann::json toJson(const CsgQuery& query);
 
+// The words the phrase form reads besides the linguistic ones (operation words, joiners, holes,
+// relations, units, lead-ins), sorted: with knowsLinguisticWord, what a search-box text may say.
+const std::vector<std::string>& csgPhraseWords();
+
 }  // namespace fsdb

@@ -5,9 +5,15 @@
 // (server/service/linguistic_search.h). The answer is that search's answer with "search":
 // "linguistic" or "csg" added, so a client sees which one ran; the request's other members are
 // that search's own (limit, threshold; kind and scan for linguistic, weights and prune for csg).
+// Unknown words are no dead end: when neither grammar reads the text, it is searched without the
+// words neither knows (query/structural/unknown_words.h), or, when that does not read, with their
+// corrections chosen together; the answer adds "ignored" ([{"word", "at", "did_you_mean": [closest
+// words]}]), "read_text" (the text searched) and, when the search ran without corrections that
+// exist, "did_you_mean" (the whole corrected text).
 // Errors: a body without a string "text" is refused as the linguistic search refuses it (422 at
-// "text"); everything else is the chosen search's (a text neither grammar reads gets the
-// linguistic parser's 422 with its position and expected words).
+// "text"); everything else is the chosen search's. A text that does not read even without its
+// unknown words (or has nothing else) gets the first refusal: the linguistic parser's 422 with the
+// position and the expected or closest words.
 #include <nlohmann/json.hpp>
 
 #include "server/service/csg_search.h"

@@ -2,7 +2,8 @@
 // ctest studio_page: the studio page in headless Chromium (Debian's chromium, driven by
 // playwright-core pinned in web/package-lock.json). It starts `fsdb serve` on a free port with
 // the demo catalogue, loads /, filters the shapes by name and opens one (a stored part's
-// parameters in its structure), searches "a very bent cylinder", waits for ranked thumbnails,
+// parameters in its structure), searches "a bnet cylinder" and takes the offered correction,
+// searches "a very bent cylinder", waits for ranked thumbnails,
 // opens the first result, moves the α slider, and takes screenshots that must not be blank and
 // must change with α. Any console error or failed request fails the test.
 // Usage: node studio_test.js FSDB_BINARY SOURCE_DIR WEB_DIR OUT_DIR   (NODE_PATH: web-deps/node_modules)
@@ -85,9 +86,22 @@ async function main() {
     await page.waitForFunction(() => document.querySelector('#tree').textContent.includes('a1 = 2'));
     await page.fill('#filter', '');
 
+    // A misspelt word is left out and offered corrected, in one click.
+    await page.fill('#query', 'a bnet cylinder');
+    await page.press('#query', 'Enter');
+    await page.waitForSelector('#read-as a[data-action="did-you-mean"]');
+    const offered = await page.$eval('#read-as a[data-action="did-you-mean"]', (a) => a.textContent);
+    if (offered !== 'a bent cylinder') throw new Error(`did you mean: ${offered}`);
+    const reading = await page.$eval('#read-as', (p) => p.textContent);
+    if (!reading.includes('not understood: “bnet” (bent')) throw new Error(`reading: ${reading}`);
+    await page.click('#read-as a[data-action="did-you-mean"]');
+    await page.waitForFunction(() => document.querySelector('#query').value === 'a bent cylinder' &&
+      !document.querySelector('#read-as a') && document.querySelector('#status').textContent.includes('linguistic search'));
+
     await page.fill('#query', 'a very bent cylinder');
     await page.press('#query', 'Enter');
-    await page.waitForFunction(() => document.querySelector('#status').textContent.includes('linguistic search'));
+    await page.waitForFunction(() => document.querySelector('#status').textContent.includes('linguistic search') &&
+      document.querySelector('#read-as').textContent.includes('very bent'));
     const ranked = await page.$$eval('#results > li', (items) => items.map((li) => ({
       name: li.querySelector('.name').childNodes[0].textContent,
       score: Number(li.querySelector('.score').textContent),

@@ -256,7 +256,11 @@ class Client:
 
     # --- search ---
     def query(self, text: str, limit: int = 10, **members: Any) -> Json:
-        """POST /query: the search the text calls for (answer["search"]: "linguistic" or "csg")."""
+        """POST /query: the search the text calls for (answer["search"]: "linguistic" or "csg").
+
+        Words neither grammar knows are read around: answer["ignored"] lists them with their
+        closest words, answer["read_text"] is what was searched, answer.get("did_you_mean") the
+        whole text corrected when the search ran without the corrections."""
         return self._http.json("POST", "/query", {"text": text, "limit": limit, **members})
 
     def query_linguistic(self, text: str, limit: int = 10, threshold: Optional[float] = None,

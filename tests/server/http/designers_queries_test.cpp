@@ -210,10 +210,44 @@ TEST(DesignersQueries, OneSearchBoxRunsTheSearchTheTextCallsFor) {
   auto missing = server.post("/query", json{{"limit", 3}});
   EXPECT_EQ(missing.status, 422) << missing.body;
   EXPECT_EQ(missing.json["error"]["path"], "text");
-  auto unknown = server.post("/query", json{{"text", "find a slightly bnet shape"}});
+  // The grammar's own routes refuse an unknown word, naming it ...
+  auto unknown = server.post("/query/linguistic", json{{"text", "find a slightly bnet shape"}});
   EXPECT_EQ(unknown.status, 422);
   EXPECT_NE(unknown.json["error"]["message"].get<std::string>().find("unknown word 'bnet'"), std::string::npos)
       << unknown.body;
+  // ... the search box reads around it: without it when that reads ("a cylinder"), offering the
+  // correction; corrected when only that reads ("a slightly shape" does not).
+  auto around = server.post("/query", json{{"text", "a bnet cylinder"}});
+  ASSERT_EQ(around.status, 200) << around.body;
+  EXPECT_EQ(around.json["read_text"], "a cylinder");
+  EXPECT_EQ(around.json["did_you_mean"], "a bent cylinder");
+  ASSERT_EQ(around.json["ignored"].size(), 1u) << around.body;
+  EXPECT_EQ(around.json["ignored"][0]["word"], "bnet");
+  EXPECT_EQ(around.json["ignored"][0]["at"], 2);
+  EXPECT_EQ(around.json["ignored"][0]["did_you_mean"][0], "bent");
+  EXPECT_EQ(ask(server, "/query", "a bnet cylinder").ranking, ranking(server, "/query/linguistic", "a cylinder"));
+  auto corrected = server.post("/query", json{{"text", "find a slightly bnet shape"}});
+  ASSERT_EQ(corrected.status, 200) << corrected.body;
+  EXPECT_EQ(corrected.json["read_text"], "find a slightly bent shape");
+  EXPECT_FALSE(corrected.json.contains("did_you_mean")) << corrected.body;
+  EXPECT_EQ(ask(server, "/query", "find a slightly bnet shape").ranking,
+            ranking(server, "/query/linguistic", "find a slightly bent shape"));
+  // Both words of a text corrected in one answer, and a CSG text read around its unknown word.
+  auto both = server.post("/query", json{{"text", "a slighly bnet cylinder"}});
+  ASSERT_EQ(both.status, 200) << both.body;
+  EXPECT_EQ(both.json["ignored"].size(), 2u) << both.body;
+  EXPECT_EQ(both.json.value("did_you_mean", both.json.value("read_text", "")), "a slightly bent cylinder") << both.body;
+  auto csg = server.post("/query", json{{"text", "the union of a cube and a gleaming sphere"}});
+  ASSERT_EQ(csg.status, 200) << csg.body;
+  EXPECT_EQ(csg.json["search"], "csg");
+  EXPECT_EQ(csg.json["read_text"], "the union of a cube and a sphere");
+  // Nothing understood: still 422, naming every unknown word (and no far-fetched corrections).
+  auto nothing = server.post("/query", json{{"text", "purple elephant"}});
+  EXPECT_EQ(nothing.status, 422) << nothing.body;
+  EXPECT_EQ(nothing.json["error"]["message"],
+            "unknown word 'purple' at character 0 (no known word is close); unknown word 'elephant' at character 7 "
+            "(no known word is close); no word of the text is understood (GET /vocabulary lists the words)");
+  EXPECT_EQ(nothing.json["error"]["path"], "text");
   auto weights = server.post("/query", json{{"text", "slightly bent"}, {"weights", {{"components", 1}}}});
   EXPECT_EQ(weights.status, 422) << weights.body;
 }

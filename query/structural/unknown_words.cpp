@@ -1,0 +1,136 @@
+#include "query/structural/unknown_words.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "geometry/core/closest_names.h"
+#include "query/linguistic/linguistic_query.h"
+#include "query/linguistic/query_tokens.h"
+#include "query/structural/csg_query_text.h"
+
+namespace fsdb {
+
+namespace {
+
+constexpr size_t kCorrectedWords = 16;
+// Texts longer than this get each word's closest words but no corrected text: finding it parses
+// the whole text up to 49 times (as the linguistic parser's did-you-mean, which stops at the same length).
+constexpr size_t kLongestCorrectedText = 1000;
+
+bool knownWord(const std::string& word, const Vocabulary& vocabulary) {
+  const std::string head = word.substr(0, word.find('-'));
+  for (const std::string& w : {word, head})
+    if (knowsLinguisticWord(w, vocabulary) || vocabulary.holeNoun(w) ||
+        std::binary_search(csgPhraseWords().begin(), csgPhraseWords().end(), w))
+      return true;
+  return false;
+}
+
+// Words that only join what follows them to what comes before: left dangling when every word
+// after them was unknown.
+bool joiningWord(const std::string& w) {
+  static const std::vector<std::string> kJoining = {",",    "and",  "or", "with", "that", "which", "is", "are",
+                                                    "has",  "have", "a",  "an",   "the",  "of",    "to", "on",
+                                                    "in",   "at",   "by", "from", "not",  "its"};
+  return std::find(kJoining.begin(), kJoining.end(), w) != kJoining.end();
+}
+
+bool readsAsQuery(const std::string& text, const Vocabulary& vocabulary) {
+  return isLinguisticQuery(text, vocabulary) || isCsgQueryText(text, vocabulary);
+}
+
+// `text` with token i replaced by replacement[i] where one is given (nullopt: the token stays; ""
+// : it goes, with the blank before it), then blanks collapsed and trimmed.
+std::string rewrite(const std::string& text, const std::vector<query_tokens::Token>& tokens,
+                    const std::vector<std::optional<std::string>>& replacement) {
+  std::string out;
+  size_t copied = 0;
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    if (!replacement[i]) continue;
+    out += text.substr(copied, tokens[i].offset - copied);
+    out += *replacement[i];
+    copied = tokens[i].end;
+  }
+  out += text.substr(copied);
+  // One blank between words, no blank before a comma, no comma twice or at either end.
+  std::string collapsed;
+  for (char c : out) {
+    const bool blank = std::isspace(static_cast<unsigned char>(c));
+    if (blank && (collapsed.empty() || collapsed.back() == ' ')) continue;
+    if (c == ',') {
+      while (!collapsed.empty() && collapsed.back() == ' ') collapsed.pop_back();
+      if (collapsed.empty() || collapsed.back() == ',') continue;
+    }
+    collapsed += blank ? ' ' : c;
+  }
+  while (!collapsed.empty() && (collapsed.back() == ' ' || collapsed.back() == ',')) collapsed.pop_back();
+  return collapsed;
+}
+
+}  // namespace
+
+KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& vocabulary) {
+  KnownWordsReading reading;
+  if (isCsgFormula(text)) {
+    reading.text = text;
+    return reading;
+  }
+  const std::vector<query_tokens::Token> tokens = query_tokens::tokenize(text, 0, text.size());
+  std::vector<bool> unknown(tokens.size(), false);
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    const query_tokens::Token& t = tokens[i];
+    unknown[i] = !t.number && t.text.size() > 1 && std::isalpha(static_cast<unsigned char>(t.text[0])) &&
+                 !knownWord(t.text, vocabulary);
+  }
+  // The text with each unknown word replaced by choice[i] ("": left out), and the joining words
+  // that only left-out words follow (up to the end or a comma) left out with them.
+  const auto textWith = [&](const std::vector<std::string>& choice) {
+    std::vector<std::optional<std::string>> replacement(tokens.size());
+    for (size_t i = 0; i < tokens.size(); ++i)
+      if (unknown[i]) replacement[i] = choice[i];
+    for (size_t i = tokens.size(); i-- > 0;) {
+      if (unknown[i] || !joiningWord(tokens[i].text)) continue;
+      size_t j = i + 1;
+      while (j < tokens.size() && (unknown[j] ? replacement[j]->empty() : replacement[j] && replacement[j]->empty())) ++j;
+      if (j > i + 1 && (j == tokens.size() || tokens[j].text == ",")) replacement[i] = "";
+    }
+    return rewrite(text, tokens, replacement);
+  };
+  std::vector<std::string> leftOut(tokens.size());
+  reading.text = textWith(leftOut);
+
+  // Corrections, chosen together: every word its nearest correction first; when that text does not
+  // read, each word in turn (left to right) takes the first of its corrections, or none, with which
+  // the text, the other words as chosen so far, reads.
+  const std::vector<std::string> correctable = correctableWords(vocabulary);
+  std::vector<std::string> choice(tokens.size());
+  size_t tried = 0;
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    if (!unknown[i]) continue;
+    UnknownWord u{tokens[i].text, tokens[i].offset, {}};
+    if (tried++ < kCorrectedWords) u.closest = nearestNames(u.word, correctable, 3, plausibleTypoDistance(u.word.size()));
+    if (!u.closest.empty()) choice[i] = u.closest[0];
+    reading.unknown.push_back(std::move(u));
+  }
+  if (choice == leftOut || text.size() > kLongestCorrectedText) return reading;  // nothing to correct with
+  bool reads = readsAsQuery(textWith(choice), vocabulary);
+  for (size_t i = 0, k = 0; i < tokens.size() && !reads; ++i) {
+    if (!unknown[i]) continue;
+    const std::vector<std::string>& closest = reading.unknown[k++].closest;
+    std::vector<std::string> options(closest.begin() + (closest.empty() ? 0 : 1), closest.end());
+    options.push_back("");
+    for (const std::string& option : options) {
+      std::vector<std::string> trial = choice;
+      trial[i] = option;
+      if (readsAsQuery(textWith(trial), vocabulary)) {
+        choice = std::move(trial);
+        reads = true;
+        break;
+      }
+    }
+  }
+  if (reads && choice != leftOut) reading.corrected = textWith(choice);
+  return reading;
+}
+
+}  // namespace fsdb

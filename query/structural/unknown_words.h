@@ -1,0 +1,39 @@
+#pragma once
+// brief: The words of a search-box text that neither query grammar knows, the text read without
+// them, and one correction of them all chosen together, so that an unknown word is not a dead end
+// (docs/api.md §4 POST /query: "ignored", "read_text", "did_you_mean").
+// note: A word is unknown when it is a word of letters (two or more characters, not a number) that
+// knowsLinguisticWord, the vocabulary's hole words and csgPhraseWords all lack; a hyphenated word counts by its first part
+// ("sphere-shaped"). Leaving words out of a text can leave a joining word with nothing to join
+// ("a round plate with purple dots" -> "a round plate with"): such words, when only unknown words
+// followed them, go too. Formulas ("A + B") are not read this way: their unknown words are names.
+// throws: fsdb::Error(invalid_parameter, path "text") for a character no query tokenises (the
+// tokenizer's error).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "query/linguistic/vocabulary.h"
+
+namespace fsdb {
+
+struct UnknownWord {
+  std::string word;                  // lower case, as the tokenizer gives it
+  size_t at = 0;                     // its character offset in the text
+  std::vector<std::string> closest;  // at most 3 correctable words within plausibleTypoDistance, nearest first
+};
+
+struct KnownWordsReading {
+  std::vector<UnknownWord> unknown;      // in text order; empty: every word is known
+  std::string text;                      // the text without them (blank when nothing is left)
+  // The text with each unknown word replaced by one of its closest words, chosen left to right so
+  // that the text still reads as a query (words with no such correction are left out); nullopt
+  // when no word could be corrected.
+  std::optional<std::string> corrected;
+};
+
+// The reading of `text`. Corrections are looked for among the first 16 unknown words only (each
+// costs up to three parses of the text), and no corrected text for texts over 1000 characters.
+KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& vocabulary);
+
+}  // namespace fsdb
