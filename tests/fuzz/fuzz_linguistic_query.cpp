@@ -9,6 +9,8 @@
 //    text parses again to a query of the same meaning (its JSON without the words each condition
 //    covers, tests/testing/query_shapes.h) and prints as itself;
 //  * every fuzzy set and distance of the query has finite breakpoints, and the threshold is finite;
+//  * the search box's reading of the text (readKnownWords) leaves no unknown word, and a corrected
+//    text it offers reads as a query;
 //  * its scores against three fixed parts (scoreDescriptors) and a fixed two-part shape
 //    (scoreShape), and every explain entry, are finite and in [0, 1].
 #include <cmath>
@@ -24,6 +26,8 @@
 #include "query/linguistic/query_print.h"
 #include "query/linguistic/query_tokens.h"
 #include "query/linguistic/vocabulary.h"
+#include "query/structural/csg_query_text.h"
+#include "query/structural/unknown_words.h"
 #include "tests/fuzz/fuzz_check.h"
 #include "tests/testing/query_shapes.h"
 
@@ -89,6 +93,31 @@ void checkTokens(const std::string& text) {
   }
 }
 
+// The search box's reading (query/structural/unknown_words.h): the text without its unknown words
+// has none left, each unknown word lies in the text with at most three corrections, and a
+// corrected text reads as a query.
+void checkReading(const std::string& text, const fsdb::Vocabulary& v) {
+  fsdb::KnownWordsReading r;
+  try {
+    r = fsdb::readKnownWords(text, v);
+  } catch (const fsdb::Error&) {
+    return;  // a character no query tokenises
+  }
+  for (const fsdb::UnknownWord& u : r.unknown) {
+    FUZZ_CHECK(u.at < text.size() && u.closest.size() <= 3, "an unknown word lies in the text");
+    FUZZ_CHECK(text.size() > 100000 || fsdb::query_tokens::tokenize(text, u.at, text.size()).at(0).text == u.word,
+               "an unknown word is the token at its offset");
+  }
+  if (r.unknown.empty()) return;
+  try {
+    FUZZ_CHECK(fsdb::readKnownWords(r.text, v).unknown.empty(), "the reading has no unknown word left");
+  } catch (const fsdb::Error&) {
+    FUZZ_CHECK(false, "the reading tokenises");
+  }
+  if (r.corrected)
+    FUZZ_CHECK(fsdb::isLinguisticQuery(*r.corrected, v) || fsdb::isCsgQueryText(*r.corrected, v), "a corrected text reads");
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -106,6 +135,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     accepted = false;
   }
   FUZZ_CHECK(fsdb::isLinguisticQuery(text, v) == accepted, "isLinguisticQuery says whether the text parses");
+  checkReading(text, v);
   if (!accepted) return 0;
 
   checkCondition(q.root);
