@@ -79,6 +79,12 @@ void SharedField::sampleBlock(const BlockLattice& b, AlphaLevels* out) const {
   m.hasBlock = true;
 }
 
+void SharedField::boundingBox(Vec3* lo, Vec3* hi) const {
+  std::call_once(boxOnce_, [this] { source_->boundingBox(&boxLo_, &boxHi_); });
+  *lo = boxLo_;
+  *hi = boxHi_;
+}
+
 std::uint64_t SharedField::budgetExhaustions() const {
   const std::shared_ptr<const AlphaFieldSource> only[] = {source_};
   return sumBudgetExhaustions(only);
