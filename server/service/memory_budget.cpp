@@ -31,10 +31,11 @@ void MemoryBudget::refuse(std::uint64_t bytes, const std::string& what) {
 void MemoryBudget::take(Reservation& r, std::uint64_t bytes, const std::string& what) {
   if (bytes == 0) return;
   if (r.stop_.load(std::memory_order_relaxed)) refuse(bytes, what);  // giving way to an older one
-  if (fits(bytes)) {
-    r.bytes_.fetch_add(bytes, std::memory_order_relaxed);
-    return;
-  }
+  // Counted as this reservation's before the total takes them: a waiter (take, below) that finds
+  // the total full must find who holds it, or it finds nobody to wait for and is refused.
+  r.bytes_.fetch_add(bytes, std::memory_order_relaxed);
+  if (fits(bytes)) return;
+  r.bytes_.fetch_sub(bytes, std::memory_order_relaxed);
   const auto giveUp = std::chrono::steady_clock::now() + kWaitForRelease;
   std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {
@@ -62,9 +63,13 @@ void MemoryBudget::take(Reservation& r, std::uint64_t bytes, const std::string& 
 }
 
 void MemoryBudget::release(Reservation& r) {
-  const std::uint64_t bytes = r.bytes_.exchange(0);
+  std::uint64_t bytes = 0;
   {
+    // Its bytes leave the reservation and the total together, under the lock: an older one
+    // waiting in take() saw them leave the younger one first and the total later, found nothing
+    // to wait for and was refused (MemoryBudget.TheYoungestGivesWayToAnOlderOne, now and then).
     std::lock_guard<std::mutex> lock(mutex_);
+    bytes = r.bytes_.exchange(0);
     live_.erase(&r);
     reserved_.fetch_sub(bytes, std::memory_order_relaxed);
   }
