@@ -1,17 +1,29 @@
 // The fsdb studio: one search box over POST /query, ranked thumbnails, a 3D view of lower(α)
 // solid and upper(α) translucent (GLB from GET /{kind}s/{id}/mesh?format=glb) with an α slider,
 // the fuzzy volume over α, the CSG tree with each part's parameters, membership at a clicked
-// point, browsing with paging, parts from words and a JSON Lines import with progress.
+// point, browsing and search with paging, parts from words, a JSON Lines import with progress and
+// every failed line, downloads (GLB, OBJ, STL at α; .vdb), addresses of objects (#/shapes/ID) and
+// a bearer token for servers run with --token.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 
 const $ = (id) => document.getElementById(id);
 
+// The bearer token of a server run with --token: typed once, kept for this tab only
+// (sessionStorage), sent with every request.
+function authHeaders() {
+  const token = sessionStorage.getItem('fsdb-token');
+  return token ? { Authorization: `Bearer ${token}` } : {};
+}
+
 async function api(path, options = {}) {
   const response = await fetch(path, {
     ...options,
-    headers: options.body && typeof options.body === 'string' ? { 'Content-Type': 'application/json' } : {},
+    headers: {
+      ...(options.body && typeof options.body === 'string' ? { 'Content-Type': 'application/json' } : {}),
+      ...authHeaders(),
+    },
   });
   const body = await response.json().catch(() => null);
   if (!response.ok) {
@@ -103,11 +115,13 @@ function showReading(answer) {
   }
 }
 
-async function search(text) {
+// A search shows 12 results; "More" asks again for 12 more (the ranking is the same, so the
+// first ones stay where they were).
+async function search(text, limit = 12) {
   status('Searching…');
   $('more').hidden = true;
   try {
-    const answer = await api('/query', { method: 'POST', body: JSON.stringify({ text, limit: 12 }) });
+    const answer = await api('/query', { method: 'POST', body: JSON.stringify({ text, limit }) });
     showReading(answer);
     const items = answer.results.map((r) => ({
       ...r,
@@ -120,6 +134,9 @@ async function search(text) {
     }));
     show(items);
     status(`${items.length} result${items.length === 1 ? '' : 's'} (${answer.search} search, ${answer.millis.toFixed(1)} ms)`);
+    // A full page may have more behind it (at most 1000: the search's limit).
+    $('more').hidden = items.length < limit || limit >= 1000;
+    nextPage = () => search(text, Math.min(limit + 12, 1000));
   } catch (e) {
     $('results').replaceChildren();
     $('read-as').textContent = '';
@@ -211,9 +228,22 @@ function showModel(next) {
   render();
 }
 
+// The download links of the view: meshes of lower and upper at the slider's α, and the grids.
+function updateExports() {
+  if (!current) return;
+  const alpha = Number($('alpha').value);
+  const base = `/${current.kind}s/${current.id}`;
+  for (const a of document.querySelectorAll('#exports a')) {
+    const format = a.dataset.action.replace('export-', '');
+    a.href = format === 'vdb' ? `${base}/grid.vdb`
+      : `${base}/mesh?format=${format}&alpha=${alpha}${a.dataset.bound ? `&bound=${a.dataset.bound}` : ''}`;
+  }
+}
+
 async function loadMesh() {
   const alpha = Number($('alpha').value);
   const { kind, id } = current;
+  updateExports();
   const request = ++meshRequest;
   const stale = () => request !== meshRequest || current.id !== id;
   const started = performance.now();
@@ -337,6 +367,8 @@ async function open(kind, id, li) {
   try {
     const stored = await api(`/${kind}s/${id}`);
     current = { kind, id, name: stored.name, document: stored.document };
+    // The object's address (/#/parts/ID, /#/shapes/ID): a reload or a shared link opens it again.
+    if (location.hash !== `#/${kind}s/${id}`) history.replaceState(null, '', `${location.pathname}${location.search}#/${kind}s/${id}`);
     $('view').hidden = false;
     $('title').textContent = `${kind} ${stored.name} (#${id}, version ${stored.version})`;
     resize();
@@ -380,18 +412,42 @@ $('file').addEventListener('change', () => {
   const xhr = new XMLHttpRequest();
   $('progress').hidden = false;
   xhr.upload.onprogress = (e) => { if (e.lengthComputable) $('progress').value = e.loaded / e.total; };
+  $('import-errors').replaceChildren();
   xhr.onload = () => {
     $('progress').value = 1;
     const body = JSON.parse(xhr.responseText || '{}');
     $('import-status').textContent = xhr.status === 200
-      ? `imported ${body.imported}, failed ${body.failed}${body.errors && body.errors.length ? ` (line ${body.errors[0].line}: ${body.errors[0].error.message})` : ''}`
+      ? `imported ${body.imported}, failed ${body.failed}${body.errors_truncated ? ' (the first errors listed)' : ''}`
       : (body.error ? body.error.message : `HTTP ${xhr.status}`);
+    // Every failed line, with its number and what was wrong, and where in the line.
+    for (const e of (xhr.status === 200 && body.errors) || []) {
+      const row = document.createElement('li');
+      row.textContent = `line ${e.line}: ${e.error.message}${e.error.path ? ` (at ${e.error.path})` : ''}`;
+      $('import-errors').append(row);
+    }
+    if (xhr.status === 200 && body.imported) browse('parts');  // the list shows what came in
   };
   xhr.onerror = () => { $('import-status').textContent = 'the upload failed'; };
   xhr.open('POST', '/parts/bulk?mode=create');
   xhr.setRequestHeader('Content-Type', 'application/x-ndjson');
+  for (const [name, value] of Object.entries(authHeaders())) xhr.setRequestHeader(name, value);
   xhr.send(file);
 });
+
+$('token').value = sessionStorage.getItem('fsdb-token') || '';
+$('token').addEventListener('input', () => {
+  const token = $('token').value.trim();
+  if (token) sessionStorage.setItem('fsdb-token', token);
+  else sessionStorage.removeItem('fsdb-token');
+});
+$('token-form').addEventListener('submit', (event) => event.preventDefault());
+
+// An object in the address (#/parts/ID, #/shapes/ID) opens in the view.
+function openFromAddress() {
+  const m = /^#\/(part|shape)s\/(\d+)$/.exec(location.hash);
+  if (m && !(current && current.kind === m[1] && current.id === Number(m[2]))) open(m[1], Number(m[2]), null);
+}
+window.addEventListener('hashchange', openFromAddress);
 
 // A query in the address (?q=...) runs at once; otherwise the shapes are listed.
 const initial = new URLSearchParams(location.search).get('q');
@@ -401,3 +457,4 @@ if (initial) {
 } else {
   browse('shapes');
 }
+openFromAddress();

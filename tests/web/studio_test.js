@@ -5,7 +5,8 @@
 // parameters in its structure), searches "a bnet cylinder" and takes the offered correction,
 // searches "a very bent cylinder", waits for ranked thumbnails,
 // opens the first result, moves the α slider, and takes screenshots that must not be blank and
-// must change with α. Any console error or failed request fails the test.
+// must change with α; then checks the object's address (a reload opens it again), the download
+// links (GLB and STL fetched), and "More" on a search. Any console error or failed request fails the test.
 // Usage: node studio_test.js FSDB_BINARY SOURCE_DIR WEB_DIR OUT_DIR   (NODE_PATH: web-deps/node_modules)
 'use strict';
 const { spawn } = require('child_process');
@@ -137,6 +138,37 @@ async function main() {
     await page.waitForTimeout(300);
     const atZero = await page.locator('#canvas-box').screenshot({ path: path.join(out, 'studio-alpha-0.png') });
     await page.screenshot({ path: path.join(out, 'studio-view.png') });
+
+    // The object's address, and the download links at the slider's α (fetched as the browser
+    // would download them: a GLB of both bounds, an STL of upper).
+    const [kindOf, idOf] = first.split('/');
+    const address = await page.evaluate(() => location.hash);
+    if (address !== `#/${kindOf}s/${idOf}`) throw new Error(`address: ${address}`);
+    const glbHref = await page.$eval('[data-action="export-glb"]', (a) => a.getAttribute('href'));
+    if (glbHref !== `/${kindOf}s/${idOf}/mesh?format=glb&alpha=0`) throw new Error(`GLB link: ${glbHref}`);
+    const fetched = (href) => page.evaluate(async (h) => {
+      const r = await fetch(h);
+      const b = new Uint8Array(await r.arrayBuffer());
+      return { status: r.status, magic: String.fromCharCode(...b.slice(0, 4)), size: b.length, disposition: r.headers.get('content-disposition') };
+    }, href);
+    const glb = await fetched(glbHref);
+    if (glb.status !== 200 || glb.magic !== 'glTF' || !/^attachment/.test(glb.disposition || '')) throw new Error(`GLB download: ${JSON.stringify(glb)}`);
+    const stl = await fetched(await page.$eval('[data-action="export-stl"][data-bound="upper"]', (a) => a.getAttribute('href')));
+    if (stl.status !== 200 || stl.size < 84) throw new Error(`STL download: ${JSON.stringify(stl)}`);
+    for (const action of ['export-obj', 'export-vdb'])
+      if (!(await page.$eval(`[data-action="${action}"]`, (a) => a.getAttribute('href')))) throw new Error(`no ${action} link`);
+    // A reload (or a shared link) opens the object from its address.
+    await page.reload({ waitUntil: 'load' });
+    await page.waitForFunction((id) => !document.querySelector('#view').hidden &&
+      document.querySelector('#title').textContent.includes(`(#${id},`), idOf);
+
+    // "More" asks for 12 results more.
+    await page.fill('#query', 'something');
+    await page.press('#query', 'Enter');
+    await page.waitForFunction(() => document.querySelector('#status').textContent.includes('12 results'));
+    await page.waitForSelector('[data-action="more-results"]:not([hidden])');
+    await page.click('[data-action="more-results"]');
+    await page.waitForFunction(() => document.querySelectorAll('#results > li').length > 12);
 
     const inks = [await inkShare(page, atZero), await inkShare(page, atHalf), await inkShare(page, atOne)];
     console.log(`page and list in ${coldMillis} ms cold; page with every thumbnail in ${loadMillis} ms warm; results ${ranked.map((r) => `${r.name} ${r.score}`).join(', ')}`);
