@@ -268,7 +268,7 @@ void ConnectionFront::acceptAll() {
       auto oldest = std::min_element(conns_.begin(), conns_.end(), [](const auto& a, const auto& b) {
         return a.second->waitingSince < b.second->waitingSince;
       });
-      closeConnection(oldest->first, nullptr);
+      closeConnection(oldest->first, FinalAnswer::kNone);
     }
     int yes = 1;
     setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &yes, sizeof yes);
@@ -318,7 +318,7 @@ void ConnectionFront::onReadable(Connection& c) {
     break;
   }
   if (requestReady(c)) return dispatch(fd);
-  if (conns_.count(fd) && peerClosed) closeConnection(fd, nullptr);  // gone before a whole request
+  if (conns_.count(fd) && peerClosed) closeConnection(fd, FinalAnswer::kNone);  // gone before a whole request
 }
 
 bool ConnectionFront::requestReady(Connection& c) {
@@ -327,12 +327,12 @@ bool ConnectionFront::requestReady(Connection& c) {
     c.searched = c.buf.size();
     if (!c.head) {
       if (c.buf.size() > options_.maxHeadBytes) {
-        closeConnection(c.fd, "431");
+        closeConnection(c.fd, FinalAnswer::kHeaderTooLarge);
       }
       return false;
     }
     if (c.head->headBytes > options_.maxHeadBytes) {
-      closeConnection(c.fd, "431");
+      closeConnection(c.fd, FinalAnswer::kHeaderTooLarge);
       return false;
     }
     // The body's bytes the front waits for arrive at the minimum rate or sooner.
@@ -425,19 +425,20 @@ void ConnectionFront::sweepDeadlines() {
   std::vector<std::pair<int, bool>> late;  // fd, whether a request had begun
   for (const auto& [fd, c] : conns_)
     if (now >= c->deadline) late.emplace_back(fd, c->started);
-  for (const auto& [fd, started] : late) closeConnection(fd, started ? "408" : nullptr);
+  for (const auto& [fd, started] : late) closeConnection(fd, started ? FinalAnswer::kRequestTimeout : FinalAnswer::kNone);
 }
 
-void ConnectionFront::closeConnection(int fd, const char* answer) {
-  if (answer && options_.refused)
-    options_.refused(std::strcmp(answer, "408") == 0 ? errc::kRequestTimeout : errc::kHeaderTooLarge);
-  if (answer && std::strcmp(answer, "408") == 0)
+void ConnectionFront::closeConnection(int fd, FinalAnswer answer) {
+  if (answer == FinalAnswer::kRequestTimeout) {
+    if (options_.refused) options_.refused(errc::kRequestTimeout);
     sendFinalAnswer(fd, 408, "Request Timeout", errc::kRequestTimeout,
                     "the request's head and body did not arrive within " + std::to_string(options_.readTimeoutMs) +
                         " ms of its first byte (fsdb serve --read-timeout-ms)");
-  else if (answer)
+  } else if (answer == FinalAnswer::kHeaderTooLarge) {
+    if (options_.refused) options_.refused(errc::kHeaderTooLarge);
     sendFinalAnswer(fd, 431, "Request Header Fields Too Large", errc::kHeaderTooLarge,
                     "the request's head is larger than " + std::to_string(options_.maxHeadBytes) + " bytes");
+  }
   epoll_ctl(epoll_, EPOLL_CTL_DEL, fd, nullptr);
   ::close(fd);
   conns_.erase(fd);

@@ -87,7 +87,9 @@ class ConnectionFront {
   // or 431 on the way (closing c on 431 and returning false).
   bool requestReady(Connection& c);
   void dispatch(int fd);
-  void closeConnection(int fd, const char* answer);
+  // What the client hears before its connection closes: nothing, or a final JSON answer.
+  enum class FinalAnswer { kNone, kRequestTimeout, kHeaderTooLarge };
+  void closeConnection(int fd, FinalAnswer answer);
   void sweepDeadlines();
   void takeReturned();
   void finish(std::unique_ptr<Connection> c, bool keep);  // on a worker, after a request
