@@ -148,7 +148,7 @@ class PhraseParser {
     return noun ? *noun : "";
   }
 
-  // hole = [ article ] [ shape word ] "hole", at atHole(): a description leaf of the noun its
+  // hole = [ article ] [ shape word ] "hole" [ "drilled" ] [ ( "through" | "in" | "into" ) [ "it" ] ], at atHole(): a description leaf of the noun its
   // shape word names (a cylinder when none: a drilled hole), with the words as written.
   nlohmann::json hole() {
     const size_t from = words_[pos_].offset;
@@ -157,6 +157,10 @@ class PhraseParser {
     if (!at("hole")) noun = holeNoun(words_[pos_++].text);
     const size_t end = words_[pos_].offset + words_[pos_].text.size();
     ++pos_;  // "hole"
+    // How the hole was made adds nothing: "a slab with a hole drilled through it", "with a hole in
+    // it" (word_routes.h reads "bored", "cut", "punched" as "drilled").
+    const bool drilled = accept("drilled");
+    if (acceptAny({"through", "in", "into"}) || drilled) accept("it");
     CsgQueryLeaf out;
     out.text = text_.substr(from, end - from);
     out.condition = parseNounPhraseAt("a " + noun, 0, std::string::npos, v_).query;

@@ -6,6 +6,7 @@
 #include "geometry/core/closest_names.h"
 #include "query/linguistic/linguistic_query.h"
 #include "query/linguistic/query_tokens.h"
+#include "query/linguistic/word_routes.h"
 #include "query/structural/csg_query_text.h"
 
 namespace fsdb {
@@ -96,17 +97,31 @@ KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& voca
     }
     return rewrite(text, tokens, replacement);
   };
+  // Routed words (word_routes.h) read as the known word they reach; they are no longer unknown,
+  // but keep their replacement in every text below.
+  std::vector<bool> routed(tokens.size(), false);
   std::vector<std::string> leftOut(tokens.size());
+  const WordNet* wordnet = systemWordNet();
+  const auto known = [&](const std::string& w) { return knownWord(w, vocabulary); };
+  for (size_t i = 0; i < tokens.size() && wordnet; ++i) {
+    if (!unknown[i]) continue;
+    const std::string next = i + 1 < tokens.size() ? tokens[i + 1].text : "";
+    std::optional<WordRoute> route = routeWord(tokens[i].text, next, vocabulary, wordnet, known);
+    if (!route) continue;
+    routed[i] = true;
+    leftOut[i] = route->became;
+    reading.routed.push_back({std::move(*route), tokens[i].offset});
+  }
   reading.text = textWith(leftOut);
 
   // Corrections, chosen together: every word its nearest correction first; when that text does not
   // read, each word in turn (left to right) takes the first of its corrections, or none, with which
   // the text, the other words as chosen so far, reads.
   const std::vector<std::string> correctable = correctableWords(vocabulary);
-  std::vector<std::string> choice(tokens.size());
+  std::vector<std::string> choice = leftOut;
   size_t tried = 0;
   for (size_t i = 0; i < tokens.size(); ++i) {
-    if (!unknown[i]) continue;
+    if (!unknown[i] || routed[i]) continue;
     UnknownWord u{tokens[i].text, tokens[i].offset, {}};
     if (tried++ < kCorrectedWords) u.closest = nearestNames(u.word, correctable, 3, plausibleTypoDistance(u.word.size()));
     if (!u.closest.empty()) choice[i] = u.closest[0];
@@ -115,7 +130,7 @@ KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& voca
   if (choice == leftOut || text.size() > kLongestCorrectedText) return reading;  // nothing to correct with
   bool reads = readsAsQuery(textWith(choice), vocabulary);
   for (size_t i = 0, k = 0; i < tokens.size() && !reads; ++i) {
-    if (!unknown[i]) continue;
+    if (!unknown[i] || routed[i]) continue;
     const std::vector<std::string>& closest = reading.unknown[k++].closest;
     std::vector<std::string> options(closest.begin() + (closest.empty() ? 0 : 1), closest.end());
     options.push_back("");

@@ -2,7 +2,9 @@
 // brief: The words of a search-box text that neither query grammar knows, the text read without
 // them, and one correction of them all chosen together, so that an unknown word is not a dead end
 // (docs/api.md §4 POST /query: "ignored", "read_text", "did_you_mean").
-// note: A word is unknown when it is a word of letters (two or more characters, not a number) that
+// note: A word the grammars lack is first routed (query/linguistic/word_routes.h: its lemma, a verb
+// of assembly, WordNet's links onto the vocabulary); only a word with no route is unknown.
+// A word is unknown when it is a word of letters (two or more characters, not a number) that
 // knowsLinguisticWord, the vocabulary's hole words and csgPhraseWords all lack; a hyphenated word counts by its first part
 // ("sphere-shaped"). Leaving words out of a text can leave a joining word with nothing to join
 // ("a round plate with purple dots" -> "a round plate with"): such words, when only unknown words
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "query/linguistic/vocabulary.h"
+#include "query/linguistic/word_routes.h"
 
 namespace fsdb {
 
@@ -23,9 +26,16 @@ struct UnknownWord {
   std::vector<std::string> closest;  // at most 3 correctable words within plausibleTypoDistance, nearest first
 };
 
+struct RoutedWord {
+  WordRoute route;  // what it reads as and why (query/linguistic/word_routes.h)
+  size_t at = 0;    // its character offset in the text
+};
+
 struct KnownWordsReading {
-  std::vector<UnknownWord> unknown;      // in text order; empty: every word is known
-  std::string text;                      // the text without them (blank when nothing is left)
+  std::vector<RoutedWord> routed;        // words read through their lemma or WordNet, in text order
+  std::vector<UnknownWord> unknown;      // the others, in text order; empty: every word is known or routed
+  std::string text;                      // the text with routed words replaced and the unknown ones left out
+                                         // (blank when nothing is left)
   // The text with each unknown word replaced by one of its closest words, chosen left to right so
   // that the text still reads as a query (words with no such correction are left out); nullopt
   // when no word could be corrected.

@@ -42,7 +42,7 @@ nlohmann::json queryResponse(const Store& store, const nlohmann::json& request,
     } catch (const Error&) {
       throw refused;
     }
-    if (reading.unknown.empty()) throw refused;
+    if (reading.unknown.empty() && reading.routed.empty()) throw refused;
     // The text without them first; when that does not read, their corrections chosen together.
     std::vector<std::string> tries;
     if (!reading.text.empty()) tries.push_back(reading.text);
@@ -80,6 +80,20 @@ nlohmann::json queryResponse(const Store& store, const nlohmann::json& request,
     for (const UnknownWord& u : reading.unknown)
       ignored.push_back({{"word", quotedWord(u.word)}, {"at", u.at}, {"did_you_mean", u.closest}});
     answer["ignored"] = std::move(ignored);
+    // Routed words (query/linguistic/word_routes.h): what each became and why; the text is read
+    // less surely through them, so every score is multiplied by their discounts.
+    nlohmann::json routed = nlohmann::json::array();
+    double discount = 1.0;
+    for (const RoutedWord& r : reading.routed) {
+      routed.push_back({{"word", quotedWord(r.route.word)}, {"at", r.at}, {"became", r.route.became},
+                        {"why", r.route.why}, {"via", r.route.via}, {"discount", r.route.discount}});
+      discount *= r.route.discount;
+    }
+    answer["routed"] = std::move(routed);
+    if (discount < 1.0 && answer.contains("results") && answer["results"].is_array())
+      for (nlohmann::json& result : answer["results"])
+        if (result.contains("score") && result["score"].is_number())
+          result["score"] = result["score"].get<double>() * discount;
     answer["read_text"] = searched;
     if (reading.corrected && *reading.corrected != searched) answer["did_you_mean"] = *reading.corrected;
     return answer;

@@ -252,6 +252,45 @@ TEST(DesignersQueries, OneSearchBoxRunsTheSearchTheTextCallsFor) {
   EXPECT_EQ(weights.status, 422) << weights.body;
 }
 
+// Words the vocabulary lacks are routed (query/linguistic/word_routes.h): through WordNet with a
+// discount on every score, verbs of assembly by their lemmas; the answer says what each became.
+TEST(DesignersQueries, WordsTheVocabularyLacksAreRoutedThroughWordNet) {
+  ServerProcess server({"--demo", kDemo});
+  auto colossal = server.post("/query", json{{"text", "a colossal ball"}});
+  ASSERT_EQ(colossal.status, 200) << colossal.body;
+  EXPECT_EQ(colossal.json["read_text"], "a large ball");
+  ASSERT_EQ(colossal.json["routed"].size(), 1u) << colossal.body;
+  EXPECT_EQ(colossal.json["routed"][0]["word"], "colossal");
+  EXPECT_EQ(colossal.json["routed"][0]["at"], 2);
+  EXPECT_EQ(colossal.json["routed"][0]["became"], "large");
+  EXPECT_EQ(colossal.json["routed"][0]["why"], "WordNet similar-to");
+  EXPECT_DOUBLE_EQ(colossal.json["routed"][0]["discount"].get<double>(), 0.9);
+  // The same ranking as the words it became, every score times the discount.
+  const json large = server.post("/query", json{{"text", "a large ball"}}).json;
+  ASSERT_EQ(colossal.json["results"].size(), large["results"].size());
+  for (size_t i = 0; i < large["results"].size(); ++i) {
+    EXPECT_EQ(colossal.json["results"][i]["id"], large["results"][i]["id"]);
+    EXPECT_NEAR(colossal.json["results"][i]["score"].get<double>(), 0.9 * large["results"][i]["score"].get<double>(), 1e-12);
+  }
+  // The examples of assemblies in everyday verbs.
+  auto resting = server.post("/query", json{{"text", "a ball sitting on a cylinder"}});
+  ASSERT_EQ(resting.status, 200) << resting.body;
+  EXPECT_EQ(resting.json["read_text"], "a ball on a cylinder");
+  EXPECT_EQ(resting.json["routed"][0]["why"], "support verb");
+  EXPECT_EQ(server.post("/query", json{{"text", "a cone resting on a box"}}).status, 200);
+  auto bored = server.post("/query", json{{"text", "a slab with a hole bored through it"}});
+  ASSERT_EQ(bored.status, 200) << bored.body;
+  EXPECT_EQ(bored.json["search"], "csg");
+  EXPECT_EQ(bored.json["read_text"], "a slab with a hole drilled through it");
+  auto glued = server.post("/query", json{{"text", "a cylinder glued to a box"}});
+  ASSERT_EQ(glued.status, 200) << glued.body;
+  EXPECT_EQ(glued.json["routed"][0]["became"], "joined");
+  // Nouns of the vocabulary now: no route, no discount.
+  auto pole = server.post("/query", json{{"text", "a pole"}});
+  ASSERT_EQ(pole.status, 200) << pole.body;
+  EXPECT_FALSE(pole.json.contains("routed")) << pole.body;
+}
+
 // The corpus (designers_corpus.txt) on the catalogue built for it: every phrasing runs the same
 // search as the grammar's own and ranks the same ids with the same scores, and the object the
 // line names ranks first.

@@ -1,0 +1,166 @@
+// See query/linguistic/word_routes.h.
+#include "query/linguistic/word_routes.h"
+
+#include <algorithm>
+#include <cctype>
+#include <vector>
+
+namespace fsdb {
+
+namespace {
+
+using Pos = WordNet::Pos;
+
+constexpr double kSynonym = 0.95;
+constexpr double kSimilarTo = 0.9;
+constexpr double kHypernym = 0.9;
+constexpr double kAlsoSee = 0.85;
+constexpr double kAntonym = 0.85;
+
+// Senses that count, per part of speech (a word's rare senses route nowhere).
+size_t sensesThatCount(Pos pos) { return pos == Pos::kNoun ? 4 : 3; }
+
+// Lemmas of verbs whose participles and forms join, cut or rest parts ("glued together", "bored
+// through", "resting on"); morphy finds their forms, so each is listed once.
+const std::vector<std::string>& joiningVerbs() {
+  static const std::vector<std::string> v = {"glue",  "weld",   "fuse",  "attach", "fasten", "bolt",
+                                             "rivet", "solder", "stick", "fix",    "connect", "bond"};
+  return v;
+}
+const std::vector<std::string>& cuttingVerbs() {
+  static const std::vector<std::string> v = {"bore", "cut", "carve", "punch", "mill", "drill", "pierce", "hollow"};
+  return v;
+}
+const std::vector<std::string>& supportVerbs() {
+  static const std::vector<std::string> v = {"rest",  "sit",   "lie",      "stand",  "perch", "balance", "place",
+                                             "put",   "set",   "mount",    "stack",  "lay",   "position", "locate",
+                                             "situate", "seat", "hang",    "float",  "suspend"};
+  return v;
+}
+const std::vector<std::string>& relationWords() {
+  static const std::vector<std::string> v = {"on",     "upon",  "onto",   "atop",   "above",  "over",   "under",
+                                             "below",  "beneath", "behind", "in",   "at",     "next",   "beside",
+                                             "against", "across", "along", "inside", "within", "to",    "between"};
+  return v;
+}
+
+bool contains(const std::vector<std::string>& list, const std::string& w) {
+  return std::find(list.begin(), list.end(), w) != list.end();
+}
+
+struct Candidate {
+  std::string became;
+  std::string why;
+  std::string via;
+  double discount = 0;
+  size_t sense = 0;
+  bool noun = false;    // a noun reached from an inflected form ("dowels"): said in the plural
+  bool beats(const Candidate& o) const { return discount > o.discount || (discount == o.discount && sense < o.sense); }
+};
+
+// A noun of the vocabulary with a shape of its own ("rod", not "thing" or "part").
+bool shapeNoun(const Vocabulary& v, const std::string& w) {
+  const Noun* n = v.noun(w);
+  return n && !n->pronoun && !n->params.is_null();
+}
+
+// The known word of `pos` that a WordNet word `w` reaches, with `flip` for an antonym: the
+// adjective of the same descriptor at the other pole. Empty when none.
+std::string target(const Vocabulary& v, Pos pos, const std::string& w, bool flip) {
+  if (pos == Pos::kNoun) return !flip && shapeNoun(v, w) ? w : "";
+  if (pos == Pos::kAdverb) return !flip && v.intensity(w) ? w : "";
+  if (pos != Pos::kAdjective) return "";
+  const Adjective* a = v.adjective(w);
+  if (!a) return "";
+  if (!flip) return w;
+  for (const std::string& other : v.adjectiveWords()) {
+    const Adjective* b = v.adjective(other);
+    if (b && b->descriptor == a->descriptor && b->lowPole != a->lowPole && b->word == other) return other;
+  }
+  return "";
+}
+
+void consider(Candidate* best, Candidate c) {
+  if (!c.became.empty() && (best->became.empty() || c.beats(*best))) *best = std::move(c);
+}
+
+// The best WordNet route of one base form.
+void wordNetRoutes(const Vocabulary& v, const WordNet& wn, const std::string& base, Pos pos, Candidate* best) {
+  const std::vector<WordNet::Synset> senses = wn.senses(base, pos);
+  for (size_t rank = 0; rank < senses.size() && rank < sensesThatCount(pos); ++rank) {
+    const WordNet::Synset& s = senses[rank];
+    // The word's own place in the synset, for its lexical pointers (antonyms are word to word).
+    int self = 0;
+    for (size_t i = 0; i < s.words.size(); ++i)
+      if (s.words[i] == base) self = static_cast<int>(i) + 1;
+    for (const std::string& w : s.words)
+      if (w != base) consider(best, {target(v, pos, w, false), "WordNet synonym", base + " = " + w, kSynonym, rank});
+    for (const WordNet::Pointer& p : s.pointers) {
+      if (p.source != 0 && p.source != self) continue;
+      const bool similar = p.symbol == "&", also = p.symbol == "^", antonym = p.symbol == "!";
+      const bool hypernym = pos == Pos::kNoun && (p.symbol == "@" || p.symbol == "@i");
+      if (!similar && !also && !antonym && !hypernym) continue;
+      const WordNet::Synset t = wn.synsetAt(p.pos, p.offset);
+      const double d = similar ? kSimilarTo : also ? kAlsoSee : antonym ? kAntonym : kHypernym;
+      const std::string why = similar ? "WordNet similar-to" : also ? "WordNet also-see" : antonym ? "WordNet antonym" : "WordNet hypernym";
+      for (size_t i = 0; i < t.words.size(); ++i) {
+        if (p.target != 0 && p.target != static_cast<int>(i) + 1) continue;
+        consider(best, {target(v, p.pos, t.words[i], antonym), why, base + " -> " + t.words[i], d, rank});
+      }
+      // A satellite's head, then the head's antonym ("unbowed" -> straight's... ), and a noun's
+      // hypernym's hypernym: one more step, at the product of both discounts.
+      if (!similar && !hypernym) continue;
+      for (const WordNet::Pointer& q : t.pointers) {
+        const bool qAntonym = similar && q.symbol == "!";
+        const bool qHypernym = hypernym && (q.symbol == "@" || q.symbol == "@i");
+        if (!qAntonym && !qHypernym) continue;
+        const WordNet::Synset u = wn.synsetAt(q.pos, q.offset);
+        for (size_t i = 0; i < u.words.size(); ++i) {
+          if (q.target != 0 && q.target != static_cast<int>(i) + 1) continue;
+          const std::string via = base + " -> " + (t.words.empty() ? "" : t.words[0]) + " -> " + u.words[i];
+          consider(best, {target(v, q.pos, u.words[i], qAntonym), qAntonym ? "WordNet antonym" : "WordNet hypernym", via,
+                          d * (qAntonym ? kAntonym : kHypernym), rank});
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+std::optional<WordRoute> routeWord(const std::string& word, const std::string& next, const Vocabulary& vocabulary,
+                                   const WordNet* wordnet, const std::function<bool(const std::string&)>& known) {
+  if (!wordnet || word.size() < 2 || !std::all_of(word.begin(), word.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '-' || c == '\''; }))
+    return std::nullopt;
+  const Pos order[] = {Pos::kAdjective, Pos::kNoun, Pos::kAdverb, Pos::kVerb};
+  // Lemmas: an inflection of a word the grammars know.
+  for (Pos pos : order)
+    for (const std::string& base : wordnet->baseForms(word, pos))
+      if (base != word && known(base)) return WordRoute{word, base, "lemma", base, 1.0};
+  // Verbs of assembly, by their lemmas.
+  for (const std::string& base : wordnet->baseForms(word, Pos::kVerb)) {
+    if (contains(joiningVerbs(), base) && known("joined")) return WordRoute{word, "joined", "joining verb", base, 1.0};
+    if (contains(cuttingVerbs(), base) && known("drilled")) return WordRoute{word, "drilled", "cutting verb", base, 1.0};
+    if (contains(supportVerbs(), base) && contains(relationWords(), next))
+      return WordRoute{word, "", "support verb", base, 1.0};
+  }
+  // WordNet's links from the word's own base forms.
+  Candidate best;
+  for (Pos pos : {Pos::kAdjective, Pos::kNoun, Pos::kAdverb})
+    for (const std::string& base : wordnet->baseForms(word, pos)) {
+      Candidate before = best;
+      wordNetRoutes(vocabulary, *wordnet, base, pos, &best);
+      if (best.became != before.became || best.via != before.via) best.noun = pos == Pos::kNoun && base != word;
+    }
+  if (best.became.empty()) return std::nullopt;
+  if (best.noun) {
+    // The plural the vocabulary gives the noun reached ("wands" -> rods).
+    const nlohmann::json& nouns = vocabulary.document().value("nouns", nlohmann::json::object());
+    const auto it = nouns.find(best.became);
+    if (it != nouns.end() && it->is_object() && it->contains("plural") && (*it)["plural"].is_string())
+      best.became = (*it)["plural"].get<std::string>();
+  }
+  return WordRoute{word, best.became, best.why, best.via, best.discount};
+}
+
+}  // namespace fsdb

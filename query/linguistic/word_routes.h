@@ -1,0 +1,49 @@
+#pragma once
+// brief: Word routes: how a word the vocabulary and the grammars lack is read as one they know,
+// through its lemma and WordNet's links (wordnet.h), each route with a documented discount
+// (docs/design/linguistic-search.md, "Words the vocabulary lacks"). The vocabulary is still where
+// meanings live; WordNet only routes words to them.
+// note: The routes, in the order tried (the first kind that routes the word wins; within a kind,
+// the highest discount, then the more frequent sense):
+//   lemma        1.0   an inflection of a known word ("rounder" -> round, "pillars" -> pillar)
+//   joining verb 1.0   a verb of fastening (glue, weld, fuse, attach, ...) -> "joined"
+//   cutting verb 1.0   a verb of making a hole (bore, cut, carve, punch, ...) -> "drilled"
+//   support verb 1.0   a verb of resting (rest, sit, lie, stand, ...) -> left out before a relation
+//                      word ("a cone resting on a box" reads "a cone on a box")
+//   synonym      0.95  a word of the same synset ("enormous" and "tremendous")
+//   similar-to   0.9   an adjective satellite and its head ("colossal" -> large)
+//   hypernym     0.9   a noun's more general noun ("pole" -> rod), 0.81 two steps up
+//   also-see     0.85  an adjective's "see also" link
+//   antonym      0.85  the other pole of a known adjective's descriptor ("unbent" -> bent's other
+//                      pole: straight)
+// Only the first senses count (three for adjectives and adverbs, four for nouns): a rare sense
+// ("slender": "small" by its fourth) is no route. Targets are the vocabulary's adjectives, nouns
+// with a shape (not "thing" or "part"), intensities and single-word directions and distances.
+// throws: nothing.
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "query/linguistic/vocabulary.h"
+#include "query/linguistic/wordnet.h"
+
+namespace fsdb {
+
+struct WordRoute {
+  std::string word;     // as typed (lower case)
+  std::string became;   // the known word it reads as; "" when it is left out (a support verb)
+  std::string why;      // the kind: "lemma", "joining verb", "cutting verb", "support verb",
+                        // "WordNet synonym", "WordNet similar-to", "WordNet hypernym",
+                        // "WordNet also-see", "WordNet antonym"
+  std::string via;      // the WordNet words on the way ("skinny -> thin -> ..."), for `routed`
+  double discount = 1.0;
+};
+
+// The route of `word`, or nullopt. `known` says whether the grammars read a word as it is
+// (knowsLinguisticWord and the CSG phrase words); `next` is the word after it in the text ("" at
+// the end), which a support verb needs to be a relation word. wordnet may be null (then only
+// lemma-free routes: none).
+std::optional<WordRoute> routeWord(const std::string& word, const std::string& next, const Vocabulary& vocabulary,
+                                   const WordNet* wordnet, const std::function<bool(const std::string&)>& known);
+
+}  // namespace fsdb

@@ -1,0 +1,76 @@
+// Word routes (query/linguistic/word_routes.h) onto the built-in vocabulary through Debian's
+// WordNet: each kind of route with its discount, the rare senses that route nowhere, and words
+// with no route.
+#include "query/linguistic/word_routes.h"
+
+#include <gtest/gtest.h>
+
+#include "query/linguistic/linguistic_query.h"
+
+namespace fsdb {
+namespace {
+
+std::optional<WordRoute> route(const std::string& word, const std::string& next = "") {
+  const WordNet* wn = systemWordNet();
+  EXPECT_NE(wn, nullptr) << "no WordNet in " << wordNetDirectory();
+  const Vocabulary& v = Vocabulary::builtin();
+  // The grammars' words as the search box knows them, plus the joining and cutting words of the
+  // CSG phrase form.
+  const auto known = [&](const std::string& w) { return knowsLinguisticWord(w, v) || w == "joined" || w == "drilled"; };
+  return routeWord(word, next, v, wn, known);
+}
+
+void expectRoute(const std::string& word, const std::string& became, const std::string& why, double discount,
+                 const std::string& next = "") {
+  const std::optional<WordRoute> r = route(word, next);
+  ASSERT_TRUE(r.has_value()) << word;
+  EXPECT_EQ(r->word, word);
+  EXPECT_EQ(r->became, became) << word << " via " << r->via;
+  EXPECT_EQ(r->why, why) << word << " via " << r->via;
+  EXPECT_DOUBLE_EQ(r->discount, discount) << word;
+}
+
+TEST(WordRoutes, InflectionsOfKnownWordsAreTheirLemmas) {
+  expectRoute("rounder", "round", "lemma", 1.0);
+  expectRoute("biggest", "big", "lemma", 1.0);
+  expectRoute("straighter", "straight", "lemma", 1.0);
+}
+
+TEST(WordRoutes, VerbsOfAssemblyAreReadByTheirLemmas) {
+  expectRoute("glued", "joined", "joining verb", 1.0);
+  expectRoute("welded", "joined", "joining verb", 1.0);
+  expectRoute("bored", "drilled", "cutting verb", 1.0);
+  expectRoute("punched", "drilled", "cutting verb", 1.0);
+  // A verb of resting is left out before a relation word, and only there.
+  expectRoute("resting", "", "support verb", 1.0, "on");
+  expectRoute("lying", "", "support verb", 1.0, "under");
+  expectRoute("sits", "", "support verb", 1.0, "atop");
+  EXPECT_FALSE(route("resting", "cylinder").has_value());
+}
+
+TEST(WordRoutes, WordNetLinksReachTheVocabularyWithTheirDiscounts) {
+  expectRoute("little", "small", "WordNet synonym", 0.95);        // the synset {small, little}
+  expectRoute("colossal", "large", "WordNet similar-to", 0.9);    // a satellite of large
+  expectRoute("huge", "large", "WordNet similar-to", 0.9);
+  expectRoute("curvy", "curved", "WordNet similar-to", 0.9);
+  expectRoute("crooked", "bent", "WordNet antonym", 0.85);        // the other pole of straight
+  expectRoute("curvier", "curved", "WordNet similar-to", 0.9);    // its lemma curvy, then WordNet
+}
+
+TEST(WordRoutes, NounsReachTheirMoreGeneralNoun) {
+  expectRoute("wand", "rod", "WordNet hypernym", 0.9);
+  expectRoute("ingot", "block", "WordNet hypernym", 0.9);
+  expectRoute("marble", "ball", "WordNet hypernym", 0.9);         // its second sense: a small ball
+  expectRoute("wands", "rods", "WordNet hypernym", 0.9);          // a plural stays plural
+}
+
+TEST(WordRoutes, RareSensesUnknownWordsAndNonWordsRouteNowhere) {
+  EXPECT_FALSE(route("purple").has_value());   // a colour: no shape word near it
+  EXPECT_FALSE(route("slender").has_value());  // "small" only by its fourth sense
+  EXPECT_FALSE(route("sphre").has_value());    // a typo is for the corrections, not WordNet
+  EXPECT_FALSE(route("3d").has_value());
+  EXPECT_FALSE(routeWord("colossal", "", Vocabulary::builtin(), nullptr, [](const std::string&) { return true; }));
+}
+
+}  // namespace
+}  // namespace fsdb
