@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <optional>
 
 #include "geometry/core/error.h"
 #include "geometry/fuzzy/fuzzy_arithmetic.h"
@@ -10,15 +12,22 @@
 #include "query/linguistic/linguistic_query.h"
 #include "query/document/part_json.h"
 #include "query/linguistic/vocabulary.h"
+#include "query/linguistic/word_routes.h"
 
 namespace fsdb {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// The order in which adjectives act (see the header).
-const std::vector<std::string> kOrder = {"squariness", "roundness", "bevelness", "pinchness", "elongation",
-                                         "bendness",   "taperness", "twistness", "size"};
+// The order in which adjectives act (see the header): the shape, then its size and extents, then
+// the deformations (a bend's degree is its angle over the length the extents gave).
+const std::vector<std::string> kOrder = {"squariness", "roundness", "bevelness", "pinchness", "elongation", "size",
+                                         "length",     "width",     "thickness", "height",
+                                         "bendness",   "taperness", "twistness"};
+
+bool isExtent(const std::string& descriptor) {
+  return descriptor == "length" || descriptor == "width" || descriptor == "thickness" || descriptor == "height";
+}
 
 FuzzyNumber affine(const FuzzyNumber& d, double slope, double offset) {
   return add(scale(d, slope), FuzzyNumber::crisp(offset));
@@ -57,10 +66,96 @@ void realize(const std::string& descriptor, const FuzzyNumber& d, FuzzyPart* par
   }
 }
 
+// The part's axes set to the extents asked for (world units: descriptors.h's length, width,
+// thickness and height). The noun's axes at its core, sorted by half-length (ties in the order
+// A, B, C), say which axis is the thickness, the width and the length; height is the z axis (C).
+// An axis as long as a measured one (a round section, a square plate) takes the same extent
+// unless it is measured itself. A = a1 and B, C = a1·a2, a1·a3: a1 takes A's extent and a2, a3
+// are B's and C's divided by a1's core, so they are exact when a1 is crisp; A keeps its spread only
+// when no other axis is measured (below).
+void realizeExtents(const std::map<std::string, FuzzyNumber>& extents, FuzzyPart* part) {
+  if (extents.empty()) return;
+  const PlacedSuperquadric core = part->coreRepresentative();
+  const double s = core.placement.scale;
+  const double half[3] = {core.params.a1, core.params.a1 * core.params.a2, core.params.a1 * core.params.a3};
+  int order[3] = {0, 1, 2};
+  std::stable_sort(order, order + 3, [&](int a, int b) { return half[a] < half[b]; });
+  std::optional<FuzzyNumber> target[3];  // canonical half-lengths of A, B, C
+  const auto halfOf = [s](const FuzzyNumber& e) { return scale(e, 0.5 / s); };
+  const char* sorted[3] = {"thickness", "width", "length"};
+  for (int k = 0; k < 3; ++k)
+    if (extents.count(sorted[k])) target[order[k]] = halfOf(extents.at(sorted[k]));
+  int tieOf[3] = {-1, -1, -1};
+  for (int k = 0; k < 3; ++k) {
+    if (target[k]) continue;
+    for (int j = 0; j < 3; ++j)
+      if (j != k && target[j] && tieOf[j] < 0 && std::fabs(half[k] - half[j]) <= 1e-9 * std::max(half[k], half[j])) {
+        target[k] = target[j];
+        tieOf[k] = j;
+        break;
+      }
+  }
+  if (extents.count("height")) {
+    target[2] = halfOf(extents.at("height"));
+    tieOf[2] = -1;
+  }
+  // One measure for all three axes (a ball's radius, a cube's side): the noun's proportions
+  // stay, and the transform's scale carries the extent's spread, which moves the three together.
+  const auto group = [&](int k) { return tieOf[k] < 0 ? k : tieOf[k]; };
+  const auto same = [&](int j, int k) {
+    return group(j) == group(k) ||
+           (target[j] && target[k] && *target[j] == *target[k] && std::fabs(half[j] - half[k]) <= 1e-9 * half[j]);
+  };
+  if (target[0] && target[1] && target[2] && same(0, 1) && same(1, 2)) {
+    const FuzzyNumber& t = *target[group(0)];
+    const double mid = (t.core().lo + t.core().hi) / 2.0;
+    const double factor = mid / half[group(0)];
+    part->a1 = FuzzyNumber::crisp(core.params.a1 * factor);
+    part->scale = scale(scale(t, 1.0 / mid), s);
+    return;
+  }
+  // B and C scale with a1, and the part's values are independent fuzzy numbers: a fuzzy a1 would
+  // spread every other axis by its cut. So A keeps a spread only when its group (A and the axes
+  // as long as it) is all that is measured; beside another group's measure, A's group takes its
+  // core's midpoint (a round section stays round, and crisp).
+  bool othersMeasured = false;
+  for (int k = 1; k < 3; ++k) othersMeasured = othersMeasured || (target[k] && group(k) != group(0));
+  if (target[0] && !target[0]->isCrisp() && othersMeasured) {
+    const FuzzyNumber mid = FuzzyNumber::crisp((target[0]->core().lo + target[0]->core().hi) / 2.0);
+    for (int k = 0; k < 3; ++k)
+      if (group(k) == group(0)) target[k] = mid;
+  }
+  const FuzzyNumber a1 = target[0] ? *target[0] : part->a1;
+  const double a1Core = (a1.core().lo + a1.core().hi) / 2.0;
+  const double was = core.params.a1;
+  part->a2 = target[1] ? scale(*target[1], 1.0 / a1Core) : scale(part->a2, was / a1Core);
+  part->a3 = target[2] ? scale(*target[2], 1.0 / a1Core) : scale(part->a3, was / a1Core);
+  part->a1 = a1;
+}
+
+// The description of `text`; a word the grammar lacks is routed onto the vocabulary first
+// (word_routes.h: "a skinny pole" is "a thin pole"), and when the text does not read even so, the
+// error is the one for the words as written.
+PartDescription describedPart(const std::string& text, const Vocabulary& vocabulary) {
+  try {
+    return parsePartDescription(text, vocabulary);
+  } catch (const Error& asWritten) {
+    if (asWritten.code() != errc::kInvalidParameter) throw;
+    const auto known = [&](const std::string& w) { return knowsLinguisticWord(w, vocabulary); };
+    const std::optional<RoutedText> routed = routeUnknownWords(text, vocabulary, systemWordNet(), known);
+    if (!routed) throw;
+    try {
+      return parsePartDescription(routed->text, vocabulary);
+    } catch (const Error&) {
+      throw asWritten;
+    }
+  }
+}
+
 }  // namespace
 
 FuzzyPart partFromWords(const std::string& text, const Vocabulary& vocabulary) {
-  const PartDescription words = parsePartDescription(text, vocabulary);
+  const PartDescription words = describedPart(text, vocabulary);
   if (words.noun->params.is_null())
     throw Error(errc::kInvalidParameter,
                 "'" + words.noun->word + "' names no shape; say which primitive (" +
@@ -72,12 +167,34 @@ FuzzyPart partFromWords(const std::string& text, const Vocabulary& vocabulary) {
     return std::find(kOrder.begin(), kOrder.end(), a.adjective->descriptor) <
            std::find(kOrder.begin(), kOrder.end(), b.adjective->descriptor);
   });
+  // Extents from adjectives ("a thin rod": a degree, read back through e = d / (1 − d)) and
+  // measures ("about 10 long", which win over an adjective of the same extent), set together
+  // after the shape and size and before the deformations.
+  std::map<std::string, FuzzyNumber> extents;
+  bool extentsSet = false;
+  const auto setExtents = [&] {
+    if (extentsSet) return;
+    extentsSet = true;
+    for (const MeasureUse& m : words.measures) extents[m.descriptor] = m.extent;
+    realizeExtents(extents, &part);
+  };
   for (const AdjectiveUse& use : uses) {
     const Adjective& a = *use.adjective;
     FuzzyNumber d = use.intensity ? *use.intensity : a.create ? *a.create : vocabulary.plainCreate();
     if (a.lowPole && !(a.create && !use.intensity)) d = mirroredDegrees(d);
+    const bool deformation = std::find(kOrder.begin(), kOrder.end(), a.descriptor) >=
+                             std::find(kOrder.begin(), kOrder.end(), "bendness");
+    if (deformation) setExtents();
+    if (isExtent(a.descriptor)) {
+      extents[a.descriptor] = mapIncreasing(d, [](double x) {
+        x = std::min(0.98, std::max(0.02, x));
+        return x / (1.0 - x);
+      });
+      continue;
+    }
     realize(a.descriptor, d, &part);
   }
+  setExtents();
   try {
     part.validate();
   } catch (const Error& e) {

@@ -9,13 +9,20 @@
 //   bendness    kv = d·π / (2C)                taperness  kx = ky = −d (narrowing towards +z)
 //   twistness   t = π·d
 //   size        transform.scale = (d / (1 − d)) / L, d clamped to [0.05, 0.95]
+//   length, width, thickness, height: the extent e = d / (1 − d) (d clamped to [0.02, 0.98]), or a
+//               measure's extent in world units ("a pole about 10 long": length about 10), set on
+//               the axis it measures (realizeExtents: the noun's axes sorted by length say which
+//               is which; an axis as long as a measured one follows it; height is C)
 // with C and L (query/linguistic/descriptors.h) of the part so far (core midpoints). The degree d is the
 // intensity's set ("slightly bent": `slightly`), else the adjective's own "create", else the
 // vocabulary's plain "create" set; low-pole adjectives ("flat", "small") mirror the intensity and
 // plain sets (d → 1 − d; an adjective's own "create" is its degree as written). Adjectives act in
-// the order of the table above (shape, proportions, deformations, size), whatever their order in
-// the text, so a bend is measured on the final length. Affine rules are exact; elongation and
+// the order shape, proportions, size, extents, deformations, whatever their order in the text,
+// so a bend is measured on the final length; measures override an adjective of the same extent. Affine rules are exact; elongation and
 // size map the set's breakpoints (exact there, linear between).
+// A word the grammar lacks is routed onto the vocabulary first (query/linguistic/word_routes.h:
+// its lemma, WordNet's links), so "a skinny pole" is made as "a thin pole"; the document keeps
+// the words as written.
 // Errors: fsdb::Error(errc::kInvalidParameter, path "text"): the parser's (unknown words with the
 // closest known ones, position, expected words), a noun without a shape ("shape", "part": say
 // which primitive), and parameters outside the ranges of docs/api.md §2.

@@ -27,6 +27,17 @@ double elongation(double a2, double a3) {
   return clamp01((1.0 + s[0] / s[1] - s[1] / s[2]) / 2.0);
 }
 
+// A world-unit extent as a degree in [0, 1): e / (1 + e), as size does (0 for e <= 0).
+double extentDegreeOf(double e) { return e > 0.0 ? e / (1.0 + e) : 0.0; }
+
+// The part's full extents along its own axes, sorted: 2·scale·(A, B, C), A = a1, B = a1·a2, C = a1·a3.
+std::array<double, 3> sortedExtents(const Values& v) {
+  const double k = 2.0 * v[kScale] * v[kA1];
+  std::array<double, 3> e{k, k * v[kA2], k * v[kA3]};
+  std::sort(e.begin(), e.end());
+  return e;
+}
+
 double degree(int index, const Values& v) {
   switch (index) {
     case 0: return (sq(v[kEps1]) + sq(v[kEps2])) / 2.0;
@@ -43,6 +54,10 @@ double degree(int index, const Values& v) {
     case 8: return elongation(v[kA2], v[kA3]);
     case 9: return sq(v[kEps2]);   // the traverse section alone (eps2: Zhang, Pham & Chen, §2.1)
     case 10: return ro(v[kEps2]);
+    case 11: return extentDegreeOf(sortedExtents(v)[2]);  // length: the longest extent
+    case 12: return extentDegreeOf(sortedExtents(v)[1]);  // width: the middle one
+    case 13: return extentDegreeOf(sortedExtents(v)[0]);  // thickness: the shortest
+    case 14: return extentDegreeOf(2.0 * v[kScale] * v[kA1] * v[kA3]);  // height: along the part's own z axis
     default: return 0.0;
   }
 }
@@ -61,6 +76,10 @@ const Reads& readsOf(int index) {
       {{kT}, {0.0}},                        {{kScale, kA1, kA2, kA3}, {}},
       {{kA2, kA3}, {1.0}},                  {{kEps2}, {1.0}},
       {{kEps2}, {1.0, 2.0}},
+      // The extents rise with every parameter they read (sorting keeps that: the k-th smallest
+      // of rising functions rises), so the corners hold their extremes.
+      {{kScale, kA1, kA2, kA3}, {}},        {{kScale, kA1, kA2, kA3}, {}},
+      {{kScale, kA1, kA2, kA3}, {}},        {{kScale, kA1, kA3}, {}},
   };
   return table[index];
 }
@@ -84,7 +103,8 @@ void addIfInside(std::vector<double>* list, const Interval& range, double x) {
 const std::vector<std::string>& descriptorNames() {
   static const std::vector<std::string> names = {
       "squariness", "roundness", "bevelness",  "pinchness",          "bendness",         "taperness",
-      "twistness",  "size",      "elongation", "section-squariness", "section-roundness"};
+      "twistness",  "size",      "elongation", "section-squariness", "section-roundness",
+      "length",     "width",     "thickness",  "height"};
   return names;
 }
 
@@ -156,6 +176,29 @@ std::vector<DescriptorValue> describePart(const FuzzyPart& part) {
     values.push_back({names[i], FuzzyNumber::fromAlphaCuts(levels, cuts)});
   }
   return values;
+}
+
+}  // namespace fsdb
+
+namespace fsdb {
+
+double extentDegree(double e) { return extentDegreeOf(e); }
+
+FuzzyNumber extentDegreeSet(const FuzzyNumber& extent) {
+  if (extent.isCrisp()) return FuzzyNumber::crisp(extentDegreeOf(extent.core().lo));
+  std::vector<double> levels;
+  for (const Breakpoint& p : extent.breakpoints()) levels.push_back(p.mu);
+  for (int k = 0; k <= kDescriptorLevels; ++k) levels.push_back(static_cast<double>(k) / kDescriptorLevels);
+  std::sort(levels.begin(), levels.end());
+  levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+  std::vector<Interval> cuts;
+  cuts.reserve(levels.size());
+  // extentDegree rises, so it maps each cut's ends to the image cut's ends.
+  for (double a : levels) {
+    const Interval c = extent.alphaCut(a);
+    cuts.push_back({extentDegreeOf(c.lo), extentDegreeOf(c.hi)});
+  }
+  return FuzzyNumber::fromAlphaCuts(levels, cuts);
 }
 
 }  // namespace fsdb

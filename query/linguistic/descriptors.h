@@ -28,6 +28,15 @@
 //                (Zhang, Pham & Chen, §2.1: "squareness along the west-east direction"), so a
 //                cylinder has a round section and a pyramid a squarish one ("a very sharp shape
 //                with squarish traverse section", §1).
+//   length, width, thickness = d(e3), d(e2), d(e1) with e1 <= e2 <= e3 the part's full extents
+//                along its own axes, 2·scale·(A, B, C), and d(e) = e / (1 + e) as for size: a
+//                cylinder 10 long and 1 across has length d(10), width and thickness d(1); a board
+//                8 × 1 × 0.2 has length d(8), width d(1), thickness d(0.2).
+//   height     = d(2·scale·C), the extent along the part's own z axis (the axis its taper, bend
+//                and twist follow): a post's height is its length, a dome's its thickness.
+//                The four are the undeformed part's box: a taper or bend changes them little.
+//                Measures in queries ("about 10 long", "2 across", "3 units tall") are conditions
+//                on them (query/linguistic/linguistic_query.h, measureSet).
 // Every function is continuous and piecewise monotone in each parameter.
 //
 // A fuzzy part's descriptor values are fuzzy numbers by the extension principle (Zhang, Pham &
@@ -50,12 +59,22 @@ namespace fsdb {
 inline constexpr int kDescriptorLevels = 16;
 
 // The descriptor names in index order: "squariness","roundness","bevelness","pinchness",
-// "bendness","taperness","twistness","size","elongation","section-squariness","section-roundness".
+// "bendness","taperness","twistness","size","elongation","section-squariness","section-roundness",
+// "length","width","thickness","height".
 const std::vector<std::string>& descriptorNames();
 
 // How many descriptors there were before the two section descriptors (vocabulary files of then
 // document only these).
 inline constexpr size_t kDescriptorsBeforeSections = 9;
+// How many there were before the four measures (length, width, thickness, height).
+inline constexpr size_t kDescriptorsBeforeMeasures = 11;
+
+// A world-unit extent e as the degree the measure descriptors use: e / (1 + e), 0 for e <= 0.
+double extentDegree(double e);
+// A fuzzy extent in world units ("about 10": tri(9, 10, 11)) as a set over those degrees: its
+// alpha-cuts at its breakpoints and at k/kDescriptorLevels mapped through extentDegree, linear in
+// between (the same levels a fuzzy part's descriptor values have).
+FuzzyNumber extentDegreeSet(const FuzzyNumber& extent);
 
 // Index of a name in descriptorNames(), or -1.
 int descriptorIndex(const std::string& name);

@@ -65,6 +65,107 @@ QueryCondition descriptorCondition(const std::string& descriptor, FuzzyNumber se
   return c;
 }
 
+// Measures (see the header): the words after a number and before one, each with the descriptor
+// it measures (descriptors.h) and the factor from the number to the extent (a radius is half a
+// width); "cube" measures all three extents ("4 units on a side").
+struct DimensionWord {
+  std::string words;
+  std::string descriptor;
+  double factor;
+};
+
+const std::vector<DimensionWord>& dimensionsAfterNumber() {
+  static const std::vector<DimensionWord> d = {
+      {"long", "length", 1},        {"in length", "length", 1},       {"wide", "width", 1},
+      {"broad", "width", 1},        {"across", "width", 1},           {"in diameter", "width", 1},
+      {"diameter", "width", 1},     {"in width", "width", 1},         {"radius", "width", 2},
+      {"in radius", "width", 2},    {"thick", "thickness", 1},        {"deep", "thickness", 1},
+      {"in thickness", "thickness", 1}, {"tall", "height", 1},        {"high", "height", 1},
+      {"in height", "height", 1},   {"on a side", "cube", 1},         {"on each side", "cube", 1},
+      {"side", "cube", 1},          {"sides", "cube", 1}};
+  return d;
+}
+
+const std::vector<DimensionWord>& dimensionsBeforeNumber() {
+  static const std::vector<DimensionWord> d = {
+      {"length", "length", 1},   {"width", "width", 1},         {"breadth", "width", 1},
+      {"diameter", "width", 1},  {"radius", "width", 2},        {"thickness", "thickness", 1},
+      {"depth", "thickness", 1}, {"height", "height", 1},       {"side", "cube", 1}};
+  return d;
+}
+
+std::vector<std::string> phrasesOf(const std::vector<DimensionWord>& table) {
+  std::vector<std::string> out;
+  for (const DimensionWord& d : table) out.push_back(d.words);
+  return out;
+}
+
+const DimensionWord& dimensionWord(const std::vector<DimensionWord>& table, const std::string& words) {
+  for (const DimensionWord& d : table)
+    if (d.words == words) return d;
+  return table.front();  // not reached: words come from the table
+}
+
+// The word a measure of `descriptor` is printed with ("about 10 long").
+const char* measureWordOf(const std::string& descriptor) {
+  if (descriptor == "length") return "long";
+  if (descriptor == "width") return "across";
+  if (descriptor == "thickness") return "thick";
+  return "tall";
+}
+
+// A measure's condition: its descriptor with the extent's set over the degrees.
+QueryCondition measureCondition(const std::string& descriptor, const FuzzyNumber& extent, std::string text) {
+  QueryCondition c = descriptorCondition(descriptor, extentDegreeSet(extent), std::move(text));
+  c.measure = extent;
+  return c;
+}
+
+// The descriptor leaves of a condition tree (under "not" and "or" too).
+void collectLeaves(const QueryCondition& c, std::vector<const QueryCondition*>* out) {
+  if (c.kind == Kind::kDescriptor) out->push_back(&c);
+  for (const QueryCondition& child : c.children) collectLeaves(child, out);
+}
+
+// The shape of the exponents: squariness, roundness, bevelness and pinchness of the whole part or
+// its section describe one thing (eps1, eps2), so a word on any of them replaces a noun's on all.
+bool isExponentShape(const std::string& d) {
+  return d == "squariness" || d == "roundness" || d == "bevelness" || d == "pinchness" || d == "section-squariness" ||
+         d == "section-roundness";
+}
+
+// Whether two sets over the degrees contradict each other: no degree (on a grid of 1/1000)
+// belongs to both.
+bool contradicts(const FuzzyNumber& a, const FuzzyNumber& b) {
+  for (int i = 0; i <= 1000; ++i) {
+    const double x = i / 1000.0;
+    if (std::min(a.membership(x), b.membership(x)) > 0.0) return false;
+  }
+  return true;
+}
+
+// Whether the words a user says replace a noun's condition (nouns are defaults, not vetoes):
+//  * a condition on the same descriptor that contradicts the noun's ("a slightly tapered cone":
+//    the cone's own taper is high; "a tapered cylinder" agrees with the cylinder's and both hold);
+//  * for the shape of the exponents, a condition on any of them when the noun keeps another
+//    condition to be itself ("a round plate" stays flat, "a square disc" too; a box or a sphere is
+//    its exponents' shape, so "a round box" keeps the box's);
+//  * for the noun's proportions (elongation), words on two or more extents ("a board 8 long and
+//    1 wide", "a thin pole 10 long").
+bool overriddenByWords(const NounCondition& condition, const Noun& noun, const std::vector<const QueryCondition*>& said) {
+  const std::string& descriptor = condition.descriptor;
+  bool keepsAnother = false;
+  for (const NounCondition& c : noun.conditions) keepsAnother = keepsAnother || !isExponentShape(c.descriptor);
+  std::set<std::string> extents;
+  for (const QueryCondition* c : said) {
+    if (c->descriptor == descriptor && contradicts(c->set, condition.set)) return true;
+    if (isExponentShape(descriptor) && isExponentShape(c->descriptor) && keepsAnother) return true;
+    if (c->descriptor == "length" || c->descriptor == "width" || c->descriptor == "thickness")
+      extents.insert(c->descriptor);
+  }
+  return descriptor == "elongation" && extents.size() >= 2;
+}
+
 class Parser {
  public:
   Parser(const std::string& text, const Vocabulary& vocabulary, size_t from = 0, size_t to = std::string::npos,
@@ -189,7 +290,14 @@ class Parser {
     }
     pos_ += n;
     d.noun = v_.noun(word);
-    if (pos_ < tokens_.size()) fail({"the end of the description (a part is adjectives and one noun)"});
+    for (QueryCondition& m : measuresAfterNoun()) {
+      std::vector<QueryCondition> leaves;
+      if (m.kind == Kind::kDescriptor) leaves.push_back(std::move(m));
+      else leaves = std::move(m.children);
+      for (const QueryCondition& leaf : leaves) d.measures.push_back({leaf.descriptor, *leaf.measure, leaf.text});
+    }
+    if (pos_ < tokens_.size())
+      fail({"the end of the description (a part is adjectives, one noun and its measures: 'a pole about 10 long')"});
     return d;
   }
 
@@ -251,6 +359,7 @@ class Parser {
       std::vector<std::string> known(v_.words().begin(), v_.words().end());
       known.insert(known.end(), grammarWords().begin(), grammarWords().end());
       known.insert(known.end(), descriptorNames().begin(), descriptorNames().end());
+      known.insert(known.end(), measureWords().begin(), measureWords().end());
       throw Error(errc::kInvalidParameter,
                   "unknown word '" + quotedWord(t.text) + "' at character " + std::to_string(t.offset) + "; closest known words: " +
                       closestNames(t.text, known) + didYouMean(t, known),
@@ -300,7 +409,7 @@ class Parser {
   }
 
   bool startsCondition() const {
-    if (at("not") || at("(") || startsArticleSection()) return true;
+    if (at("not") || at("(") || startsArticleSection() || startsMeasure()) return true;
     if (pos_ < tokens_.size() && descriptorIndex(tokens_[pos_].text) >= 0) return true;
     std::string m;
     return matchPhrase(intensityWords_, &m) > 0 || matchPhrase(adjectiveWords_, &m) > 0;
@@ -309,7 +418,143 @@ class Parser {
   std::vector<std::string> conditionStarts() const {
     return {"'not'", "'('", "an intensity (" + joinList(intensityWords_) + ")",
             "an adjective (" + joinList(adjectiveWords_) + ")",
-            "a descriptor and its degree (" + joinList(descriptorNames()) + ")"};
+            "a descriptor and its degree (" + joinList(descriptorNames()) + ")",
+            "a measure ('about 10 long', '2 across', 'diameter 2')"};
+  }
+
+  // --- measures (see the header) ----------------------------------------------------------------
+  // The tokens a number phrase spans at token `at` (0: none).
+  size_t numberPhraseTokens(size_t at) const {
+    if (at >= tokens_.size()) return 0;
+    if (tokens_[at].number) return 1;
+    if (contains(kApproximately, tokens_[at].text)) return at + 1 < tokens_.size() && tokens_[at + 1].number ? 2 : 0;
+    if (tokens_[at].text == "between")
+      return at + 3 < tokens_.size() && tokens_[at + 1].number && tokens_[at + 2].text == "and" && tokens_[at + 3].number
+                 ? 4
+                 : 0;
+    return 0;
+  }
+
+  bool isWordAt(size_t at, std::initializer_list<const char*> words) const {
+    if (at >= tokens_.size()) return false;
+    for (const char* w : words)
+      if (tokens_[at].text == w) return true;
+    return false;
+  }
+
+  // Whether a measure starts at the current token: number_phrase [ "unit(s)" ] dimension word,
+  // number_phrase ( "x" | "by" ) NUMBER ..., or [ "of" ] [ article ] dimension noun [ "of" | "is" ]
+  // number_phrase.
+  bool startsMeasure() const {
+    static const std::vector<std::string> after = phrasesOf(dimensionsAfterNumber());
+    static const std::vector<std::string> before = phrasesOf(dimensionsBeforeNumber());
+    std::string m;
+    size_t at = pos_;
+    if (const size_t n = numberPhraseTokens(at)) {
+      at += n;
+      if (isWordAt(at, {"x", "by"}) && at + 1 < tokens_.size() && tokens_[at + 1].number) return true;
+      if (isWordAt(at, {"unit", "units"})) ++at;
+      return matchPhrase(after, &m, at - pos_) > 0;
+    }
+    if (isWordAt(at, {"of"})) ++at;
+    if (isWordAt(at, {"a", "an", "the", "its"})) ++at;
+    const size_t k = matchPhrase(before, &m, at - pos_);
+    if (k == 0) return false;
+    at += k;
+    if (isWordAt(at, {"of", "is"})) ++at;
+    return numberPhraseTokens(at) > 0;
+  }
+
+  // A measure's number: a plain N is within 10 % of N (tri(0.9 N, N, 1.1 N)), any other number
+  // phrase as written; the extent must be positive.
+  FuzzyNumber measureNumber() {
+    const size_t start = pos_;
+    std::optional<FuzzyNumber> n = numberPhrase("measure");
+    if (!n) fail({"a number"});
+    const bool positive = n->core().lo > 0.0;
+    if (pos_ == start + 1 && positive) {
+      const double x = n->core().lo;
+      n = FuzzyNumber::triangular(0.9 * x, x, 1.1 * x);
+    }
+    if (!positive)
+      throw Error(errc::kInvalidParameter,
+                  "a measure is a positive extent; the one at character " + std::to_string(tokens_[start].offset) +
+                      " is not",
+                  "text");
+    return *n;
+  }
+
+  void acceptUnits() {
+    if (!acceptWord("units")) acceptWord("unit");
+  }
+
+  void addMeasure(const DimensionWord& d, const FuzzyNumber& number, const std::string& text,
+                  std::vector<QueryCondition>* out) const {
+    const FuzzyNumber extent = d.factor == 1.0 ? number : scale(number, d.factor);
+    if (d.descriptor != "cube") {
+      out->push_back(measureCondition(d.descriptor, extent, text));
+      return;
+    }
+    for (const char* descriptor : {"thickness", "width", "length"}) out->push_back(measureCondition(descriptor, extent, text));
+  }
+
+  // measure, at startsMeasure(): one condition, or an "and" of them (three sides, a side).
+  QueryCondition measure() {
+    static const std::vector<std::string> after = phrasesOf(dimensionsAfterNumber());
+    static const std::vector<std::string> before = phrasesOf(dimensionsBeforeNumber());
+    const size_t start = pos_;
+    std::vector<QueryCondition> out;
+    std::string word;
+    if (numberPhraseTokens(pos_)) {
+      const FuzzyNumber first = measureNumber();
+      if (at("x") || at("by")) {
+        // "4 x 2 x 1": the three extents, sorted: the shortest is the thickness, the longest the length.
+        std::vector<FuzzyNumber> sides{first};
+        while ((at("x") || at("by")) && sides.size() < 3) {
+          ++pos_;
+          sides.push_back(measureNumber());
+        }
+        if (sides.size() != 3) fail({"'x' and a third number (the three sides of a box: '4 x 2 x 1')"});
+        acceptUnits();
+        std::stable_sort(sides.begin(), sides.end(), [](const FuzzyNumber& a, const FuzzyNumber& b) {
+          return a.core().lo + a.core().hi < b.core().lo + b.core().hi;
+        });
+        const char* names[] = {"thickness", "width", "length"};
+        for (size_t i = 0; i < 3; ++i) out.push_back(measureCondition(names[i], sides[i], span(start, pos_)));
+      } else {
+        acceptUnits();
+        const size_t n = matchPhrase(after, &word);
+        if (n == 0) fail({"a dimension word (" + joinList(after) + ")"});
+        pos_ += n;
+        addMeasure(dimensionWord(dimensionsAfterNumber(), word), first, span(start, pos_), &out);
+      }
+    } else {
+      acceptWord("of");
+      acceptAny({"a", "an", "the", "its"});
+      const size_t n = matchPhrase(before, &word);
+      if (n == 0) fail({"a dimension (" + joinList(before) + ")"});
+      pos_ += n;
+      if (!acceptWord("of")) acceptWord("is");
+      const FuzzyNumber number = measureNumber();
+      acceptUnits();
+      addMeasure(dimensionWord(dimensionsBeforeNumber(), word), number, span(start, pos_), &out);
+    }
+    return group(Kind::kAnd, std::move(out), start);
+  }
+
+  // Measures right after a noun: [ "," ] measure { ( "," | "and" ) measure }; a joining word not
+  // followed by a measure is left for what comes next.
+  std::vector<QueryCondition> measuresAfterNoun() {
+    std::vector<QueryCondition> out;
+    while (true) {
+      const size_t save = pos_;
+      if (!acceptWord(",") && !out.empty()) acceptWord("and");
+      if (!startsMeasure()) {
+        pos_ = save;
+        return out;
+      }
+      out.push_back(measure());
+    }
   }
 
   // noun_phrase = [ article ] [ condition ] noun [ ("that"|"which") ("is"|"are") condition ]
@@ -351,28 +596,16 @@ class Parser {
     *subject = noun.subject;
     // "something twisted": a pronoun takes its adjectives after it.
     if (noun.pronoun && !hasModifiers && startsCondition()) parts.push_back(condition());
-    if (!noun.conditions.empty()) {
-      const std::string nounText = span(nounStart, pos_);
-      std::vector<QueryCondition> leaves;
-      for (const NounCondition& c : noun.conditions)
-        leaves.push_back(descriptorCondition(c.descriptor, c.set, nounText + ": " + c.descriptor));
-      if (leaves.size() == 1) {
-        leaves[0].text = nounText;
-        leaves[0].noun = noun.word;
-        parts.push_back(std::move(leaves[0]));
-      } else {
-        QueryCondition all;
-        all.kind = Kind::kAnd;
-        all.text = nounText;
-        all.noun = noun.word;
-        all.children = std::move(leaves);
-        parts.push_back(std::move(all));
-      }
-    }
+    const size_t nounAt = parts.size();
+    const std::string nounText = span(nounStart, pos_);
+    // Measures right after the noun ("a rod 6 long and 0.2 across") join its clause, if any: one
+    // condition after the noun, as "that is" gives.
+    const size_t clauseStart = pos_;
+    std::vector<QueryCondition> clause = measuresAfterNoun();
     if (acceptWord("that") || acceptWord("which")) {
       if (!acceptAny({"is", "are", "has", "have"})) fail({"'is'", "'are'", "'has'", "'have'"});
       if (!startsCondition()) fail(conditionStarts());
-      parts.push_back(condition());
+      clause.push_back(condition());
     } else if (at("with") && !(pos_ + 1 < tokens_.size() && tokens_[pos_ + 1].text == "score")) {
       ++pos_;
       if (!startsCondition()) {
@@ -381,9 +614,31 @@ class Parser {
         if (!prefix_) fail(conditionStarts());
         --pos_;
       } else {
-        parts.push_back(condition());
+        clause.push_back(condition());
       }
     }
+    if (!noun.conditions.empty()) {
+      // Nouns are defaults: a condition the words state themselves may replace the noun's on the
+      // same quality (overriddenByWords): "a round plate" is round, not square.
+      std::vector<const QueryCondition*> said;
+      for (const QueryCondition& c : parts) collectLeaves(c, &said);
+      for (const QueryCondition& c : clause) collectLeaves(c, &said);
+      std::vector<QueryCondition> leaves;
+      for (const NounCondition& c : noun.conditions)
+        if (!overriddenByWords(c, noun, said))
+          leaves.push_back(descriptorCondition(c.descriptor, c.set, nounText + ": " + c.descriptor));
+      QueryCondition node;
+      if (leaves.size() == 1) {
+        node = std::move(leaves[0]);
+      } else {
+        node.kind = Kind::kAnd;  // none left: the noun says nothing more ("anything")
+        node.children = std::move(leaves);
+      }
+      node.text = nounText;
+      node.noun = noun.word;
+      parts.insert(parts.begin() + static_cast<std::ptrdiff_t>(nounAt), std::move(node));
+    }
+    if (!clause.empty()) parts.push_back(group(Kind::kAnd, std::move(clause), clauseStart));
     if (parts.size() == 1) return std::move(parts[0]);
     QueryCondition all;  // empty: "anything" (a bare "shape")
     all.kind = Kind::kAnd;
@@ -469,6 +724,7 @@ class Parser {
       if (!acceptWord(")")) fail({"')'", "'and'", "'or'"});
       return inner;
     }
+    if (startsMeasure()) return measure();
     if (pos_ < tokens_.size() && descriptorIndex(tokens_[pos_].text) >= 0) {
       const std::string descriptor = tokens_[pos_++].text;
       FuzzyNumber set = degree();
@@ -631,11 +887,32 @@ LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& 
 }
 
 bool knowsLinguisticWord(const std::string& word, const Vocabulary& vocabulary) {
-  return vocabulary.knowsWord(word) || contains(grammarWords(), word) || descriptorIndex(word) >= 0;
+  return vocabulary.knowsWord(word) || contains(grammarWords(), word) || descriptorIndex(word) >= 0 ||
+         std::binary_search(measureWords().begin(), measureWords().end(), word);
+}
+
+const std::vector<std::string>& measureWords() {
+  static const std::vector<std::string> words = [] {
+    std::vector<std::string> out = {"x", "by", "unit", "units"};
+    for (const auto* table : {&dimensionsAfterNumber(), &dimensionsBeforeNumber()})
+      for (const DimensionWord& d : *table)
+        for (size_t at = 0; at < d.words.size();) {
+          size_t end = d.words.find(' ', at);
+          if (end == std::string::npos) end = d.words.size();
+          out.push_back(d.words.substr(at, end - at));
+          at = end + 1;
+        }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }();
+  return words;
 }
 
 std::vector<std::string> correctableWords(const Vocabulary& vocabulary) {
   std::vector<std::string> words(descriptorNames().begin(), descriptorNames().end());
+  for (const std::string& w : measureWords())
+    if (w.size() >= 3 && !contains(grammarWords(), w)) words.push_back(w);
   for (const auto* list : {&vocabulary.intensityWords(), &vocabulary.adjectiveWords(), &vocabulary.nounWords(),
                            &vocabulary.directionWords(), &vocabulary.distanceWords(), &vocabulary.sectionWords()})
     for (const std::string& phrase : *list)

@@ -21,6 +21,12 @@
 // from the Vocabulary (query/linguistic/vocabulary.h), so a user's vocabulary file extends the language.
 //
 // Meaning of the tree:
+//   * measure ("about 10 long", "2 across", "between 3 and 4 wide", "3 units tall", "diameter
+//     2", "a radius of 1", "4 x 2 x 1", "4 units on a side"): a kDescriptor condition on length,
+//     width, thickness or height (descriptors.h) with the extent's set over their degrees; a plain
+//     number means "about" it (people measure roughly; "exactly 2" is crisp); three numbers are the
+//     sorted extents; a side gives all three. After a noun, measures may follow it directly
+//     ("a rod 6 long and 0.2 across"). measureWords() lists the words.
 //   * descriptor degree ("bendness at least 0.5"): a kDescriptor condition with the set
 //     trap(x, x, 1, 1) (at least), trap(0, 0, x, x) (at most) or the number phrase restricted to
 //     [0, 1] ("roundness about 1").
@@ -81,6 +87,9 @@ struct QueryCondition {
   // relative clause).
   std::string noun;
   bool nounPhrase = false;
+  // A measure ("about 10 long", "a radius of 1"): the extent it asks for in world units (a
+  // radius already doubled) and `set` its image over the descriptor's degrees (extentDegreeSet).
+  std::optional<FuzzyNumber> measure;
 };
 struct LinguisticQuery {
   std::string subject = "any";   // "part", "shape" or "any" (from the noun: "shape" = any)
@@ -106,6 +115,11 @@ bool knowsLinguisticWord(const std::string& word, const Vocabulary& vocabulary);
 // vocabulary's intensities, adjectives, nouns, directions, distances and sections, without the
 // grammar's little words and words under three letters ("purple" is no typo of "are").
 std::vector<std::string> correctableWords(const Vocabulary& vocabulary);
+
+// The words of measures, sorted: the dimension words after a number ("long", "across", "in
+// diameter", "on a side", ...; single words of the phrases) and before one ("diameter",
+// "radius", "length", ...), with "x", "by", "unit", "units".
+const std::vector<std::string>& measureWords();
 
 // The grammar's opening verbs (each may be followed by "for") and its articles, in the grammar's
 // order; the phrase form of structural queries (query/structural/csg_query_text.h) opens with the same verbs
@@ -148,16 +162,24 @@ class NounPhraseReader {
 
 // The words of a part described by words ("a slightly bent cylinder", "a long, very twisted
 // box"): [ article ] { [ intensity ] adjective [ "," | "and" ] } noun. The pointers point into
-// `vocabulary`. Errors as parseLinguisticQuery (path "text"). query/document/part_from_words.h turns it
-// into parameters.
+// `vocabulary`. Measures may follow the noun ("a pole about 10 long"). Errors as
+// parseLinguisticQuery (path "text"). query/document/part_from_words.h turns it into parameters.
 struct AdjectiveUse {
   const Adjective* adjective;
   const FuzzyNumber* intensity;  // null: the plain adjective
   std::string text;              // "slightly bent"
 };
+// A measure of a part described by words ("a skinny pole about 10 long"): the descriptor
+// (length, width, thickness, height) and the extent in world units.
+struct MeasureUse {
+  std::string descriptor;
+  FuzzyNumber extent;
+  std::string text;  // "about 10 long"
+};
 struct PartDescription {
   const Noun* noun = nullptr;
   std::vector<AdjectiveUse> adjectives;
+  std::vector<MeasureUse> measures;  // after the noun: [ "," ] measure { ( "," | "and" ) measure }
 };
 PartDescription parsePartDescription(const std::string& text, const Vocabulary& vocabulary);
 

@@ -26,6 +26,7 @@ nlohmann::json conditionJson(const QueryCondition& c) {
   if (c.kind == Kind::kDescriptor) {
     j["descriptor"] = c.descriptor;
     j["set"] = toJson(c.set);
+    if (c.measure) j["measure"] = toJson(*c.measure);  // the extent in world units
   }
   if (c.kind == Kind::kRelation) {
     j["direction"] = c.direction;

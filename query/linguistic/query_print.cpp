@@ -40,6 +40,37 @@ std::string lowerCase(std::string text) {
   return text;
 }
 
+// A measure's extent as the words that read back to it (linguistic_query.h: a plain N is within
+// 10 % of N, so a crisp extent is "exactly N").
+// "about N" or "between A and B" when that number phrase is exactly `d`, else "".
+std::string fuzzyNumberPhrase(const FuzzyNumber& d) {
+  const Interval core = d.core(), support = d.support();
+  const std::string about = "about " + numberText(core.lo);
+  if (core.lo == core.hi && parseNumberPhrase(about) == d) return about;
+  if (core.lo == support.lo && core.hi == support.hi) {
+    const std::string between = "between " + numberText(core.lo) + " and " + numberText(core.hi);
+    if (parseNumberPhrase(between) == d) return between;
+  }
+  return "";
+}
+
+std::string measureText(const FuzzyNumber& e) {
+  const Interval core = e.core();
+  if (e.isCrisp()) return "exactly " + numberText(core.lo);
+  if (core.lo == core.hi && e == FuzzyNumber::triangular(0.9 * core.lo, core.lo, 1.1 * core.lo)) return numberText(core.lo);
+  const std::string phrase = fuzzyNumberPhrase(e);
+  if (phrase.empty()) unprintable("the measure " + toJson(e).dump());
+  return phrase;
+}
+
+std::string measureWord(const std::string& descriptor) {
+  if (descriptor == "length") return "long";
+  if (descriptor == "width") return "across";
+  if (descriptor == "thickness") return "thick";
+  if (descriptor == "height") return "tall";
+  unprintable("a measure of " + descriptor);
+}
+
 class Printer {
  public:
   explicit Printer(const Vocabulary& v) : v_(v) {}
@@ -47,6 +78,7 @@ class Printer {
   // [ intensity ] adjective [ section ]: the words as written when they say it (a synonym stays
   // itself), else the first that do; or a descriptor degree as written.
   std::string leaf(const QueryCondition& c) const {
+    if (c.measure) return measureText(*c.measure) + " " + measureWord(c.descriptor);
     const std::string text = lowerCase(c.text);
     if (descriptorIndex(firstWord(text)) >= 0 && firstWord(text) == c.descriptor) return text;
     std::string first;
@@ -150,15 +182,10 @@ class Printer {
 std::string distanceText(const FuzzyNumber& d, const Vocabulary& vocabulary) {
   for (const std::string& word : vocabulary.distanceWords())
     if (*vocabulary.distance(word) == d) return word;
-  const Interval core = d.core(), support = d.support();
-  if (d.isCrisp()) return numberText(core.lo);
-  const std::string about = "about " + numberText(core.lo);
-  if (core.lo == core.hi && parseNumberPhrase(about) == d) return about;
-  if (core.lo == support.lo && core.hi == support.hi) {
-    const std::string between = "between " + numberText(core.lo) + " and " + numberText(core.hi);
-    if (parseNumberPhrase(between) == d) return between;
-  }
-  unprintable("the distance " + toJson(d).dump());
+  if (d.isCrisp()) return numberText(d.core().lo);
+  const std::string phrase = fuzzyNumberPhrase(d);
+  if (phrase.empty()) unprintable("the distance " + toJson(d).dump());
+  return phrase;
 }
 
 std::string nounPhraseText(const LinguisticQuery& phrase, const Vocabulary& vocabulary, const std::string& article) {

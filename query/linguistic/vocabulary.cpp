@@ -113,13 +113,16 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
   v.document_ = doc;
 
   // descriptors: documentation of the code's functions, in the code's order.
-  // Files written before the section descriptors document the first nine and still load.
+  // Files written before the section descriptors document the first nine, files written before
+  // the measures the first eleven; both still load.
   const auto& descriptors = requireArray(requireField(doc, "descriptors", ""), "descriptors");
-  if (descriptors.size() != descriptorNames().size() && descriptors.size() != kDescriptorsBeforeSections)
+  if (descriptors.size() != descriptorNames().size() && descriptors.size() != kDescriptorsBeforeSections &&
+      descriptors.size() != kDescriptorsBeforeMeasures)
     throw Error(errc::kInvalidDocument,
                 "descriptors must document the " + std::to_string(descriptorNames().size()) +
-                    " descriptors of the code, in order (or the first " +
-                    std::to_string(kDescriptorsBeforeSections) + ", as files before section descriptors did)",
+                    " descriptors of the code, in order (or the first " + std::to_string(kDescriptorsBeforeMeasures) +
+                    " or " + std::to_string(kDescriptorsBeforeSections) +
+                    ", as files before the measures and the section descriptors did)",
                 "descriptors");
   for (size_t i = 0; i < descriptors.size(); ++i) {
     const std::string p = joinPath("descriptors", i);

@@ -1,6 +1,8 @@
 // See query/linguistic/word_routes.h.
 #include "query/linguistic/word_routes.h"
 
+#include "query/linguistic/query_tokens.h"
+
 #include <algorithm>
 #include <cctype>
 #include <vector>
@@ -16,6 +18,9 @@ constexpr double kSimilarTo = 0.9;
 constexpr double kHypernym = 0.9;
 constexpr double kAlsoSee = 0.85;
 constexpr double kAntonym = 0.85;
+
+// WordNet's lexicographer files of nouns that name things with a shape (lexnames(5WN)).
+constexpr int kNounArtifact = 6, kNounObject = 17, kNounShape = 25;
 
 // Senses that count, per part of speech (a word's rare senses route nowhere).
 size_t sensesThatCount(Pos pos) { return pos == Pos::kNoun ? 4 : 3; }
@@ -89,6 +94,9 @@ void wordNetRoutes(const Vocabulary& v, const WordNet& wn, const std::string& ba
   const std::vector<WordNet::Synset> senses = wn.senses(base, pos);
   for (size_t rank = 0; rank < senses.size() && rank < sensesThatCount(pos); ++rank) {
     const WordNet::Synset& s = senses[rank];
+    // A noun's sense routes only where it names a thing of some shape: an artifact, an object or
+    // a shape (WordNet's lexicographer files), not a body part or a food ("egg" is no ball).
+    if (pos == Pos::kNoun && s.lexFile != kNounArtifact && s.lexFile != kNounObject && s.lexFile != kNounShape) continue;
     // The word's own place in the synset, for its lexical pointers (antonyms are word to word).
     int self = 0;
     for (size_t i = 0; i < s.words.size(); ++i)
@@ -161,6 +169,30 @@ std::optional<WordRoute> routeWord(const std::string& word, const std::string& n
       best.became = (*it)["plural"].get<std::string>();
   }
   return WordRoute{word, best.became, best.why, best.via, best.discount};
+}
+
+std::optional<RoutedText> routeUnknownWords(const std::string& text, const Vocabulary& vocabulary, const WordNet* wordnet,
+                                            const std::function<bool(const std::string&)>& known) {
+  if (!wordnet) return std::nullopt;
+  const std::vector<query_tokens::Token> tokens = query_tokens::tokenize(text, 0, text.size());
+  RoutedText out;
+  size_t copied = 0;
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    const query_tokens::Token& t = tokens[i];
+    if (t.number || known(t.text)) continue;
+    const std::string next = i + 1 < tokens.size() ? tokens[i + 1].text : "";
+    std::optional<WordRoute> r = routeWord(t.text, next, vocabulary, wordnet, known);
+    if (!r) continue;
+    size_t from = t.offset;
+    if (r->became.empty())
+      while (from > copied && text[from - 1] == ' ') --from;  // the blank before it goes too
+    out.text += text.substr(copied, from - copied) + r->became;
+    copied = t.end;
+    out.routes.push_back(std::move(*r));
+  }
+  if (out.routes.empty()) return std::nullopt;
+  out.text += text.substr(copied);
+  return out;
 }
 
 }  // namespace fsdb

@@ -17,12 +17,14 @@
 //   antonym      0.85  the other pole of a known adjective's descriptor ("unbent" -> bent's other
 //                      pole: straight)
 // Only the first senses count (three for adjectives and adverbs, four for nouns): a rare sense
-// ("slender": "small" by its fourth) is no route. Targets are the vocabulary's adjectives, nouns
+// ("slender": "small" by its fourth) is no route; and a noun's sense only where WordNet files it
+// as an artifact, an object or a shape ("egg" is no ball by its sense of a body part). Targets are the vocabulary's adjectives, nouns
 // with a shape (not "thing" or "part"), intensities and single-word directions and distances.
 // throws: nothing.
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "query/linguistic/vocabulary.h"
 #include "query/linguistic/wordnet.h"
@@ -45,5 +47,18 @@ struct WordRoute {
 // lemma-free routes: none).
 std::optional<WordRoute> routeWord(const std::string& word, const std::string& next, const Vocabulary& vocabulary,
                                    const WordNet* wordnet, const std::function<bool(const std::string&)>& known);
+
+// `text` with every word that `known` lacks and that routes replaced by what it became (a word
+// left out goes with the blank before it), and the routes taken in text order; nullopt when no
+// word routed. For texts read by one grammar alone (parts from words: `known` is
+// knowsLinguisticWord); the search box reads around unknown words itself
+// (query/structural/unknown_words.h). Throws the tokenizer's fsdb::Error for a character no
+// query tokenises.
+struct RoutedText {
+  std::string text;
+  std::vector<WordRoute> routes;
+};
+std::optional<RoutedText> routeUnknownWords(const std::string& text, const Vocabulary& vocabulary, const WordNet* wordnet,
+                                            const std::function<bool(const std::string&)>& known);
 
 }  // namespace fsdb

@@ -185,6 +185,7 @@ WordNet::Synset WordNet::synsetAt(Pos pos, size_t offset) const {
   // offset lex_filenum ss_type w_cnt(hex) {word lex_id} p_cnt {symbol offset pos source/target} ...
   if (f.size() < 4) return s;
   s.satellite = f[2] == "s";
+  s.lexFile = std::atoi(std::string(f[1]).c_str());
   const int words = static_cast<int>(std::strtol(std::string(f[3]).c_str(), nullptr, 16));
   size_t at = 4;
   for (int i = 0; i < words && at + 1 < f.size(); ++i, at += 2) s.words.push_back(dataWord(f[at]));

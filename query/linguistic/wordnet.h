@@ -34,6 +34,7 @@ class WordNet {
     std::vector<std::string> words;  // lower case, blanks for WordNet's underscores, markers such as "(a)" cut
     std::vector<Pointer> pointers;
     bool satellite = false;          // an adjective satellite ("s"): its head is its "&" pointer
+    int lexFile = 0;                 // the lexicographer file: 6 noun.artifact, 17 noun.object, 25 noun.shape, ...
   };
 
   // The WordNet of the dictionary directory `dir`, or nullptr with *why set when a file is missing.

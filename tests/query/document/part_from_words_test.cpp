@@ -80,6 +80,49 @@ TEST(PartFromWords, FoundByItsOwnWords) {
             scoreDescriptors(very, describePart(make("a slightly bent cylinder"))).score);
 }
 
+// Measures set the extents they name: "a pole about 10 long" has a fuzzy length of about 10.
+TEST(PartFromWords, MeasuresSetTheExtents) {
+  const FuzzyPart pole = make("a thin pole about 10 long");
+  const PlacedSuperquadric core = pole.coreRepresentative();
+  EXPECT_NEAR(2 * core.placement.scale * core.params.a1 * core.params.a3, 10, 1e-9);
+  const FuzzyNumber length = valueOf(pole, "length");
+  EXPECT_NEAR(length.core().lo, extentDegree(10), 1e-9);
+  EXPECT_NEAR(length.support().lo, extentDegree(9), 1e-9);
+  EXPECT_NEAR(length.support().hi, extentDegree(11), 1e-9);
+  // "thin" is the thickness: both axes of the round section follow it.
+  EXPECT_EQ(pole.a2, FuzzyNumber::crisp(1.0));
+  EXPECT_LT(2 * core.placement.scale * core.params.a1, 0.3);
+  // A board's three sides on the plate's axes, the shortest its thickness.
+  const FuzzyPart board = make("a board 8 long, 1 wide, 0.2 thick");
+  const std::vector<DescriptorValue> d = describePart(board);
+  EXPECT_NEAR(d[descriptorIndex("length")].value.core().lo, extentDegree(8), 1e-9);
+  EXPECT_NEAR(d[descriptorIndex("width")].value.core().lo, extentDegree(1), 1e-9);
+  EXPECT_NEAR(d[descriptorIndex("thickness")].value.core().lo, extentDegree(0.2), 1e-9);
+  // A disc's diameter sets both axes of its round face; its thickness the third.
+  const FuzzyPart puck = make("a puck 3 in diameter and 1 thick");
+  const PlacedSuperquadric p = puck.coreRepresentative();
+  EXPECT_NEAR(2 * p.params.a1, 3, 1e-9);
+  EXPECT_NEAR(2 * p.params.a1 * p.params.a2, 3, 1e-9);
+  EXPECT_NEAR(2 * p.params.a1 * p.params.a3, 1, 1e-9);
+  // The example: a very twisted box about 3 units long.
+  const FuzzyPart box = make("a very twisted box about 3 units long");
+  EXPECT_NEAR(valueOf(box, "length").core().lo, extentDegree(3), 1e-9);
+  EXPECT_GT(valueOf(box, "twistness").core().lo, 0.5);
+  // And each is found by its own words. (Plain dimension adjectives, "thin", "tall", score as
+  // "big" does: the paper's S of a narrow value against the plain set μ(d) = d is well below 1;
+  // their measures score 1.)
+  for (const char* words : {"a board 8 long, 1 wide, 0.2 thick", "a puck 3 in diameter and 1 thick",
+                            "a very twisted box about 3 units long", "a rod 6 long and 0.2 across",
+                            "a ball of radius 5", "a cube 2 units on a side"}) {
+    const LinguisticQuery q = parseLinguisticQuery(std::string("find ") + words, v());
+    EXPECT_GE(scoreDescriptors(q, describePart(make(words))).score, 0.9) << words;
+  }
+  const QueryScore thin = scoreDescriptors(parseLinguisticQuery("find a thin pole about 10 long", v()), describePart(pole));
+  for (const ConditionScore& c : thin.explain)
+    if (c.text == "about 10 long") EXPECT_NEAR(c.score, 1.0, 1e-12);
+  EXPECT_GT(thin.score, 0.8);
+}
+
 TEST(PartFromWords, AdjectivesActInATableOrder) {
   // The bend is measured on the final length: "bent long" equals "long bent".
   const FuzzyPart a = make("a slightly bent long rod"), b = make("a long slightly bent rod");

@@ -25,9 +25,11 @@ double degreeOf(const std::string& name, const PlacedSuperquadric& p) { return d
 TEST(Descriptors, NamesInIndexOrder) {
   EXPECT_EQ(descriptorNames(), (std::vector<std::string>{"squariness", "roundness", "bevelness", "pinchness",
                                                           "bendness", "taperness", "twistness", "size",
-                                                          "elongation", "section-squariness", "section-roundness"}));
+                                                          "elongation", "section-squariness", "section-roundness",
+                                                          "length", "width", "thickness", "height"}));
   EXPECT_EQ(descriptorIndex("section-roundness"), 10);
-  EXPECT_EQ(descriptorNames().size(), kDescriptorsBeforeSections + 2);
+  EXPECT_EQ(descriptorNames().size(), kDescriptorsBeforeSections + 2 + 4);
+  EXPECT_EQ(kDescriptorsBeforeMeasures, kDescriptorsBeforeSections + 2);
   EXPECT_EQ(descriptorIndex("bendness"), 4);
   EXPECT_EQ(descriptorIndex("bentness"), -1);
 }
@@ -186,6 +188,59 @@ TEST(Descriptors, Deterministic) {
   part.kv = FuzzyNumber::triangular(0.05, 0.1, 0.15);
   const auto a = describePart(part), b = describePart(part);
   for (size_t d = 0; d < a.size(); ++d) EXPECT_EQ(a[d].value, b[d].value);
+}
+
+}  // namespace
+}  // namespace fsdb
+
+namespace fsdb {
+namespace {
+
+// The measure descriptors: a part's extents in world units (2·scale·A, B, C), sorted for length,
+// width and thickness, along z for height, as e / (1 + e); exact ranges over boxes at the corners.
+TEST(Descriptors, MeasuresAreTheExtentsInWorldUnits) {
+  PlacedSuperquadric rod;  // a1 0.5, a2 1, a3 10, scale 2: extents 2 x 2 x 20
+  rod.params.a1 = 0.5;
+  rod.params.a3 = 10;
+  rod.placement.scale = 2;
+  EXPECT_DOUBLE_EQ(degreeOf("length", rod), extentDegree(20));
+  EXPECT_DOUBLE_EQ(degreeOf("width", rod), extentDegree(2));
+  EXPECT_DOUBLE_EQ(degreeOf("thickness", rod), extentDegree(2));
+  EXPECT_DOUBLE_EQ(degreeOf("height", rod), extentDegree(20));
+  PlacedSuperquadric board;  // a1 4, a2 0.25, a3 0.05: extents 8 x 2 x 0.4; its height is along z
+  board.params.a1 = 4;
+  board.params.a2 = 0.25;
+  board.params.a3 = 0.05;
+  EXPECT_DOUBLE_EQ(degreeOf("length", board), extentDegree(8));
+  EXPECT_DOUBLE_EQ(degreeOf("width", board), extentDegree(2));
+  EXPECT_DOUBLE_EQ(degreeOf("thickness", board), extentDegree(0.4));
+  EXPECT_DOUBLE_EQ(degreeOf("height", board), extentDegree(0.4));
+  EXPECT_DOUBLE_EQ(extentDegree(3), 0.75);
+  EXPECT_DOUBLE_EQ(extentDegree(0), 0.0);
+  // Over a box the range is the corners' (the extents rise with every parameter): a3 in [1, 3]
+  // crosses a2 = 2, where the sorted order swaps, and still the corners hold the extremes.
+  PartBox box = crispPartBox(PlacedSuperquadric{});  // a1 1, scale 1
+  box.params.a2 = Interval{2, 2};
+  box.params.a3 = Interval{1, 3};
+  const Interval width = descriptorRange(descriptorIndex("width"), box);
+  EXPECT_DOUBLE_EQ(width.lo, extentDegree(2));  // a3 = 1: extents 2, 2, 4
+  EXPECT_DOUBLE_EQ(width.hi, extentDegree(4));  // a3 = 3: extents 2, 4, 6
+  const Interval length = descriptorRange(descriptorIndex("length"), box);
+  EXPECT_DOUBLE_EQ(length.lo, extentDegree(4));
+  EXPECT_DOUBLE_EQ(length.hi, extentDegree(6));
+}
+
+// A fuzzy extent's set over the degrees: the image of its cuts, exact at each level.
+TEST(Descriptors, ExtentDegreeSetMapsEveryCut) {
+  const FuzzyNumber about10 = FuzzyNumber::triangular(9, 10, 11);
+  const FuzzyNumber set = extentDegreeSet(about10);
+  for (double a : {0.0, 0.25, 0.5, 1.0}) {
+    const Interval cut = about10.alphaCut(a), image = set.alphaCut(a);
+    EXPECT_NEAR(image.lo, extentDegree(cut.lo), 1e-12) << a;
+    EXPECT_NEAR(image.hi, extentDegree(cut.hi), 1e-12) << a;
+  }
+  EXPECT_TRUE(extentDegreeSet(FuzzyNumber::crisp(3)).isCrisp());
+  EXPECT_DOUBLE_EQ(extentDegreeSet(FuzzyNumber::crisp(3)).core().lo, 0.75);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "geometry/core/error.h"
 #include "geometry/fuzzy/fuzzy_arithmetic.h"
 #include "query/json/fuzzy_json.h"
+#include "query/linguistic/descriptors.h"
 #include "query/linguistic/vocabulary.h"
 #include "tests/testing/grammar_examples.h"
 #include "tests/testing/query_shapes.h"
@@ -35,6 +36,89 @@ void expectLeaf(const QueryCondition& c, const std::string& descriptor, const Fu
 }
 
 nlohmann::json meaning(const std::string& text) { return testing::queryMeaning(parse(text)); }
+
+// The leaves of a condition, in order (a leaf is itself).
+std::vector<QueryCondition> leavesOf(const QueryCondition& c) {
+  if (c.kind == Kind::kDescriptor) return {c};
+  std::vector<QueryCondition> out;
+  for (const QueryCondition& child : c.children)
+    for (QueryCondition& leaf : leavesOf(child)) out.push_back(std::move(leaf));
+  return out;
+}
+
+// The measure leaves of a query: (descriptor, extent).
+std::vector<std::pair<std::string, FuzzyNumber>> measuresOf(const std::string& text) {
+  std::vector<std::pair<std::string, FuzzyNumber>> out;
+  for (const QueryCondition& leaf : leavesOf(parse(text).root))
+    if (leaf.measure) {
+      EXPECT_EQ(leaf.set, extentDegreeSet(*leaf.measure)) << text;
+      out.emplace_back(leaf.descriptor, *leaf.measure);
+    }
+  return out;
+}
+
+using Measures = std::vector<std::pair<std::string, FuzzyNumber>>;
+FuzzyNumber near(double x) { return FuzzyNumber::triangular(0.9 * x, x, 1.1 * x); }
+
+TEST(LinguisticQuery, MeasuresAreConditionsOnTheExtents) {
+  // After a number, a dimension word; a plain number is within 10 %, a number phrase as written.
+  EXPECT_EQ(measuresOf("a cylinder about 10 long and 1 across"),
+            (Measures{{"length", FuzzyNumber::triangular(9, 10, 11)}, {"width", near(1)}}));
+  EXPECT_EQ(measuresOf("a rod 6 long and 0.2 in diameter"), (Measures{{"length", near(6)}, {"width", near(0.2)}}));
+  EXPECT_EQ(measuresOf("something between 3 and 4 wide"), (Measures{{"width", FuzzyNumber::trapezoidal(3, 3, 4, 4)}}));
+  EXPECT_EQ(measuresOf("a post 3 units tall"), (Measures{{"height", near(3)}}));
+  EXPECT_EQ(measuresOf("a pin exactly 2 long, 0.1 thick"),
+            (Measures{{"length", FuzzyNumber::crisp(2)}, {"thickness", near(0.1)}}));
+  // Before a number, a dimension noun; a radius is half a width.
+  EXPECT_EQ(measuresOf("a cylinder with diameter 2 and length 1"), (Measures{{"width", near(2)}, {"length", near(1)}}));
+  EXPECT_EQ(measuresOf("a ball of radius 5"), (Measures{{"width", near(10)}}));
+  EXPECT_EQ(measuresOf("a disc with a radius of about 1"), (Measures{{"width", FuzzyNumber::triangular(1.8, 2, 2.2)}}));
+  EXPECT_EQ(measuresOf("sphere, diameter 0.2"), (Measures{{"width", near(0.2)}}));
+  // Three numbers are the sorted extents; a side is all three.
+  EXPECT_EQ(measuresOf("a box 4 by 2 by 1"),
+            (Measures{{"thickness", near(1)}, {"width", near(2)}, {"length", near(4)}}));
+  EXPECT_EQ(measuresOf("a plate 4 x 4 x 0.1 units"),
+            (Measures{{"thickness", near(0.1)}, {"width", near(4)}, {"length", near(4)}}));
+  EXPECT_EQ(measuresOf("a cube 4 units on a side"),
+            (Measures{{"thickness", near(4)}, {"width", near(4)}, {"length", near(4)}}));
+  // With the noun's own conditions and a clause: all of them hold (min).
+  const LinguisticQuery q = parse("a cylinder 6 long that is slightly bent");
+  ASSERT_EQ(q.root.kind, Kind::kAnd);
+  EXPECT_EQ(leavesOf(q.root).size(), 3u + 1u + 1u);  // cylinder's three, the length, the bend
+  // A distance before a direction is still a relation, not a measure.
+  EXPECT_EQ(parse("find a sphere about 3 units above a box").root.kind, Kind::kRelation);
+}
+
+// Nouns are defaults, not vetoes: the words replace a noun's condition they contradict.
+TEST(LinguisticQuery, NounsAreDefaultsTheWordsOverride) {
+  const auto descriptorsOfNoun = [](const std::string& text) {
+    std::vector<std::string> out;
+    for (const QueryCondition& part : parse(text).root.children)
+      if (!part.noun.empty())
+        for (const QueryCondition& leaf : leavesOf(part)) out.push_back(leaf.descriptor);
+    return out;
+  };
+  // A plate stays flat when it is round; a disc stays flat when square.
+  EXPECT_EQ(descriptorsOfNoun("a round plate"), std::vector<std::string>{"elongation"});
+  EXPECT_EQ(descriptorsOfNoun("a square disc"), std::vector<std::string>{"elongation"});
+  // A box is its exponents' shape: "a round box" keeps it.
+  EXPECT_EQ(descriptorsOfNoun("a round box"), std::vector<std::string>{"squariness"});
+  // The same descriptor: replaced only where the words contradict the noun.
+  EXPECT_EQ(descriptorsOfNoun("a slightly tapered cone"), (std::vector<std::string>{"squariness", "roundness"}));
+  EXPECT_EQ(descriptorsOfNoun("a tapered cylinder"), (std::vector<std::string>{"squariness", "roundness", "taperness"}));
+  // Words on two extents set the proportions; one does not.
+  EXPECT_EQ(descriptorsOfNoun("a plate 8 long and 1 wide"), std::vector<std::string>{"squariness"});
+  EXPECT_EQ(descriptorsOfNoun("a sphere 2 across"), (std::vector<std::string>{"roundness", "elongation"}));
+  // A noun with all its conditions replaced still names itself (printing, explain).
+  const LinguisticQuery q = parse("a slightly tapered square cone");
+  EXPECT_EQ(q.root.children.at(1).noun, "cone");
+}
+
+TEST(LinguisticQuery, MeasureErrorsSayWhatIsWrong) {
+  EXPECT_NE(errorOf("a box 4 x 2").find("the three sides of a box"), std::string::npos) << errorOf("a box 4 x 2");
+  EXPECT_NE(errorOf("a rod -2 long").find("a measure is a positive extent"), std::string::npos);
+  EXPECT_NE(errorOf("a rod between 4 and 2 long").find("bad measure"), std::string::npos) << errorOf("a rod between 4 and 2 long");
+}
 
 TEST(LinguisticQuery, RequestsAndFillersAreSkipped) {
   for (const char* text : {"show me the bent shapes", "please find bent shapes", "I am looking for bent shapes",

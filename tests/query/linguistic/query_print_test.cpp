@@ -46,13 +46,23 @@ TEST(QueryPrint, PrintedTextsMeanTheQuery) {
        {"find a slightly bent shape", "show me something twisted", "a (bent or twisted) very flat box",
         "find shapes that are not round and not (bent and tapered)", "find a cylinder with a very round cross-section",
         "a rod that is roundness about 1", "find a small sphere far in front of a large box at least 0.2 using mean",
-        "find shapes with bendness between 0.2 and 0.4"}) {
+        "find shapes with bendness between 0.2 and 0.4", "a cylinder about 10 long and 1 across",
+        "a box 4 by 2 by 1", "a ball of radius 0.5", "a rod exactly 6 long that is slightly bent",
+        "something between 3 and 4 wide", "a disc with a radius of about 1"}) {
     const LinguisticQuery q = parseLinguisticQuery(text, v());
     const std::string once = linguisticQueryText(q, v());
     EXPECT_EQ(testing::queryMeaning(parseLinguisticQuery(once, v())), testing::queryMeaning(q))
         << text << " -> " << once;
     EXPECT_EQ(printed(once), once) << "a printed text prints as itself: " << once;
   }
+}
+
+TEST(QueryPrint, MeasuresPrintAsTheirNumbersAndWords) {
+  EXPECT_EQ(printed("a cylinder about 10 long and 1 across"), "find a cylinder that is 10 long and 1 across");
+  EXPECT_EQ(printed("a ball of radius 0.5"), "find a sphere that is 1 across");
+  EXPECT_EQ(printed("a rod about 0.5 long"), "find a rod that is about 0.5 long");  // not within 10 %
+  EXPECT_EQ(printed("a rod exactly 6 long"), "find a rod that is exactly 6 long");
+  EXPECT_EQ(printed("a post height 3"), "find a column that is 3 tall");
 }
 
 TEST(QueryPrint, NumbersAndDistances) {

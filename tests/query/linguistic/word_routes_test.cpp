@@ -53,6 +53,8 @@ TEST(WordRoutes, WordNetLinksReachTheVocabularyWithTheirDiscounts) {
   expectRoute("colossal", "large", "WordNet similar-to", 0.9);    // a satellite of large
   expectRoute("huge", "large", "WordNet similar-to", 0.9);
   expectRoute("curvy", "curved", "WordNet similar-to", 0.9);
+  expectRoute("skinny", "thin", "WordNet similar-to", 0.9);
+  expectRoute("slender", "slim", "WordNet synonym", 0.95);        // its first sense {slender, slim, ...}
   expectRoute("crooked", "bent", "WordNet antonym", 0.85);        // the other pole of straight
   expectRoute("curvier", "curved", "WordNet similar-to", 0.9);    // its lemma curvy, then WordNet
 }
@@ -66,8 +68,8 @@ TEST(WordRoutes, NounsReachTheirMoreGeneralNoun) {
 
 TEST(WordRoutes, RareSensesUnknownWordsAndNonWordsRouteNowhere) {
   EXPECT_FALSE(route("purple").has_value());   // a colour: no shape word near it
-  EXPECT_FALSE(route("slender").has_value());  // "small" only by its fourth sense
   EXPECT_FALSE(route("sphre").has_value());    // a typo is for the corrections, not WordNet
+  EXPECT_FALSE(route("egg").has_value());      // "ball" only in a sense of the body
   EXPECT_FALSE(route("3d").has_value());
   EXPECT_FALSE(routeWord("colossal", "", Vocabulary::builtin(), nullptr, [](const std::string&) { return true; }));
 }

@@ -291,6 +291,45 @@ TEST(DesignersQueries, WordsTheVocabularyLacksAreRoutedThroughWordNet) {
   EXPECT_FALSE(pole.json.contains("routed")) << pole.body;
 }
 
+// Sizes in numbers: measures in queries and in parts made from words, verbatim from the issue
+// that asked for them (docs/api.md §5), and nouns as defaults ("a round plate").
+TEST(DesignersQueries, MeasuresInQueriesAndPartsFromWords) {
+  ServerProcess server({"--demo", kDemo});
+  auto pole = server.post("/parts", json{{"kind", "part"}, {"name", "skinny-pole"}, {"text", "a skinny pole about 10 long"}});
+  ASSERT_EQ(pole.status, 201) << pole.body;
+  auto box = server.post("/parts", json{{"kind", "part"}, {"name", "box-3"}, {"text", "a very twisted box about 3 units long"}});
+  ASSERT_EQ(box.status, 201) << box.body;
+  // The pole's length is about 10: it is the one shape "about 10 long", and its own words find it first.
+  auto ten = server.post("/query", json{{"text", "about 10 long"}});
+  ASSERT_EQ(ten.status, 200) << ten.body;
+  ASSERT_FALSE(ten.json["results"].empty()) << ten.body;
+  EXPECT_EQ(ten.json["results"][0]["name"], "skinny-pole");
+  EXPECT_EQ(ten.json["parsed"]["read_as"], "find a shape that is 10 long");
+  auto own = server.post("/query", json{{"text", "a skinny pole about 10 long"}});
+  ASSERT_EQ(own.status, 200) << own.body;
+  EXPECT_EQ(own.json["results"][0]["name"], "skinny-pole") << own.body;
+  EXPECT_EQ(own.json["routed"][0]["became"], "thin");
+  auto boxes = server.post("/query", json{{"text", "a very twisted box about 3 units long"}});
+  ASSERT_EQ(boxes.status, 200) << boxes.body;
+  bool found = false;
+  for (const json& r : boxes.json["results"]) found = found || (r["name"] == "box-3" && r["score"] == 1.0);
+  EXPECT_TRUE(found) << boxes.body;
+  for (const char* text : {"2 across", "between 3 and 4 wide", "3 units tall"}) {
+    auto r = server.post("/query", json{{"text", text}});
+    EXPECT_EQ(r.status, 200) << text << ": " << r.body;
+    EXPECT_FALSE(r.json["results"].empty()) << text;
+  }
+  for (const char* text : {"a box 4 by 2 by 1", "a ball of radius 1", "a cube 2 units on a side"})
+    EXPECT_EQ(server.post("/query", json{{"text", text}}).status, 200) << text;
+  // A round plate is the disc, not a square plate at 0.1.
+  auto round = server.post("/query", json{{"text", "a round plate"}});
+  ASSERT_EQ(round.status, 200) << round.body;
+  std::vector<std::string> order;
+  for (const json& r : round.json["results"]) order.push_back(r["name"]);
+  const auto at = [&](const std::string& n) { return std::find(order.begin(), order.end(), n) - order.begin(); };
+  EXPECT_LT(at("disc"), at("plate")) << round.body;
+}
+
 // The corpus (designers_corpus.txt) on the catalogue built for it: every phrasing runs the same
 // search as the grammar's own and ranks the same ids with the same scores, and the object the
 // line names ranks first.

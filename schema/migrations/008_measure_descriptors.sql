@@ -1,0 +1,8 @@
+-- 008_measure_descriptors: the four measure descriptors, length, width, thickness and height (a
+-- part's extents in world units; query/linguistic/descriptors.h), join the descriptor index. As
+-- 003 did, every part and shape is marked pending so the server recomputes its rows (all
+-- descriptors) at startup; until then the prefilter returns pending objects as candidates and
+-- scoring describes their documents, so no answer misses them.
+UPDATE descriptor_clock SET generation = generation + 1;
+INSERT OR REPLACE INTO descriptor_pending (object_id, generation)
+  SELECT id, (SELECT generation FROM descriptor_clock) FROM objects WHERE kind IN ('part', 'shape');
