@@ -1,9 +1,14 @@
 // See server/service/query_search.h.
 #include "server/service/query_search.h"
 
+#include <algorithm>
+
 #include "geometry/core/closest_names.h"
 #include "geometry/core/error.h"
+#include "db/store.h"
 #include "query/json/json_body.h"
+#include "query/linguistic/linguistic_query.h"
+#include "query/linguistic/query_tokens.h"
 #include "query/linguistic/vocabulary.h"
 #include "query/structural/csg_query_text.h"
 #include "query/structural/unknown_words.h"
@@ -11,6 +16,71 @@
 namespace fsdb {
 
 namespace {
+
+// The names a text may be ("snowman", "the dumbbell", "a round plate" for round-plate): its words
+// after a request phrase, articles and fillers, joined by "-", " ", "_" and nothing.
+std::vector<std::string> namesOfText(const std::string& text, const Vocabulary& vocabulary) {
+  std::vector<query_tokens::Token> tokens;
+  try {
+    tokens = query_tokens::tokenize(text, 0, text.size());
+  } catch (const Error&) {
+    return {};
+  }
+  std::vector<std::string> words;
+  for (const query_tokens::Token& t : tokens)
+    if (t.text != "," && !vocabulary.isFiller(t.text)) words.push_back(t.text);
+  size_t from = query_tokens::requestLength(
+      [&](size_t k) { return k < words.size() ? &words[k] : nullptr; }, vocabulary);
+  while (from < words.size() && std::find(queryArticles().begin(), queryArticles().end(), words[from]) != queryArticles().end())
+    ++from;
+  if (from >= words.size() || words.size() - from > 8) return {};
+  std::vector<std::string> names;
+  for (const char* joiner : {"-", " ", "_", ""}) {
+    std::string name;
+    for (size_t i = from; i < words.size(); ++i) name += (i > from ? joiner : "") + words[i];
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  }
+  return names;
+}
+
+// The stored parts and shapes (of the request's kind, when it names one) whose name the text is,
+// as results that rank first: score 1, "named": true.
+nlohmann::json objectsNamed(const Store& store, const nlohmann::json& request, const std::string& text) {
+  nlohmann::json out = nlohmann::json::array();
+  std::vector<std::string> kinds = {"part", "shape"};
+  if (request.contains("kind") && request["kind"].is_string() &&
+      (request["kind"] == "part" || request["kind"] == "shape"))
+    kinds = {request["kind"].get<std::string>()};
+  for (const std::string& name : namesOfText(text, activeVocabulary()))
+    for (const std::string& kind : kinds) {
+      ListQuery q;
+      q.kind = kind;
+      q.name = name;
+      q.limit = 1;
+      for (const StoredObject& o : store.list(q))
+        out.push_back({{"id", o.id}, {"kind", o.kind}, {"name", o.name}, {"version", o.version}, {"score", 1.0},
+                       {"named", true}, {"explain", {{{"text", "the name '" + o.name + "'"}, {"score", 1.0}}}}});
+    }
+  return out;
+}
+
+// The answer with the named objects first (each once) and its results after them, up to the
+// request's limit (10 by default, as both searches).
+void putNamedFirst(nlohmann::json* answer, const nlohmann::json& named, const nlohmann::json& request) {
+  if (named.empty()) return;
+  size_t limit = 10;
+  if (request.contains("limit") && request["limit"].is_number_integer() && request["limit"].get<int64_t>() > 0)
+    limit = static_cast<size_t>(request["limit"].get<int64_t>());
+  nlohmann::json results = named;
+  if (answer->contains("results") && (*answer)["results"].is_array())
+    for (const nlohmann::json& r : (*answer)["results"]) {
+      bool seen = false;
+      for (const nlohmann::json& n : named) seen = seen || (n["id"] == r.value("id", nlohmann::json()));
+      if (!seen) results.push_back(r);
+    }
+  if (results.size() > limit) results.erase(results.begin() + static_cast<std::ptrdiff_t>(limit), results.end());
+  (*answer)["results"] = std::move(results);
+}
 
 nlohmann::json searchText(const Store& store, const nlohmann::json& request, const std::string& text,
                           const LinguisticRequestLimits& linguisticLimits, const CsgRequestLimits& csgLimits,
@@ -29,10 +99,16 @@ nlohmann::json queryResponse(const Store& store, const nlohmann::json& request,
                              StoredGraphCache& graphs) {
   // The same checks, codes and paths as the two searches' own.
   const std::string& text = requireString(requireField(requireObject(request, ""), "text", ""), "text");
+  // A stored object's name ranks first ("snowman", "the dumbbell"), before whatever the words mean.
+  const nlohmann::json named = objectsNamed(store, request, text);
   try {
-    return searchText(store, request, text, linguisticLimits, csgLimits, graphs);
+    nlohmann::json answer = searchText(store, request, text, linguisticLimits, csgLimits, graphs);
+    putNamedFirst(&answer, named, request);
+    return answer;
   } catch (const Error& refused) {
     if (refused.code() != errc::kInvalidParameter || refused.path() != "text") throw;
+    // Words no grammar reads that are a name: the named objects are the answer.
+    if (!named.empty()) return {{"search", "name"}, {"results", named}};
     // Words neither grammar knows: the text is read without them (query/structural/unknown_words.h).
     // When nothing is left, or what is left does not read either, the answer is the first refusal,
     // which names the first unknown word, its position and its closest words.

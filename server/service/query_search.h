@@ -10,6 +10,9 @@
 // corrections chosen together; the answer adds "ignored" ([{"word", "at", "did_you_mean": [closest
 // words]}]), "read_text" (the text searched) and, when the search ran without corrections that
 // exist, "did_you_mean" (the whole corrected text).
+// Names: a text that is a stored part's or shape's name (after a request phrase and articles;
+// words joined by "-", " ", "_" or nothing) puts that object first (score 1, "named": true); a
+// text no grammar reads but that is a name is answered {"search": "name", "results": [...]}.
 // Errors: a body without a string "text" is refused as the linguistic search refuses it (422 at
 // "text"); everything else is the chosen search's. A text that does not read even without its
 // unknown words (or has nothing else) gets the first refusal: the linguistic parser's 422 with the
