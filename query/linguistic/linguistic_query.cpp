@@ -602,6 +602,9 @@ class Parser {
     // condition after the noun, as "that is" gives.
     const size_t clauseStart = pos_;
     std::vector<QueryCondition> clause = measuresAfterNoun();
+    // Adjectives after the noun, as many speakers put them ("ball small", "cylinder very long
+    // thin", "box long and flat"): read as a clause, "a ball that is small".
+    if (startsCondition()) clause.push_back(condition());
     if (acceptWord("that") || acceptWord("which")) {
       if (!acceptAny({"is", "are", "has", "have"})) fail({"'is'", "'are'", "'has'", "'have'"});
       if (!startsCondition()) fail(conditionStarts());

@@ -114,6 +114,18 @@ TEST(LinguisticQuery, NounsAreDefaultsTheWordsOverride) {
   EXPECT_EQ(q.root.children.at(1).noun, "cone");
 }
 
+// Adjectives after the noun read as its clause: "ball small" is "a ball that is small".
+TEST(LinguisticQuery, ConditionsAfterTheNoun) {
+  EXPECT_EQ(meaning("ball small"), meaning("a ball that is small"));
+  EXPECT_EQ(meaning("cylinder very long and slightly bent"), meaning("a cylinder that is very long and slightly bent"));
+  EXPECT_EQ(meaning("cone not sharp"), meaning("a cone that is not sharp"));
+  // With measures before them and a "with" clause after them, all hold; they replace the rod's
+  // own conditions (two extents its elongation, the round section its roundness).
+  EXPECT_EQ(leavesOf(parse("rod 6 long thin with a round cross-section").root).size(), 3u);
+  // Not a relation's words: "a sphere above a box" is still a relation.
+  EXPECT_EQ(parse("a sphere small above a box").root.kind, Kind::kRelation);
+}
+
 TEST(LinguisticQuery, MeasureErrorsSayWhatIsWrong) {
   EXPECT_NE(errorOf("a box 4 x 2").find("the three sides of a box"), std::string::npos) << errorOf("a box 4 x 2");
   EXPECT_NE(errorOf("a rod -2 long").find("a measure is a positive extent"), std::string::npos);
