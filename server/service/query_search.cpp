@@ -89,6 +89,23 @@ nlohmann::json searchText(const Store& store, const nlohmann::json& request, con
   nlohmann::json answer = csg ? csgQueryResponse(store, request, csgLimits, graphs)
                               : linguisticQueryResponse(store, request, linguisticLimits);
   answer["search"] = csg ? "csg" : "linguistic";
+  // No object meets every condition (min is 0 for all): the closest partial matches instead, by
+  // the mean of the conditions' scores, each marked partial, its explain showing which failed.
+  const nlohmann::json& parsed = answer.value("parsed", nlohmann::json::object());
+  if (!csg && answer["results"].empty() && parsed.value("aggregation", "") == "min" &&
+      parsed.value("at_least", 0.0) == 0.0 && !request.contains("threshold")) {
+    nlohmann::json partial = request;
+    partial["text"] = text + " using mean";
+    nlohmann::json closest;
+    try {
+      closest = linguisticQueryResponse(store, partial, linguisticLimits);
+    } catch (const Error&) {
+      return answer;  // the text does not take an aggregation after it (it has its own): as it was
+    }
+    for (nlohmann::json& r : closest["results"]) r["partial"] = true;
+    answer["results"] = std::move(closest["results"]);
+    answer["partial"] = true;
+  }
   return answer;
 }
 

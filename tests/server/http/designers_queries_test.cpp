@@ -370,6 +370,34 @@ TEST(DesignersQueries, NamesFindTheirObjectFirst) {
   EXPECT_EQ(server.post("/query", json{{"text", "purple elephant"}}).status, 422);
 }
 
+// Nothing meets every condition: the closest partial matches, by the mean of the conditions, each
+// saying which condition fails.
+TEST(DesignersQueries, NoMatchGivesTheClosestPartialMatches) {
+  ServerProcess server({"--demo", kDemo});
+  auto strict = server.post("/query/linguistic", json{{"text", "a very twisted sphere"}});
+  ASSERT_EQ(strict.status, 200) << strict.body;
+  EXPECT_TRUE(strict.json["results"].empty()) << strict.body;
+  auto r = server.post("/query", json{{"text", "a very twisted sphere"}});
+  ASSERT_EQ(r.status, 200) << r.body;
+  EXPECT_EQ(r.json["partial"], true);
+  ASSERT_FALSE(r.json["results"].empty());
+  for (const json& result : r.json["results"]) {
+    EXPECT_EQ(result["partial"], true);
+    EXPECT_GT(result["score"].get<double>(), 0.0);
+    bool fails = false;
+    for (const json& e : result["explain"]) fails = fails || e["score"] == 0.0;
+    EXPECT_TRUE(fails) << result;  // partial: some condition fails
+  }
+  // The ranking is the mean's, as the text with "using mean" gives.
+  auto mean = server.post("/query/linguistic", json{{"text", "a very twisted sphere using mean"}});
+  ASSERT_EQ(mean.json["results"].size(), r.json["results"].size());
+  for (size_t i = 0; i < mean.json["results"].size(); ++i)
+    EXPECT_EQ(mean.json["results"][i]["id"], r.json["results"][i]["id"]);
+  // A threshold keeps the answer strict.
+  auto thresholded = server.post("/query", json{{"text", "a very twisted sphere"}, {"threshold", 0.1}});
+  EXPECT_FALSE(thresholded.json.contains("partial")) << thresholded.body;
+}
+
 // The corpus (designers_corpus.txt) on the catalogue built for it: every phrasing runs the same
 // search as the grammar's own and ranks the same ids with the same scores, and the object the
 // line names ranks first.
