@@ -240,6 +240,21 @@ class PhraseParser {
     }
     const size_t save = pos_;
     acceptAny(queryArticles());
+    if (const size_t n = numeral()) {
+      // numeral noun_phrase [ arrangement ]: that many copies of the part, united ("two balls",
+      // "three spheres in a row", "a pair of cylinders"). Their arrangement is read and adds
+      // nothing: the structural search matches the parts and operations, not where they stand.
+      nlohmann::json first = leaf();
+      const size_t one = leaves_.size() - 1;
+      nlohmann::json operands = nlohmann::json::array();
+      operands.push_back(std::move(first));
+      for (size_t k = 1; k < n; ++k) {
+        leaves_.push_back(leaves_[one]);
+        operands.push_back(placeholder(leaves_.size() - 1));
+      }
+      acceptArrangement();
+      return node("union", std::move(operands));
+    }
     if (at("part") && nextIsAny({"of"})) {
       // "the part of X inside Y": their intersection.
       pos_ += 2;
@@ -516,6 +531,52 @@ class PhraseParser {
             words_[i].text == "part");
   }
 
+  // A count of copies at the current word: "two" ... "ten", 2 ... 10, "pair of" (after "a"),
+  // when a noun phrase follows; 0 (nothing read) otherwise.
+  size_t numeral() {
+    if (pos_ >= words_.size()) return 0;
+    if (words_[pos_].text == "pair" && nextIsAny({"of"})) {
+      pos_ += 2;
+      return 2;
+    }
+    static const std::vector<std::string> kNumerals = {"two", "three", "four", "five", "six",
+                                                       "seven", "eight", "nine", "ten"};
+    const std::string& w = words_[pos_].text;
+    size_t n = 0;
+    for (size_t i = 0; i < kNumerals.size(); ++i)
+      if (w == kNumerals[i]) n = i + 2;
+    if (n == 0 && w.size() <= 2 && std::all_of(w.begin(), w.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+      const int k = std::atoi(w.c_str());
+      if (k >= 2 && k <= 10) n = static_cast<size_t>(k);
+    }
+    // "2 units above ..." or "3 x 2 x 1" are numbers of measures and distances, not counts.
+    if (n == 0 || pos_ + 1 >= words_.size() || contains({"x", "by", "unit", "units"}, words_[pos_ + 1].text)) return 0;
+    ++pos_;
+    return n;
+  }
+
+  // The words of an arrangement after counted copies, read and ignored: "together", "joined
+  // together", "in a row", "in a line", "side by side", "touching [each other]", "next to each
+  // other", "stacked [up]".
+  void acceptArrangement() {
+    if (acceptPair("joined", "together") || accept("together")) return;
+    const size_t save = pos_;
+    if (accept("in")) {
+      accept("a");
+      if (accept("row") || accept("line")) return;
+      pos_ = save;
+    }
+    if (acceptPair("side", "by") && accept("side")) return;
+    pos_ = save;
+    if (accept("touching")) {
+      acceptPair("each", "other");
+      return;
+    }
+    if (acceptPair("next", "to") && acceptPair("each", "other")) return;
+    pos_ = save;
+    if (accept("stacked")) accept("up");
+  }
+
   bool acceptPair(const char* first, const char* second) {
     if (pos_ + 1 < words_.size() && words_[pos_].text == first && words_[pos_ + 1].text == second) {
       pos_ += 2;
@@ -722,7 +783,10 @@ const std::vector<std::string>& csgPhraseWords() {
     // The other words the phrase parser reads (holes, relations, distances, lead-ins).
     w.insert(w.end(), {"drilled", "through", "by", "hole", "part", "inside", "within", "in", "of", "and", "with",
                        "on", "top", "to", "at", "the", "its", "it", "side", "between", "unit", "units", "which",
-                       "that", "is", "are", "made", "composed", "built", "formed", "consisting", "from"});
+                       "that", "is", "are", "made", "composed", "built", "formed", "consisting", "from",
+                       // counts of copies and their arrangement
+                       "pair", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "together",
+                       "row", "line", "touching", "each", "other", "next", "stacked", "up"});
     std::sort(w.begin(), w.end());
     w.erase(std::unique(w.begin(), w.end()), w.end());
     w.erase(std::remove(w.begin(), w.end(), std::string()), w.end());

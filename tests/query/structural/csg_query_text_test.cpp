@@ -39,6 +39,19 @@ TEST(CsgQueryText, PhraseOperations) {
   EXPECT_EQ(shape(parse("find a sphere plus a box plus a cone")), "union('a sphere', 'a box', 'a cone')");
 }
 
+// Counts: that many copies of the noun phrase, united; the words of their arrangement add nothing.
+TEST(CsgQueryText, CountsAreCopiesUnited) {
+  EXPECT_EQ(shape(parse("two balls")), "union('balls', 'balls')");
+  EXPECT_EQ(shape(parse("three slightly bent rods joined together")),
+            "union('slightly bent rods', 'slightly bent rods', 'slightly bent rods')");
+  EXPECT_EQ(shape(parse("3 spheres in a row")), "union('spheres', 'spheres', 'spheres')");
+  EXPECT_EQ(shape(parse("a pair of cylinders side by side")), "union('cylinders', 'cylinders')");
+  EXPECT_EQ(shape(parse("two balls touching each other")), "union('balls', 'balls')");
+  EXPECT_EQ(shape(parse("a cube minus two spheres")), "difference('a cube', union('spheres', 'spheres'))");
+  // A number before units or sides is no count.
+  EXPECT_THROW(parse("2 units"), Error);
+}
+
 // The phrase form opens with the linguistic grammar's verbs and names operations after its articles.
 TEST(CsgQueryText, DesignersPhrasingsOfAUnion) {
   const std::string tree = "union('a very bent cylinder', 'a very sharp pyramid')";

@@ -293,6 +293,10 @@ TEST(DesignersQueries, WordsTheVocabularyLacksAreRoutedThroughWordNet) {
   ASSERT_EQ(bored.status, 200) << bored.body;
   EXPECT_EQ(bored.json["search"], "csg");
   EXPECT_EQ(bored.json["read_text"], "a slab with a hole drilled through it");
+  auto three = server.post("/query", json{{"text", "three balls glued together"}});
+  ASSERT_EQ(three.status, 200) << three.body;
+  EXPECT_EQ(three.json["search"], "csg");
+  EXPECT_EQ(three.json["parsed"]["leaves"], 3);
   auto glued = server.post("/query", json{{"text", "a cylinder glued to a box"}});
   ASSERT_EQ(glued.status, 200) << glued.body;
   EXPECT_EQ(glued.json["routed"][0]["became"], "joined");
