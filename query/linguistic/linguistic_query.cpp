@@ -490,6 +490,8 @@ class Parser {
 
   void addMeasure(const DimensionWord& d, const FuzzyNumber& number, const std::string& text,
                   std::vector<QueryCondition>* out) const {
+    if (!std::isfinite(number.support().hi * d.factor))
+      throw Error(errc::kInvalidParameter, "the measure '" + text + "' is too large for a number", "text");
     const FuzzyNumber extent = d.factor == 1.0 ? number : scale(number, d.factor);
     if (d.descriptor != "cube") {
       out->push_back(measureCondition(d.descriptor, extent, text));

@@ -8,6 +8,7 @@
 
 #include "geometry/core/error.h"
 #include "geometry/core/number_format.h"
+#include "geometry/fuzzy/fuzzy_arithmetic.h"
 #include "query/json/fuzzy_json.h"
 #include "query/json/number_phrases.h"
 #include "query/linguistic/degree_sets.h"
@@ -54,6 +55,12 @@ std::string fuzzyNumberPhrase(const FuzzyNumber& d) {
   return "";
 }
 
+bool measurePrintable(const FuzzyNumber& e) {
+  const Interval core = e.core();
+  return e.isCrisp() || (core.lo == core.hi && e == FuzzyNumber::triangular(0.9 * core.lo, core.lo, 1.1 * core.lo)) ||
+         !fuzzyNumberPhrase(e).empty();
+}
+
 std::string measureText(const FuzzyNumber& e) {
   const Interval core = e.core();
   if (e.isCrisp()) return "exactly " + numberText(core.lo);
@@ -78,7 +85,12 @@ class Printer {
   // [ intensity ] adjective [ section ]: the words as written when they say it (a synonym stays
   // itself), else the first that do; or a descriptor degree as written.
   std::string leaf(const QueryCondition& c) const {
-    if (c.measure) return measureText(*c.measure) + " " + measureWord(c.descriptor);
+    if (c.measure) {
+      // A radius doubled may be no number phrase of the width ("radius about 0.3" is
+      // tri(0.4, 0.6, 0.8)); halved back (exactly, in binary) it reads as a radius again.
+      if (c.descriptor == "width" && !measurePrintable(*c.measure)) return measureText(scale(*c.measure, 0.5)) + " in radius";
+      return measureText(*c.measure) + " " + measureWord(c.descriptor);
+    }
     const std::string text = lowerCase(c.text);
     if (descriptorIndex(firstWord(text)) >= 0 && firstWord(text) == c.descriptor) return text;
     std::string first;

@@ -129,6 +129,7 @@ TEST(LinguisticQuery, ConditionsAfterTheNoun) {
 TEST(LinguisticQuery, MeasureErrorsSayWhatIsWrong) {
   EXPECT_NE(errorOf("a box 4 x 2").find("the three sides of a box"), std::string::npos) << errorOf("a box 4 x 2");
   EXPECT_NE(errorOf("a rod -2 long").find("a measure is a positive extent"), std::string::npos);
+  EXPECT_NE(errorOf("a ball of radius 1e308").find("too large"), std::string::npos);  // its width overflows
   EXPECT_NE(errorOf("a rod between 4 and 2 long").find("bad measure"), std::string::npos) << errorOf("a rod between 4 and 2 long");
 }
 

@@ -48,7 +48,8 @@ TEST(QueryPrint, PrintedTextsMeanTheQuery) {
         "a rod that is roundness about 1", "find a small sphere far in front of a large box at least 0.2 using mean",
         "find shapes with bendness between 0.2 and 0.4", "a cylinder about 10 long and 1 across",
         "a box 4 by 2 by 1", "a ball of radius 0.5", "a rod exactly 6 long that is slightly bent",
-        "something between 3 and 4 wide", "a disc with a radius of about 1"}) {
+        "something between 3 and 4 wide", "a disc with a radius of about 1", "a disc of radius about 0.3",
+        "ball small", "a box 4 x 2 x 1 and 3 tall", "rod 6 long thin with a round cross-section"}) {
     const LinguisticQuery q = parseLinguisticQuery(text, v());
     const std::string once = linguisticQueryText(q, v());
     EXPECT_EQ(testing::queryMeaning(parseLinguisticQuery(once, v())), testing::queryMeaning(q))
