@@ -169,11 +169,26 @@ std::vector<DescriptorValue> describePart(const FuzzyPart& part) {
   boxes.reserve(levels.size());
   for (double a : levels) boxes.push_back(part.boxAt(a));
 
+  // The measures keep the part's breakpoint levels and every 1/kMeasureLevels only: they are
+  // products of positive values, smooth in α, and four of them at every 1/16 doubled the stored
+  // rows of a fuzzy catalogue (docs/performance.md).
+  const std::vector<double> breaks = part.breakpointLevels();
+  std::vector<size_t> measureLevels;
+  for (size_t j = 0; j < levels.size(); ++j) {
+    const double quarter = levels[j] * kMeasureLevels;
+    if (std::binary_search(breaks.begin(), breaks.end(), levels[j]) || quarter == std::floor(quarter))
+      measureLevels.push_back(j);
+  }
   for (size_t i = 0; i < names.size(); ++i) {
+    const bool measure = i >= kDescriptorsBeforeMeasures;
+    std::vector<double> at;
     std::vector<Interval> cuts;
-    cuts.reserve(levels.size());
-    for (const PartBox& box : boxes) cuts.push_back(descriptorRange(static_cast<int>(i), box));
-    values.push_back({names[i], FuzzyNumber::fromAlphaCuts(levels, cuts)});
+    for (size_t j = 0; j < levels.size(); ++j) {
+      if (measure && !std::binary_search(measureLevels.begin(), measureLevels.end(), j)) continue;
+      at.push_back(levels[j]);
+      cuts.push_back(descriptorRange(static_cast<int>(i), boxes[j]));
+    }
+    values.push_back({names[i], FuzzyNumber::fromAlphaCuts(at, cuts)});
   }
   return values;
 }
@@ -188,7 +203,7 @@ FuzzyNumber extentDegreeSet(const FuzzyNumber& extent) {
   if (extent.isCrisp()) return FuzzyNumber::crisp(extentDegreeOf(extent.core().lo));
   std::vector<double> levels;
   for (const Breakpoint& p : extent.breakpoints()) levels.push_back(p.mu);
-  for (int k = 0; k <= kDescriptorLevels; ++k) levels.push_back(static_cast<double>(k) / kDescriptorLevels);
+  for (int k = 0; k <= kMeasureLevels; ++k) levels.push_back(static_cast<double>(k) / kMeasureLevels);
   std::sort(levels.begin(), levels.end());
   levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
   std::vector<Interval> cuts;

@@ -44,7 +44,8 @@
 // The image is computed exactly at each level: every function above is monotone in each parameter
 // between its critical values (e = 0, 1, 2; kv, kx, ky, t = 0; a2 = 1, a3 = 1, a2 = a3), so the
 // extremes over a box lie on the box's corners with those critical values put in where they fall
-// inside. Levels: FuzzyPart::breakpointLevels() plus k/kDescriptorLevels; linear in α between them
+// inside. Levels: FuzzyPart::breakpointLevels() plus k/kDescriptorLevels (k/kMeasureLevels for the
+// four measures); linear in α between them
 // (FuzzyNumber::fromAlphaCuts). A crisp part has crisp values.
 #include <string>
 #include <vector>
@@ -57,6 +58,8 @@ namespace fsdb {
 
 // Uniform levels k/16 added to the parts' breakpoint levels.
 inline constexpr int kDescriptorLevels = 16;
+// The measures (length, width, thickness, height) use k/kMeasureLevels with the breakpoint levels.
+inline constexpr int kMeasureLevels = 4;
 
 // The descriptor names in index order: "squariness","roundness","bevelness","pinchness",
 // "bendness","taperness","twistness","size","elongation","section-squariness","section-roundness",
@@ -72,7 +75,7 @@ inline constexpr size_t kDescriptorsBeforeMeasures = 11;
 // A world-unit extent e as the degree the measure descriptors use: e / (1 + e), 0 for e <= 0.
 double extentDegree(double e);
 // A fuzzy extent in world units ("about 10": tri(9, 10, 11)) as a set over those degrees: its
-// alpha-cuts at its breakpoints and at k/kDescriptorLevels mapped through extentDegree, linear in
+// alpha-cuts at its breakpoints and at k/kMeasureLevels mapped through extentDegree, linear in
 // between (the same levels a fuzzy part's descriptor values have).
 FuzzyNumber extentDegreeSet(const FuzzyNumber& extent);
 

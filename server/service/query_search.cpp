@@ -91,8 +91,11 @@ nlohmann::json searchText(const Store& store, const nlohmann::json& request, con
   answer["search"] = csg ? "csg" : "linguistic";
   // No object meets every condition (min is 0 for all): the closest partial matches instead, by
   // the mean of the conditions' scores, each marked partial, its explain showing which failed.
+  // Not for relations: their mean reads every pair of components of every shape (seconds on the
+  // soak's catalogue), where the min's bounds prune.
   const nlohmann::json& parsed = answer.value("parsed", nlohmann::json::object());
   if (!csg && answer["results"].empty() && parsed.value("aggregation", "") == "min" &&
+      parsed.value("condition", nlohmann::json::object()).value("kind", "") != "relation" &&
       parsed.value("at_least", 0.0) == 0.0 && !request.contains("threshold")) {
     nlohmann::json partial = request;
     partial["text"] = text + " using mean";
