@@ -13,8 +13,8 @@
 // Names: a text that is a stored part's or shape's name (after a request phrase and articles;
 // words joined by "-", " ", "_" or nothing) puts that object first (score 1, "named": true); a
 // text no grammar reads but that is a name is answered {"search": "name", "results": [...]}.
-// Partial matches: a linguistic text that no object meets at all (every score 0 under min, no
-// threshold) is searched again by the mean of its conditions ("... using mean"); the answer and
+// Partial matches: a linguistic text without a relation that no object meets at all (every score
+// 0 under min, no threshold) is searched again by the mean of its conditions ("... using mean"); the answer and
 // its results carry "partial": true.
 // Errors: a body without a string "text" is refused as the linguistic search refuses it (422 at
 // "text"); everything else is the chosen search's. A text that does not read even without its
