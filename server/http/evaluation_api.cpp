@@ -1,6 +1,7 @@
 // POST /evaluate (inline documents) and the stored-shape forms (docs/api.md §3, §4):
 //   POST /shapes/{id}/evaluate        the same answer for a stored shape, cached by content
 //   GET  /shapes/{id}/membership      the levels of one point (and /parts/{id}/membership)
+//   GET  /shapes/{id}/members         the family's crisp members with their degrees (and /parts/{id}/members)
 //   GET  /shapes/{id}/mesh            OBJ or binary STL of lower/upper(α), or GLB of both, cached
 //   GET  /shapes/{id}/grid.vdb        both grids as a .vdb file, cached
 // Cache keys hash the shape's document, the documents of everything it references (so any
@@ -20,6 +21,7 @@
 #include "server/http/response_encoding.h"
 #include "server/service/documents.h"
 #include "server/service/evaluation.h"
+#include "server/service/family_members.h"
 #include "server/service/mesh_format.h"
 #include "server/service/png_format.h"
 #include "server/service/single_flight.h"
@@ -169,6 +171,22 @@ void registerEvaluationRoutes(HttpServer& server, Store& store, MemoryBudget* me
                           {"necessity", everInLower ? 1.0 - levels.lower : 0.0},
                           {"exhausted_searches", exhausted},
                           {"exact", exhausted == 0}}};
+    });
+  }
+
+  // The family's members (server/service/family_members.h; Zhang, Pham & Chen, Figure 1): crisp
+  // documents drawn from the fuzzy values, with their membership degrees, from the core outward.
+  for (const std::string kind : {"shape", "part"}) {
+    server.addRoute("GET", "/" + kind + "s/{id}/members", [limits, &store, kind](const ApiRequest& req) {
+      const double count = numberParam(req, "count", 9);
+      if (count != std::floor(count)) throw Error(errc::kInvalidParameter, "count is a whole number", "count");
+      const StoredShape shape = loadShape(store, shapeId(req), limits.maxNodes, kind);
+      nlohmann::json answer = familyMembers(shape.parsed, kind == "part", static_cast<int>(std::max(-1.0, std::min(count, 1e6))),
+                                            limits.maxNodes);
+      answer["id"] = shape.object.id;
+      answer["kind"] = kind;
+      answer["version"] = shape.object.version;
+      return ApiResponse{200, std::move(answer)};
     });
   }
 

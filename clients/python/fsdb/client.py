@@ -142,6 +142,11 @@ class Collection:
         self._only("part", "shape")
         return self._http.json("GET", f"{self._base}/{id}/membership", query={"x": x, "y": y, "z": z})
 
+    def members(self, id: int, count: int = 9) -> Json:
+        """GET /K/{id}/members (parts, shapes): the family's crisp members with their degrees."""
+        self._only("part", "shape")
+        return self._http.json("GET", f"{self._base}/{id}/members", query={"count": count})
+
     def thumbnail(self, id: int, alpha: float = 0.5, size: int = 128) -> bytes:
         """GET /K/{id}/thumbnail.png (parts, shapes): PNG bytes."""
         self._only("part", "shape")
@@ -395,4 +400,5 @@ for _kind in ("parts", "shapes", "surfaces"):
     ROUTES[("GET", f"/{_kind}/{{id}}/mesh")] = "Collection.mesh"
 for _kind in ("parts", "shapes"):
     ROUTES[("GET", f"/{_kind}/{{id}}/membership")] = "Collection.membership"
+    ROUTES[("GET", f"/{_kind}/{{id}}/members")] = "Collection.members"
     ROUTES[("GET", f"/{_kind}/{{id}}/thumbnail.png")] = "Collection.thumbnail"

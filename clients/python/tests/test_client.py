@@ -112,6 +112,22 @@ class ClientTest(unittest.TestCase):
         with self.assertRaises(TypeError):
             c.curves.membership(1, 0, 0, 0)
 
+    def test_family_members(self):
+        c = self.client
+        fuzzy = c.parts.create({"name": "family", "params": {"a1": {"tri": [0.8, 1, 1.2]}, "kv": {"tri": [0, 0.2, 0.4]}}})
+        members = c.parts.members(fuzzy["id"], count=4)["members"]
+        self.assertEqual(len(members), 4)
+        self.assertEqual(members[0]["membership"], 1)
+        degrees = [m["membership"] for m in members]
+        self.assertEqual(degrees, sorted(degrees, reverse=True))
+        self.assertLess(degrees[-1], 1)
+        pair = c.shapes.create({"name": "family pair", "tree": {"op": "union", "children": [
+            {"part": "family"}, {"part": {"params": {"a1": 1}}, "transform": {"translate": [2, 0, 0]}}]}})
+        self.assertEqual(len(c.shapes.members(pair["id"], count=3)["members"]), 3)
+        self.assertFsdbError(lambda: c.parts.members(fuzzy["id"], count=0), 422, "invalid_parameter", "count")
+        with self.assertRaises(TypeError):
+            c.curves.members(1)
+
     def test_searches(self):
         c = self.client
         c.parts.create(part("long-rod", 4, a2=0.3, a3=0.3))
