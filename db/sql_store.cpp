@@ -268,6 +268,28 @@ std::vector<StoredObject> SqlStore::list(const ListQuery& query) const {
   return objects;
 }
 
+std::vector<StoredObject> SqlStore::named(const std::vector<std::string>& names,
+                                          const std::vector<std::string>& kinds) const {
+  constexpr size_t kKinds = 8;
+  if (names.size() > kMaxNamedLookups || kinds.size() > kKinds)
+    throw Error(errc::kInvalidParameter, "at most " + std::to_string(kMaxNamedLookups) + " names and " +
+                                             std::to_string(kKinds) + " kinds a lookup", "name");
+  if (names.empty() || kinds.empty()) return {};
+  Lease connection(*this);
+  // Fixed placeholder counts (the last name and kind repeated to fill them): one prepared text.
+  auto statement = (*connection)
+                       .prepare(objectColumnsSql((*connection).dialect()) +
+                                " AND v.version = o.latest_version WHERE o.kind IN (" + sql::listPlaceholders(1, static_cast<int>(kKinds)) +
+                                ") AND o.name IN (" + sql::listPlaceholders(static_cast<int>(1 + kKinds), static_cast<int>(kMaxNamedLookups)) +
+                                ") ORDER BY o.id");
+  for (size_t i = 0; i < kKinds; ++i) statement->bind(static_cast<int>(1 + i), kinds[std::min(i, kinds.size() - 1)]);
+  for (size_t i = 0; i < kMaxNamedLookups; ++i)
+    statement->bind(static_cast<int>(1 + kKinds + i), names[std::min(i, names.size() - 1)]);
+  std::vector<StoredObject> objects;
+  while (statement->step()) objects.push_back(readObject(*statement));
+  return objects;
+}
+
 std::map<std::string, int64_t> SqlStore::counts() const {
   Lease connection(*this);
   auto statement = (*connection).prepare("SELECT kind, COUNT(*) FROM objects GROUP BY kind");

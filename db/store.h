@@ -267,6 +267,12 @@ class Store {
   // Resolves a reference to the latest version of the object it names; not_found-free: nullopt.
   virtual std::optional<StoredObject> find(const ObjectReference& reference) const = 0;
   virtual std::vector<StoredObject> list(const ListQuery& query) const = 0;
+  // The latest versions of the live objects of `kinds` whose name is one of `names` (exact), by
+  // id: one statement however many names and kinds (the search box asks a text's few spellings
+  // of one name on every query). At most kMaxNamedLookups names and 8 kinds (invalid_parameter).
+  static constexpr size_t kMaxNamedLookups = 16;
+  virtual std::vector<StoredObject> named(const std::vector<std::string>& names,
+                                          const std::vector<std::string>& kinds) const = 0;
   // Deletes the object and all its versions. in_use (409) when a live object's latest version
   // refers to it, unless cascade: then every object that reaches it is deleted too. Returns the
   // ids deleted (the object first). ifVersion as for put.

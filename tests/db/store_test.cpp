@@ -259,6 +259,25 @@ TEST_P(StoreTest, ListPagesByIdAndFilters) {
   EXPECT_EQ(old[0].documentJson, "{\"eps1\":1}");
 }
 
+// named: every spelling and kind in one statement, the latest versions, live objects only.
+TEST_P(StoreTest, NamedFindsAnyOfTheNamesAcrossKinds) {
+  const int64_t bolt = store->create(part("bolt")).id;
+  const int64_t pair = store->create(shape("the pair", {})).id;
+  store->create(part("nut"));
+  store->put(bolt, part("bolt", "{\"v\":2}"));
+  const auto found = store->named({"bolt", "the-pair", "the pair", "washer"}, {"part", "shape"});
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_EQ(found[0].id, bolt);
+  EXPECT_EQ(found[0].version, 2);
+  EXPECT_EQ(found[1].id, pair);
+  EXPECT_EQ(found[1].kind, "shape");
+  EXPECT_TRUE(store->named({"the pair"}, {"part"}).empty());
+  EXPECT_TRUE(store->named({}, {"part"}).empty());
+  store->remove("part", bolt, false);
+  EXPECT_TRUE(store->named({"bolt"}, {"part", "shape"}).empty());
+  EXPECT_THROW(store->named(std::vector<std::string>(Store::kMaxNamedLookups + 1, "x"), {"part"}), Error);
+}
+
 TEST_P(StoreTest, RemoveInUseUnlessCascade) {
   auto bolt = store->create(part("bolt"));
   auto inner = store->create(shape("inner", {byName("part", "bolt")}));
