@@ -17,6 +17,10 @@ namespace fsdb {
 // Exact area under min(mu_A, mu_B) (breakpoints of both plus the points where they cross).
 double cardinalityOfIntersection(const FuzzyNumber& a, const FuzzyNumber& b);
 
+// Exact height of A ∩ B, sup of min(mu_A, mu_B) (0 when no value belongs to both: their
+// supports are apart or touch only where one of them is 0).
+double heightOfIntersection(const FuzzyNumber& a, const FuzzyNumber& b);
+
 double similarity(const FuzzyNumber& a, const FuzzyNumber& b);
 
 }  // namespace fsdb

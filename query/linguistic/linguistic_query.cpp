@@ -12,6 +12,7 @@
 #include "geometry/core/closest_names.h"
 #include "geometry/core/error.h"
 #include "geometry/fuzzy/fuzzy_arithmetic.h"
+#include "geometry/fuzzy/fuzzy_similarity.h"
 #include "query/json/fuzzy_json.h"
 #include "query/json/number_phrases.h"
 #include "query/linguistic/degree_sets.h"
@@ -106,14 +107,6 @@ const DimensionWord& dimensionWord(const std::vector<DimensionWord>& table, cons
   return table.front();  // not reached: words come from the table
 }
 
-// The word a measure of `descriptor` is printed with ("about 10 long").
-const char* measureWordOf(const std::string& descriptor) {
-  if (descriptor == "length") return "long";
-  if (descriptor == "width") return "across";
-  if (descriptor == "thickness") return "thick";
-  return "tall";
-}
-
 // A measure's condition: its descriptor with the extent's set over the degrees.
 QueryCondition measureCondition(const std::string& descriptor, const FuzzyNumber& extent, std::string text) {
   QueryCondition c = descriptorCondition(descriptor, extentDegreeSet(extent), std::move(text));
@@ -134,15 +127,8 @@ bool isExponentShape(const std::string& d) {
          d == "section-roundness";
 }
 
-// Whether two sets over the degrees contradict each other: no degree (on a grid of 1/1000)
-// belongs to both.
-bool contradicts(const FuzzyNumber& a, const FuzzyNumber& b) {
-  for (int i = 0; i <= 1000; ++i) {
-    const double x = i / 1000.0;
-    if (std::min(a.membership(x), b.membership(x)) > 0.0) return false;
-  }
-  return true;
-}
+// Whether two sets over the degrees contradict each other: no degree belongs to both (exactly).
+bool contradicts(const FuzzyNumber& a, const FuzzyNumber& b) { return heightOfIntersection(a, b) == 0.0; }
 
 // Whether the words a user says replace a noun's condition (nouns are defaults, not vetoes):
 //  * a condition on the same descriptor that contradicts the noun's ("a slightly tapered cone":

@@ -67,6 +67,30 @@ TEST(FuzzySimilarity, DisjointOrTouchingSupportsGiveZero) {
             0);
 }
 
+TEST(FuzzySimilarity, HeightOfIntersection) {
+  EXPECT_DOUBLE_EQ(heightOfIntersection(FuzzyNumber::triangular(0, 1, 2), FuzzyNumber::triangular(1, 2, 3)), 0.5);
+  // Touching only where both are 0, or apart: no common value.
+  EXPECT_EQ(heightOfIntersection(FuzzyNumber::triangular(0, 1, 2), FuzzyNumber::triangular(2, 3, 4)), 0);
+  EXPECT_EQ(heightOfIntersection(FuzzyNumber::triangular(0, 1, 2), FuzzyNumber::triangular(3, 4, 5)), 0);
+  // Touching where both are 1 (two trapezoids meeting at a core's end), and a crisp value.
+  EXPECT_EQ(heightOfIntersection(FuzzyNumber::trapezoidal(0, 1, 2, 2), FuzzyNumber::trapezoidal(2, 2, 3, 4)), 1);
+  EXPECT_DOUBLE_EQ(heightOfIntersection(FuzzyNumber::crisp(0.25), FuzzyNumber::triangular(0, 1, 2)), 0.25);
+  // An overlap narrower than any grid of 1/1000 is still found.
+  EXPECT_GT(heightOfIntersection(FuzzyNumber::triangular(0, 0.5, 0.5002), FuzzyNumber::triangular(0.5001, 0.6, 0.7)), 0);
+  // Against a fine sampling of min(mu_A, mu_B) on random numbers of every form: never below it.
+  std::mt19937 rng(41);
+  for (int i = 0; i < 300; ++i) {
+    const FuzzyNumber a = randomAny(rng, i), b = randomAny(rng, i / 4);
+    double sampled = 0;
+    for (int k = 0; k <= 20000; ++k) {
+      const double x = -10 + 20.0 * k / 20000;
+      sampled = std::max(sampled, std::min(a.membership(x), b.membership(x)));
+    }
+    EXPECT_GE(heightOfIntersection(a, b) + 1e-12, sampled) << i;
+    EXPECT_LE(heightOfIntersection(a, b), 1.0) << i;
+  }
+}
+
 TEST(FuzzySimilarity, RandomProperties) {
   std::mt19937 rng(21);
   for (int i = 0; i < 400; ++i) {
