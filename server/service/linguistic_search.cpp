@@ -459,7 +459,7 @@ std::vector<std::string> searchKinds(const LinguisticQuery& query, const std::st
 }
 
 nlohmann::json linguisticQueryResponse(const Store& store, const nlohmann::json& request,
-                                       const LinguisticRequestLimits& limits) {
+                                       const LinguisticRequestLimits& limits, const std::string& aggregation) {
   const auto start = Clock::now();
   requireObject(request, "");
   rejectUnknownKeys(request, "", {"text", "limit", "threshold", "kind", "scan"});
@@ -476,7 +476,8 @@ nlohmann::json linguisticQueryResponse(const Store& store, const nlohmann::json&
       throw Error(errc::kInvalidParameter, "kind must be \"part\" or \"shape\", got \"" + kind + "\"", "kind");
   }
   options.scan = optionalBoolean(request, "", "scan", false);
-  const LinguisticQuery query = parseLinguisticQuery(text, activeVocabulary());
+  LinguisticQuery query = parseLinguisticQuery(text, activeVocabulary());
+  if (!aggregation.empty()) query.aggregation = aggregation;
   options.kinds = searchKinds(query, kind);
   const LinguisticSearchResult found = searchLinguistic(store, query, options);
   nlohmann::json results = nlohmann::json::array();

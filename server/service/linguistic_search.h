@@ -82,8 +82,9 @@ struct LinguisticRequestLimits {
 // "candidates","scored","scan","millis"}: validation (invalid_parameter / invalid_document naming the
 // field), parsing with the active vocabulary (query/linguistic/vocabulary.h), search; "parsed" is
 // toJson(query) of query/linguistic/linguistic_query.h. Shared by POST /query/linguistic and
-// `fsdb query --db`.
+// `fsdb query --db`. `aggregation`, when not empty, replaces the text's (POST /query's partial
+// matches search by "mean" the text that found nothing under "min").
 nlohmann::json linguisticQueryResponse(const Store& store, const nlohmann::json& request,
-                                       const LinguisticRequestLimits& limits);
+                                       const LinguisticRequestLimits& limits, const std::string& aggregation = "");
 
 }  // namespace fsdb

@@ -91,14 +91,7 @@ nlohmann::json searchText(const Store& store, const nlohmann::json& request, con
   if (!csg && answer["results"].empty() && parsed.value("aggregation", "") == "min" &&
       parsed.value("condition", nlohmann::json::object()).value("kind", "") != "relation" &&
       parsed.value("at_least", 0.0) == 0.0 && !request.contains("threshold")) {
-    nlohmann::json partial = request;
-    partial["text"] = text + " using mean";
-    nlohmann::json closest;
-    try {
-      closest = linguisticQueryResponse(store, partial, linguisticLimits);
-    } catch (const Error&) {
-      return answer;  // the text does not take an aggregation after it (it has its own): as it was
-    }
+    nlohmann::json closest = linguisticQueryResponse(store, request, linguisticLimits, "mean");
     for (nlohmann::json& r : closest["results"]) r["partial"] = true;
     answer["results"] = std::move(closest["results"]);
     answer["partial"] = true;

@@ -14,8 +14,8 @@
 // words joined by "-", " ", "_" or nothing) puts that object first (score 1, "named": true); a
 // text no grammar reads but that is a name is answered {"search": "name", "results": [...]}.
 // Partial matches: a linguistic text without a relation that no object meets at all (every score
-// 0 under min, no threshold) is searched again by the mean of its conditions ("... using mean"); the answer and
-// its results carry "partial": true.
+// 0 under min, no threshold) is searched again by the mean of its conditions (the text's own
+// "using ..." too gives way); the answer and its results carry "partial": true.
 // Errors: a body without a string "text" is refused as the linguistic search refuses it (422 at
 // "text"); everything else is the chosen search's. A text that does not read even without its
 // unknown words (or has nothing else) gets the first refusal: the linguistic parser's 422 with the

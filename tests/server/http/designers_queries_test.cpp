@@ -41,7 +41,7 @@ std::vector<std::pair<int64_t, double>> meaningRanking(const Answer& a, const An
 
 Answer ask(const ServerProcess& server, const std::string& route, const std::string& text) {
   auto r = server.post(route, json{{"text", text}, {"limit", 50}});
-  Answer a{r.status, r.body, r.json.value("search", std::string()), r.json.contains("parsed"), {}};
+  Answer a{r.status, r.body, r.json.value("search", std::string()), r.json.contains("parsed"), {}, {}};
   for (const json& result : r.json["results"]) {
     if (result.value("named", false)) a.named.push_back(result["id"].get<int64_t>());
     else a.ranking.emplace_back(result["id"].get<int64_t>(), result["score"].get<double>());
@@ -397,6 +397,12 @@ TEST(DesignersQueries, NoMatchGivesTheClosestPartialMatches) {
   ASSERT_EQ(mean.json["results"].size(), r.json["results"].size());
   for (size_t i = 0; i < mean.json["results"].size(); ++i)
     EXPECT_EQ(mean.json["results"][i]["id"], r.json["results"][i]["id"]);
+  // A text that says its own aggregation gets them too (it was searched again as "... using min
+  // using mean", which does not read, and answered nothing).
+  auto own = server.post("/query", json{{"text", "a very twisted sphere using min"}});
+  ASSERT_EQ(own.status, 200) << own.body;
+  EXPECT_EQ(own.json["partial"], true) << own.body;
+  EXPECT_EQ(own.json["results"], r.json["results"]);
   // A threshold keeps the answer strict.
   auto thresholded = server.post("/query", json{{"text", "a very twisted sphere"}, {"threshold", 0.1}});
   EXPECT_FALSE(thresholded.json.contains("partial")) << thresholded.body;
