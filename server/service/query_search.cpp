@@ -173,10 +173,21 @@ nlohmann::json queryResponse(const Store& store, const nlohmann::json& request,
       discount *= r.route.discount;
     }
     answer["routed"] = std::move(routed);
-    if (discount < 1.0 && answer.contains("results") && answer["results"].is_array())
-      for (nlohmann::json& result : answer["results"])
+    if (discount < 1.0 && answer.contains("results") && answer["results"].is_array()) {
+      // The threshold (the request's, or the text's "at least") holds for the discounted scores:
+      // the search kept every result at or above it before the discount, in the same order, so
+      // dropping those that fall below it now is exact.
+      double cut = request.value("threshold", 0.0);
+      if (answer.contains("parsed") && answer["parsed"].is_object())
+        cut = std::max(cut, answer["parsed"].value("at_least", 0.0));
+      nlohmann::json kept = nlohmann::json::array();
+      for (nlohmann::json& result : answer["results"]) {
         if (result.contains("score") && result["score"].is_number())
           result["score"] = result["score"].get<double>() * discount;
+        if (result.value("score", 1.0) >= cut) kept.push_back(std::move(result));
+      }
+      answer["results"] = std::move(kept);
+    }
     answer["read_text"] = searched;
     if (reading.corrected && *reading.corrected != searched) answer["did_you_mean"] = *reading.corrected;
     return answer;

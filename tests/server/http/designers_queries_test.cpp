@@ -283,6 +283,16 @@ TEST(DesignersQueries, WordsTheVocabularyLacksAreRoutedThroughWordNet) {
     EXPECT_EQ(colossal.json["results"][i]["id"], large["results"][i]["id"]);
     EXPECT_NEAR(colossal.json["results"][i]["score"].get<double>(), 0.9 * large["results"][i]["score"].get<double>(), 1e-12);
   }
+  // A threshold holds for the discounted scores: a result at 0.9 for "large" is 0.81 here, so a
+  // threshold between the two keeps it for the one text and drops it for the other.
+  ASSERT_FALSE(large["results"].empty());
+  const double top = large["results"][0]["score"].get<double>();
+  const double between = 0.95 * top;
+  const json strictLarge = server.post("/query", json{{"text", "a large ball"}, {"threshold", between}}).json;
+  const json strictColossal = server.post("/query", json{{"text", "a colossal ball"}, {"threshold", between}}).json;
+  EXPECT_FALSE(strictLarge["results"].empty()) << strictLarge;
+  for (const json& r : strictColossal["results"]) EXPECT_GE(r["score"].get<double>(), between) << strictColossal;
+  EXPECT_LT(strictColossal["results"].size(), strictLarge["results"].size()) << strictColossal;
   // The examples of assemblies in everyday verbs.
   auto resting = server.post("/query", json{{"text", "a ball sitting on a cylinder"}});
   ASSERT_EQ(resting.status, 200) << resting.body;
