@@ -171,26 +171,37 @@ std::optional<WordRoute> routeWord(const std::string& word, const std::string& n
   return WordRoute{word, best.became, best.why, best.via, best.discount};
 }
 
+std::vector<TokenRoute> routeTokens(const std::vector<query_tokens::Token>& tokens,
+                                    const std::function<bool(size_t)>& unknown, const Vocabulary& vocabulary,
+                                    const WordNet* wordnet, const std::function<bool(const std::string&)>& known) {
+  std::vector<TokenRoute> out;
+  if (!wordnet) return out;
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    if (!unknown(i)) continue;
+    const std::string next = i + 1 < tokens.size() ? tokens[i + 1].text : "";
+    std::optional<WordRoute> r = routeWord(tokens[i].text, next, vocabulary, wordnet, known);
+    if (r) out.push_back({i, std::move(*r)});
+  }
+  return out;
+}
+
 std::optional<RoutedText> routeUnknownWords(const std::string& text, const Vocabulary& vocabulary, const WordNet* wordnet,
                                             const std::function<bool(const std::string&)>& known) {
-  if (!wordnet) return std::nullopt;
   const std::vector<query_tokens::Token> tokens = query_tokens::tokenize(text, 0, text.size());
+  const auto unknown = [&](size_t i) { return !tokens[i].number && !known(tokens[i].text); };
+  std::vector<TokenRoute> routes = routeTokens(tokens, unknown, vocabulary, wordnet, known);
+  if (routes.empty()) return std::nullopt;
   RoutedText out;
   size_t copied = 0;
-  for (size_t i = 0; i < tokens.size(); ++i) {
-    const query_tokens::Token& t = tokens[i];
-    if (t.number || known(t.text)) continue;
-    const std::string next = i + 1 < tokens.size() ? tokens[i + 1].text : "";
-    std::optional<WordRoute> r = routeWord(t.text, next, vocabulary, wordnet, known);
-    if (!r) continue;
+  for (TokenRoute& r : routes) {
+    const query_tokens::Token& t = tokens[r.token];
     size_t from = t.offset;
-    if (r->became.empty())
+    if (r.route.became.empty())
       while (from > copied && text[from - 1] == ' ') --from;  // the blank before it goes too
-    out.text += text.substr(copied, from - copied) + r->became;
+    out.text += text.substr(copied, from - copied) + r.route.became;
     copied = t.end;
-    out.routes.push_back(std::move(*r));
+    out.routes.push_back(std::move(r.route));
   }
-  if (out.routes.empty()) return std::nullopt;
   out.text += text.substr(copied);
   return out;
 }

@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "query/linguistic/query_tokens.h"
 #include "query/linguistic/vocabulary.h"
 #include "query/linguistic/wordnet.h"
 
@@ -47,6 +48,16 @@ struct WordRoute {
 // lemma-free routes: none).
 std::optional<WordRoute> routeWord(const std::string& word, const std::string& next, const Vocabulary& vocabulary,
                                    const WordNet* wordnet, const std::function<bool(const std::string&)>& known);
+
+// The routes of the tokens `unknown` marks (by token index), in token order: each token's route
+// with the token after it as `next`. The one loop both readers of unknown words use.
+struct TokenRoute {
+  size_t token = 0;
+  WordRoute route;
+};
+std::vector<TokenRoute> routeTokens(const std::vector<query_tokens::Token>& tokens,
+                                    const std::function<bool(size_t)>& unknown, const Vocabulary& vocabulary,
+                                    const WordNet* wordnet, const std::function<bool(const std::string&)>& known);
 
 // `text` with every word that `known` lacks and that routes replaced by what it became (a word
 // left out goes with the blank before it), and the routes taken in text order; nullopt when no

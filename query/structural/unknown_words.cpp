@@ -101,16 +101,11 @@ KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& voca
   // but keep their replacement in every text below.
   std::vector<bool> routed(tokens.size(), false);
   std::vector<std::string> leftOut(tokens.size());
-  const WordNet* wordnet = systemWordNet();
   const auto known = [&](const std::string& w) { return knownWord(w, vocabulary); };
-  for (size_t i = 0; i < tokens.size() && wordnet; ++i) {
-    if (!unknown[i]) continue;
-    const std::string next = i + 1 < tokens.size() ? tokens[i + 1].text : "";
-    std::optional<WordRoute> route = routeWord(tokens[i].text, next, vocabulary, wordnet, known);
-    if (!route) continue;
-    routed[i] = true;
-    leftOut[i] = route->became;
-    reading.routed.push_back({std::move(*route), tokens[i].offset});
+  for (TokenRoute& r : routeTokens(tokens, [&](size_t i) { return unknown[i]; }, vocabulary, systemWordNet(), known)) {
+    routed[r.token] = true;
+    leftOut[r.token] = r.route.became;
+    reading.routed.push_back({std::move(r.route), tokens[r.token].offset});
   }
   reading.text = textWith(leftOut);
 

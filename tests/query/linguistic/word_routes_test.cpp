@@ -76,3 +76,37 @@ TEST(WordRoutes, RareSensesUnknownWordsAndNonWordsRouteNowhere) {
 
 }  // namespace
 }  // namespace fsdb
+
+namespace fsdb {
+namespace {
+
+const auto knownLinguistic = [](const std::string& w) { return knowsLinguisticWord(w, Vocabulary::builtin()); };
+
+// The routes of the marked tokens only, each read with the word after it.
+TEST(WordRoutes, RouteTokensRoutesTheMarkedTokensWithTheirNextWords) {
+  const std::string text = "a skinny ball sitting on a chunky box";
+  const auto tokens = query_tokens::tokenize(text, 0, text.size());
+  const auto routes = routeTokens(
+      tokens, [&](size_t i) { return tokens[i].text != "chunky" && !knownLinguistic(tokens[i].text); },
+      Vocabulary::builtin(), systemWordNet(), knownLinguistic);
+  ASSERT_EQ(routes.size(), 2u);
+  EXPECT_EQ(tokens[routes[0].token].text, "skinny");
+  EXPECT_EQ(routes[0].route.became, "thin");
+  EXPECT_EQ(tokens[routes[1].token].text, "sitting");
+  EXPECT_EQ(routes[1].route.why, "support verb");  // "on" follows it
+  EXPECT_TRUE(routeTokens(tokens, [](size_t) { return true; }, Vocabulary::builtin(), nullptr, knownLinguistic).empty());
+}
+
+// The text with each routed word replaced, a left-out word with the blank before it.
+TEST(WordRoutes, RouteUnknownWordsRewritesTheText) {
+  const auto routed = routeUnknownWords("a skinny ball sitting on a box", Vocabulary::builtin(), systemWordNet(),
+                                        knownLinguistic);
+  ASSERT_TRUE(routed.has_value());
+  EXPECT_EQ(routed->text, "a thin ball on a box");
+  ASSERT_EQ(routed->routes.size(), 2u);
+  EXPECT_EQ(routed->routes[0].word, "skinny");
+  EXPECT_FALSE(routeUnknownWords("a thin ball", Vocabulary::builtin(), systemWordNet(), knownLinguistic).has_value());
+}
+
+}  // namespace
+}  // namespace fsdb
