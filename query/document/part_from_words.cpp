@@ -180,8 +180,7 @@ FuzzyPart partFromWords(const std::string& text, const Vocabulary& vocabulary) {
   };
   for (const AdjectiveUse& use : uses) {
     const Adjective& a = *use.adjective;
-    FuzzyNumber d = use.intensity ? *use.intensity : a.create ? *a.create : vocabulary.plainCreate();
-    if (a.lowPole && !(a.create && !use.intensity)) d = mirroredDegrees(d);
+    const FuzzyNumber d = vocabulary.createdSet(a, use.intensity);
     const bool deformation = std::find(kOrder.begin(), kOrder.end(), a.descriptor) >=
                              std::find(kOrder.begin(), kOrder.end(), "bendness");
     if (deformation) setExtents();

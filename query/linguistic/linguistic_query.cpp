@@ -733,8 +733,8 @@ class Parser {
     if (n == 0) fail({"an adjective (" + joinList(adjectiveWords_) + ")"});
     pos_ += n;
     const Adjective& adjective = *v_.adjective(word);
-    FuzzyNumber set = intensity ? *intensity : v_.plain();
-    if (adjective.lowPole) set = mirroredDegrees(set);
+    const FuzzyNumber set =
+        intensity ? (adjective.lowPole ? mirroredDegrees(*intensity) : *intensity) : v_.plainSet(adjective);
     std::string descriptor = adjective.descriptor;
     // section = a section word of the vocabulary: the adjective describes the traverse section alone.
     std::string sectionWord;

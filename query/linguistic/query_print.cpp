@@ -102,7 +102,7 @@ class Printer {
       if (!whole && !ofSection) continue;
       const auto matches = [&](const FuzzyNumber& set) { return (a.lowPole ? mirroredDegrees(set) : set) == c.set; };
       std::vector<std::string> intensities;
-      if (matches(v_.plain())) intensities.push_back("");
+      if (v_.plainSet(a) == c.set) intensities.push_back("");
       for (const std::string& intensity : v_.intensityWords())
         if (matches(*v_.intensity(intensity))) intensities.push_back(intensity + " ");
       for (const std::string& intensity : intensities) {

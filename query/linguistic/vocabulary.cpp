@@ -8,6 +8,7 @@
 
 #include "geometry/fuzzy/defuzzify.h"
 #include "geometry/core/error.h"
+#include "query/linguistic/degree_sets.h"
 #include "query/linguistic/descriptors.h"
 #include "query/json/fuzzy_json.h"
 #include "query/json/json_body.h"
@@ -350,6 +351,16 @@ Vocabulary Vocabulary::fromFile(const std::string& path) {
 const Vocabulary& Vocabulary::builtin() {
   static const Vocabulary v = fromJson(nlohmann::json::parse(builtinVocabularyText()));
   return v;
+}
+
+FuzzyNumber Vocabulary::plainSet(const Adjective& adjective) const {
+  return adjective.lowPole ? mirroredDegrees(plain_) : plain_;
+}
+
+FuzzyNumber Vocabulary::createdSet(const Adjective& adjective, const FuzzyNumber* intensity) const {
+  if (!intensity && adjective.create) return *adjective.create;
+  const FuzzyNumber& d = intensity ? *intensity : plainCreate_;
+  return adjective.lowPole ? mirroredDegrees(d) : d;
 }
 
 const FuzzyNumber* Vocabulary::intensity(const std::string& word) const {

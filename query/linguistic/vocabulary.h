@@ -10,8 +10,8 @@
 //                 names must be exactly descriptorNames() in order (the functions are code), or its
 //                 first kDescriptorsBeforeSections (files written before the section descriptors).
 //   intensities   {order, plain, create, terms{word: fuzzy set over the degree}, synonyms{word: word}}
-//                 "very bent" is the term `very` over bendness; plain "bent" is `plain` (μ(d) = d);
-//                 `create` is the degree a plain adjective gives a part made from words.
+//                 "very bent" is the term `very` over bendness; plain "bent" searches with `plain`
+//                 (μ(d) = d: plainSet) and a part made from it takes `create` (createdSet).
 //   hedges        {"not": text}: `not X` scores 1 − score(X) (query/linguistic/linguistic_query.h).
 //   adjectives    {word: {descriptor, pole: "high"|"low", create: fuzzy number}}: a low-pole
 //                 adjective ("flat", "small", "straight") mirrors its sets, d → 1 − d.
@@ -94,6 +94,15 @@ class Vocabulary {
 
   const FuzzyNumber& plain() const { return plain_; }
   const FuzzyNumber& plainCreate() const { return plainCreate_; }
+  // The degree set a plain adjective ("bent", no intensity) searches with: `plain`, mirrored for a
+  // low pole. (It ranks by degree: "bent" scores a crisp part its bendness. A part made from the
+  // plain adjective takes createdSet instead, a narrower set, so the paper's similarity of the two
+  // stays below 1: docs/design/linguistic-search.md, "Round trips".)
+  FuzzyNumber plainSet(const Adjective& adjective) const;
+  // The degree a part made from words takes for the adjective with `intensity` (null: plain): the
+  // intensity's set, else the adjective's own `create` as written, else `create`; mirrored for a
+  // low pole except an own create.
+  FuzzyNumber createdSet(const Adjective& adjective, const FuzzyNumber* intensity) const;
   const std::vector<std::string>& intensityOrder() const { return intensityOrder_; }
   bool isAggregation(const std::string& name) const;
 

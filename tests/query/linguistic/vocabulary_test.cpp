@@ -90,6 +90,27 @@ TEST(Vocabulary, IntensitiesAreMonotone) {
   EXPECT_EQ(v().intensity("bogus"), nullptr);
 }
 
+// The sets of an adjective: searched (plain: the degree itself, mirrored for a low pole) and made
+// (the intensity's, else the adjective's own create as written, else the intensities' create).
+TEST(Vocabulary, PlainAndCreatedSetsOfAnAdjective) {
+  const Adjective& bent = *v().adjective("bent");
+  const Adjective& flat = *v().adjective("flat");
+  const Adjective& straight = *v().adjective("straight");
+  EXPECT_EQ(v().plainSet(bent), v().plain());
+  EXPECT_DOUBLE_EQ(v().plainSet(flat).membership(0.2), 0.8);  // 1 − d
+  EXPECT_EQ(v().createdSet(bent, nullptr), v().plainCreate());
+  EXPECT_EQ(v().createdSet(bent, v().intensity("very")), *v().intensity("very"));
+  EXPECT_EQ(v().createdSet(flat, nullptr), *flat.create);     // its own, not mirrored
+  EXPECT_DOUBLE_EQ(v().createdSet(flat, v().intensity("very")).membership(0.1), 1.0);  // very, mirrored
+  EXPECT_EQ(v().createdSet(straight, nullptr), FuzzyNumber::crisp(0));
+  // Sizes to the huge end: huge, enormous and giant make the same set, above big's core.
+  for (const char* word : {"huge", "enormous", "giant"}) {
+    const Adjective& a = *v().adjective(word);
+    EXPECT_EQ(a.descriptor, "size") << word;
+    EXPECT_GT(v().createdSet(a, nullptr).core().lo, v().createdSet(*v().adjective("big"), nullptr).core().hi) << word;
+  }
+}
+
 TEST(Vocabulary, EveryWordParses) {
   for (const auto& noun : v().nounWords())
     EXPECT_NO_THROW(parseLinguisticQuery("find a " + noun, v())) << noun;
