@@ -78,6 +78,16 @@ async function designTools(page, url, out, conflict) {
     return png;
   };
   const text = (selector) => page.$eval(selector, (e) => e.textContent);
+  // A picture of the page from the top of `from` to the bottom of `to`, as wide as the view (for
+  // docs/images: the view with the tool under it).
+  const region = async (name, from, to) => {
+    const [a, b, view] = await Promise.all([from, to, '#view'].map((sel) => page.$eval(sel, (e) => {
+      const r = e.getBoundingClientRect();
+      return { x: r.x + window.scrollX, y: r.y + window.scrollY, width: r.width, height: r.height };
+    })));
+    await page.screenshot({ path: path.join(out, `${name}.png`), fullPage: true,
+      clip: { x: view.x, y: a.y, width: view.width, height: b.y + b.height - a.y } });
+  };
 
   // A part from words, made by the form in "Create and import"; the view and the editor open it.
   const id = await step('part from words', async () => {
@@ -113,7 +123,7 @@ async function designTools(page, url, out, conflict) {
   if (Math.abs((kvCore[1] + kvCore[2]) / 2 - 0.6) > 1e-9) throw new Error(`kv after the drag: ${kvCore}`);
   const edited = await picture('studio-edit');
   if (edited.equals(before)) throw new Error('the view does not follow the edit');
-  await page.screenshot({ path: path.join(out, 'studio-editor.png') });
+  await region('studio-editor', '#canvas-box', '#editor');
 
   // Save: version 2, stored with If-Match.
   await step('save version 2', async () => {
@@ -140,7 +150,7 @@ async function designTools(page, url, out, conflict) {
   if (differing.length !== 1 || !differing[0].startsWith('kv')) throw new Error(`compared values that differ: ${differing}`);
   const compared = await picture('studio-compare');
   if (compared.equals(edited)) throw new Error('the comparison shows the same picture as one version');
-  await page.screenshot({ path: path.join(out, 'studio-versions.png'), fullPage: true });
+  await region('studio-versions', '#canvas-box', '#versions');
 
   // The family's members, from the core outward; one clicked into the view.
   const degrees = await step('members gallery', async () => {
