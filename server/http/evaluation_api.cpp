@@ -150,8 +150,8 @@ std::string meshFile(const ParsedShape& shape, const std::string& fingerprint, c
                      const EvaluationLimits& limits, size_t* triangles) {
   const auto started = std::chrono::steady_clock::now();
   const double alpha = request.alpha;
-  const Evaluation e = evaluateParsedShape({{"resolution", request.resolution}, {"alphas", {alpha}}}, shape, limits,
-                                           fingerprint);
+  const Evaluation e =
+      evaluateParsedShape({{"resolution", request.resolution}, {"alphas", {alpha}}}, shape, limits, fingerprint);
   *triangles = 0;
   if (request.glb()) {
     std::vector<NamedMesh> both = {{"lower", evaluationMesh(e, alpha, EnvelopeBound::kLower, limits, started)},
@@ -274,7 +274,8 @@ void registerEvaluationRoutes(HttpServer& server, Store& store, MemoryBudget* me
       if (req.hasQueryParam("bound")) request.bound = req.queryParam("bound");
       if (req.hasQueryParam("format")) request.format = req.queryParam("format");
       request.check();
-      request.resolution = exportResolution(numberParam(req, "resolution", kDefaultExportResolution), limits.maxResolution);
+      request.resolution =
+          exportResolution(numberParam(req, "resolution", kDefaultExportResolution), limits.maxResolution);
       const StoredShape shape = loadShape(store, shapeId(req), limits.maxNodes, kind);
       const std::string filename = request.filename(shape.object.name);
       const std::string key = cacheKey("mesh", shape, request.key());
@@ -308,7 +309,8 @@ void registerEvaluationRoutes(HttpServer& server, Store& store, MemoryBudget* me
       request.resolution = exportResolution(requireNumber(body["resolution"], "resolution"), limits.maxResolution);
     const nlohmann::json& document = requireField(body, "shape", "");
     std::string fingerprint;
-    const ParsedShape parsed = parseFingerprinted(store, document, document.dump(), "shape", limits.maxNodes, &fingerprint);
+    const ParsedShape parsed =
+        parseFingerprinted(store, document, document.dump(), "shape", limits.maxNodes, &fingerprint);
     const std::string name = document.is_object() && document.contains("name") && document["name"].is_string()
                                  ? document["name"].get<std::string>()
                                  : std::string("mesh");
@@ -348,7 +350,8 @@ void registerEvaluationRoutes(HttpServer& server, Store& store, MemoryBudget* me
   }
 
   server.addRoute("GET", "/shapes/{id}/grid.vdb", [limits, &store](const ApiRequest& req) {
-    const int resolution = exportResolution(numberParam(req, "resolution", kDefaultExportResolution), limits.maxResolution);
+    const int resolution =
+        exportResolution(numberParam(req, "resolution", kDefaultExportResolution), limits.maxResolution);
     const StoredShape shape = loadShape(store, shapeId(req), limits.maxNodes);
     const std::string filename = shape.object.name + ".vdb";
     const std::string key = cacheKey("vdb", shape, std::to_string(resolution));

@@ -140,6 +140,13 @@ async function designTools(page, url, out, conflict) {
     await page.click('[data-action="history"]');
     await page.waitForFunction(() => document.querySelectorAll('#version-list tr').length === 2);
   });
+  // Version 1 opens in the view and in the editor.
+  await step('open version 1', async () => {
+    await page.click('#version-list tr[data-version="1"] [data-action="open-version"]');
+    await page.waitForFunction(() => (document.querySelector('#canvas').dataset.shown || '').startsWith('version:1@') &&
+      document.querySelector('#editor-status').textContent.startsWith('version 1 (of 2)'));
+  });
+  await picture('studio-version-1');
   await step('compare versions 1 and 2', async () => {
     await page.check('input[name="compare-a"][value="1"]');
     await page.check('input[name="compare-b"][value="2"]');

@@ -206,7 +206,7 @@ export function setupEditor(view) {
     return Object.assign(document.createElement('input'), attrs);
   }
 
-  function valueRow([path, label, [min, max]]) {
+  function valueRow([path, label, range]) {
     const tr = document.createElement('tr');
     tr.dataset.value = path;
     const th = document.createElement('th');
@@ -219,7 +219,9 @@ export function setupEditor(view) {
       form.append(Object.assign(document.createElement('option'), { value: v, textContent: text }));
     const numbers = document.createElement('span');
     numbers.className = 'numbers';
-    const slider = input({ type: 'range', min, max, step: 'any' });
+    // The slider's range reaches the value's core wherever it lies.
+    const mid = coreMidpoint(fromJson(valueAt(part.values, path)));
+    const slider = input({ type: 'range', min: Math.min(range[0], mid), max: Math.max(range[1], mid), step: 'any' });
     slider.dataset.action = 'edit-value';
     slider.dataset.value = path;
     slider.dataset.field = 'core';

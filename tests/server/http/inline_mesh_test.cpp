@@ -27,13 +27,13 @@ TEST_F(InlineMesh, AnInlineDocumentsMeshIsTheStoredOnesBytes) {
   struct Case {
     std::string format, bound, contentType;
   };
-  for (const Case& c : std::vector<Case>{{"glb", "upper", "model/gltf-binary"},
-                                         {"obj", "lower", "model/obj"},
-                                         {"stl", "upper", "model/stl"}}) {
+  for (const Case& c : std::vector<Case>{
+           {"glb", "upper", "model/gltf-binary"}, {"obj", "lower", "model/obj"}, {"stl", "upper", "model/stl"}}) {
     auto byId = server->get(at + "/mesh?resolution=16&alpha=0.25&format=" + c.format + "&bound=" + c.bound);
     ASSERT_EQ(byId.status, 200) << byId.body;
     httplib::Client client = server->client();
-    const json body = {{"shape", kFuzzyPart}, {"resolution", 16}, {"alpha", 0.25}, {"format", c.format}, {"bound", c.bound}};
+    const json body = {
+        {"shape", kFuzzyPart}, {"resolution", 16}, {"alpha", 0.25}, {"format", c.format}, {"bound", c.bound}};
     auto inlined = client.Post("/mesh", body.dump(), "application/json");
     ASSERT_TRUE(inlined);
     ASSERT_EQ(inlined->status, 200) << inlined->body;

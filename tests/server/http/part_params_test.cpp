@@ -15,7 +15,8 @@ namespace {
 class PartParams : public SharedServerTest<PartParams> {};
 
 TEST_F(PartParams, WordsResolvedDefaultsFilledInNormalForms) {
-  auto stored = server->post("/parts", json{{"kind", "part"}, {"name", "bent-from-words"}, {"text", "a slightly bent cylinder"}});
+  auto stored =
+      server->post("/parts", json{{"kind", "part"}, {"name", "bent-from-words"}, {"text", "a slightly bent cylinder"}});
   ASSERT_EQ(stored.status, 201) << stored.body;
   const std::string id = std::to_string(stored.json["id"].get<int64_t>());
   auto r = server->get("/parts/" + id + "/params");
@@ -23,7 +24,8 @@ TEST_F(PartParams, WordsResolvedDefaultsFilledInNormalForms) {
   EXPECT_EQ(r.json["id"], stored.json["id"]);
   EXPECT_EQ(r.json["version"], 1);
   const json& params = r.json["params"];
-  for (const char* name : {"eps1", "eps2", "a1", "a2", "a3", "kx", "ky", "kv", "t"}) EXPECT_TRUE(params.contains(name)) << name;
+  for (const char* name : {"eps1", "eps2", "a1", "a2", "a3", "kx", "ky", "kv", "t"})
+    EXPECT_TRUE(params.contains(name)) << name;
   // "slightly bent" is a fuzzy curvature; the untouched taper keeps its crisp default.
   EXPECT_TRUE(params["kv"].is_object()) << params;
   EXPECT_EQ(params["kx"], 0);
