@@ -182,8 +182,10 @@ async function designTools(page, url, out, conflict) {
   const other = await fetch(`${url}/parts/${id}`, { method: 'PUT', headers: { 'If-Match': '"2"', 'Content-Type': 'application/json' },
     body: JSON.stringify({ kind: 'part', text: 'a very bent cylinder' }) });
   if (other.status !== 200) throw new Error(`the other client's save: ${other.status} ${await other.text()}`);
-  await page.locator('[data-action="edit-value"][data-value="params.a3"][data-field="core"]').fill('3');
-  await page.waitForFunction(() => document.querySelector('#canvas').dataset.preview === 'fine:1');
+  // This edit makes the crisp size fuzzy: core ± spread, the spread typed.
+  await page.selectOption('[data-action="edit-value"][data-value="params.a1"][data-field="form"]', 'about');
+  await page.fill('[data-action="edit-value"][data-value="params.a1"][data-field="spread"]', '0.2');
+  await page.waitForFunction(() => document.querySelector('#canvas').dataset.preview === 'fine:2');
   conflict.expectConflict(true);
   await step('save after someone else: 412 reported', async () => {
     await page.click('[data-action="save-version"]');
