@@ -108,7 +108,14 @@ async function designTools(page, url, out, conflict) {
   if (kvForm !== 'trap') throw new Error(`kv's form: ${kvForm}`);
   const before = await picture('studio-edit-before');
 
-  // Drag the bend: the view shows a coarse preview, then the full mesh, of the unsaved part.
+  // Drag the bend: the view shows a coarse preview, then the full mesh, of the unsaved part, with
+  // "computing…" over the last picture while a request is out.
+  await page.evaluate(() => {
+    const box = document.querySelector('#canvas-box');
+    window.busySeen = false;
+    new MutationObserver(() => { window.busySeen = window.busySeen || box.classList.contains('busy'); })
+      .observe(box, { attributes: true, attributeFilter: ['class'] });
+  });
   await step('edit a value: coarse preview', async () => {
     await page.locator('[data-action="edit-value"][data-value="params.kv"][data-field="core"]').fill('0.6');
     await page.waitForFunction(() => /^(coarse|fine):1$/.test(document.querySelector('#canvas').dataset.preview || ''));
@@ -116,6 +123,10 @@ async function designTools(page, url, out, conflict) {
   await step('edit a value: full mesh', async () => {
     await page.waitForFunction(() => document.querySelector('#canvas').dataset.preview === 'fine:1');
   });
+  if (!(await page.evaluate(() => window.busySeen))) throw new Error('no "computing…" while the preview was asked');
+  if (await page.$eval('#canvas-box', (b) => b.classList.contains('busy'))) throw new Error('"computing…" stays after the answer');
+  const afterEdit = await text('#view-status');
+  if (afterEdit !== 'edited, not saved: α = 0.50') throw new Error(`view status after the edit: ${afterEdit}`);
   const log = await page.$eval('#canvas', (c) => c.dataset.previewLog);
   if (!log.startsWith('coarse:1')) throw new Error(`no coarse preview before the full mesh: ${log}`);
   const kvCore = await page.$$eval('[data-action="edit-value"][data-value="params.kv"]:not([data-field="form"]):not([data-field="core"])',
