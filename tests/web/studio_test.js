@@ -193,10 +193,23 @@ async function designTools(page, url, out, conflict) {
   const other = await fetch(`${url}/parts/${id}`, { method: 'PUT', headers: { 'If-Match': '"2"', 'Content-Type': 'application/json' },
     body: JSON.stringify({ kind: 'part', text: 'a very bent cylinder' }) });
   if (other.status !== 200) throw new Error(`the other client's save: ${other.status} ${await other.text()}`);
+  // A trapezoid typed out of order is not sent: the editor says why and will not save it; put
+  // back, it is previewed again.
+  const kvA = '[data-action="edit-value"][data-value="params.kv"][data-field="a"]';
+  const kvAWas = await page.$eval(kvA, (box) => box.value);
+  const meshesBefore = await page.evaluate(() => performance.getEntriesByType('resource').filter((e) => e.name.endsWith('/mesh')).length);
+  await page.fill(kvA, '0.9');
+  await page.waitForFunction(() => document.querySelector('#editor-status').textContent === 'kv (bend) needs points in increasing order');
+  if (!(await page.$eval('[data-action="save-version"]', (b) => b.disabled))) throw new Error('a disordered value can be saved');
+  await page.waitForTimeout(800);  // past the full mesh's pause: still nothing asked
+  const meshesAfter = await page.evaluate(() => performance.getEntriesByType('resource').filter((e) => e.name.endsWith('/mesh')).length);
+  if (meshesAfter !== meshesBefore) throw new Error('a disordered value was sent');
+  await page.fill(kvA, kvAWas);
+  await page.waitForFunction(() => document.querySelector('#canvas').dataset.preview === 'fine:2');
   // This edit makes the crisp size fuzzy: core ± spread, the spread typed.
   await page.selectOption('[data-action="edit-value"][data-value="params.a1"][data-field="form"]', 'about');
   await page.fill('[data-action="edit-value"][data-value="params.a1"][data-field="spread"]', '0.2');
-  await page.waitForFunction(() => document.querySelector('#canvas').dataset.preview === 'fine:2');
+  await page.waitForFunction(() => document.querySelector('#canvas').dataset.preview === 'fine:4');
   conflict.expectConflict(true);
   await step('save after someone else: 412 reported', async () => {
     await page.click('[data-action="save-version"]');

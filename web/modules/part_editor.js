@@ -133,7 +133,7 @@ export function setupEditor(view) {
   let part = null;     // {id, version (the one edited), latest (for If-Match), document, values}
   let edits = 0;       // edits since the load; a preview of an older edit is not shown
   let loads = 0;       // loads so far; nor is one of an edit before the last load
-  let wanted = null;   // the next preview to ask for: {edit, resolution}
+  let wanted = null;   // the next preview to ask for: {edit, load, resolution}
   let inFlight = false;
   let fineTimer = null;
 
@@ -171,7 +171,11 @@ export function setupEditor(view) {
         editorStatus(`${edits} edit${edits === 1 ? '' : 's'}, not saved`);
       }
     } catch (e) {
-      if (job.edit === edits && job.load === loads) editorStatus(e.message, true);
+      // A value the server refuses (out of its range): said in the editor, the last picture kept.
+      if (job.edit === edits && job.load === loads) {
+        editorStatus(e.message, true);
+        view.status('no preview of this edit: the server refused it (see the values)');
+      }
     } finally {
       inFlight = false;
       view.busy(wanted !== null);
@@ -186,8 +190,8 @@ export function setupEditor(view) {
 
   function edited() {
     edits += 1;
-    $('save-version').disabled = false;
     const bad = PART_VALUES.map(([path, label]) => [label, disorder(fromJson(valueAt(part.values, path)))]).find(([, why]) => why);
+    $('save-version').disabled = Boolean(bad);
     clearTimeout(fineTimer);
     if (bad) {
       editorStatus(`${bad[0]} needs ${bad[1]}`, true);
