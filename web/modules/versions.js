@@ -9,7 +9,8 @@ import { PART_VALUES, fuzzyText, valueAt } from './part_editor.js';
 
 const $ = (id) => document.getElementById(id);
 
-// At most this many versions are listed (the newest); older ones open by their number.
+// At most this many versions are listed, the newest (each is one GET); the list says how many
+// older ones it leaves out.
 const LISTED_VERSIONS = 20;
 
 // Both versions' meshes in one group: each version's lower(α) and upper(α) in its colour, upper
@@ -81,6 +82,13 @@ export function setupVersions(view, editor) {
         td.append(cell);
         tr.append(td);
       }
+      list.append(tr);
+    }
+    const older = newest - numbers.length;
+    if (older > 0) {
+      const tr = document.createElement('tr');
+      tr.append(Object.assign(document.createElement('td'), { colSpan: 4, className: 'muted',
+        textContent: `and ${older} older version${older === 1 ? '' : 's'}, not listed` }));
       list.append(tr);
     }
     $('versions').hidden = false;
