@@ -3,35 +3,19 @@
 // the fuzzy volume over α, the CSG tree with each part's parameters, membership at a clicked
 // point, browsing and search with paging, parts from words, a JSON Lines import with progress and
 // every failed line, downloads (GLB, OBJ, STL at α; .vdb), addresses of objects (#/shapes/ID) and
-// a bearer token for servers run with --token.
+// a bearer token for servers run with --token; and the design tools of web/part_editor.js (edit a
+// part's fuzzy values with a live preview, save a version), web/versions.js (history, compare)
+// and web/members.js (the family's crisp members).
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
+import { api, apiBytes, authHeaders } from './modules/api.js';
+import { fitCamera, litScene } from './modules/scene.js';
+import { fuzzyText, setupEditor } from './modules/part_editor.js';
+import { setupVersions } from './modules/versions.js';
+import { setupMembers } from './modules/members.js';
 
 const $ = (id) => document.getElementById(id);
-
-// The bearer token of a server run with --token: typed once, kept for this tab only
-// (sessionStorage), sent with every request.
-function authHeaders() {
-  const token = sessionStorage.getItem('fsdb-token');
-  return token ? { Authorization: `Bearer ${token}` } : {};
-}
-
-async function api(path, options = {}) {
-  const response = await fetch(path, {
-    ...options,
-    headers: {
-      ...(options.body && typeof options.body === 'string' ? { 'Content-Type': 'application/json' } : {}),
-      ...authHeaders(),
-    },
-  });
-  const body = await response.json().catch(() => null);
-  if (!response.ok) {
-    const e = body && body.error;
-    throw new Error(e ? `${e.message}${e.path ? ` (${e.path})` : ''}` : `HTTP ${response.status}`);
-  }
-  return body;
-}
 
 function status(text, error = false) {
   $('status').textContent = text;
@@ -160,12 +144,7 @@ async function browse(kind, after = null, append = false) {
 // ---- the 3D view ----------------------------------------------------------------------------
 const renderer = new THREE.WebGLRenderer({ canvas: $('canvas'), antialias: true, preserveDrawingBuffer: true });
 renderer.setPixelRatio(window.devicePixelRatio);
-const scene = new THREE.Scene();
-scene.background = new THREE.Color(0xffffff);
-scene.add(new THREE.HemisphereLight(0xffffff, 0x8090a0, 1.6));
-const sun = new THREE.DirectionalLight(0xffffff, 1.8);
-sun.position.set(-2, 5, 3);
-scene.add(sun);
+const scene = litScene();
 const camera = new THREE.PerspectiveCamera(40, 1, 0.01, 1000);
 const controls = new OrbitControls(camera, renderer.domElement);
 const materials = {
@@ -197,31 +176,35 @@ window.addEventListener('resize', resize);
 // view blank; #view-status says what is on screen. A newer request (another α or object) makes
 // older answers stale: they are dropped, not shown.
 let meshRequest = 0;
-async function fetchScene(kind, id, alpha, resolution) {
-  const response = await fetch(`/${kind}s/${id}/mesh?format=glb&alpha=${alpha}&resolution=${resolution}`);
-  if (!response.ok) throw new Error((await response.json()).error.message);
-  return (await new GLTFLoader().parseAsync(await response.arrayBuffer(), '')).scene;
+async function sceneFromGlb(bytes) {
+  return (await new GLTFLoader().parseAsync(bytes, '')).scene;
 }
 
-function showModel(next) {
+async function fetchScene(kind, id, alpha, resolution) {
+  return sceneFromGlb(await apiBytes(`/${kind}s/${id}/mesh?format=glb&alpha=${alpha}&resolution=${resolution}`));
+}
+
+// The mesh of a document that need not be stored (an edited part, an older version, a member):
+// POST /mesh answers the bytes GET /{kind}s/{id}/mesh gives for a stored one.
+async function fetchDocumentScene(doc, alpha, resolution) {
+  const body = JSON.stringify({ shape: doc, alpha, resolution, format: 'glb' });
+  return sceneFromGlb(await apiBytes('/mesh', { method: 'POST', body }));
+}
+
+// Puts `next` in the view in place of the model shown. Meshes named lower and upper (the GLB's)
+// take the view's materials unless `keepMaterials` (a comparison tints its own).
+function showModel(next, keepMaterials = false) {
   if (model) scene.remove(model);
   model = next;
   model.traverse((o) => {
-    if (o.isMesh) {
+    if (o.isMesh && !keepMaterials) {
       o.material = materials[o.name] || materials.lower;
       o.renderOrder = o.name === 'upper' ? 1 : 0;
     }
   });
   scene.add(model);
   if (!fitted) {
-    const box = new THREE.Box3().setFromObject(model);
-    const centre = box.getCenter(new THREE.Vector3());
-    const radius = box.getSize(new THREE.Vector3()).length() / 2 || 1;
-    controls.target.copy(centre);
-    camera.position.copy(centre).add(new THREE.Vector3(1, 0.9, 1.6).normalize().multiplyScalar(radius * 3));
-    camera.near = radius / 100;
-    camera.far = radius * 100;
-    camera.updateProjectionMatrix();
+    controls.target.copy(fitCamera(camera, model));
     controls.update();
     fitted = true;
   }
@@ -261,11 +244,16 @@ async function loadMesh() {
   $('canvas').dataset.shown = `${kind}/${id}@${alpha}`;  // for the page test: what the view shows
 }
 
+// What the view shows decides what a new α redraws: the stored object (loadMesh), or what a
+// design tool put there (an edited part, a comparison, a member), which sets `redraw` through
+// view.own and gives it back when the object is opened again.
+let redraw = loadMesh;
+
 let alphaTimer = null;
 $('alpha').addEventListener('input', () => {
   $('alpha-value').textContent = Number($('alpha').value).toFixed(2);
   clearTimeout(alphaTimer);
-  alphaTimer = setTimeout(() => loadMesh().catch((e) => status(e.message, true)), 120);
+  alphaTimer = setTimeout(() => redraw().catch((e) => status(e.message, true)), 120);
 });
 
 $('canvas').addEventListener('click', async (event) => {
@@ -308,14 +296,6 @@ async function chart() {
     <path d="${line('lower_volume')}" fill="none" stroke="#4673cd" stroke-width="2"/>
     <text x="200" y="34" font-size="10" fill="#eb8232">vol upper(α)</text>
     <text x="200" y="48" font-size="10" fill="#4673cd">vol lower(α)</text>`;
-}
-
-function fuzzyText(v) {
-  if (typeof v !== 'object' || v === null) return String(v);
-  if (v.tri) return `tri(${v.tri.join(', ')})`;
-  if (v.trap) return `trap(${v.trap.join(', ')})`;
-  if (v.about !== undefined) return `about ${v.about}`;
-  return JSON.stringify(v);
 }
 
 function treeNode(node) {
@@ -366,7 +346,10 @@ async function open(kind, id, li) {
   if (li) li.classList.add('selected');
   try {
     const stored = await api(`/${kind}s/${id}`);
-    current = { kind, id, name: stored.name, document: stored.document };
+    current = { kind, id, name: stored.name, document: stored.document, version: stored.version };
+    redraw = loadMesh;
+    // The design tools load what they need of the object while the view draws it.
+    const toolsReady = Promise.all(tools.map((tool) => tool.opened(current)));
     // The object's address (/#/parts/ID, /#/shapes/ID): a reload or a shared link opens it again.
     if (location.hash !== `#/${kind}s/${id}`) history.replaceState(null, '', `${location.pathname}${location.search}#/${kind}s/${id}`);
     $('view').hidden = false;
@@ -376,6 +359,7 @@ async function open(kind, id, li) {
     await loadMesh();
     tree();
     await chart();
+    await toolsReady;
   } catch (e) {
     status(e.message, true);
   }
@@ -441,6 +425,30 @@ $('token').addEventListener('input', () => {
   else sessionStorage.removeItem('fsdb-token');
 });
 $('token-form').addEventListener('submit', (event) => event.preventDefault());
+
+// ---- design tools ---------------------------------------------------------------------------
+// What the tools may do with the view. A tool that draws there owns `redraw` (a new α asks it).
+const view = {
+  alpha: () => Number($('alpha').value),
+  current: () => current,
+  fetchDocumentScene,
+  showModel,
+  render,
+  // A stored object opened again (after a save, or a reload on a conflict).
+  reopen: () => open(current.kind, current.id, null),
+  own(redrawFn) {
+    redraw = redrawFn;
+  },
+  status(text) {
+    $('view-status').textContent = text;
+  },
+  // "computing…" over the view while a request is in flight: the last picture stays under it.
+  busy(on) {
+    $('canvas-box').classList.toggle('busy', on);
+  },
+};
+const editor = setupEditor(view);
+const tools = [editor, setupVersions(view, editor), setupMembers(view)];
 
 // An object in the address (#/parts/ID, #/shapes/ID) opens in the view.
 function openFromAddress() {

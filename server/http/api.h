@@ -22,7 +22,8 @@ void registerOperatorRoutes(HttpServer& server);
 void registerVocabularyRoutes(HttpServer& server);
 
 // POST /evaluate (references in inline documents resolve against the store), and the stored-shape
-// forms: POST /shapes/{id}/evaluate (cached), GET /shapes/{id}/membership, /mesh, /grid.vdb
+// forms: POST /shapes/{id}/evaluate (cached), GET /shapes/{id}/membership, /mesh, /grid.vdb, and
+// POST /mesh (the mesh of an inline document)
 // Grids and meshes reserve their memory from `memory` (when --max-memory-mb is not 0).
 void registerEvaluationRoutes(HttpServer& server, Store& store, MemoryBudget* memory);
 

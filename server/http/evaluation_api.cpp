@@ -2,8 +2,11 @@
 //   POST /shapes/{id}/evaluate        the same answer for a stored shape, cached by content
 //   GET  /shapes/{id}/membership      the levels of one point (and /parts/{id}/membership)
 //   GET  /shapes/{id}/members         the family's crisp members with their degrees (and /parts/{id}/members)
+//   GET  /parts/{id}/params           a part's fourteen fuzzy values, its words resolved
 //   GET  /shapes/{id}/mesh            OBJ or binary STL of lower/upper(α), or GLB of both, cached
 //   GET  /shapes/{id}/grid.vdb        both grids as a .vdb file, cached
+//   POST /mesh                        the same mesh files of an inline document (the studio's
+//                                     preview of an edited, unsaved part), single-flighted
 // Cache keys hash the shape's document, the documents of everything it references (so any
 // change below a shape changes its keys; the store also drops the rows on every write), and
 // the request's resolution, alphas and method.
@@ -15,6 +18,7 @@
 #include "db/store.h"
 #include "geometry/core/error.h"
 #include "geometry/voxel/envelope_mesh.h"
+#include "query/document/part_json.h"
 #include "query/json/json_body.h"
 #include "server/http/api.h"
 #include "server/http/http_server.h"
@@ -61,17 +65,26 @@ struct StoredShape {
   std::string fingerprint;
 };
 
-StoredShape loadShape(const Store& store, int64_t id, size_t maxNodes, const std::string& kind = "shape") {
-  StoredShape s{store.get(kind, id), {}, ""};
-  std::string parts = s.object.documentJson;
+// `document` parsed at `path` (its references resolved against the store), and the fingerprint
+// of its text `documentText` with every object it references.
+ParsedShape parseFingerprinted(const Store& store, const nlohmann::json& document, const std::string& documentText,
+                               const std::string& path, size_t maxNodes, std::string* fingerprint) {
+  std::string parts = documentText;
   const ReferenceResolver base = storeResolver(store);
   const ReferenceResolver recording = [&](const std::string& kind, const nlohmann::json& key) {
     auto r = base(kind, key);
     if (r) parts += "\n" + kind + ":" + std::to_string(r->id) + ":" + r->document.dump();
     return r;
   };
-  s.parsed = parseShapeField(nlohmann::json::parse(s.object.documentJson), "", maxNodes, recording);
-  s.fingerprint = contentHash(parts);
+  ParsedShape parsed = parseShapeField(document, path, maxNodes, recording);
+  *fingerprint = contentHash(parts);
+  return parsed;
+}
+
+StoredShape loadShape(const Store& store, int64_t id, size_t maxNodes, const std::string& kind = "shape") {
+  StoredShape s{store.get(kind, id), {}, ""};
+  s.parsed = parseFingerprinted(store, nlohmann::json::parse(s.object.documentJson), s.object.documentJson, "",
+                                maxNodes, &s.fingerprint);
   return s;
 }
 
@@ -79,8 +92,8 @@ std::string cacheKey(const std::string& what, const StoredShape& shape, const st
   return what + ":" + contentHash(shape.fingerprint + "\n" + request);
 }
 
-int exportResolution(const ApiRequest& req, int maxResolution) {
-  const double r = numberParam(req, "resolution", kDefaultExportResolution);
+// The resolution of an export: an integer of at least 2 (422), at most --max-resolution (413).
+int exportResolution(double r, int maxResolution) {
   if (r != std::floor(r) || r < 2)
     throw Error(errc::kInvalidParameter, "resolution must be an integer of at least 2", "resolution");
   if (r > maxResolution)
@@ -97,6 +110,59 @@ int exportResolution(const ApiRequest& req, int maxResolution) {
 SingleFlight<std::string>& exportFlights() {
   static SingleFlight<std::string> flights;
   return flights;
+}
+
+// What a mesh request asks for (GET /{kind}s/{id}/mesh's query, POST /mesh's body), checked.
+struct MeshRequest {
+  double alpha = 0.5;
+  std::string bound = "upper";  // lower | upper; not used by glb (both)
+  std::string format = "obj";   // obj | stl | glb
+  int resolution = kDefaultExportResolution;
+
+  void check() const {
+    if (alpha < 0.0 || alpha > 1.0) throw Error(errc::kInvalidParameter, "alpha lies in [0, 1]", "alpha");
+    if (bound != "lower" && bound != "upper")
+      throw Error(errc::kInvalidParameter, "bound must be lower or upper, got \"" + bound + "\"", "bound");
+    if (format != "obj" && format != "stl" && format != "glb")
+      throw Error(errc::kInvalidParameter, "format must be obj, stl or glb, got \"" + format + "\"", "format");
+  }
+  bool glb() const { return format == "glb"; }  // both bounds in one file: `bound` does not apply
+  std::string contentType() const { return glb() ? "model/gltf-binary" : format == "obj" ? "model/obj" : "model/stl"; }
+  std::string filename(const std::string& name) const {
+    return name + "-" + (glb() ? std::string() : bound + "-") + std::to_string(alpha) + "." + format;
+  }
+  // The part of a cache key that names the file (with the shape's fingerprint).
+  std::string key() const {
+    return nlohmann::json{{"alpha", alpha},
+                          {"bound", glb() ? "both" : bound},
+                          {"format", format},
+                          {"resolution", resolution},
+                          {"surface", "smooth"}}
+        .dump();
+  }
+};
+
+// The mesh file of a parsed shape: its grid at the request's resolution (a build shared with
+// every request for the same fingerprint at that resolution) and the smooth meshes, the grid and
+// its meshes together held to --max-eval-ms (the mesh was not: a GLB at 512 took 163 s under a
+// 60 s limit). `triangles` receives the count of all meshes in the file.
+std::string meshFile(const ParsedShape& shape, const std::string& fingerprint, const MeshRequest& request,
+                     const EvaluationLimits& limits, size_t* triangles) {
+  const auto started = std::chrono::steady_clock::now();
+  const double alpha = request.alpha;
+  const Evaluation e =
+      evaluateParsedShape({{"resolution", request.resolution}, {"alphas", {alpha}}}, shape, limits, fingerprint);
+  *triangles = 0;
+  if (request.glb()) {
+    std::vector<NamedMesh> both = {{"lower", evaluationMesh(e, alpha, EnvelopeBound::kLower, limits, started)},
+                                   {"upper", evaluationMesh(e, alpha, EnvelopeBound::kUpper, limits, started)}};
+    for (const NamedMesh& m : both) *triangles += m.second.triangles.size();
+    return toGlb(both);
+  }
+  const TriangleMesh mesh = evaluationMesh(
+      e, alpha, request.bound == "lower" ? EnvelopeBound::kLower : EnvelopeBound::kUpper, limits, started);
+  *triangles = mesh.triangles.size();
+  return request.format == "obj" ? toObj(mesh) : toBinaryStl(mesh);
 }
 
 ApiResponse bytesResponse(std::string bytes, const std::string& contentType, const std::string& filename, bool cached,
@@ -190,55 +256,71 @@ void registerEvaluationRoutes(HttpServer& server, Store& store, MemoryBudget* me
     });
   }
 
+  // A part's fourteen fuzzy values as the server reads them: its words resolved, the defaults
+  // filled in, every value in its normal form (a number, tri, trap or points). A part made from
+  // words stores only its text, so this is what an editor of its values starts from.
+  server.addRoute("GET", "/parts/{id}/params", [&store](const ApiRequest& req) {
+    const StoredObject object = store.get("part", shapeId(req), versionParam(req));
+    nlohmann::json answer = partToJson(parsePart(nlohmann::json::parse(object.documentJson), ""));
+    answer["id"] = object.id;
+    answer["version"] = object.version;
+    return ApiResponse{200, std::move(answer)};
+  });
+
   for (const std::string kind : {"shape", "part"}) {
     server.addRoute("GET", "/" + kind + "s/{id}/mesh", [limits, &store, kind](const ApiRequest& req) {
-      const double alpha = numberParam(req, "alpha", 0.5);
-      if (alpha < 0.0 || alpha > 1.0) throw Error(errc::kInvalidParameter, "alpha lies in [0, 1]", "alpha");
-      const std::string bound = req.hasQueryParam("bound") ? req.queryParam("bound") : "upper";
-      if (bound != "lower" && bound != "upper")
-        throw Error(errc::kInvalidParameter, "bound must be lower or upper, got \"" + bound + "\"", "bound");
-      const std::string format = req.hasQueryParam("format") ? req.queryParam("format") : "obj";
-      if (format != "obj" && format != "stl" && format != "glb")
-        throw Error(errc::kInvalidParameter, "format must be obj, stl or glb, got \"" + format + "\"", "format");
-      const bool glb = format == "glb";  // both bounds in one file: `bound` does not apply
-      const int resolution = exportResolution(req, limits.maxResolution);
+      MeshRequest request;
+      request.alpha = numberParam(req, "alpha", 0.5);
+      if (req.hasQueryParam("bound")) request.bound = req.queryParam("bound");
+      if (req.hasQueryParam("format")) request.format = req.queryParam("format");
+      request.check();
+      request.resolution =
+          exportResolution(numberParam(req, "resolution", kDefaultExportResolution), limits.maxResolution);
       const StoredShape shape = loadShape(store, shapeId(req), limits.maxNodes, kind);
-      const std::string filename =
-          shape.object.name + "-" + (glb ? std::string() : bound + "-") + std::to_string(alpha) + "." + format;
-      const std::string contentType = glb ? "model/gltf-binary" : format == "obj" ? "model/obj" : "model/stl";
-      const std::string key = cacheKey("mesh", shape,
-                                       nlohmann::json{{"alpha", alpha},
-                                                      {"bound", glb ? "both" : bound},
-                                                      {"format", format},
-                                                      {"resolution", resolution},
-                                                      {"surface", "smooth"}}
-                                           .dump());
-      if (auto hit = store.cachedEvaluation(key)) return bytesResponse(hit->vdb, contentType, filename, true);
+      const std::string filename = request.filename(shape.object.name);
+      const std::string key = cacheKey("mesh", shape, request.key());
+      if (auto hit = store.cachedEvaluation(key)) return bytesResponse(hit->vdb, request.contentType(), filename, true);
       std::string bytes = exportFlights().run(key, [&] {
-        // The grid and its meshes together are held to --max-eval-ms (the mesh was not: a GLB
-        // at 512 took 163 s under a 60 s limit).
-        const auto started = std::chrono::steady_clock::now();
-        const Evaluation e = evaluateParsedShape({{"resolution", resolution}, {"alphas", {alpha}}}, shape.parsed,
-                                                 limits, shape.fingerprint);
-        std::string made;
         size_t triangles = 0;
-        if (glb) {
-          std::vector<NamedMesh> both = {{"lower", evaluationMesh(e, alpha, EnvelopeBound::kLower, limits, started)},
-                                         {"upper", evaluationMesh(e, alpha, EnvelopeBound::kUpper, limits, started)}};
-          for (const NamedMesh& m : both) triangles += m.second.triangles.size();
-          made = toGlb(both);
-        } else {
-          const TriangleMesh mesh = evaluationMesh(
-              e, alpha, bound == "lower" ? EnvelopeBound::kLower : EnvelopeBound::kUpper, limits, started);
-          triangles = mesh.triangles.size();
-          made = format == "obj" ? toObj(mesh) : toBinaryStl(mesh);
-        }
+        std::string made = meshFile(shape.parsed, shape.fingerprint, request, limits, &triangles);
         store.storeEvaluation(shape.object.id, key, {nlohmann::json{{"triangles", triangles}}.dump(), made});
         return made;
       });
-      return bytesResponse(std::move(bytes), contentType, filename, false);
+      return bytesResponse(std::move(bytes), request.contentType(), filename, false);
     }, heavy);
   }
+
+  // The mesh of an inline document (the studio's live preview of an edited part, and meshes of
+  // older versions and of family members): the same files and limits as the stored form. It is
+  // not kept in the evaluation cache, whose rows belong to a stored object and go with its
+  // writes; an inline document has no such owner. Requests for the same content at the same
+  // moment still make it once (the export flights, keyed by the document and what it
+  // references, and the grid build shared with a stored object of the same fingerprint).
+  server.addRoute("POST", "/mesh", [limits, &store](const ApiRequest& req) {
+    const nlohmann::json& body = req.body;
+    requireObject(body, "");
+    rejectUnknownKeys(body, "", {"shape", "alpha", "bound", "format", "resolution"});
+    MeshRequest request;
+    request.alpha = optionalNumberIn(body, "", "alpha", 0.5, 0.0, 1.0);
+    if (body.contains("bound")) request.bound = requireString(body["bound"], "bound");
+    if (body.contains("format")) request.format = requireString(body["format"], "format");
+    request.check();
+    if (body.contains("resolution"))
+      request.resolution = exportResolution(requireNumber(body["resolution"], "resolution"), limits.maxResolution);
+    const nlohmann::json& document = requireField(body, "shape", "");
+    std::string fingerprint;
+    const ParsedShape parsed =
+        parseFingerprinted(store, document, document.dump(), "shape", limits.maxNodes, &fingerprint);
+    const std::string name = document.is_object() && document.contains("name") && document["name"].is_string()
+                                 ? document["name"].get<std::string>()
+                                 : std::string("mesh");
+    const std::string key = "inline-mesh:" + contentHash(fingerprint + "\n" + request.key());
+    std::string bytes = exportFlights().run(key, [&] {
+      size_t triangles = 0;
+      return meshFile(parsed, fingerprint, request, limits, &triangles);
+    });
+    return bytesResponse(std::move(bytes), request.contentType(), request.filename(name), false);
+  }, heavy);
 
   // Thumbnails of stored shapes and parts: lower(α) solid and upper(α) translucent
   // (server/service/thumbnail.h), from smooth meshes at 48 voxels across, cached by content.
@@ -268,7 +350,8 @@ void registerEvaluationRoutes(HttpServer& server, Store& store, MemoryBudget* me
   }
 
   server.addRoute("GET", "/shapes/{id}/grid.vdb", [limits, &store](const ApiRequest& req) {
-    const int resolution = exportResolution(req, limits.maxResolution);
+    const int resolution =
+        exportResolution(numberParam(req, "resolution", kDefaultExportResolution), limits.maxResolution);
     const StoredShape shape = loadShape(store, shapeId(req), limits.maxNodes);
     const std::string filename = shape.object.name + ".vdb";
     const std::string key = cacheKey("vdb", shape, std::to_string(resolution));

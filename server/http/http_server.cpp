@@ -25,7 +25,9 @@ namespace fsdb {
 namespace {
 
 // The studio page's paths (served by GET when --web names a folder).
-const char* const kStudioPaths = R"(/|/index\.html|/studio\.(js|css)|/vendor/[A-Za-z0-9_.-]+(/[A-Za-z0-9_.-]+)*)";
+// The page's own modules are /modules/NAME.js (web/modules), so a new one needs no change here.
+const char* const kStudioPaths =
+    R"(/|/index\.html|/studio\.(js|css)|/modules/[A-Za-z0-9_-]+\.js|/vendor/[A-Za-z0-9_.-]+(/[A-Za-z0-9_.-]+)*)";
 
 // kStudioPaths compiled once, for the 405 lookup and the metrics' "page" series.
 bool isStudioPath(const std::string& path) {
@@ -385,8 +387,8 @@ void HttpServer::installHandlers() {
     });
   }
 
-  // The studio page: its own paths only (/, the page's files, /vendor/...), so no API path is
-  // shadowed. Not cpp-httplib's mount point: that compresses JavaScript with brotli at its
+  // The studio page: its own paths only (/, the page's files, /modules/..., /vendor/...), so no
+  // API path is shadowed. Not cpp-httplib's mount point: that compresses JavaScript with brotli at its
   // highest quality on every request (seconds for three.js); here scripts go out gzipped once
   // (as application/x-javascript, a JavaScript type httplib leaves alone) and the small text
   // files as httplib encodes them.

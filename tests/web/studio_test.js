@@ -6,7 +6,14 @@
 // searches "a very bent cylinder", waits for ranked thumbnails,
 // opens the first result, moves the α slider, and takes screenshots that must not be blank and
 // must change with α; then checks the object's address (a reload opens it again), the download
-// links (GLB and STL fetched), and "More" on a search. Any console error or failed request fails the test.
+// links (GLB and STL fetched), and "More" on a search. Then the design tools, as a user would use
+// them: a part from words; one fuzzy value dragged in the editor, the view following (a coarse
+// preview, then the full mesh); the edit saved as version 2; versions 1 and 2 compared (the
+// differing value marked, both envelopes in the view); the family's members, one clicked into
+// the view; and a save after someone else stored a version (a 412 the page reports, with a
+// reload). Each step's time is logged; each step's picture must not be blank.
+// Any console error or failed request fails the test, but for the one deliberate 412 (the
+// browser's own log line of it included).
 // Usage: node studio_test.js FSDB_BINARY SOURCE_DIR WEB_DIR OUT_DIR   (NODE_PATH: web-deps/node_modules)
 'use strict';
 const { spawn } = require('child_process');
@@ -51,6 +58,176 @@ async function inkShare(page, png) {
   }, png.toString('base64'));
 }
 
+// The design tools of issue 35, step by step as a user would take them, each timed.
+async function designTools(page, url, out, conflict) {
+  const times = [];
+  const step = async (name, body) => {
+    const started = Date.now();
+    const result = await body();
+    times.push(`${name} ${Date.now() - started} ms`);
+    return result;
+  };
+  const inks = [];
+  // A picture of the view (or of `selector`) that must not be blank.
+  const picture = async (name, selector = '#canvas-box') => {
+    await page.waitForTimeout(300);
+    const png = await page.locator(selector).screenshot({ path: path.join(out, `${name}.png`) });
+    const ink = await inkShare(page, png);
+    inks.push(`${name} ${ink.toFixed(4)}`);
+    if (ink < 0.01) throw new Error(`the picture ${name} is blank`);
+    return png;
+  };
+  const text = (selector) => page.$eval(selector, (e) => e.textContent);
+  // A picture of the page from the top of `from` to the bottom of `to`, as wide as the view (for
+  // docs/images: the view with the tool under it).
+  const region = async (name, from, to) => {
+    const [a, b, view] = await Promise.all([from, to, '#view'].map((sel) => page.$eval(sel, (e) => {
+      const r = e.getBoundingClientRect();
+      return { x: r.x + window.scrollX, y: r.y + window.scrollY, width: r.width, height: r.height };
+    })));
+    await page.screenshot({ path: path.join(out, `${name}.png`), fullPage: true,
+      clip: { x: view.x, y: a.y, width: view.width, height: b.y + b.height - a.y } });
+  };
+
+  // A part from words, made by the form in "Create and import"; the view and the editor open it.
+  const id = await step('part from words', async () => {
+    await page.click('#tools summary');
+    await page.fill('#words', 'a slightly bent cylinder');
+    await page.press('#words', 'Enter');
+    await page.waitForFunction(() => {
+      const made = /^part .* \(#(\d+), version 1\)$/.exec(document.querySelector('#title').textContent);
+      return made && (document.querySelector('#canvas').dataset.shown || '').startsWith(`part/${made[1]}@`);
+    });
+    return Number(/#(\d+)/.exec(await text('#title'))[1]);
+  });
+  await page.waitForSelector('#editor:not([hidden]) [data-action="edit-value"][data-value="params.kv"][data-field="core"]');
+  const rows = await page.$$eval('#editor-values tr', (trs) => trs.map((tr) => tr.dataset.value));
+  if (rows.length !== 14) throw new Error(`the editor shows ${rows.length} values: ${rows}`);
+  // The words' fuzzy bend, resolved by the server, is in the editor as a trapezoid.
+  const kvForm = await page.$eval('[data-action="edit-value"][data-value="params.kv"][data-field="form"]', (s) => s.value);
+  if (kvForm !== 'trap') throw new Error(`kv's form: ${kvForm}`);
+  const before = await picture('studio-edit-before');
+
+  // Drag the bend: the view shows a coarse preview, then the full mesh, of the unsaved part, with
+  // "computing…" over the last picture while a request is out.
+  await page.evaluate(() => {
+    const box = document.querySelector('#canvas-box');
+    window.busySeen = false;
+    new MutationObserver(() => { window.busySeen = window.busySeen || box.classList.contains('busy'); })
+      .observe(box, { attributes: true, attributeFilter: ['class'] });
+  });
+  await step('edit a value: coarse preview', async () => {
+    await page.locator('[data-action="edit-value"][data-value="params.kv"][data-field="core"]').fill('0.6');
+    await page.waitForFunction(() => /^(coarse|fine):1$/.test(document.querySelector('#canvas').dataset.preview || ''));
+  });
+  await step('edit a value: full mesh', async () => {
+    await page.waitForFunction(() => document.querySelector('#canvas').dataset.preview === 'fine:1');
+  });
+  if (!(await page.evaluate(() => window.busySeen))) throw new Error('no "computing…" while the preview was asked');
+  if (await page.$eval('#canvas-box', (b) => b.classList.contains('busy'))) throw new Error('"computing…" stays after the answer');
+  const afterEdit = await text('#view-status');
+  if (afterEdit !== 'edited, not saved: α = 0.50') throw new Error(`view status after the edit: ${afterEdit}`);
+  const log = await page.$eval('#canvas', (c) => c.dataset.previewLog);
+  if (!log.startsWith('coarse:1')) throw new Error(`no coarse preview before the full mesh: ${log}`);
+  const kvCore = await page.$$eval('[data-action="edit-value"][data-value="params.kv"]:not([data-field="form"]):not([data-field="core"])',
+    (boxes) => boxes.map((b) => Number(b.value)));
+  if (Math.abs((kvCore[1] + kvCore[2]) / 2 - 0.6) > 1e-9) throw new Error(`kv after the drag: ${kvCore}`);
+  const edited = await picture('studio-edit');
+  if (edited.equals(before)) throw new Error('the view does not follow the edit');
+  await region('studio-editor', '#canvas-box', '#editor');
+
+  // Save: version 2, stored with If-Match.
+  await step('save version 2', async () => {
+    await page.click('[data-action="save-version"]');
+    await page.waitForFunction((want) => document.querySelector('#title').textContent.endsWith(want), `(#${id}, version 2)`);
+    await page.waitForFunction(() => document.querySelector('#editor-status').textContent === 'saved as version 2');
+  });
+  const stored = await (await fetch(`${url}/parts/${id}/params`)).json();
+  if (stored.version !== 2 || Math.abs((stored.params.kv.trap[1] + stored.params.kv.trap[2]) / 2 - 0.6) > 1e-9)
+    throw new Error(`version 2 as stored: ${JSON.stringify(stored)}`);
+
+  // History, and versions 1 and 2 compared: the bend is the one value marked, both in the view.
+  await step('history', async () => {
+    await page.click('[data-action="history"]');
+    await page.waitForFunction(() => document.querySelectorAll('#version-list tr').length === 2);
+  });
+  // Version 1 opens in the view and in the editor.
+  await step('open version 1', async () => {
+    await page.click('#version-list tr[data-version="1"] [data-action="open-version"]');
+    await page.waitForFunction(() => (document.querySelector('#canvas').dataset.shown || '').startsWith('version:1@') &&
+      document.querySelector('#editor-status').textContent.startsWith('version 1 (of 2)'));
+  });
+  await picture('studio-version-1');
+  await step('compare versions 1 and 2', async () => {
+    await page.check('input[name="compare-a"][value="1"]');
+    await page.check('input[name="compare-b"][value="2"]');
+    await page.click('[data-action="compare"]');
+    await page.waitForFunction(() => (document.querySelector('#canvas').dataset.shown || '').startsWith('compare:1,2@'));
+  });
+  const differing = await page.$$eval('#compare-values tr.differs', (trs) => trs.map((tr) => tr.firstChild.textContent));
+  if (differing.length !== 1 || !differing[0].startsWith('kv')) throw new Error(`compared values that differ: ${differing}`);
+  const compared = await picture('studio-compare');
+  if (compared.equals(edited)) throw new Error('the comparison shows the same picture as one version');
+  await region('studio-versions', '#canvas-box', '#versions');
+
+  // The family's members, from the core outward; one clicked into the view.
+  const degrees = await step('members gallery', async () => {
+    await page.click('[data-action="members"]');
+    await page.waitForFunction(() => document.querySelectorAll('#members > li').length === 9 &&
+      [...document.querySelectorAll('#members > li')].every((li) => li.dataset.drawn === 'true'), null, { timeout: 60000 });
+    return page.$$eval('#members > li', (lis) => lis.map((li) => Number(li.dataset.membership)));
+  });
+  if (degrees[0] !== 1 || degrees.some((d, i) => i && d > degrees[i - 1])) throw new Error(`member degrees: ${degrees}`);
+  const labels = await page.$$eval('#members .degree', (ds) => ds.map((d) => d.textContent));
+  if (labels[0] !== 'μ = 1.00') throw new Error(`member labels: ${labels}`);
+  await picture('studio-members', '#members-box');
+  await step('show a member', async () => {
+    await page.click('#members > li:nth-child(3)');
+    await page.waitForFunction(() => document.querySelector('#canvas').dataset.shown === 'member:2');
+  });
+  await picture('studio-member');
+
+  // Someone else stores a version after the page opened the part: the page's save is a 412,
+  // reported with a reload that opens the current version.
+  // (The page has version 2 open since the save.)
+  const other = await fetch(`${url}/parts/${id}`, { method: 'PUT', headers: { 'If-Match': '"2"', 'Content-Type': 'application/json' },
+    body: JSON.stringify({ kind: 'part', text: 'a very bent cylinder' }) });
+  if (other.status !== 200) throw new Error(`the other client's save: ${other.status} ${await other.text()}`);
+  // A trapezoid typed out of order is not sent: the editor says why and will not save it; put
+  // back, it is previewed again.
+  const kvA = '[data-action="edit-value"][data-value="params.kv"][data-field="a"]';
+  const kvAWas = await page.$eval(kvA, (box) => box.value);
+  const meshesBefore = await page.evaluate(() => performance.getEntriesByType('resource').filter((e) => e.name.endsWith('/mesh')).length);
+  await page.fill(kvA, '0.9');
+  await page.waitForFunction(() => document.querySelector('#editor-status').textContent === 'kv (bend) needs points in increasing order');
+  if (!(await page.$eval('[data-action="save-version"]', (b) => b.disabled))) throw new Error('a disordered value can be saved');
+  await page.waitForTimeout(800);  // past the full mesh's pause: still nothing asked
+  const meshesAfter = await page.evaluate(() => performance.getEntriesByType('resource').filter((e) => e.name.endsWith('/mesh')).length);
+  if (meshesAfter !== meshesBefore) throw new Error('a disordered value was sent');
+  await page.fill(kvA, kvAWas);
+  await page.waitForFunction(() => document.querySelector('#canvas').dataset.preview === 'fine:2');
+  // This edit makes the crisp size fuzzy: core ± spread, the spread typed.
+  await page.selectOption('[data-action="edit-value"][data-value="params.a1"][data-field="form"]', 'about');
+  await page.fill('[data-action="edit-value"][data-value="params.a1"][data-field="spread"]', '0.2');
+  await page.waitForFunction(() => document.querySelector('#canvas').dataset.preview === 'fine:4');
+  conflict.expectConflict(true);
+  await step('save after someone else: 412 reported', async () => {
+    await page.click('[data-action="save-version"]');
+    await page.waitForSelector('#editor[data-conflict="true"] [data-action="reload"]');
+  });
+  const said = await text('#editor-status');
+  if (!/changed by someone else/.test(said) || !/Reload/.test(said)) throw new Error(`the conflict message: ${said}`);
+  await picture('studio-conflict', '#editor');
+  await step('reload after the conflict', async () => {
+    await page.click('[data-action="reload"]');
+    await page.waitForFunction((want) => document.querySelector('#title').textContent.endsWith(want), `(#${id}, version 3)`);
+  });
+  conflict.expectConflict(false);
+  if (conflict.conflicts() !== 1) throw new Error(`412 answers seen: ${conflict.conflicts()}`);
+  console.log(`design tools: ${times.join('; ')}`);
+  console.log(`ink share of the design tools' pictures: ${inks.join(', ')}`);
+}
+
 async function main() {
   fs.mkdirSync(out, { recursive: true });
   const { child, url } = await startServer();
@@ -59,9 +236,17 @@ async function main() {
     executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
     args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist'],
   });
+  // While the test makes a save conflict on purpose, the one 412 answer to a PUT is expected (it
+  // is counted), and so is the browser's own console line about it; nothing else is.
+  let conflictExpected = false;
+  let conflicts = 0;
   try {
     const page = await browser.newPage({ viewport: { width: 1280, height: 900 } });
-    page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
+    page.on('console', (m) => {
+      if (m.type() !== 'error') return;
+      if (conflictExpected && /the server responded with a status of 412/.test(m.text())) return;
+      problems.push(`console: ${m.text()}`);
+    });
     page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
     // A thumbnail still loading when its card is replaced (a new search, "More", a reload) is
     // aborted by the browser, as for any user: not a failure. Every other failed request is, and
@@ -70,7 +255,11 @@ async function main() {
       if (r.failure().errorText === 'net::ERR_ABORTED' && /\/thumbnail\.png$/.test(new URL(r.url()).pathname)) return;
       problems.push(`request failed: ${r.url()} ${r.failure().errorText}`);
     });
-    page.on('response', (r) => { if (r.status() >= 400) problems.push(`HTTP ${r.status()}: ${r.url()}`); });
+    page.on('response', (r) => {
+      if (r.status() < 400) return;
+      if (conflictExpected && r.status() === 412 && r.request().method() === 'PUT') conflicts += 1;
+      else problems.push(`HTTP ${r.status()}: ${r.url()}`);
+    });
 
     // Cold: the page and the list of shapes (thumbnails are drawn on first request, then cached).
     let started = Date.now();
@@ -175,6 +364,11 @@ async function main() {
     await page.waitForSelector('[data-action="more-results"]:not([hidden])');
     await page.click('[data-action="more-results"]');
     await page.waitForFunction(() => document.querySelectorAll('#results > li').length > 12);
+
+    await designTools(page, url, out, {
+      expectConflict: (on) => { conflictExpected = on; },
+      conflicts: () => conflicts,
+    });
 
     const inks = [await inkShare(page, atZero), await inkShare(page, atHalf), await inkShare(page, atOne)];
     console.log(`page and list in ${coldMillis} ms cold; page with every thumbnail in ${loadMillis} ms warm; results ${ranked.map((r) => `${r.name} ${r.score}`).join(', ')}`);

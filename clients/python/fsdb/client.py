@@ -147,6 +147,11 @@ class Collection:
         self._only("part", "shape")
         return self._http.json("GET", f"{self._base}/{id}/members", query={"count": count})
 
+    def params(self, id: int, version: Optional[int] = None) -> Json:
+        """GET /parts/{id}/params: the part's fourteen fuzzy values, its words resolved."""
+        self._only("part")
+        return self._http.json("GET", f"{self._base}/{id}/params", query={"version": version})
+
     def thumbnail(self, id: int, alpha: float = 0.5, size: int = 128) -> bytes:
         """GET /K/{id}/thumbnail.png (parts, shapes): PNG bytes."""
         self._only("part", "shape")
@@ -254,6 +259,13 @@ class Client:
              resolution: Optional[int] = None) -> bytes:
         """GET /shapes/{id}/mesh: the surface of lower(alpha) or upper(alpha)."""
         return self.shapes.mesh(shape_id, alpha, bound, format, resolution)
+
+    def mesh_document(self, doc: Json, alpha: float = 0.5, bound: str = "upper", format: str = "obj",
+                      resolution: Optional[int] = None) -> bytes:
+        """POST /mesh: the mesh file of an inline shape or part document (as the stored form's)."""
+        body = _without_none({"shape": doc, "alpha": alpha, "bound": bound, "format": format,
+                              "resolution": resolution})
+        return self._http.request("POST", "/mesh", body)[2]
 
     def membership(self, shape_id: int, x: float, y: float, z: float) -> Json:
         """GET /shapes/{id}/membership: the levels of the point (x, y, z)."""
@@ -374,6 +386,7 @@ ROUTES: Dict[Tuple[str, str], str] = {
     ("POST", "/operators/evaluate"): "Client.evaluate_operator",
     ("GET", "/vocabulary"): "Client.vocabulary",
     ("POST", "/evaluate"): "Client.evaluate",
+    ("POST", "/mesh"): "Client.mesh_document",
     ("POST", "/query"): "Client.query",
     ("POST", "/query/linguistic"): "Client.query_linguistic",
     ("POST", "/query/csg"): "Client.query_csg",
@@ -388,6 +401,7 @@ ROUTES: Dict[Tuple[str, str], str] = {
     ("GET", "/shapes/{id}/grid.vdb"): "Collection.grid_vdb",
     ("GET", "/curves/{id}/svg"): "Collection.svg",
     ("GET", "/curves/{id}/candidates"): "Collection.candidates",
+    ("GET", "/parts/{id}/params"): "Collection.params",
 }
 for _kind in ("parts", "shapes", "curves", "surfaces"):
     ROUTES[("POST", f"/{_kind}")] = "Collection.create"

@@ -112,6 +112,28 @@ class ClientTest(unittest.TestCase):
         with self.assertRaises(TypeError):
             c.curves.membership(1, 0, 0, 0)
 
+    def test_mesh_of_an_inline_document(self):
+        c = self.client
+        doc = {"kind": "part", **part("inline-mesh", 1, a3=2)}
+        stored = c.parts.create(doc)
+        glb = c.mesh_document(doc, alpha=0.25, format="glb", resolution=16)
+        self.assertEqual(glb[:4], b"glTF")
+        self.assertEqual(glb, c.parts.mesh(stored["id"], alpha=0.25, format="glb", resolution=16))
+        self.assertIn(b"\nf ", c.mesh_document(doc, bound="lower", resolution=12))
+        self.assertFsdbError(lambda: c.mesh_document(doc, format="ply"), 422, "invalid_parameter", "format")
+
+    def test_part_params_resolve_words(self):
+        c = self.client
+        worded = c.parts.create({"name": "worded", "text": "a slightly bent cylinder"})
+        values = c.parts.params(worded["id"])
+        self.assertEqual(values["version"], 1)
+        self.assertIsInstance(values["params"]["kv"], dict)
+        self.assertEqual(len(values["transform"]["translate"]), 3)
+        self.assertEqual(c.parts.params(worded["id"], version=1)["params"], values["params"])
+        self.assertFsdbError(lambda: c.parts.params(worded["id"], version=9), 404, "not_found")
+        with self.assertRaises(TypeError):
+            c.shapes.params(1)
+
     def test_family_members(self):
         c = self.client
         fuzzy = c.parts.create({"name": "family", "params": {"a1": {"tri": [0.8, 1, 1.2]}, "kv": {"tri": [0, 0.2, 0.4]}}})

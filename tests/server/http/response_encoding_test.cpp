@@ -233,6 +233,12 @@ TEST(ResponseEncodingApi, StudioFilesAreTaggedAndScriptsGzipped) {
   EXPECT_TRUE(again->body.empty());
   EXPECT_EQ(rawGet(server, "/vendor/../../CMakeCache.txt", {})->status, 404);
   EXPECT_EQ(rawGet(server, "/vendor/nothing.js", {})->status, 404);
+  // The page's modules, under /modules/.
+  auto module = rawGet(server, "/modules/part_editor.js", {{"Accept-Encoding", "gzip"}});
+  ASSERT_EQ(module->status, 200);
+  EXPECT_EQ(module->get_header_value("Content-Type"), "application/x-javascript");
+  EXPECT_EQ(rawGet(server, "/modules/nothing.js", {})->status, 404);
+  EXPECT_EQ(rawGet(server, "/modules/../../CMakeCache.txt", {})->status, 404);
 }
 
 }  // namespace
