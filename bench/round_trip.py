@@ -50,7 +50,7 @@ def texts(vocabulary):
     for noun in sorted(nouns):
         for adjective in adjectives:
             for intensity in intensities:
-                yield " ".join(w for w in ("a", intensity, adjective, noun) if w)
+                yield " ".join(w for w in ("a", intensity, adjective, noun) if w), intensity != ""
 
 
 def main():
@@ -71,14 +71,16 @@ def main():
             made = passed = first = 0
             refused = 0
             failures = []
+            groups = {True: [0, 0], False: [0, 0]}  # with an intensity or plain: [made, round trips]
             started = time.time()
-            for i, text in enumerate(all_texts):
+            for i, (text, intense) in enumerate(all_texts):
                 status, part = call(base, "POST", "/parts", {"name": "rt%d" % i, "text": text})
                 if status != 201 and status != 200:
                     refused += 1
                     continue
                 made += 1
-                status, answer = call(base, "POST", "/query", {"text": text, "limit": 5})
+                groups[intense][0] += 1
+                status, answer = call(base, "POST", "/query", {"text": text, "limit": 100})
                 results = answer.get("results", []) if status == 200 else []
                 own = next((k for k, r in enumerate(results) if r.get("id") == part["id"]), None)
                 score = results[own]["score"] if own is not None else 0.0
@@ -86,12 +88,15 @@ def main():
                     first += 1
                 if own == 0 and score >= 0.9:
                     passed += 1
+                    groups[intense][1] += 1
                 else:
                     failures.append((text, own, round(score, 3),
                                      [(r.get("name"), round(r.get("score", 0), 3)) for r in results[:2]]))
                 call(base, "DELETE", "/parts/%d" % part["id"])
             print(json.dumps({"texts": len(all_texts), "made": made, "refused": refused, "first": first,
                               "round_trips": passed, "share": round(passed / max(made, 1), 4),
+                              "with_intensity": "%d of %d" % (groups[True][1], groups[True][0]),
+                              "plain": "%d of %d" % (groups[False][1], groups[False][0]),
                               "seconds": round(time.time() - started, 1)}))
             for f in failures[:args.show_failures]:
                 print(f)

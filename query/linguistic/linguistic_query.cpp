@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <set>
 
 #include "geometry/core/closest_names.h"
@@ -132,22 +133,32 @@ bool contradicts(const FuzzyNumber& a, const FuzzyNumber& b) { return heightOfIn
 
 // Whether the words a user says replace a noun's condition (nouns are defaults, not vetoes):
 //  * a condition on the same descriptor that contradicts the noun's ("a slightly tapered cone":
-//    the cone's own taper is high; "a tapered cylinder" agrees with the cylinder's and both hold);
+//    the cone's own taper is high; "a tapered cylinder" agrees with the cylinder's and both hold),
+//    or that states a degree of its own (an intensity, a number, a measure: "a moderately tapered
+//    pyramid" is as tapered as it says, which a part made from those words is);
 //  * for the shape of the exponents, a condition on any of them when the noun keeps another
 //    condition to be itself ("a round plate" stays flat, "a square disc" too; a box or a sphere is
-//    its exponents' shape, so "a round box" keeps the box's);
+//    its exponents' shape, so "a round box" and "a very round box" keep the box's and find the
+//    roundest boxes);
 //  * for the noun's proportions (elongation), words on two or more extents ("a board 8 long and
-//    1 wide", "a thin pole 10 long").
-bool overriddenByWords(const NounCondition& condition, const Noun& noun, const std::vector<const QueryCondition*>& said) {
+//    1 wide", "a thin pole 10 long"), or a dimension adjective with an intensity ("a moderately
+//    long stick": a part made from it takes that length whatever the stick's usual proportions;
+//    a measure alone, "a sphere 2 across", keeps them).
+// `graded(c)` says whether a condition states a degree of its own (an intensity, a number or a
+// measure; not a plain adjective).
+bool overriddenByWords(const NounCondition& condition, const Noun& noun, const std::vector<const QueryCondition*>& said,
+                       const std::function<bool(const QueryCondition&)>& graded) {
   const std::string& descriptor = condition.descriptor;
   bool keepsAnother = false;
   for (const NounCondition& c : noun.conditions) keepsAnother = keepsAnother || !isExponentShape(c.descriptor);
   std::set<std::string> extents;
   for (const QueryCondition* c : said) {
-    if (c->descriptor == descriptor && contradicts(c->set, condition.set)) return true;
+    if (c->descriptor == descriptor && (graded(*c) || contradicts(c->set, condition.set))) return true;
     if (isExponentShape(descriptor) && isExponentShape(c->descriptor) && keepsAnother) return true;
-    if (c->descriptor == "length" || c->descriptor == "width" || c->descriptor == "thickness")
+    if (c->descriptor == "length" || c->descriptor == "width" || c->descriptor == "thickness" || c->descriptor == "height") {
       extents.insert(c->descriptor);
+      if (descriptor == "elongation" && !c->measure && graded(*c)) return true;
+    }
   }
   return descriptor == "elongation" && extents.size() >= 2;
 }
@@ -615,8 +626,12 @@ class Parser {
       for (const QueryCondition& c : parts) collectLeaves(c, &said);
       for (const QueryCondition& c : clause) collectLeaves(c, &said);
       std::vector<QueryCondition> leaves;
+      // A plain adjective's set is the vocabulary's plain one (mirrored for a low pole).
+      const auto graded = [&](const QueryCondition& c) {
+        return !(c.set == v_.plain() || c.set == mirroredDegrees(v_.plain()));
+      };
       for (const NounCondition& c : noun.conditions)
-        if (!overriddenByWords(c, noun, said))
+        if (!overriddenByWords(c, noun, said, graded))
           leaves.push_back(descriptorCondition(c.descriptor, c.set, nounText + ": " + c.descriptor));
       QueryCondition node;
       if (leaves.size() == 1) {

@@ -106,6 +106,13 @@ TEST(LinguisticQuery, NounsAreDefaultsTheWordsOverride) {
   // The same descriptor: replaced only where the words contradict the noun.
   EXPECT_EQ(descriptorsOfNoun("a slightly tapered cone"), (std::vector<std::string>{"squariness", "roundness"}));
   EXPECT_EQ(descriptorsOfNoun("a tapered cylinder"), (std::vector<std::string>{"squariness", "roundness", "taperness"}));
+  // A degree of its own (an intensity) on the same descriptor replaces the noun's even where the
+  // sets overlap: a part made from "a moderately tapered pyramid" is as tapered as that says.
+  EXPECT_EQ(descriptorsOfNoun("a moderately tapered pyramid"), (std::vector<std::string>{"squariness"}));
+  EXPECT_EQ(descriptorsOfNoun("a tapered pyramid"), (std::vector<std::string>{"squariness", "taperness"}));
+  // A dimension adjective with an intensity sets the proportions; a plain one does not.
+  EXPECT_EQ(descriptorsOfNoun("a moderately long stick"), std::vector<std::string>{"roundness"});
+  EXPECT_EQ(descriptorsOfNoun("a long stick"), (std::vector<std::string>{"roundness", "elongation"}));
   // Words on two extents set the proportions; one does not.
   EXPECT_EQ(descriptorsOfNoun("a plate 8 long and 1 wide"), std::vector<std::string>{"squariness"});
   EXPECT_EQ(descriptorsOfNoun("a sphere 2 across"), (std::vector<std::string>{"roundness", "elongation"}));
