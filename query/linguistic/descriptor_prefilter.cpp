@@ -22,13 +22,21 @@ PrefilterPlan combine(Kind kind, std::vector<PrefilterPlan> children) {
   const Kind absorbing = kind == Kind::kAnd ? Kind::kNone : Kind::kAll;  // decides the whole node
   const Kind neutral = kind == Kind::kAnd ? Kind::kAll : Kind::kNone;    // drops out
   PrefilterPlan plan = leaf(kind);
+  // a and a, a or a: a, for bounds as for candidates (a 10,000-word text of repeated words asked
+  // the index once per word). Only leaves are compared: they are most of any long text.
+  const auto add = [&plan](PrefilterPlan&& c) {
+    if (c.kind == Kind::kOverlap)
+      for (const PrefilterPlan& seen : plan.children)
+        if (seen.kind == Kind::kOverlap && seen.test.descriptor == c.test.descriptor && seen.set == c.set) return;
+    plan.children.push_back(std::move(c));
+  };
   for (PrefilterPlan& child : children) {
     if (child.kind == absorbing) return leaf(absorbing);
     if (child.kind == neutral) continue;
     if (child.kind == kind) {  // (a and b) and c: one level
-      for (PrefilterPlan& grandchild : child.children) plan.children.push_back(std::move(grandchild));
+      for (PrefilterPlan& grandchild : child.children) add(std::move(grandchild));
     } else {
-      plan.children.push_back(std::move(child));
+      add(std::move(child));
     }
   }
   if (plan.children.empty()) return leaf(neutral);

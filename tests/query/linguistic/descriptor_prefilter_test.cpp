@@ -114,6 +114,13 @@ TEST(DescriptorPrefilter, AndOrNotRelation) {
       prefilterPlan(query(node(K::kAnd, {bent, node(K::kAnd, {big, descriptor("twistness", 0, 0, 0.2)})})), "shape");
   EXPECT_EQ(nested.kind, PrefilterPlan::Kind::kAnd);
   EXPECT_EQ(nested.children.size(), 3u);
+  // The same leaf twice is one (a long text of repeated words asks the index once); the same
+  // descriptor with another set stays.
+  EXPECT_EQ(prefilterPlanJson(prefilterPlan(query(node(K::kAnd, {bent, big, bent, node(K::kAnd, {big, bent})})), "part")),
+            prefilterPlanJson(prefilterPlan(query(node(K::kAnd, {bent, big})), "part")));
+  EXPECT_EQ(prefilterPlanJson(prefilterPlan(query(node(K::kOr, {big, big})), "part")),
+            prefilterPlanJson(prefilterPlan(query(big), "part")));
+  EXPECT_EQ(prefilterPlan(query(node(K::kAnd, {bent, descriptor("bendness", 0.5, 0.6, 0.7)})), "part").children.size(), 2u);
 }
 
 TEST(DescriptorPrefilter, AggregationsThatNeedEveryChild) {
