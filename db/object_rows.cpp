@@ -119,6 +119,28 @@ std::vector<int64_t> sortedUnique(std::vector<int64_t> ids) {
   return ids;
 }
 
+// The search box's row of an object (schema/migrations/009_object_text.sql): its name and search
+// text, replacing the previous version's.
+void writeObjectText(Connection& connection, const ObjectRow& row, const NewObject& object, bool fresh) {
+  const std::string words = object.searchText.empty() ? row.name : row.name + " " + object.searchText;
+  if (connection.dialect() == sql::Dialect::kSqlite) {
+    if (!fresh) {
+      auto statement = connection.prepare("DELETE FROM object_text WHERE rowid = ?1");
+      statement->bind(1, row.id);
+      statement->run();
+    }
+    auto statement = connection.prepare("INSERT INTO object_text (rowid, words) VALUES (?1, ?2)");
+    statement->bind(1, row.id).bind(2, words);
+    statement->run();
+    return;
+  }
+  auto statement = connection.prepare(
+      "INSERT INTO object_text (object_id, words) VALUES (?1, to_tsvector('english', ?2))"
+      " ON CONFLICT (object_id) DO UPDATE SET words = excluded.words");
+  statement->bind(1, row.id).bind(2, words);
+  statement->run();
+}
+
 // Writes version `version` of object `row` (whose objects row exists) with its normalised rows,
 // and makes its edges those of `children`. Version 1 is a new object: an id is never reused, so
 // it has no edges, descriptor rows or pending mark to replace, and those deletes are skipped
@@ -175,6 +197,7 @@ void writeVersion(Connection& connection, const ObjectRow& row, int version, con
     statement->run();
   }
   writeDescriptorRows(connection, row.id, row.kind, object.descriptors, fresh, present);
+  if (row.kind == "part" || row.kind == "shape") writeObjectText(connection, row, object, fresh);
   // Rows computed from referenced documents the caller read before this transaction may already
   // be stale: the server recomputes them after the commit (db/store.h, the descriptor index).
   if (object.references.empty()) {

@@ -290,6 +290,42 @@ std::vector<StoredObject> SqlStore::named(const std::vector<std::string>& names,
   return objects;
 }
 
+std::vector<StoredObject> SqlStore::described(const std::vector<std::string>& words,
+                                              const std::vector<std::string>& kinds, int limit) const {
+  if (words.size() > kMaxTextWords)
+    throw Error(errc::kInvalidParameter, "at most " + std::to_string(kMaxTextWords) + " words a text search", "text");
+  if (words.empty() || kinds.empty() || limit <= 0) return {};
+  Lease connection(*this);
+  const bool sqlite = (*connection).dialect() == sql::Dialect::kSqlite;
+  // Each word a phrase of its own (quotes doubled) for FTS5, so that no word is read as an
+  // operator (AND, NOT, NEAR, a column filter); PostgreSQL's plainto_tsquery takes plain text.
+  std::string query;
+  for (const std::string& w : words) {
+    if (!query.empty()) query += ' ';
+    if (!sqlite) {
+      query += w;
+      continue;
+    }
+    query += '"';
+    for (char c : w) query += c == '"' ? std::string("\"\"") : std::string(1, c);
+    query += '"';
+  }
+  const std::string matches =
+      sqlite ? "SELECT rowid AS id, rank AS r FROM object_text WHERE object_text MATCH ?1"
+             : "SELECT object_id AS id, -ts_rank(words, plainto_tsquery('english', ?1)) AS r FROM object_text"
+               " WHERE words @@ plainto_tsquery('english', ?1)";
+  std::vector<std::string> kindList = kinds;
+  kindList.resize(2, kinds.back());  // two placeholders: the last kind repeated
+  auto statement = (*connection)
+                       .prepare("WITH m AS (" + matches + ") " + objectColumnsSql((*connection).dialect()) +
+                                " AND v.version = o.latest_version JOIN m ON m.id = o.id WHERE o.kind IN (?2, ?3)"
+                                " ORDER BY m.r, o.id LIMIT ?4");
+  statement->bind(1, query).bind(2, kindList[0]).bind(3, kindList[1]).bind(4, std::min(limit, 1000));
+  std::vector<StoredObject> objects;
+  while (statement->step()) objects.push_back(readObject(*statement));
+  return objects;
+}
+
 std::map<std::string, int64_t> SqlStore::counts() const {
   Lease connection(*this);
   auto statement = (*connection).prepare("SELECT kind, COUNT(*) FROM objects GROUP BY kind");

@@ -29,6 +29,8 @@ class SqlStore : public Store {
   std::vector<StoredObject> list(const ListQuery& query) const override;
   std::vector<StoredObject> named(const std::vector<std::string>& names,
                                   const std::vector<std::string>& kinds) const override;
+  std::vector<StoredObject> described(const std::vector<std::string>& words, const std::vector<std::string>& kinds,
+                                      int limit) const override;
   std::vector<int64_t> remove(const std::string& kind, int64_t id, bool cascade, std::optional<int> ifVersion) override;
   std::vector<BulkItemResult> createBatch(const std::vector<NewObject>& items, BulkMode mode) override;
   std::map<std::string, int64_t> counts() const override;

@@ -97,6 +97,9 @@ struct NewObject {
   std::vector<ObjectReference> references;
   std::vector<CsgNodeRow> nodes;
   std::vector<DescriptorComponent> descriptors;  // the descriptor index rows of this version
+  // Parts and shapes: the words the search box finds the object by (its name, meta.description
+  // and descriptors: documentSearchText, server/service/documents.h); empty: none but the name.
+  std::string searchText;
 };
 
 struct StoredObject {
@@ -273,6 +276,13 @@ class Store {
   static constexpr size_t kMaxNamedLookups = 16;
   virtual std::vector<StoredObject> named(const std::vector<std::string>& names,
                                           const std::vector<std::string>& kinds) const = 0;
+  // The latest versions of the parts and shapes of `kinds` whose search text (NewObject::
+  // searchText, or the name) holds every one of `words` after stemming (SQLite FTS5's porter,
+  // PostgreSQL's 'english' configuration, which leaves out its stop words), best matches first,
+  // at most `limit` (1-1000). No words: none. invalid_parameter for more than kMaxTextWords words.
+  static constexpr size_t kMaxTextWords = 32;
+  virtual std::vector<StoredObject> described(const std::vector<std::string>& words,
+                                              const std::vector<std::string>& kinds, int limit) const = 0;
   // Deletes the object and all its versions. in_use (409) when a live object's latest version
   // refers to it, unless cascade: then every object that reaches it is deleted too. Returns the
   // ids deleted (the object first). ifVersion as for put.

@@ -121,9 +121,25 @@ NewObject prepareDocument(const nlohmann::json& document, const std::string& kin
       out.nodes.push_back(std::move(row));
     }
   }
+  if (kind == "part" || kind == "shape") out.searchText = documentSearchText(doc);
   out.documentJson = doc.dump();
   out.contentHash = contentHash(out.documentJson);
   return out;
+}
+
+std::string documentSearchText(const nlohmann::json& document) {
+  // The same words as schema/migrations/009_object_text.sql takes from documents stored before.
+  std::string text;
+  const auto add = [&text](const nlohmann::json& value) {
+    if (!value.is_string()) return;
+    if (!text.empty()) text += ' ';
+    text += value.get<std::string>();
+  };
+  if (document.contains("meta") && document["meta"].is_object() && document["meta"].contains("description"))
+    add(document["meta"]["description"]);
+  if (document.contains("descriptors") && document["descriptors"].is_array())
+    for (const nlohmann::json& d : document["descriptors"]) add(d);
+  return text;
 }
 
 std::string storedObjectText(const StoredObject& object) {

@@ -60,6 +60,10 @@ NewObject prepareDocument(const nlohmann::json& document, const std::string& kin
                           const DocumentLimits& limits, const std::string& path,
                           const PendingDocuments* pending = nullptr);
 
+// The words the search box finds a part or shape by besides its name (NewObject::searchText): its
+// meta.description and the strings of its descriptors list, where they are strings.
+std::string documentSearchText(const nlohmann::json& document);
+
 // The JSON the API returns for a stored version, as text:
 //   {"content_hash","created_at","document","id","kind","latest_version","name","version"}
 // byte for byte the dump of that object built with nlohmann::json, written without parsing

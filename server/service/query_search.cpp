@@ -2,6 +2,7 @@
 #include "server/service/query_search.h"
 
 #include <algorithm>
+#include <cctype>
 
 #include "geometry/core/closest_names.h"
 #include "geometry/core/error.h"
@@ -17,9 +18,9 @@ namespace fsdb {
 
 namespace {
 
-// The names a text may be ("snowman", "the dumbbell", "a round plate" for round-plate): its words
-// after a request phrase, articles and fillers, joined by "-", " ", "_" and nothing.
-std::vector<std::string> namesOfText(const std::string& text, const Vocabulary& vocabulary) {
+// The words of a text after a request phrase and its leading articles, without fillers and
+// commas ("find the small snowman, please" -> small, snowman); empty when it does not tokenise.
+std::vector<std::string> wordsOfText(const std::string& text, const Vocabulary& vocabulary) {
   std::vector<query_tokens::Token> tokens;
   try {
     tokens = query_tokens::tokenize(text, 0, text.size());
@@ -33,45 +34,105 @@ std::vector<std::string> namesOfText(const std::string& text, const Vocabulary& 
       [&](size_t k) { return k < words.size() ? &words[k] : nullptr; }, vocabulary);
   while (from < words.size() && std::find(queryArticles().begin(), queryArticles().end(), words[from]) != queryArticles().end())
     ++from;
-  if (from >= words.size() || words.size() - from > 8) return {};
+  return std::vector<std::string>(words.begin() + static_cast<std::ptrdiff_t>(from), words.end());
+}
+
+// The names a text may be ("snowman", "the dumbbell", "a round plate" for round-plate): its words
+// joined by "-", " ", "_" and nothing.
+std::vector<std::string> namesOfText(const std::vector<std::string>& words) {
+  if (words.empty() || words.size() > 8) return {};
   std::vector<std::string> names;
   for (const char* joiner : {"-", " ", "_", ""}) {
     std::string name;
-    for (size_t i = from; i < words.size(); ++i) name += (i > from ? joiner : "") + words[i];
+    for (size_t i = 0; i < words.size(); ++i) name += (i ? joiner : "") + words[i];
     if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
   }
   return names;
 }
 
-// The stored parts and shapes (of the request's kind, when it names one) whose name the text is,
-// as results that rank first: score 1, "named": true.
-nlohmann::json objectsNamed(const Store& store, const nlohmann::json& request, const std::string& text) {
-  nlohmann::json out = nlohmann::json::array();
-  std::vector<std::string> kinds = {"part", "shape"};
+// The kinds a request searches by name and words: its `kind` when that is part or shape.
+std::vector<std::string> requestKinds(const nlohmann::json& request) {
   if (request.contains("kind") && request["kind"].is_string() &&
       (request["kind"] == "part" || request["kind"] == "shape"))
-    kinds = {request["kind"].get<std::string>()};
-  // One lookup for every spelling and kind (a query's only store read before its search).
-  for (const StoredObject& o : store.named(namesOfText(text, activeVocabulary()), kinds))
+    return {request["kind"].get<std::string>()};
+  return {"part", "shape"};
+}
+
+// How an object's own words score when they hold every word of the text. They answer only where
+// the meaning found nothing whole (no result, partial matches, or a text no grammar reads), so
+// the score ranks them among partial matches: above those that fail half their conditions.
+constexpr double kDescribedScore = 0.5;
+
+// The stored parts and shapes whose own words (name, meta.description, descriptors) hold every
+// content word of the text, as results: score kDescribedScore, "described": true. Not for texts
+// with "not" (a word search cannot say what an object is not).
+nlohmann::json objectsDescribed(const Store& store, const nlohmann::json& request, const std::vector<std::string>& words,
+                                size_t limit) {
+  static const std::vector<std::string> kLittle = {"a",  "an", "the", "and", "or", "with", "of", "on",  "in",  "at",
+                                                   "to", "by", "that", "which", "is", "are", "its", "it", "for", "from"};
+  std::vector<std::string> content;
+  for (const std::string& w : words) {
+    if (w == "not" || w == "no" || w == "without") return nlohmann::json::array();
+    if (std::find(kLittle.begin(), kLittle.end(), w) == kLittle.end() &&
+        std::isalnum(static_cast<unsigned char>(w[0])))
+      content.push_back(w);
+  }
+  nlohmann::json out = nlohmann::json::array();
+  if (content.empty() || content.size() > Store::kMaxTextWords) return out;
+  for (const StoredObject& o : store.described(content, requestKinds(request), static_cast<int>(limit)))
+    out.push_back({{"id", o.id}, {"kind", o.kind}, {"name", o.name}, {"version", o.version}, {"score", kDescribedScore},
+                   {"described", true}, {"explain", {{{"text", "its own words"}, {"score", kDescribedScore}}}}});
+  return out;
+}
+
+// The stored parts and shapes (of the request's kind, when it names one) whose name the text is,
+// as results that rank first: score 1, "named": true.
+nlohmann::json objectsNamed(const Store& store, const nlohmann::json& request, const std::vector<std::string>& words) {
+  nlohmann::json out = nlohmann::json::array();
+  // One lookup for every spelling and kind.
+  for (const StoredObject& o : store.named(namesOfText(words), requestKinds(request)))
     out.push_back({{"id", o.id}, {"kind", o.kind}, {"name", o.name}, {"version", o.version}, {"score", 1.0},
                    {"named", true}, {"explain", {{{"text", "the name '" + o.name + "'"}, {"score", 1.0}}}}});
   return out;
 }
 
-// The answer with the named objects first (each once) and its results after them, up to the
-// request's limit (10 by default, as both searches).
-void putNamedFirst(nlohmann::json* answer, const nlohmann::json& named, const nlohmann::json& request) {
-  if (named.empty()) return;
-  size_t limit = 10;
+// The request's limit as the searches read it (10 by default; an invalid one is theirs to refuse).
+size_t requestLimit(const nlohmann::json& request) {
   if (request.contains("limit") && request["limit"].is_number_integer() && request["limit"].get<int64_t>() > 0)
-    limit = static_cast<size_t>(request["limit"].get<int64_t>());
-  nlohmann::json results = named;
-  if (answer->contains("results") && (*answer)["results"].is_array())
-    for (const nlohmann::json& r : (*answer)["results"]) {
-      bool seen = false;
-      for (const nlohmann::json& n : named) seen = seen || (n["id"] == r.value("id", nlohmann::json()));
-      if (!seen) results.push_back(r);
+    return static_cast<size_t>(std::min<int64_t>(request["limit"].get<int64_t>(), 1000));
+  return 10;
+}
+
+// The answer with the named objects first, then its results and the described objects by score
+// (stable: a result before a described object of the same score), each object once, up to
+// `limit`. An object both found and described keeps its result, at the higher of the two scores,
+// marked described, with its own words in explain.
+void putWordMatches(nlohmann::json* answer, const nlohmann::json& named, const nlohmann::json& described, size_t limit) {
+  if (named.empty() && described.empty()) return;
+  nlohmann::json rest =
+      answer->contains("results") && (*answer)["results"].is_array() ? (*answer)["results"] : nlohmann::json::array();
+  for (const nlohmann::json& d : described) {
+    bool found = false;
+    for (nlohmann::json& r : rest) {
+      if (r.value("id", nlohmann::json()) != d["id"]) continue;
+      found = true;
+      r["score"] = std::max(r.value("score", 0.0), d["score"].get<double>());
+      r["described"] = true;
+      if (r.contains("explain") && r["explain"].is_array()) r["explain"].push_back(d["explain"][0]);
     }
+    if (!found) rest.push_back(d);
+  }
+  std::stable_sort(rest.begin(), rest.end(), [](const nlohmann::json& a, const nlohmann::json& b) {
+    return a.value("score", 0.0) > b.value("score", 0.0);
+  });
+  nlohmann::json results = nlohmann::json::array();
+  const auto add = [&results](const nlohmann::json& r) {
+    for (const nlohmann::json& seen : results)
+      if (seen["id"] == r.value("id", nlohmann::json())) return;
+    results.push_back(r);
+  };
+  for (const nlohmann::json& n : named) add(n);
+  for (const nlohmann::json& r : rest) add(r);
   if (results.size() > limit) results.erase(results.begin() + static_cast<std::ptrdiff_t>(limit), results.end());
   (*answer)["results"] = std::move(results);
 }
@@ -99,6 +160,86 @@ nlohmann::json searchText(const Store& store, const nlohmann::json& request, con
   return answer;
 }
 
+// A text that neither grammar reads (`refused`): read without the words neither knows
+// (query/structural/unknown_words.h) or with their corrections; throws `refused`, or a refusal
+// naming every unknown word, when that does not read either.
+nlohmann::json readAroundUnknownWords(const Store& store, const nlohmann::json& request, const std::string& text,
+                                      const Error& refused, const LinguisticRequestLimits& linguisticLimits,
+                                      const CsgRequestLimits& csgLimits, StoredGraphCache& graphs) {
+  KnownWordsReading reading;
+  try {
+    reading = readKnownWords(text, activeVocabulary());
+  } catch (const Error&) {
+    throw refused;
+  }
+  if (reading.unknown.empty() && reading.routed.empty()) throw refused;
+  // The text without them first; when that does not read, their corrections chosen together.
+  std::vector<std::string> tries;
+  if (!reading.text.empty()) tries.push_back(reading.text);
+  if (reading.corrected) tries.push_back(*reading.corrected);
+  nlohmann::json answer;
+  std::string searched;
+  for (const std::string& attempt : tries) {
+    nlohmann::json readable = request;
+    readable["text"] = attempt;
+    try {
+      answer = searchText(store, readable, attempt, linguisticLimits, csgLimits, graphs);
+      searched = attempt;
+      break;
+    } catch (const Error& again) {
+      if (again.code() != errc::kInvalidParameter || again.path() != "text") throw;
+    }
+  }
+  if (searched.empty() && reading.text.empty()) {
+    // Nothing understood: the parser's closest words for the first word ("purple": are, cube,
+    // curved) help less than saying which words are unknown, each with its plausible corrections.
+    std::string message;
+    for (size_t i = 0; i < reading.unknown.size() && i < 5; ++i) {
+      const UnknownWord& u = reading.unknown[i];
+      std::string closest;
+      for (const std::string& c : u.closest) closest += (closest.empty() ? "" : ", ") + c;
+      message += std::string(i ? "; " : "") + "unknown word '" + quotedWord(u.word) + "' at character " +
+                 std::to_string(u.at) + (closest.empty() ? " (no known word is close)" : " (closest: " + closest + ")");
+    }
+    if (reading.unknown.size() > 5) message += "; and " + std::to_string(reading.unknown.size() - 5) + " more";
+    throw Error(refused.code(), message + "; no word of the text is understood (GET /vocabulary lists the words)",
+                "text");
+  }
+  if (searched.empty()) throw refused;
+  nlohmann::json ignored = nlohmann::json::array();
+  for (const UnknownWord& u : reading.unknown)
+    ignored.push_back({{"word", quotedWord(u.word)}, {"at", u.at}, {"did_you_mean", u.closest}});
+  answer["ignored"] = std::move(ignored);
+  // Routed words (query/linguistic/word_routes.h): what each became and why; the text is read
+  // less surely through them, so every score is multiplied by their discounts.
+  nlohmann::json routed = nlohmann::json::array();
+  double discount = 1.0;
+  for (const RoutedWord& r : reading.routed) {
+    routed.push_back({{"word", quotedWord(r.route.word)}, {"at", r.at}, {"became", r.route.became},
+                      {"why", r.route.why}, {"via", r.route.via}, {"discount", r.route.discount}});
+    discount *= r.route.discount;
+  }
+  answer["routed"] = std::move(routed);
+  if (discount < 1.0 && answer.contains("results") && answer["results"].is_array()) {
+    // The threshold (the request's, or the text's "at least") holds for the discounted scores:
+    // the search kept every result at or above it before the discount, in the same order, so
+    // dropping those that fall below it now is exact.
+    double cut = request.value("threshold", 0.0);
+    if (answer.contains("parsed") && answer["parsed"].is_object())
+      cut = std::max(cut, answer["parsed"].value("at_least", 0.0));
+    nlohmann::json kept = nlohmann::json::array();
+    for (nlohmann::json& result : answer["results"]) {
+      if (result.contains("score") && result["score"].is_number())
+        result["score"] = result["score"].get<double>() * discount;
+      if (result.value("score", 1.0) >= cut) kept.push_back(std::move(result));
+    }
+    answer["results"] = std::move(kept);
+  }
+  answer["read_text"] = searched;
+  if (reading.corrected && *reading.corrected != searched) answer["did_you_mean"] = *reading.corrected;
+  return answer;
+}
+
 }  // namespace
 
 nlohmann::json queryResponse(const Store& store, const nlohmann::json& request,
@@ -106,91 +247,37 @@ nlohmann::json queryResponse(const Store& store, const nlohmann::json& request,
                              StoredGraphCache& graphs) {
   // The same checks, codes and paths as the two searches' own.
   const std::string& text = requireString(requireField(requireObject(request, ""), "text", ""), "text");
-  // A stored object's name ranks first ("snowman", "the dumbbell"), before whatever the words mean.
-  const nlohmann::json named = objectsNamed(store, request, text);
+  // A stored object's name ranks first ("snowman", "the dumbbell"), before whatever the words mean;
+  // an object whose own words hold every word of the text is among the results.
+  const std::vector<std::string> words = wordsOfText(text, activeVocabulary());
+  const size_t limit = requestLimit(request);
+  const nlohmann::json named = objectsNamed(store, request, words);
+  const nlohmann::json described = objectsDescribed(store, request, words, limit);
   try {
     nlohmann::json answer = searchText(store, request, text, linguisticLimits, csgLimits, graphs);
-    putNamedFirst(&answer, named, request);
+    // Where the meaning finds something whole, it is the answer: a description's words may meet
+    // by chance ("a sharp cylinder" in "a very bent cylinder and a very sharp pyramid").
+    const bool found = answer.contains("results") && !answer["results"].empty() && !answer.value("partial", false);
+    putWordMatches(&answer, named, found ? nlohmann::json::array() : described, limit);
     return answer;
   } catch (const Error& refused) {
     if (refused.code() != errc::kInvalidParameter || refused.path() != "text") throw;
     // Words no grammar reads that are a name: the named objects are the answer.
-    if (!named.empty()) return {{"search", "name"}, {"results", named}};
-    // Words neither grammar knows: the text is read without them (query/structural/unknown_words.h).
-    // When nothing is left, or what is left does not read either, the answer is the first refusal,
-    // which names the first unknown word, its position and its closest words.
-    KnownWordsReading reading;
+    if (!named.empty()) {
+      nlohmann::json answer = {{"search", "name"}, {"results", nlohmann::json::array()}};
+      putWordMatches(&answer, named, described, limit);
+      return answer;
+    }
     try {
-      reading = readKnownWords(text, activeVocabulary());
-    } catch (const Error&) {
-      throw refused;
+      nlohmann::json answer =
+          readAroundUnknownWords(store, request, text, refused, linguisticLimits, csgLimits, graphs);
+      putWordMatches(&answer, named, described, limit);
+      return answer;
+    } catch (const Error& unread) {
+      // Words no grammar reads that objects are described by ("a mushroom form").
+      if (described.empty() || unread.code() != errc::kInvalidParameter || unread.path() != "text") throw;
+      return {{"search", "words"}, {"results", described}};
     }
-    if (reading.unknown.empty() && reading.routed.empty()) throw refused;
-    // The text without them first; when that does not read, their corrections chosen together.
-    std::vector<std::string> tries;
-    if (!reading.text.empty()) tries.push_back(reading.text);
-    if (reading.corrected) tries.push_back(*reading.corrected);
-    nlohmann::json answer;
-    std::string searched;
-    for (const std::string& attempt : tries) {
-      nlohmann::json readable = request;
-      readable["text"] = attempt;
-      try {
-        answer = searchText(store, readable, attempt, linguisticLimits, csgLimits, graphs);
-        searched = attempt;
-        break;
-      } catch (const Error& again) {
-        if (again.code() != errc::kInvalidParameter || again.path() != "text") throw;
-      }
-    }
-    if (searched.empty() && reading.text.empty()) {
-      // Nothing understood: the parser's closest words for the first word ("purple": are, cube,
-      // curved) help less than saying which words are unknown, each with its plausible corrections.
-      std::string message;
-      for (size_t i = 0; i < reading.unknown.size() && i < 5; ++i) {
-        const UnknownWord& u = reading.unknown[i];
-        std::string closest;
-        for (const std::string& c : u.closest) closest += (closest.empty() ? "" : ", ") + c;
-        message += std::string(i ? "; " : "") + "unknown word '" + quotedWord(u.word) + "' at character " +
-                   std::to_string(u.at) + (closest.empty() ? " (no known word is close)" : " (closest: " + closest + ")");
-      }
-      if (reading.unknown.size() > 5) message += "; and " + std::to_string(reading.unknown.size() - 5) + " more";
-      throw Error(refused.code(), message + "; no word of the text is understood (GET /vocabulary lists the words)",
-                  "text");
-    }
-    if (searched.empty()) throw refused;
-    nlohmann::json ignored = nlohmann::json::array();
-    for (const UnknownWord& u : reading.unknown)
-      ignored.push_back({{"word", quotedWord(u.word)}, {"at", u.at}, {"did_you_mean", u.closest}});
-    answer["ignored"] = std::move(ignored);
-    // Routed words (query/linguistic/word_routes.h): what each became and why; the text is read
-    // less surely through them, so every score is multiplied by their discounts.
-    nlohmann::json routed = nlohmann::json::array();
-    double discount = 1.0;
-    for (const RoutedWord& r : reading.routed) {
-      routed.push_back({{"word", quotedWord(r.route.word)}, {"at", r.at}, {"became", r.route.became},
-                        {"why", r.route.why}, {"via", r.route.via}, {"discount", r.route.discount}});
-      discount *= r.route.discount;
-    }
-    answer["routed"] = std::move(routed);
-    if (discount < 1.0 && answer.contains("results") && answer["results"].is_array()) {
-      // The threshold (the request's, or the text's "at least") holds for the discounted scores:
-      // the search kept every result at or above it before the discount, in the same order, so
-      // dropping those that fall below it now is exact.
-      double cut = request.value("threshold", 0.0);
-      if (answer.contains("parsed") && answer["parsed"].is_object())
-        cut = std::max(cut, answer["parsed"].value("at_least", 0.0));
-      nlohmann::json kept = nlohmann::json::array();
-      for (nlohmann::json& result : answer["results"]) {
-        if (result.contains("score") && result["score"].is_number())
-          result["score"] = result["score"].get<double>() * discount;
-        if (result.value("score", 1.0) >= cut) kept.push_back(std::move(result));
-      }
-      answer["results"] = std::move(kept);
-    }
-    answer["read_text"] = searched;
-    if (reading.corrected && *reading.corrected != searched) answer["did_you_mean"] = *reading.corrected;
-    return answer;
   }
 }
 

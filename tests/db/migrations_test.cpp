@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "db/sqlite.h"
+#include "db/store.h"
 #include "geometry/core/error.h"
 #include "tests/db/expect_error.h"
 #include "tests/db/temp_dir.h"
@@ -69,6 +70,39 @@ TEST_F(MigrationsTest, RefusesNewerDatabase) {
   FSDB_EXPECT_CONTAINS(message, "99");
   FSDB_EXPECT_CONTAINS(message, "newer");
   EXPECT_FALSE(hasTable(db, "objects"));
+}
+
+// 009: the objects of an older database get their search words (name, a string description,
+// the strings of their descriptors), as the store writes them for new versions.
+TEST(ObjectTextMigration, ObjectsOfAnOlderDatabaseAreFoundByTheirWords) {
+  TempDir dir;
+  const std::string path = dir.file("old.db");
+  {
+    sqlite::Connection db(path);
+    std::vector<std::pair<int, std::string>> upTo8;
+    for (const auto& m : embeddedMigrations())
+      if (m.first <= 8) upTo8.push_back(m);
+    ASSERT_EQ(applyMigrations(db, upTo8), 8);
+    db.exec("INSERT INTO objects (kind, name, latest_version) VALUES ('part', 'desk-lamp', 2), ('shape', 'pair', 1),"
+            " ('curve', 'arc', 1)");
+    db.exec("INSERT INTO versions VALUES"
+            " (1, 1, '{\"meta\":{\"description\":\"an old torch\"}}', 'h', '2026-01-01T00:00:00.000Z'),"
+            " (1, 2, '{\"meta\":{\"description\":\"a reading light\"},\"descriptors\":[\"slightly bent\",3]}', 'h',"
+            " '2026-01-01T00:00:00.000Z'),"
+            " (2, 1, '{\"meta\":{\"description\":7}}', 'h', '2026-01-01T00:00:00.000Z'),"
+            " (3, 1, '{\"meta\":{\"description\":\"a reading arc\"}}', 'h', '2026-01-01T00:00:00.000Z')");
+  }
+  auto store = Store::open(path);
+  const auto ids = [&](const std::vector<std::string>& words) {
+    std::vector<int64_t> out;
+    for (const StoredObject& o : store->described(words, {"part", "shape"}, 10)) out.push_back(o.id);
+    return out;
+  };
+  EXPECT_EQ(ids({"reading", "light", "bent"}), std::vector<int64_t>{1});  // the latest version's
+  EXPECT_TRUE(ids({"torch"}).empty());
+  EXPECT_EQ(ids({"lamp"}), std::vector<int64_t>{1});  // the name's words
+  EXPECT_EQ(ids({"pair"}), std::vector<int64_t>{2});  // a description that is no string is left out
+  EXPECT_TRUE(ids({"arc"}).empty());                  // curves are not searched by words
 }
 
 }  // namespace

@@ -20,13 +20,13 @@ namespace fsdb {
 namespace {
 
 NewObject part(const std::string& name, const std::string& document = "{\"eps1\":1}") {
-  return NewObject{"part", name, document, contentHash(document), {}, {}, {}};
+  return NewObject{"part", name, document, contentHash(document), {}, {}, {}, {}};
 }
 
 // A shape whose tree is a union of "ref" leaves naming `children` (parts by default).
 NewObject shape(const std::string& name, const std::vector<ObjectReference>& children, const std::string& salt = "") {
   std::string document = "{\"union\":" + std::to_string(children.size()) + salt + "}";
-  NewObject object{"shape", name, document, contentHash(document), children, {}, {}};
+  NewObject object{"shape", name, document, contentHash(document), children, {}, {}, {}};
   object.nodes.push_back({0, -1, 0, "union", "", -1, ""});
   for (size_t i = 0; i < children.size(); ++i)
     object.nodes.push_back(
@@ -276,6 +276,40 @@ TEST_P(StoreTest, NamedFindsAnyOfTheNamesAcrossKinds) {
   store->remove("part", bolt, false);
   EXPECT_TRUE(store->named({"bolt"}, {"part", "shape"}).empty());
   EXPECT_THROW(store->named(std::vector<std::string>(Store::kMaxNamedLookups + 1, "x"), {"part"}), Error);
+}
+
+// described: every word (stemmed) of the name and search text, the latest version's, live objects
+// of the kinds asked; words that look like FTS operators are words.
+TEST_P(StoreTest, DescribedFindsObjectsByEveryWordOfTheirText) {
+  NewObject lamp = part("desk-lamp");
+  lamp.searchText = "a lamp with a bent arm";
+  const int64_t lampId = store->create(lamp).id;
+  NewObject pair = shape("pair", {});
+  pair.searchText = "two balls glued AND stacked";
+  const int64_t pairId = store->create(pair).id;
+  store->create(part("bare"));
+  const auto ids = [&](const std::vector<std::string>& words, const std::vector<std::string>& kinds) {
+    std::vector<int64_t> out;
+    for (const StoredObject& o : store->described(words, kinds, 10)) out.push_back(o.id);
+    return out;
+  };
+  EXPECT_EQ(ids({"bent", "lamp"}, {"part", "shape"}), std::vector<int64_t>{lampId});
+  EXPECT_EQ(ids({"arms", "lamps"}, {"part"}), std::vector<int64_t>{lampId});  // stems
+  EXPECT_EQ(ids({"desk"}, {"part"}), std::vector<int64_t>{lampId});               // the name's words
+  EXPECT_TRUE(ids({"bent", "ball"}, {"part", "shape"}).empty());                 // every word
+  EXPECT_EQ(ids({"balls", "and"}, {"shape"}), std::vector<int64_t>{pairId});
+  EXPECT_TRUE(ids({"balls"}, {"part"}).empty());
+  EXPECT_TRUE(ids({"NEAR", "lamp"}, {"part"}).empty());  // a word, not FTS5's operator
+  EXPECT_TRUE(ids({"\"lamp"}, {"part"}).size() <= 1u);  // a quote is text, not syntax
+  EXPECT_TRUE(ids({}, {"part"}).empty());
+  // A new version replaces the words; deleting the object deletes them.
+  lamp.searchText = "a reading light";
+  store->put(lampId, lamp);
+  EXPECT_TRUE(ids({"bent", "lamp"}, {"part"}).empty());
+  EXPECT_EQ(ids({"reading", "light"}, {"part"}), std::vector<int64_t>{lampId});
+  store->remove("part", lampId, false);
+  EXPECT_TRUE(ids({"reading", "light"}, {"part"}).empty());
+  EXPECT_THROW(store->described(std::vector<std::string>(Store::kMaxTextWords + 1, "x"), {"part"}, 10), Error);
 }
 
 TEST_P(StoreTest, RemoveInUseUnlessCascade) {
