@@ -5,7 +5,9 @@
 // every failed line, downloads (GLB, OBJ, STL at α; .vdb), addresses of objects (#/shapes/ID) and
 // a bearer token for servers run with --token; and the design tools of web/part_editor.js (edit a
 // part's fuzzy values with a live preview, save a version), web/versions.js (history, compare)
-// and web/members.js (the family's crisp members).
+// and web/members.js (the family's crisp members); a shape built in the Structure panel
+// (web/modules/builder.js); curves with their α levels or fair candidates (one chosen and stored)
+// and surfaces with their control nets (web/modules/curves.js).
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
@@ -14,6 +16,8 @@ import { fitCamera, litScene } from './modules/scene.js';
 import { fuzzyText, setupEditor } from './modules/part_editor.js';
 import { setupVersions } from './modules/versions.js';
 import { setupMembers } from './modules/members.js';
+import { setupBuilder } from './modules/builder.js';
+import { setupCurves } from './modules/curves.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -56,7 +60,7 @@ function card(item) {
     }
     li.append(list);
   }
-  if (item.kind === 'part' || item.kind === 'shape') li.addEventListener('click', () => open(item.kind, item.id, li));
+  li.addEventListener('click', () => open(item.kind, item.id, li));
   return li;
 }
 
@@ -228,7 +232,7 @@ async function loadMesh() {
   const { kind, id } = current;
   updateExports();
   const request = ++meshRequest;
-  const stale = () => request !== meshRequest || current.id !== id;
+  const stale = () => request !== meshRequest || !current || current.id !== id;
   const started = performance.now();
   $('view-status').textContent = `computing α = ${alpha.toFixed(2)}…`;
   const coarse = await fetchScene(kind, id, alpha, 24);
@@ -278,12 +282,13 @@ $('canvas').addEventListener('click', async (event) => {
 });
 
 // ---- fuzzy volume and structure -------------------------------------------------------------
-async function chart() {
+// The fuzzy volume over α of the object shown, or of `draft` (a document not stored).
+async function chart(draft = null) {
   const alphas = Array.from({ length: 11 }, (_, i) => i / 10);
   const request = { resolution: 32, alphas };
-  const answer = current.kind === 'shape'
+  const answer = !draft && current.kind === 'shape'
     ? await api(`/shapes/${current.id}/evaluate`, { method: 'POST', body: JSON.stringify(request) })
-    : await api('/evaluate', { method: 'POST', body: JSON.stringify({ ...request, shape: current.document }) });
+    : await api('/evaluate', { method: 'POST', body: JSON.stringify({ ...request, shape: draft || current.document }) });
   const levels = answer.alphas;
   const top = Math.max(...levels.map((l) => l.upper_volume), 1e-12);
   const x = (a) => 40 + a * 260, y = (v) => 160 - (v / top) * 140;
@@ -341,6 +346,8 @@ function tree() {
   $('tree').replaceChildren(ul);
 }
 
+// A part or shape opens with its mesh, structure and fuzzy volume; a curve or surface in its own
+// mode (web/modules/curves.js draws it).
 async function open(kind, id, li) {
   for (const other of document.querySelectorAll('#results > li.selected')) other.classList.remove('selected');
   if (li) li.classList.add('selected');
@@ -353,9 +360,14 @@ async function open(kind, id, li) {
     // The object's address (/#/parts/ID, /#/shapes/ID): a reload or a shared link opens it again.
     if (location.hash !== `#/${kind}s/${id}`) history.replaceState(null, '', `${location.pathname}${location.search}#/${kind}s/${id}`);
     $('view').hidden = false;
+    $('view').dataset.mode = kind === 'curve' || kind === 'surface' ? kind : 'object';
     $('title').textContent = `${kind} ${stored.name} (#${id}, version ${stored.version})`;
     resize();
     fitted = false;
+    if (kind === 'curve' || kind === 'surface') {
+      await toolsReady;
+      return;
+    }
     await loadMesh();
     tree();
     await chart();
@@ -434,6 +446,27 @@ const view = {
   fetchDocumentScene,
   showModel,
   render,
+  chart: (doc) => chart(doc).catch((e) => status(e.message, true)),
+  open: (kind, id) => open(kind, id, null),
+  // The next model shown places the camera again (the object's size changed).
+  refit() {
+    fitted = false;
+  },
+  // The view without a stored object (a shape being built): `mode` shows its controls only.
+  showDraft(title, mode = 'draft') {
+    current = null;
+    for (const other of document.querySelectorAll('#results > li.selected')) other.classList.remove('selected');
+    if (location.hash) history.replaceState(null, '', `${location.pathname}${location.search}`);
+    if (model) scene.remove(model);
+    model = null;
+    delete $('canvas').dataset.shown;
+    $('view').hidden = false;
+    $('view').dataset.mode = mode;
+    $('title').textContent = title;
+    $('chart').replaceChildren();
+    resize();
+    fitted = false;
+  },
   // A stored object opened again (after a save, or a reload on a conflict).
   reopen: () => open(current.kind, current.id, null),
   own(redrawFn) {
@@ -448,11 +481,11 @@ const view = {
   },
 };
 const editor = setupEditor(view);
-const tools = [editor, setupVersions(view, editor), setupMembers(view)];
+const tools = [editor, setupVersions(view, editor), setupMembers(view), setupBuilder(view), setupCurves(view)];
 
-// An object in the address (#/parts/ID, #/shapes/ID) opens in the view.
+// An object in the address (#/parts/ID, #/shapes/ID, #/curves/ID, #/surfaces/ID) opens in the view.
 function openFromAddress() {
-  const m = /^#\/(part|shape)s\/(\d+)$/.exec(location.hash);
+  const m = /^#\/(part|shape|curve|surface)s\/(\d+)$/.exec(location.hash);
   if (m && !(current && current.kind === m[1] && current.id === Number(m[2]))) open(m[1], Number(m[2]), null);
 }
 window.addEventListener('hashchange', openFromAddress);
