@@ -78,30 +78,61 @@ function show(items, append = false) {
   applyFilter();
 }
 
-// How the text was read: the grammar's words; the words not understood (each with its closest
-// known words) and the text searched instead; and, when the search left out words it could have
-// corrected, the corrected text as a link that runs it.
-function showReading(answer) {
+// How the text was read, shown above its results: the grammar's words (`read_as`); the words
+// routed to known ones (an inflection, a WordNet link) with their discount; the words not
+// understood, each closest word a link that puts it in the text and searches again; the text
+// searched instead (`read_text`); when nothing met every condition, that the results are the
+// closest partial matches; and, when the search left out words it could have corrected, the
+// corrected text as one link.
+function link(text, action, onClick) {
+  const a = Object.assign(document.createElement('a'), { href: '#', textContent: text });
+  a.dataset.action = action;
+  a.addEventListener('click', (event) => {
+    event.preventDefault();
+    onClick();
+  });
+  return a;
+}
+
+function searchFor(text) {
+  $('query').value = text;
+  search(text);
+}
+
+function showReading(answer, text) {
   const p = $('read-as');
   p.replaceChildren();
-  if (answer.parsed && answer.parsed.read_as) p.append(`Read as: ${answer.parsed.read_as}`);
+  const part = (...nodes) => p.append(...(p.childNodes.length ? [' · '] : []), ...nodes);
+  if (answer.parsed && answer.parsed.read_as) part(`Read as: ${answer.parsed.read_as}`);
+  for (const r of answer.routed || []) {
+    const span = Object.assign(document.createElement('span'), { className: 'routed' });
+    span.textContent = `read “${r.word}” as “${r.became}” (${r.why}${r.discount < 1 ? `, scores × ${r.discount}` : ''})`;
+    part(span);
+  }
   if (answer.ignored && answer.ignored.length) {
-    const words = answer.ignored.map((w) => `“${w.word}”${w.did_you_mean.length ? ` (${w.did_you_mean.join(', ')}?)` : ''}`);
-    p.append(`${p.childNodes.length ? ' · ' : ''}Searched for “${answer.read_text}”; not understood: ${words.join(', ')}`);
+    const words = [];
+    for (const w of answer.ignored) {
+      if (words.length) words.push(', ');
+      words.push(`“${w.word}”`);
+      if (!w.did_you_mean.length) continue;
+      words.push(' (');
+      w.did_you_mean.forEach((better, k) => {
+        if (k) words.push(', ');
+        // The one word replaced where it stands in the text.
+        words.push(link(better, 'correct-word', () => searchFor(`${text.slice(0, w.at)}${better}${text.slice(w.at + w.word.length)}`)));
+      });
+      words.push('?)');
+    }
+    part(`Searched for “${answer.read_text}”; not understood: `, ...words);
+  } else if (answer.read_text && answer.read_text !== text) {
+    part(`Searched for “${answer.read_text}”`);
   }
-  if (answer.did_you_mean) {
-    const link = document.createElement('a');
-    link.href = '#';
-    link.dataset.action = 'did-you-mean';
-    link.textContent = answer.did_you_mean;
-    link.addEventListener('click', (event) => {
-      event.preventDefault();
-      $('query').value = answer.did_you_mean;
-      search(answer.did_you_mean);
-    });
-    p.append(' · Did you mean ', link, '?');
-  }
+  if (answer.partial) part('nothing meets every condition: the closest partial matches');
+  if (answer.did_you_mean) p.append(' · Did you mean ', link(answer.did_you_mean, 'did-you-mean', () => searchFor(answer.did_you_mean)), '?');
 }
+
+// The text of the last search, which a new threshold runs again.
+let lastSearch = null;
 
 // A search shows 12 results; "More" asks again for 12 more (the ranking is the same, so the
 // first ones stay where they were).
@@ -109,8 +140,11 @@ async function search(text, limit = 12) {
   status('Searching…');
   $('more').hidden = true;
   try {
-    const answer = await api('/query', { method: 'POST', body: JSON.stringify({ text, limit }) });
-    showReading(answer);
+    // The least score (the threshold control); 0 asks for every result.
+    const threshold = Number($('threshold').value);
+    const answer = await api('/query', { method: 'POST', body: JSON.stringify({ text, limit, ...(threshold > 0 ? { threshold } : {}) }) });
+    lastSearch = text;
+    showReading(answer, text);
     const items = answer.results.map((r) => ({
       ...r,
       kind: r.kind || 'shape',
@@ -121,7 +155,7 @@ async function search(text, limit = 12) {
       ],
     }));
     show(items);
-    status(`${items.length} result${items.length === 1 ? '' : 's'} (${answer.search} search, ${answer.millis.toFixed(1)} ms)`);
+    status(`${items.length} result${items.length === 1 ? '' : 's'}${threshold > 0 ? ` scoring at least ${threshold.toFixed(2)}` : ''} (${answer.search} search, ${answer.millis.toFixed(1)} ms)`);
     // A full page may have more behind it (at most 1000: the search's limit).
     $('more').hidden = items.length < limit || limit >= 1000;
     nextPage = () => search(text, Math.min(limit + 12, 1000));
@@ -386,6 +420,12 @@ $('search').addEventListener('submit', (event) => {
 for (const button of document.querySelectorAll('[data-browse]'))
   button.addEventListener('click', () => browse(button.dataset.browse));
 $('more').addEventListener('click', () => nextPage && nextPage());
+$('threshold').addEventListener('input', () => {
+  $('threshold-value').textContent = Number($('threshold').value).toFixed(2);
+});
+$('threshold').addEventListener('change', () => {
+  if (lastSearch) search(lastSearch);
+});
 
 $('create').addEventListener('submit', async (event) => {
   event.preventDefault();

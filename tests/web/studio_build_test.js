@@ -5,7 +5,8 @@
 // unsaved tree in the view, saves it and sees it opened; opens a Bézier curve (its lower, crisp and
 // upper curves, changing with α) and a fair curve, picks a candidate other than the best (stored
 // as a new version; a reload shows the choice marked and drawn); opens a surface (lower and upper
-// with their control nets); and loads the page on a phone (390×844) and a tablet (768×1024), where
+// with their control nets); searches with a word corrected in one click, a word read as another
+// (shown with the results) and a least score; and loads the page on a phone (390×844) and a tablet (768×1024), where
 // the view, the search box and the α slider must be visible and nothing wider than the screen.
 // Each step is timed and its picture must not be blank; any console error, failed request or
 // answer of 400 or more fails the test.
@@ -165,6 +166,44 @@ async function main() {
       await page.waitForFunction((w) => (document.querySelector('#canvas').dataset.shown || '').startsWith(w), `surface/${sid}@`);
     });
     await picture('studio-surface');
+
+    // ---- 3. Search polish: a correction word in one click, the words read otherwise shown with the
+    // results, and the least score.
+    const searched = (want) => page.waitForFunction((w) => document.querySelector('#query').value === w &&
+      /result.*linguistic search/.test(document.querySelector('#status').textContent), want);
+    await step('search: a misspelt word corrected in one click', async () => {
+      await page.fill('#query', 'a bnet cylinder');
+      await page.press('#query', 'Enter');
+      await page.waitForSelector('#read-as a[data-action="correct-word"]');
+      const offered = await page.$$eval('#read-as a[data-action="correct-word"]', (as) => as.map((a) => a.textContent));
+      if (offered[0] !== 'bent') throw new Error(`corrections offered: ${offered}`);
+      await page.click('#read-as a[data-action="correct-word"]');
+      await searched('a bent cylinder');
+    });
+    await step('search: a word read as another (WordNet)', async () => {
+      await page.fill('#query', 'a crooked cylinder');
+      await page.press('#query', 'Enter');
+      await page.waitForSelector('#read-as .routed');
+    });
+    const reading = await text('#read-as');
+    if (!reading.includes('Read as: find a bent cylinder') || !reading.includes('read “crooked” as “bent” (WordNet antonym, scores × 0.85)'))
+      throw new Error(`the reading: ${reading}`);
+    const scores = () => page.$$eval('#results > li .score', (ss) => ss.map((x) => Number(x.textContent)));
+    await step('search: least score 0.5', async () => {
+      await page.fill('#query', 'a slightly bent cylinder');
+      await page.press('#query', 'Enter');
+      await searched('a slightly bent cylinder');
+      const all = await scores();
+      if (!all.some((x) => x < 0.5)) throw new Error(`no score under 0.5 to leave out: ${all}`);
+      await page.locator('#threshold').fill('0.5');
+      await page.waitForFunction(() => document.querySelector('#status').textContent.includes('scoring at least 0.50'));
+      const kept = await scores();
+      if (!kept.length || kept.some((x) => x < 0.5) || kept.length >= all.length) throw new Error(`at least 0.5: ${kept} of ${all}`);
+    });
+    await page.waitForFunction(() => [...document.querySelectorAll('#results img')].every((i) => i.complete && i.naturalWidth > 0),
+      null, { timeout: 60000 });
+    await page.screenshot({ path: path.join(out, 'studio-search-polish.png'), clip: { x: 0, y: 0, width: 1280, height: 520 } });
+    await page.locator('#threshold').fill('0');
 
     // ---- 4. Phone and tablet: the view (a shape opened from its address), the search box and the
     // α slider are visible and within the screen's width, and nothing makes the page scroll sideways.
