@@ -117,6 +117,30 @@ async function main() {
     if ((await page.evaluate(() => location.hash)) !== `#/shapes/${id}`) throw new Error('the saved shape is not opened at its address');
     await picture('studio-build-saved');
 
+    // The other two sources of parts: the catalogue's cube (referenced by name) and a new unit
+    // sphere, the sphere placed 1 unit above the cube's centre (it cuts into the cube's top), the
+    // root a difference.
+    await step('build: a catalogue part and a new one, a difference', async () => {
+      await page.click('[data-action="new-shape"]');
+      await page.waitForFunction(() => document.querySelector('#view').dataset.mode === 'draft' && !document.querySelector('#tree li[data-node="part"]'));
+      await page.selectOption('#add-source', 'catalogue');
+      await page.fill('#add-text', 'cube');
+      await page.click('[data-action="add-part"]');
+      await page.waitForSelector('#tree li[data-node="part"][data-name="cube"]');
+      await page.selectOption('#add-source', 'new');
+      await page.click('[data-action="add-part"]');
+      await page.waitForSelector('#tree li[data-node="part"][data-name="sphere"]');
+      await page.click('#tree li[data-name="sphere"] [data-action="place"]');
+      await page.selectOption('#tree li[data-name="sphere"] .placement [data-field="direction"]', 'top');
+      await page.fill('#tree li[data-name="sphere"] .placement [data-field="distance"]', '1');
+      await page.press('#tree li[data-name="sphere"] .placement [data-field="distance"]', 'Enter');
+      await page.selectOption('#tree li[data-node="op"] > [data-action="set-op"]', 'difference');
+      await page.waitForFunction(() => document.querySelector('#view-status').textContent.startsWith('new shape, not saved'), null, { timeout: 60000 });
+    });
+    await picture('studio-build-difference');
+    const draft = await page.evaluate(() => document.querySelector('#tree').textContent);
+    if (!/difference/.test(draft) || !/from the catalogue/.test(draft) || !/a unit sphere/.test(draft)) throw new Error(`the draft: ${draft}`);
+
     // ---- 2. Curves and surfaces.
     const openCard = async (kind, name) => {
       await page.click(`[data-browse="${kind}s"]`);

@@ -31,8 +31,6 @@ export function controlNet(grid, alpha, end) {
 
 export function setupCurves(view) {
   let object = null;  // the curve or surface shown: {kind, id, version, document}
-  let candidates = [];
-  let shownCandidate = 0;
 
   function curveStatus(text, error = false) {
     $('candidates-status').textContent = text;
@@ -59,7 +57,6 @@ export function setupCurves(view) {
   }
 
   async function showCandidate(k) {
-    shownCandidate = k;
     for (const li of $('candidates').children) li.classList.toggle('selected', Number(li.dataset.candidate) === k);
     await picture(`&candidate=${k}`, `curve/${object.id}#${k}`);
   }
@@ -97,7 +94,7 @@ export function setupCurves(view) {
 
   async function openFair() {
     const answer = await api(`/curves/${object.id}/candidates?version=${object.version}`);
-    candidates = answer.candidates;
+    const { candidates } = answer;
     $('candidates').replaceChildren(...candidates.map(candidateItem));
     $('candidates-box').hidden = false;
     const chosen = object.document.chosen_candidate;
