@@ -27,7 +27,18 @@ async function main() {
   const inks = [];
   try {
     const page = await browser.newPage({ viewport: { width: 1280, height: 900 } });
-    const problems = watchProblems(page);
+    // Words with a misspelling are refused when added (the one 422 expected, and the browser's
+    // console line of it); nothing else may fail.
+    let unknownWords = false;
+    let refused = 0;
+    const problems = watchProblems(page, {
+      console: (line) => unknownWords && /the server responded with a status of 422/.test(line),
+      response: (r) => {
+        if (!(unknownWords && r.status() === 422 && new URL(r.url()).pathname === '/mesh')) return false;
+        refused += 1;
+        return true;
+      },
+    });
     const step = async (name, body) => {
       const started = Date.now();
       const result = await body().catch((e) => { throw new Error(`${name}: ${e.message}`); });
@@ -61,6 +72,14 @@ async function main() {
       await page.click('[data-action="add-part"]');
       await page.waitForSelector('#tree li[data-node="part"][data-name="big-box"]');
     });
+    await step('build: words with a misspelling refused, with the closest words', async () => {
+      unknownWords = true;
+      await page.fill('#add-text', 'a slighly bent cylinder');
+      await page.click('[data-action="add-part"]');
+      await page.waitForFunction(() => /unknown word 'slighly'.*slightly/.test(document.querySelector('#builder-status').textContent));
+      unknownWords = false;
+    });
+    if (refused !== 1 || (await page.$$('#tree li[data-node="part"]')).length !== 1) throw new Error(`misspelt words: ${refused} refusals`);
     const oneStatus = await text('#view-status');
     if (!/needs at least two parts/.test(oneStatus)) throw new Error(`one part in a union: ${oneStatus}`);
     await step('build: add a slightly bent cylinder, preview', async () => {

@@ -5,7 +5,7 @@
 // in words ("about 3 units right of big-box": the leaf's `transform.place`, docs/api.md
 // "Placements from words"). The view previews the unsaved tree through POST /mesh (coarse, then
 // full); saving stores it (POST /shapes) and opens it.
-import { api } from './api.js';
+import { api, apiBytes } from './api.js';
 
 const $ = (id) => document.getElementById(id);
 const OPS = ['union', 'intersection', 'difference'];
@@ -220,6 +220,15 @@ export function setupBuilder(view) {
       }
       leaf = { source, part: text, name: text };
     } else if (source === 'words') {
+      // The words are read before the part joins the tree (a mesh of 8 voxels: some 60 ms), so an
+      // unknown word is said here, with its closest words, not by every preview after.
+      const body = JSON.stringify({ shape: { kind: 'part', text }, alpha: 0.5, resolution: 8, format: 'glb' });
+      try {
+        await apiBytes('/mesh', { method: 'POST', body });
+      } catch (e) {
+        builderStatus(e.message, true);
+        return;
+      }
       leaf = { source, text, name: uniqueName(slug(text)) };
     } else {
       leaf = { source, name: uniqueName('sphere') };
