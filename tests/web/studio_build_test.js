@@ -156,6 +156,15 @@ async function main() {
       await page.selectOption('#tree li[data-node="op"] > [data-action="set-op"]', 'difference');
       await page.waitForFunction(() => document.querySelector('#view-status').textContent.startsWith('new shape, not saved'), null, { timeout: 60000 });
     });
+    // An operation nested under the root waits for its two operands; removed, the tree previews again.
+    await step('build: a nested operation added and removed', async () => {
+      await page.click('[data-action="add-operation"]');
+      await page.waitForFunction(() => document.querySelectorAll('#tree li[data-node="op"]').length === 2 &&
+        /the difference needs at least two parts \(it has 0\)/.test(document.querySelector('#view-status').textContent));
+      await page.click('#tree li[data-node="op"] li[data-node="op"] > [data-action="remove-node"]');
+      await page.waitForFunction(() => document.querySelectorAll('#tree li[data-node="op"]').length === 1 &&
+        document.querySelector('#view-status').textContent.startsWith('new shape, not saved'), null, { timeout: 60000 });
+    });
     await picture('studio-build-difference');
     const draft = await page.evaluate(() => document.querySelector('#tree').textContent);
     if (!/difference/.test(draft) || !/from the catalogue/.test(draft) || !/a unit sphere/.test(draft)) throw new Error(`the draft: ${draft}`);
