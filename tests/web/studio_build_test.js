@@ -190,6 +190,7 @@ async function main() {
       await curveShown(`curve/${waveId}@0`);
     });
     const waveAtZero = await picture('studio-curve-alpha-0', '#curve-box');
+    await region('studio-curve-view', '#curve-box', '#alpha-box');
     if (waveAtZero.equals(wave)) throw new Error('the curve does not change with alpha');
     const fairId = await step('fair curve: open, candidates', async () => {
       const cid = await openCard('curve', 'fair-figure-7');

@@ -99,8 +99,9 @@ export function setupCurves(view) {
     $('candidates-box').hidden = false;
     const chosen = object.document.chosen_candidate;
     curveStatus(candidates.length ? (chosen === undefined ? 'no candidate chosen yet: the best is drawn' : '') : 'no candidate reaches alpha_threshold');
-    // α does not apply: the candidates are crisp curves (their fuzziness is in the ranking).
-    view.own(() => Promise.resolve(view.status('a fair curve: its candidates are crisp curves, ranked by the danger zones')));
+    // α does not apply (the slider is hidden): the candidates are crisp curves, their fuzziness
+    // is in the ranking.
+    view.own(() => Promise.resolve());
     view.status('a fair curve: its candidates are crisp curves, ranked by the danger zones');
     if (candidates.length) await showCandidate(chosen ?? 0);
   }
@@ -151,6 +152,7 @@ export function setupCurves(view) {
         return Promise.resolve();
       }
       object = o;
+      $('view').dataset.curve = o.document.fair ? 'fair' : 'bezier';
       if (o.kind === 'surface') {
         view.own(drawSurface);
         return drawSurface();
