@@ -39,7 +39,8 @@ CurveDocument parseCurveDocument(const nlohmann::json& doc, const std::string& p
     const std::optional<int64_t> k = integralNumber(doc["chosen_candidate"]);
     if (!k || *k < 0)
       throw Error(errc::kInvalidDocument,
-                  "chosen_candidate is a candidate's index, an integer >= 0, got " + doc["chosen_candidate"].dump(), cp);
+                  "chosen_candidate is a candidate's index, an integer >= 0, got " + doc["chosen_candidate"].dump(),
+                  cp);
     // Checked against the candidates themselves, so that a stored choice always names one (the
     // request's max_candidates bounds this work as it bounds GET /curves/{id}/candidates).
     const std::size_t n = answerFairCurve(*out.fair).candidates.size();
@@ -47,8 +48,8 @@ CurveDocument parseCurveDocument(const nlohmann::json& doc, const std::string& p
     if (chosen >= n)
       throw Error(errc::kInvalidDocument,
                   n == 0 ? "the curve has no candidate to choose (none reaches alpha_threshold)"
-                         : "chosen_candidate is an index 0 .. " + std::to_string(n - 1) + " of the curve's candidates, got " +
-                               std::to_string(chosen),
+                         : "chosen_candidate is an index 0 .. " + std::to_string(n - 1) +
+                               " of the curve's candidates, got " + std::to_string(chosen),
                   cp);
     out.chosenCandidate = chosen;
   }

@@ -25,8 +25,8 @@
 namespace fsdb {
 
 struct CurveDocument {
-  std::optional<FuzzyBezierCurve> bezier;  // set for the "bezier" form
-  std::optional<FairCurveRequest> fair;    // set for the "fair" form
+  std::optional<FuzzyBezierCurve> bezier;      // set for the "bezier" form
+  std::optional<FairCurveRequest> fair;        // set for the "fair" form
   std::optional<std::size_t> chosenCandidate;  // the designer's candidate of a fair curve
 };
 

@@ -39,7 +39,8 @@ TEST(CurveDocument, ReadsTheFairFormAsTheRequestParserDoes) {
 // The designer's pick among a fair curve's ranked candidates (Bernardes, Wu & D'Ottaviano make the
 // user part of the defuzzification): an index of the candidates the document's request yields.
 TEST(CurveDocument, KeepsTheDesignersChosenCandidate) {
-  const json fig7 = {{"points", {{0, 0}, {-5, -1}, {-3, -4}, {1, -1}}}, {"closed", true}, {"behavior", "undulant"}, {"samples", 5}};
+  const json fig7 = {
+      {"points", {{0, 0}, {-5, -1}, {-3, -4}, {1, -1}}}, {"closed", true}, {"behavior", "undulant"}, {"samples", 5}};
   const size_t n = answerFairCurve(parseFairCurveRequest(fig7)).candidates.size();
   ASSERT_GE(n, 2u);
   const CurveDocument c = parseCurveDocument({{"fair", fig7}, {"chosen_candidate", 1}}, "", kLimits);

@@ -84,8 +84,9 @@ TEST_F(StoredFairCurve, StoresTheDesignersChosenCandidateAsANewVersion) {
   EXPECT_EQ(stale->status, 412) << stale->body;
   expectError(server->put(base, json{{"fair", figure7()}, {"chosen_candidate", n}}), 422, "invalid_document",
               "chosen_candidate");
-  expectError(server->post("/curves", json{{"name", "line-chosen"}, {"bezier", {{"control_points", {{0, 0}, {1, 1}}}}},
-                                            {"chosen_candidate", 0}}),
+  expectError(server->post("/curves", json{{"name", "line-chosen"},
+                                           {"bezier", {{"control_points", {{0, 0}, {1, 1}}}}},
+                                           {"chosen_candidate", 0}}),
               422, "invalid_document", "chosen_candidate");
   EXPECT_EQ(server->get(base).json["version"], 2);
 }
