@@ -5,7 +5,9 @@
 // every failed line, downloads (GLB, OBJ, STL at α; .vdb), addresses of objects (#/shapes/ID) and
 // a bearer token for servers run with --token; and the design tools of web/part_editor.js (edit a
 // part's fuzzy values with a live preview, save a version), web/versions.js (history, compare)
-// and web/members.js (the family's crisp members).
+// and web/members.js (the family's crisp members); a shape built in the Structure panel
+// (web/modules/builder.js); curves with their α levels or fair candidates (one chosen and stored)
+// and surfaces with their control nets (web/modules/curves.js).
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
@@ -14,6 +16,8 @@ import { fitCamera, litScene } from './modules/scene.js';
 import { fuzzyText, setupEditor } from './modules/part_editor.js';
 import { setupVersions } from './modules/versions.js';
 import { setupMembers } from './modules/members.js';
+import { setupBuilder } from './modules/builder.js';
+import { setupCurves } from './modules/curves.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -56,7 +60,7 @@ function card(item) {
     }
     li.append(list);
   }
-  if (item.kind === 'part' || item.kind === 'shape') li.addEventListener('click', () => open(item.kind, item.id, li));
+  li.addEventListener('click', () => open(item.kind, item.id, li));
   return li;
 }
 
@@ -74,30 +78,61 @@ function show(items, append = false) {
   applyFilter();
 }
 
-// How the text was read: the grammar's words; the words not understood (each with its closest
-// known words) and the text searched instead; and, when the search left out words it could have
-// corrected, the corrected text as a link that runs it.
-function showReading(answer) {
+// How the text was read, shown above its results: the grammar's words (`read_as`); the words
+// routed to known ones (an inflection, a WordNet link) with their discount; the words not
+// understood, each closest word a link that puts it in the text and searches again; the text
+// searched instead (`read_text`); when nothing met every condition, that the results are the
+// closest partial matches; and, when the search left out words it could have corrected, the
+// corrected text as one link.
+function link(text, action, onClick) {
+  const a = Object.assign(document.createElement('a'), { href: '#', textContent: text });
+  a.dataset.action = action;
+  a.addEventListener('click', (event) => {
+    event.preventDefault();
+    onClick();
+  });
+  return a;
+}
+
+function searchFor(text) {
+  $('query').value = text;
+  search(text);
+}
+
+function showReading(answer, text) {
   const p = $('read-as');
   p.replaceChildren();
-  if (answer.parsed && answer.parsed.read_as) p.append(`Read as: ${answer.parsed.read_as}`);
+  const part = (...nodes) => p.append(...(p.childNodes.length ? [' · '] : []), ...nodes);
+  if (answer.parsed && answer.parsed.read_as) part(`Read as: ${answer.parsed.read_as}`);
+  for (const r of answer.routed || []) {
+    const span = Object.assign(document.createElement('span'), { className: 'routed' });
+    span.textContent = `read “${r.word}” as “${r.became}” (${r.why}${r.discount < 1 ? `, scores × ${r.discount}` : ''})`;
+    part(span);
+  }
   if (answer.ignored && answer.ignored.length) {
-    const words = answer.ignored.map((w) => `“${w.word}”${w.did_you_mean.length ? ` (${w.did_you_mean.join(', ')}?)` : ''}`);
-    p.append(`${p.childNodes.length ? ' · ' : ''}Searched for “${answer.read_text}”; not understood: ${words.join(', ')}`);
+    const words = [];
+    for (const w of answer.ignored) {
+      if (words.length) words.push(', ');
+      words.push(`“${w.word}”`);
+      if (!w.did_you_mean.length) continue;
+      words.push(' (');
+      w.did_you_mean.forEach((better, k) => {
+        if (k) words.push(', ');
+        // The one word replaced where it stands in the text.
+        words.push(link(better, 'correct-word', () => searchFor(`${text.slice(0, w.at)}${better}${text.slice(w.at + w.word.length)}`)));
+      });
+      words.push('?)');
+    }
+    part(`Searched for “${answer.read_text}”; not understood: `, ...words);
+  } else if (answer.read_text && answer.read_text !== text) {
+    part(`Searched for “${answer.read_text}”`);
   }
-  if (answer.did_you_mean) {
-    const link = document.createElement('a');
-    link.href = '#';
-    link.dataset.action = 'did-you-mean';
-    link.textContent = answer.did_you_mean;
-    link.addEventListener('click', (event) => {
-      event.preventDefault();
-      $('query').value = answer.did_you_mean;
-      search(answer.did_you_mean);
-    });
-    p.append(' · Did you mean ', link, '?');
-  }
+  if (answer.partial) part('nothing meets every condition: the closest partial matches');
+  if (answer.did_you_mean) p.append(' · Did you mean ', link(answer.did_you_mean, 'did-you-mean', () => searchFor(answer.did_you_mean)), '?');
 }
+
+// The text of the last search, which a new threshold runs again.
+let lastSearch = null;
 
 // A search shows 12 results; "More" asks again for 12 more (the ranking is the same, so the
 // first ones stay where they were).
@@ -105,8 +140,11 @@ async function search(text, limit = 12) {
   status('Searching…');
   $('more').hidden = true;
   try {
-    const answer = await api('/query', { method: 'POST', body: JSON.stringify({ text, limit }) });
-    showReading(answer);
+    // The least score (the threshold control); 0 asks for every result.
+    const threshold = Number($('threshold').value);
+    const answer = await api('/query', { method: 'POST', body: JSON.stringify({ text, limit, ...(threshold > 0 ? { threshold } : {}) }) });
+    lastSearch = text;
+    showReading(answer, text);
     const items = answer.results.map((r) => ({
       ...r,
       kind: r.kind || 'shape',
@@ -117,7 +155,7 @@ async function search(text, limit = 12) {
       ],
     }));
     show(items);
-    status(`${items.length} result${items.length === 1 ? '' : 's'} (${answer.search} search, ${answer.millis.toFixed(1)} ms)`);
+    status(`${items.length} result${items.length === 1 ? '' : 's'}${threshold > 0 ? ` scoring at least ${threshold.toFixed(2)}` : ''} (${answer.search} search, ${answer.millis.toFixed(1)} ms)`);
     // A full page may have more behind it (at most 1000: the search's limit).
     $('more').hidden = items.length < limit || limit >= 1000;
     nextPage = () => search(text, Math.min(limit + 12, 1000));
@@ -228,7 +266,7 @@ async function loadMesh() {
   const { kind, id } = current;
   updateExports();
   const request = ++meshRequest;
-  const stale = () => request !== meshRequest || current.id !== id;
+  const stale = () => request !== meshRequest || !current || current.id !== id;
   const started = performance.now();
   $('view-status').textContent = `computing α = ${alpha.toFixed(2)}…`;
   const coarse = await fetchScene(kind, id, alpha, 24);
@@ -278,12 +316,13 @@ $('canvas').addEventListener('click', async (event) => {
 });
 
 // ---- fuzzy volume and structure -------------------------------------------------------------
-async function chart() {
+// The fuzzy volume over α of the object shown, or of `draft` (a document not stored).
+async function chart(draft = null) {
   const alphas = Array.from({ length: 11 }, (_, i) => i / 10);
   const request = { resolution: 32, alphas };
-  const answer = current.kind === 'shape'
+  const answer = !draft && current.kind === 'shape'
     ? await api(`/shapes/${current.id}/evaluate`, { method: 'POST', body: JSON.stringify(request) })
-    : await api('/evaluate', { method: 'POST', body: JSON.stringify({ ...request, shape: current.document }) });
+    : await api('/evaluate', { method: 'POST', body: JSON.stringify({ ...request, shape: draft || current.document }) });
   const levels = answer.alphas;
   const top = Math.max(...levels.map((l) => l.upper_volume), 1e-12);
   const x = (a) => 40 + a * 260, y = (v) => 160 - (v / top) * 140;
@@ -341,6 +380,8 @@ function tree() {
   $('tree').replaceChildren(ul);
 }
 
+// A part or shape opens with its mesh, structure and fuzzy volume; a curve or surface in its own
+// mode (web/modules/curves.js draws it).
 async function open(kind, id, li) {
   for (const other of document.querySelectorAll('#results > li.selected')) other.classList.remove('selected');
   if (li) li.classList.add('selected');
@@ -353,9 +394,14 @@ async function open(kind, id, li) {
     // The object's address (/#/parts/ID, /#/shapes/ID): a reload or a shared link opens it again.
     if (location.hash !== `#/${kind}s/${id}`) history.replaceState(null, '', `${location.pathname}${location.search}#/${kind}s/${id}`);
     $('view').hidden = false;
+    $('view').dataset.mode = kind === 'curve' || kind === 'surface' ? kind : 'object';
     $('title').textContent = `${kind} ${stored.name} (#${id}, version ${stored.version})`;
     resize();
     fitted = false;
+    if (kind === 'curve' || kind === 'surface') {
+      await toolsReady;
+      return;
+    }
     await loadMesh();
     tree();
     await chart();
@@ -374,6 +420,12 @@ $('search').addEventListener('submit', (event) => {
 for (const button of document.querySelectorAll('[data-browse]'))
   button.addEventListener('click', () => browse(button.dataset.browse));
 $('more').addEventListener('click', () => nextPage && nextPage());
+$('threshold').addEventListener('input', () => {
+  $('threshold-value').textContent = Number($('threshold').value).toFixed(2);
+});
+$('threshold').addEventListener('change', () => {
+  if (lastSearch) search(lastSearch);
+});
 
 $('create').addEventListener('submit', async (event) => {
   event.preventDefault();
@@ -434,6 +486,27 @@ const view = {
   fetchDocumentScene,
   showModel,
   render,
+  chart: (doc) => chart(doc).catch((e) => status(e.message, true)),
+  open: (kind, id) => open(kind, id, null),
+  // The next model shown places the camera again (the object's size changed).
+  refit() {
+    fitted = false;
+  },
+  // The view without a stored object (a shape being built): `mode` shows its controls only.
+  showDraft(title, mode = 'draft') {
+    current = null;
+    for (const other of document.querySelectorAll('#results > li.selected')) other.classList.remove('selected');
+    if (location.hash) history.replaceState(null, '', `${location.pathname}${location.search}`);
+    if (model) scene.remove(model);
+    model = null;
+    delete $('canvas').dataset.shown;
+    $('view').hidden = false;
+    $('view').dataset.mode = mode;
+    $('title').textContent = title;
+    $('chart').replaceChildren();
+    resize();
+    fitted = false;
+  },
   // A stored object opened again (after a save, or a reload on a conflict).
   reopen: () => open(current.kind, current.id, null),
   own(redrawFn) {
@@ -448,11 +521,11 @@ const view = {
   },
 };
 const editor = setupEditor(view);
-const tools = [editor, setupVersions(view, editor), setupMembers(view)];
+const tools = [editor, setupVersions(view, editor), setupMembers(view), setupBuilder(view), setupCurves(view)];
 
-// An object in the address (#/parts/ID, #/shapes/ID) opens in the view.
+// An object in the address (#/parts/ID, #/shapes/ID, #/curves/ID, #/surfaces/ID) opens in the view.
 function openFromAddress() {
-  const m = /^#\/(part|shape)s\/(\d+)$/.exec(location.hash);
+  const m = /^#\/(part|shape|curve|surface)s\/(\d+)$/.exec(location.hash);
   if (m && !(current && current.kind === m[1] && current.id === Number(m[2]))) open(m[1], Number(m[2]), null);
 }
 window.addEventListener('hashchange', openFromAddress);

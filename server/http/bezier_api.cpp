@@ -284,7 +284,8 @@ void registerBezierRoutes(HttpServer& server, const Store& store) {
       reject("samples", "Bezier");
       const FairCurveAnswer answer = answerFairCurve(*curve.fair);
       // R_alpha may leave no candidate: the picture then shows the points only.
-      const double k = numberParam(req, "candidate", 0.0);
+      // By default the designer's choice (the document's chosen_candidate), else the best.
+      const double k = numberParam(req, "candidate", static_cast<double>(curve.chosenCandidate.value_or(0)));
       const std::size_t n = answer.curves.size();
       if (k != std::floor(k) || k < 0 || (n > 0 && k >= static_cast<double>(n)) || (n == 0 && req.hasQueryParam("candidate")))
         throw Error(errc::kInvalidParameter,

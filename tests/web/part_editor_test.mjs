@@ -1,10 +1,11 @@
 // ctest studio_part_editor: the fuzzy-value arithmetic of the studio's part editor
 // (web/modules/part_editor.js) in Node, without a browser: each form to JSON and back, the core's
 // midpoint, a value moved with its shape kept, a value converted between forms keeping its
-// support and core, what stops a value from being sent, and the text of values.
+// support and core, what stops a value from being sent, the text of values, and α-cuts (the
+// surface view's control nets).
 import assert from 'node:assert/strict';
 import {
-  PART_VALUES, convertedTo, coreMidpoint, disorder, fromJson, fuzzyText, movedTo, toJson, valueAt,
+  PART_VALUES, alphaCut, convertedTo, coreMidpoint, disorder, fromJson, fuzzyText, movedTo, toJson, valueAt,
 } from '../../web/modules/part_editor.js';
 
 const close = (a, b) => assert.ok(Math.abs(a - b) < 1e-12, `${a} != ${b}`);
@@ -59,3 +60,12 @@ assert.equal(fuzzyText({ about: 3, spread: 0.5 }), 'about 3 ± 0.5');
 assert.equal(fuzzyText(undefined), '—');
 
 console.log('part editor values: ok');
+
+// α-cuts: the triangle's [l + α(m − l), r − α(r − m)]; a crisp value is itself; points linear.
+assert.deepEqual(alphaCut(fromJson({ tri: [-0.5, 0, 0.5] }), 0.5), [-0.25, 0.25]);
+assert.deepEqual(alphaCut(fromJson({ trap: [0, 1, 2, 4] }), 0), [0, 4]);
+assert.deepEqual(alphaCut(fromJson({ trap: [0, 1, 2, 4] }), 1), [1, 2]);
+assert.deepEqual(alphaCut(fromJson({ about: 2, spread: 1 }), 0.5), [1.5, 2.5]);
+assert.deepEqual(alphaCut(fromJson(3), 0.7), [3, 3]);
+assert.deepEqual(alphaCut(fromJson({ points: [[0, 0], [1, 1], [3, 0]] }), 0.5), [0.5, 2]);
+console.log('alpha cuts: ok');

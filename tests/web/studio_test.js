@@ -16,47 +16,11 @@
 // browser's own log line of it included).
 // Usage: node studio_test.js FSDB_BINARY SOURCE_DIR WEB_DIR OUT_DIR   (NODE_PATH: web-deps/node_modules)
 'use strict';
-const { spawn } = require('child_process');
 const fs = require('fs');
-const os = require('os');
 const path = require('path');
-const { chromium } = require('playwright-core');
+const { inkShare, launchBrowser, startServer, watchProblems, regionShot } = require('./helpers.js');
 
 const [fsdb, source, webDir, out] = process.argv.slice(2);
-
-function startServer() {
-  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'fsdb-studio-'));
-  const child = spawn(fsdb, ['--log-level', 'warn', 'serve', '--port', '0', '--db', path.join(dir, 'db.sqlite'),
-    '--demo', path.join(source, 'schema/demo'), '--web', webDir], { stdio: ['ignore', 'pipe', 'inherit'] });
-  return new Promise((resolve, reject) => {
-    let buffered = '';
-    child.stdout.on('data', (chunk) => {
-      buffered += chunk;
-      const match = buffered.match(/listening on (http:\/\/[^\s]+)/);
-      if (match) resolve({ child, url: match[1] });
-    });
-    child.on('exit', (code) => reject(new Error(`fsdb serve exited with ${code}`)));
-  });
-}
-
-// Share of pixels that differ from the page background (white), from a PNG screenshot decoded in
-// the page itself (no image library needed here).
-async function inkShare(page, png) {
-  return page.evaluate(async (b64) => {
-    const img = new Image();
-    img.src = `data:image/png;base64,${b64}`;
-    await img.decode();
-    const c = document.createElement('canvas');
-    c.width = img.width;
-    c.height = img.height;
-    const g = c.getContext('2d');
-    g.drawImage(img, 0, 0);
-    const d = g.getImageData(0, 0, c.width, c.height).data;
-    let ink = 0;
-    for (let i = 0; i < d.length; i += 4) if (d[i] < 240 || d[i + 1] < 240 || d[i + 2] < 240) ink++;
-    return ink / (d.length / 4);
-  }, png.toString('base64'));
-}
 
 // The design tools of issue 35, step by step as a user would take them, each timed.
 async function designTools(page, url, out, conflict) {
@@ -78,16 +42,7 @@ async function designTools(page, url, out, conflict) {
     return png;
   };
   const text = (selector) => page.$eval(selector, (e) => e.textContent);
-  // A picture of the page from the top of `from` to the bottom of `to`, as wide as the view (for
-  // docs/images: the view with the tool under it).
-  const region = async (name, from, to) => {
-    const [a, b, view] = await Promise.all([from, to, '#view'].map((sel) => page.$eval(sel, (e) => {
-      const r = e.getBoundingClientRect();
-      return { x: r.x + window.scrollX, y: r.y + window.scrollY, width: r.width, height: r.height };
-    })));
-    await page.screenshot({ path: path.join(out, `${name}.png`), fullPage: true,
-      clip: { x: view.x, y: a.y, width: view.width, height: b.y + b.height - a.y } });
-  };
+  const region = (name, from, to) => regionShot(page, path.join(out, `${name}.png`), from, to);
 
   // A part from words, made by the form in "Create and import"; the view and the editor open it.
   const id = await step('part from words', async () => {
@@ -230,35 +185,21 @@ async function designTools(page, url, out, conflict) {
 
 async function main() {
   fs.mkdirSync(out, { recursive: true });
-  const { child, url } = await startServer();
-  const problems = [];
-  const browser = await chromium.launch({
-    executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
-    args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist'],
-  });
+  const { child, url } = await startServer(fsdb, source, webDir);
+  const browser = await launchBrowser();
   // While the test makes a save conflict on purpose, the one 412 answer to a PUT is expected (it
   // is counted), and so is the browser's own console line about it; nothing else is.
   let conflictExpected = false;
   let conflicts = 0;
   try {
     const page = await browser.newPage({ viewport: { width: 1280, height: 900 } });
-    page.on('console', (m) => {
-      if (m.type() !== 'error') return;
-      if (conflictExpected && /the server responded with a status of 412/.test(m.text())) return;
-      problems.push(`console: ${m.text()}`);
-    });
-    page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
-    // A thumbnail still loading when its card is replaced (a new search, "More", a reload) is
-    // aborted by the browser, as for any user: not a failure. Every other failed request is, and
-    // so is every answer of 400 or more (below).
-    page.on('requestfailed', (r) => {
-      if (r.failure().errorText === 'net::ERR_ABORTED' && /\/thumbnail\.png$/.test(new URL(r.url()).pathname)) return;
-      problems.push(`request failed: ${r.url()} ${r.failure().errorText}`);
-    });
-    page.on('response', (r) => {
-      if (r.status() < 400) return;
-      if (conflictExpected && r.status() === 412 && r.request().method() === 'PUT') conflicts += 1;
-      else problems.push(`HTTP ${r.status()}: ${r.url()}`);
+    const problems = watchProblems(page, {
+      console: (line) => conflictExpected && /the server responded with a status of 412/.test(line),
+      response: (r) => {
+        if (!(conflictExpected && r.status() === 412 && r.request().method() === 'PUT')) return false;
+        conflicts += 1;
+        return true;
+      },
     });
 
     // Cold: the page and the list of shapes (thumbnails are drawn on first request, then cached).

@@ -73,6 +73,22 @@ function supportAndCore(f) {
   }
 }
 
+// The α-cut [lo, hi] of a value: l + α(m − l) to r − α(r − m) for a triangle (docs/api.md §6), the
+// support at α = 0 and the core at 1; a points value is linear between its points.
+export function alphaCut(f, alpha) {
+  if (f.form !== 'points') {
+    const { lo, hi, c1, c2 } = supportAndCore(f);
+    return [lo + alpha * (c1 - lo), hi - alpha * (hi - c2)];
+  }
+  const xs = [];
+  f.xs.forEach(([x, mu], i) => {
+    if (mu >= alpha) xs.push(x);
+    const next = f.xs[i + 1];
+    if (next && (mu - alpha) * (next[1] - alpha) < 0) xs.push(x + ((alpha - mu) / (next[1] - mu)) * (next[0] - x));
+  });
+  return [Math.min(...xs), Math.max(...xs)];
+}
+
 export function coreMidpoint(f) {
   const { c1, c2 } = supportAndCore(f);
   return (c1 + c2) / 2;

@@ -173,6 +173,12 @@ class ClientTest(unittest.TestCase):
         self.assertIn("<svg", c.curves.svg(wave["id"], alpha=0.5))
         fair = c.curves.create({"name": "fair", "fair": {"points": [[0, 0], [2, 1], [4, 0], [6, 1]], "samples": 8}})
         self.assertTrue(c.curves.candidates(fair["id"])["candidates"])
+        # The designer's choice among the candidates: a new version, written only over version 1.
+        chosen = c.curves.put(fair["id"], {**fair["document"], "chosen_candidate": 1}, if_version=1)
+        self.assertEqual((chosen["version"], chosen["document"]["chosen_candidate"]), (2, 1))
+        self.assertIn('id="candidate-1" stroke="#000000"', c.curves.svg(fair["id"]))
+        self.assertFsdbError(lambda: c.curves.put(fair["id"], {**fair["document"], "chosen_candidate": 0}, if_version=1),
+                             412, "precondition_failed", "If-Match")
         self.assertTrue(c.fair_curve([[0, 0], [2, 1], [4, 0]], samples=8)["candidates"])
         saddle = c.surfaces.create({"name": "saddle", "bezier": {"control_grid": SADDLE}})
         self.assertIn(b"\nf ", c.surfaces.mesh(saddle["id"], alpha=0.5))

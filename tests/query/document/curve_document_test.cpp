@@ -36,6 +36,33 @@ TEST(CurveDocument, ReadsTheFairFormAsTheRequestParserDoes) {
   EXPECT_FALSE(c.fair->closed);
 }
 
+// The designer's pick among a fair curve's ranked candidates (Bernardes, Wu & D'Ottaviano make the
+// user part of the defuzzification): an index of the candidates the document's request yields.
+TEST(CurveDocument, KeepsTheDesignersChosenCandidate) {
+  const json fig7 = {
+      {"points", {{0, 0}, {-5, -1}, {-3, -4}, {1, -1}}}, {"closed", true}, {"behavior", "undulant"}, {"samples", 5}};
+  const size_t n = answerFairCurve(parseFairCurveRequest(fig7)).candidates.size();
+  ASSERT_GE(n, 2u);
+  const CurveDocument c = parseCurveDocument({{"fair", fig7}, {"chosen_candidate", 1}}, "", kLimits);
+  ASSERT_TRUE(c.chosenCandidate.has_value());
+  EXPECT_EQ(*c.chosenCandidate, 1u);
+  EXPECT_FALSE(parseCurveDocument({{"fair", fig7}}, "", kLimits).chosenCandidate.has_value());
+  // 2.0 is the integer 2 (the one rule for integer fields).
+  EXPECT_EQ(*parseCurveDocument({{"fair", fig7}, {"chosen_candidate", n - 1.0}}, "", kLimits).chosenCandidate, n - 1);
+  auto bad = [](const json& doc) {
+    expectError([&] { parseCurveDocument(doc, "line", kLimits); }, errc::kInvalidDocument, "line.chosen_candidate");
+  };
+  bad({{"fair", fig7}, {"chosen_candidate", n}});
+  bad({{"fair", fig7}, {"chosen_candidate", -1}});
+  bad({{"fair", fig7}, {"chosen_candidate", 0.5}});
+  bad({{"fair", fig7}, {"chosen_candidate", "1"}});
+  bad({{"bezier", {{"control_points", {{0, 0}, {1, 1}}}}}, {"chosen_candidate", 0}});
+  // R_alpha = 1 leaves no candidate to choose.
+  json none = fig7;
+  none["alpha_threshold"] = 1;
+  bad({{"fair", none}, {"chosen_candidate", 0}});
+}
+
 TEST(CurveDocument, ErrorsCarryTheJsonPath) {
   auto bad = [](const char* text, const std::string& path, const char* code = errc::kInvalidDocument) {
     expectError([&] { parseCurveDocument(json::parse(text), "line", kLimits); }, code, path);

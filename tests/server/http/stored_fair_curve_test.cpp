@@ -55,6 +55,42 @@ TEST_F(StoredFairCurve, CreatesVersionsAndFindsByName) {
   EXPECT_EQ(v3.json["version"], 3);
 }
 
+// The designer picks a candidate: a new version (PUT with If-Match) whose chosen_candidate GET
+// shows and GET /curves/{id}/svg highlights by default; an index the curve has not is 422.
+TEST_F(StoredFairCurve, StoresTheDesignersChosenCandidateAsANewVersion) {
+  auto c = server->post("/curves", json{{"name", "fig7-chosen"}, {"fair", figure7()}});
+  ASSERT_EQ(c.status, 201) << c.body;
+  const std::string base = "/curves/" + std::to_string(c.json["id"].get<int64_t>());
+  const size_t n = server->get(base + "/candidates").json["candidates"].size();
+  ASSERT_GE(n, 2u);
+  auto client = server->client();
+  const json chosen = {{"fair", figure7()}, {"chosen_candidate", 1}};
+  auto v2 = client.Put(base.c_str(), httplib::Headers{{"If-Match", "\"1\""}}, chosen.dump(), "application/json");
+  ASSERT_EQ(v2->status, 200) << v2->body;
+  EXPECT_EQ(v2->get_header_value("ETag"), "\"2\"");
+  auto got = server->get(base);
+  EXPECT_EQ(got.json["version"], 2);
+  EXPECT_EQ(got.json["document"]["chosen_candidate"], 1);
+  EXPECT_FALSE(server->get(base + "?version=1").json["document"].contains("chosen_candidate"));
+  // The SVG highlights the choice unless ?candidate= asks for another; version 1 the best.
+  EXPECT_NE(server->get(base + "/svg").body.find("<polyline id=\"candidate-1\" stroke=\"#000000\""), std::string::npos);
+  EXPECT_NE(server->get(base + "/svg?candidate=0").body.find("<polyline id=\"candidate-0\" stroke=\"#000000\""),
+            std::string::npos);
+  EXPECT_NE(server->get(base + "/svg?version=1").body.find("<polyline id=\"candidate-0\" stroke=\"#000000\""),
+            std::string::npos);
+  // A second client that read version 1 cannot overwrite the choice.
+  auto stale = client.Put(base.c_str(), httplib::Headers{{"If-Match", "\"1\""}},
+                          json{{"fair", figure7()}, {"chosen_candidate", 0}}.dump(), "application/json");
+  EXPECT_EQ(stale->status, 412) << stale->body;
+  expectError(server->put(base, json{{"fair", figure7()}, {"chosen_candidate", n}}), 422, "invalid_document",
+              "chosen_candidate");
+  expectError(server->post("/curves", json{{"name", "line-chosen"},
+                                           {"bezier", {{"control_points", {{0, 0}, {1, 1}}}}},
+                                           {"chosen_candidate", 0}}),
+              422, "invalid_document", "chosen_candidate");
+  EXPECT_EQ(server->get(base).json["version"], 2);
+}
+
 TEST_F(StoredFairCurve, CandidatesAreWhatPostCurvesFairAnswers) {
   auto c = server->post("/curves", json{{"name", "fig7"}, {"fair", figure7()}});
   ASSERT_EQ(c.status, 201) << c.body;

@@ -1,0 +1,84 @@
+// What the studio's page tests share: a real `fsdb serve` with the demo catalogue on a free port,
+// Debian's chromium, and the ink share of a screenshot (a blank picture is a failure).
+'use strict';
+const { spawn } = require('child_process');
+const fs = require('fs');
+const os = require('os');
+const path = require('path');
+const { chromium } = require('playwright-core');
+
+function startServer(fsdb, source, webDir) {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'fsdb-studio-'));
+  const child = spawn(fsdb, ['--log-level', 'warn', 'serve', '--port', '0', '--db', path.join(dir, 'db.sqlite'),
+    '--demo', path.join(source, 'schema/demo'), '--web', webDir], { stdio: ['ignore', 'pipe', 'inherit'] });
+  return new Promise((resolve, reject) => {
+    let buffered = '';
+    child.stdout.on('data', (chunk) => {
+      buffered += chunk;
+      const match = buffered.match(/listening on (http:\/\/[^\s]+)/);
+      if (match) resolve({ child, url: match[1] });
+    });
+    child.on('exit', (code) => reject(new Error(`fsdb serve exited with ${code}`)));
+  });
+}
+
+// Headless chromium with software WebGL (SwiftShader).
+function launchBrowser() {
+  return chromium.launch({
+    executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+    args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist'],
+  });
+}
+
+// Share of pixels that differ from the page background (white), from a PNG screenshot decoded in
+// the page itself (no image library needed here).
+async function inkShare(page, png) {
+  return page.evaluate(async (b64) => {
+    const img = new Image();
+    img.src = `data:image/png;base64,${b64}`;
+    await img.decode();
+    const c = document.createElement('canvas');
+    c.width = img.width;
+    c.height = img.height;
+    const g = c.getContext('2d');
+    g.drawImage(img, 0, 0);
+    const d = g.getImageData(0, 0, c.width, c.height).data;
+    let ink = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i] < 240 || d[i + 1] < 240 || d[i + 2] < 240) ink++;
+    return ink / (d.length / 4);
+  }, png.toString('base64'));
+}
+
+// Every console error, page error, failed request and answer of 400 or more, listed in the array
+// returned; but for a thumbnail still loading when its card is replaced (a new search, "More", a
+// reload: the browser aborts it, as for any user), and what `expected` allows (a test's deliberate
+// 412 and the browser's own console line of it).
+function watchProblems(page, expected = {}) {
+  const allowedLine = expected.console || (() => false);
+  const allowedAnswer = expected.response || (() => false);
+  const problems = [];
+  page.on('console', (m) => {
+    if (m.type() === 'error' && !allowedLine(m.text())) problems.push(`console: ${m.text()}`);
+  });
+  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+  page.on('requestfailed', (r) => {
+    if (r.failure().errorText === 'net::ERR_ABORTED' && /\/thumbnail\.png$/.test(new URL(r.url()).pathname)) return;
+    problems.push(`request failed: ${r.url()} ${r.failure().errorText}`);
+  });
+  page.on('response', (r) => {
+    if (r.status() >= 400 && !allowedAnswer(r)) problems.push(`HTTP ${r.status()}: ${r.url()}`);
+  });
+  return problems;
+}
+
+// A picture of the page from the top of `from` to the bottom of `to`, as wide as the view, into
+// `file` (for docs/images: the view with the tool under it).
+async function regionShot(page, file, from, to) {
+  const [a, b, view] = await Promise.all([from, to, '#view'].map((sel) => page.$eval(sel, (e) => {
+    const r = e.getBoundingClientRect();
+    return { x: r.x + window.scrollX, y: r.y + window.scrollY, width: r.width, height: r.height };
+  })));
+  await page.screenshot({ path: file, fullPage: true, clip: { x: view.x, y: a.y, width: view.width, height: b.y + b.height - a.y } });
+}
+
+module.exports = { startServer, launchBrowser, inkShare, watchProblems, regionShot };
