@@ -52,7 +52,9 @@ void readDirections(const nlohmann::json& doc, std::map<std::string, Direction>*
       throw Error(errc::kInvalidDocument, "a gamma set must lie in [0, 180] degrees", joinPath(gp, it.key()));
     gamma.emplace(it.key(), g);
   }
-  for (const char* kind : {"primary", "secondary"}) {
+  // "more" (optional): directions beyond the paper's eighteen, in the same form ("side").
+  for (const char* kind : {"primary", "secondary", "more"}) {
+    if (std::string(kind) == "more" && !d.contains("more")) continue;
     const std::string kp = joinPath(path, kind);
     const auto& list = requireObject(requireField(d, kind, path), kp);
     for (auto it = list.begin(); it != list.end(); ++it) {

@@ -19,8 +19,8 @@
 //                 params{a part's params for parts from words}, pronoun: true for words such as
 //                 "something" that take their adjectives after them} or {same_as: word, plural}.
 //   directions    {beta{name: set over degrees}, gamma{name: set over 0..180}, primary{word:
-//                 {beta?, gamma}}, secondary{...}, phrases{word(s): direction}}
-//                 (Zhang, Pham & Chen, §2.2).
+//                 {beta?, gamma}}, secondary{...}, more{...} (optional: beyond the paper's
+//                 eighteen, e.g. "side"), phrases{word(s): direction}} (Zhang, Pham & Chen, §2.2).
 //   distances     {words{word: fuzzy number}}; number phrases (query/json/number_phrases.h) too.
 //   aggregations  {name: text}: the documented ways `and` combines scores (min, product, mean).
 //   holes         {words{word: noun}, plain: noun} (optional): the shape words of holes in structural

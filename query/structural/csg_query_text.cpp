@@ -255,6 +255,23 @@ class PhraseParser {
       acceptArrangement();
       return node("union", std::move(operands));
     }
+    if ((at("common") && nextIsAny({"part"})) || at("where") || (at("part") && nextIsAny({"where"}))) {
+      // "the common part of X and Y", "(the part) where X and Y overlap": their intersection.
+      const bool where = !at("common");
+      pos_ += at("part") ? 2 : at("where") ? 1 : 2;
+      if (!where) expect("of");
+      nlohmann::json operands = nlohmann::json::array();
+      previousHead_ = kNone;
+      operands.push_back(item());
+      if (!joinsList()) fail({"'and'", "','"});
+      do {
+        previousHead_ = head_;
+        operands.push_back(item());
+      } while (joinsList());
+      if (where && !acceptAny({"overlap", "overlaps", "meet", "meets", "intersect", "intersects", "cross"}))
+        fail({"'overlap'", "'meet'", "'intersect'"});
+      return node("intersection", std::move(operands));
+    }
     if (at("part") && nextIsAny({"of"})) {
       // "the part of X inside Y": their intersection.
       pos_ += 2;
@@ -504,6 +521,7 @@ class PhraseParser {
     const Noun* noun = pos_ < words_.size() ? v_.noun(words_[pos_].text) : nullptr;
     if (noun && noun->conditions.empty() && noun->params.is_null()) {
       ++pos_;
+      if (at("where")) return;  // "a shape where a cube and a sphere overlap"
       if ((accept("which") || accept("that")) && acceptAny({"is", "are"})) {
         if (madeOf() || startsConstruction()) return;
       } else if (madeOf()) {
@@ -526,6 +544,11 @@ class PhraseParser {
     size_t i = pos_;
     if (i < words_.size() && contains(queryArticles(), words_[i].text)) ++i;
     if (i < words_.size() && words_[i].text == "(") return true;
+    if (i < words_.size() && words_[i].text == "where") return true;
+    if (i + 1 < words_.size() && words_[i].text == "part" && words_[i + 1].text == "where") return true;
+    if (i + 2 < words_.size() && words_[i].text == "common" && words_[i + 1].text == "part" &&
+        words_[i + 2].text == "of")
+      return true;
     return i + 1 < words_.size() && words_[i + 1].text == "of" &&
            (words_[i].text == "union" || words_[i].text == "intersection" || words_[i].text == "difference" ||
             words_[i].text == "part");
@@ -786,7 +809,9 @@ const std::vector<std::string>& csgPhraseWords() {
                        "that", "is", "are", "made", "composed", "built", "formed", "consisting", "from",
                        // counts of copies and their arrangement
                        "pair", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "together",
-                       "row", "line", "touching", "each", "other", "next", "stacked", "up"});
+                       "row", "line", "touching", "each", "other", "next", "stacked", "up",
+                       // intersections in words
+                       "common", "where", "overlap", "overlaps", "meet", "meets", "intersect", "intersects", "cross"});
     std::sort(w.begin(), w.end());
     w.erase(std::unique(w.begin(), w.end()), w.end());
     w.erase(std::remove(w.begin(), w.end(), std::string()), w.end());

@@ -169,6 +169,23 @@ TEST(Vocabulary, ExactlySeedDirections) {
     EXPECT_TRUE(dirs["secondary"].contains(w)) << w;
 }
 
+// "side" (beside, next to): any level direction, beyond the paper's eighteen; a part placed
+// beside goes right (the centre of its beta set).
+TEST(Vocabulary, SideIsEveryLevelDirection) {
+  const Direction& side = *v().direction("side");
+  for (const Vec3& offset : {Vec3{1, 0, 0}, Vec3{-2, 0, 0}, Vec3{0, 0, 3}, Vec3{0.5, 0, -0.5}, Vec3{-1, 0, -0.01}})
+    EXPECT_DOUBLE_EQ(directionMembership(side, offset), 1.0) << offset.x << " " << offset.z;
+  EXPECT_DOUBLE_EQ(directionMembership(side, {0, 1, 0}), 0.0);
+  EXPECT_DOUBLE_EQ(directionMembership(side, {0, -1, 0}), 0.0);
+  EXPECT_DOUBLE_EQ(directionMembership(*v().direction("beside"), {0, 0, -1}), 1.0);
+  EXPECT_DOUBLE_EQ(directionMembership(*v().direction("next to"), {0, 1, 0}), 0.0);
+  const Vec3 u = directionCandidates(side).at(0).vector;
+  EXPECT_EQ(u.x, 1.0);
+  EXPECT_EQ(u.y, 0.0);
+  EXPECT_EQ(u.z, 0.0);
+  EXPECT_EQ(v().adjective("spiky")->descriptor, "taperness");  // WordNet 3.0 knows it only of sound
+}
+
 TEST(Vocabulary, DirectionMemberships) {
   const Direction& right = *v().direction("right");
   EXPECT_DOUBLE_EQ(directionMembership(right, {1, 0, 0}), 1.0);

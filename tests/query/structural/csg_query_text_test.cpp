@@ -105,6 +105,13 @@ TEST(CsgQueryText, DesignersPhrasingsOfDifferencesAndIntersections) {
             "intersection('a very round box', 'a cylinder')");
   EXPECT_EQ(shape(parse("a shape which is the part of a sphere inside a cube")), "intersection('a sphere', 'a cube')");
   EXPECT_NE(errorOf("the part of a sphere and a cube").find("expected 'inside', 'within'"), std::string::npos);
+  // Where X and Y overlap, the common part of X and Y: their intersection too.
+  for (const char* text : {"where a sphere and a cube overlap", "the part where a sphere and a cube meet",
+                           "find the common part of a sphere and a cube", "a shape where a sphere and a cube intersect"})
+    EXPECT_EQ(shape(parse(text)), "intersection('a sphere', 'a cube')") << text;
+  EXPECT_EQ(shape(parse("the common part of a sphere, a cube and a cone")),
+            "intersection('a sphere', 'a cube', 'a cone')");
+  EXPECT_NE(errorOf("where a sphere and a cube").find("expected 'overlap'"), std::string::npos);
 }
 
 TEST(CsgQueryText, PhraseVerbsAndArticlesAreTheLinguisticOnes) {
@@ -286,6 +293,10 @@ TEST(CsgQueryText, SpatialRelations) {
   EXPECT_EQ(shape(parse("a sphere close to the top right of a cube")),
             "union('a sphere'<top right 'a cube' ~0.5>, 'a cube')");
   EXPECT_EQ(shape(parse("a cube with a sphere on the left side")), "union('a cube', 'a sphere'<left 'a cube'>)");
+  // Beyond the paper's directions: a side, any level direction ("more" in the vocabulary).
+  EXPECT_EQ(shape(parse("a box with a cylinder on its side")), "union('a box', 'a cylinder'<side 'a box'>)");
+  EXPECT_EQ(shape(parse("a sphere beside a cube")), "union('a sphere'<side 'a cube'>, 'a cube')");
+  EXPECT_EQ(shape(parse("a sphere next to a cube")), "union('a sphere'<side 'a cube'>, 'a cube')");
   // A chain: each object is the head of what follows it.
   EXPECT_EQ(shape(parse("a cone on top of a cylinder on top of a box")),
             "union('a cone'<top 'a cylinder'>, 'a cylinder'<top 'a box'>, 'a box')");
@@ -393,7 +404,8 @@ TEST(CsgQueryText, TreeDocuments) {
 TEST(CsgQueryText, GrammarExamplesParse) {
   const std::vector<std::string> linguistic = {"a sphere on top of a cylinder",
                                                "a sphere about 3 units to the right of a cube",
-                                               "a sphere close to the top right of a cube"};
+                                               "a sphere close to the top right of a cube",
+                                               "a sphere beside a cube"};
   int examples = 0;
   for (const std::string& example : testing::grammarExamples("csg_query_grammar.ebnf")) {
     EXPECT_NO_THROW(parse(example)) << example;
