@@ -1,5 +1,5 @@
 #!/usr/bin/env node
-// ctest studio_build: the studio as a design tool (issue 35), in headless Chromium against a real
+// ctest studio_build: the studio as a design tool, in headless Chromium against a real
 // `fsdb serve` with the demo catalogue, as a user would take it: builds a shape of two parts from
 // words, the second placed "about 3" units "right" of the first (the issue's example), sees the
 // unsaved tree in the view, saves it and sees it opened; opens a Bézier curve (its lower, crisp and

@@ -6,7 +6,7 @@
 // searches "a very bent cylinder", waits for ranked thumbnails,
 // opens the first result, moves the α slider, and takes screenshots that must not be blank and
 // must change with α; then checks the object's address (a reload opens it again), the download
-// links (GLB and STL fetched), and "More" on a search. Then the design tools, as a user would use
+// links (GLB and STL fetched, the GLB through the Khronos glTF validator), and "More" on a search. Then the design tools, as a user would use
 // them: a part from words; one fuzzy value dragged in the editor, the view following (a coarse
 // preview, then the full mesh); the edit saved as version 2; versions 1 and 2 compared (the
 // differing value marked, both envelopes in the view); the family's members, one clicked into
@@ -14,15 +14,17 @@
 // reload). Each step's time is logged; each step's picture must not be blank.
 // Any console error or failed request fails the test, but for the one deliberate 412 (the
 // browser's own log line of it included).
-// Usage: node studio_test.js FSDB_BINARY SOURCE_DIR WEB_DIR OUT_DIR   (NODE_PATH: web-deps/node_modules)
+// Usage: node studio_test.js FSDB_BINARY SOURCE_DIR WEB_DIR OUT_DIR VALIDATOR_DIR
+//   (NODE_PATH: web-deps/node_modules; VALIDATOR_DIR: tools/gltf-validate/run-validator's WORK_DIR)
 'use strict';
+const { execFileSync } = require('child_process');
 const fs = require('fs');
 const path = require('path');
 const { inkShare, launchBrowser, startServer, watchProblems, regionShot } = require('./helpers.js');
 
-const [fsdb, source, webDir, out] = process.argv.slice(2);
+const [fsdb, source, webDir, out, validatorDir] = process.argv.slice(2);
 
-// The design tools of issue 35, step by step as a user would take them, each timed.
+// The design tools, step by step as a user would take them, each timed.
 async function designTools(page, url, out, conflict) {
   const times = [];
   const step = async (name, body) => {
@@ -289,6 +291,17 @@ async function main() {
     }, href);
     const glb = await fetched(glbHref);
     if (glb.status !== 200 || glb.magic !== 'glTF' || !/^attachment/.test(glb.disposition || '')) throw new Error(`GLB download: ${JSON.stringify(glb)}`);
+    // The downloaded file, as the user gets it, through the Khronos glTF validator the
+    // gltf_validator ctest uses (tools/gltf-validate): valid, with its lower and upper meshes.
+    const glbBytes = await page.evaluate(async (h) => {
+      const b = new Uint8Array(await (await fetch(h)).arrayBuffer());
+      let s = '';
+      for (let i = 0; i < b.length; i += 0x8000) s += String.fromCharCode(...b.subarray(i, i + 0x8000));
+      return btoa(s);
+    }, glbHref);
+    const glbFile = path.join(out, 'download.glb');
+    fs.writeFileSync(glbFile, Buffer.from(glbBytes, 'base64'));
+    execFileSync(path.join(source, 'tools/gltf-validate/run-validator'), [fsdb, validatorDir, glbFile], { stdio: 'inherit' });
     const stl = await fetched(await page.$eval('[data-action="export-stl"][data-bound="upper"]', (a) => a.getAttribute('href')));
     if (stl.status !== 200 || stl.size < 84) throw new Error(`STL download: ${JSON.stringify(stl)}`);
     for (const action of ['export-obj', 'export-vdb'])

@@ -1,4 +1,4 @@
-// Build a shape (issue 35): a CSG tree made in the Structure panel, which is its editor. Parts are
+// Build a shape: a CSG tree made in the Structure panel, which is its editor. Parts are
 // added from words ("a big box": an inline part with `text`), from the catalogue (a stored part,
 // referenced by name) or new (a unit sphere); each operation node's operation is chosen
 // (union, intersection, difference) and operations nest; a part is placed against an earlier one

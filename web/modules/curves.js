@@ -1,4 +1,4 @@
-// Curves and surfaces in the view (issue 35).
+// Curves and surfaces in the view.
 // - A Bézier curve: its lower, crisp and upper curves at the slider's α (GET /curves/{id}/svg).
 // - A fair curve (Bernardes, Wu & D'Ottaviano): its ranked candidates (GET /curves/{id}/candidates),
 //   any one highlighted in the picture (?candidate=k), and one chosen as the designer's: stored
