@@ -81,4 +81,15 @@ async function regionShot(page, file, from, to) {
   await page.screenshot({ path: file, fullPage: true, clip: { x: view.x, y: a.y, width: view.width, height: b.y + b.height - a.y } });
 }
 
-module.exports = { startServer, launchBrowser, inkShare, watchProblems, regionShot };
+// How many times slower than a Release build the server under test runs (FSDB_SLOWDOWN: the
+// sanitizer build sets it, tests/CMakeLists.txt); every wait scales with it.
+const slowdown = Number(process.env.FSDB_SLOWDOWN || '1');
+
+// A page whose waits (Playwright's default 30 s) scale with the slowdown.
+async function newPage(browser, options) {
+  const page = await browser.newPage(options);
+  page.setDefaultTimeout(30000 * slowdown);
+  return page;
+}
+
+module.exports = { startServer, launchBrowser, inkShare, watchProblems, regionShot, newPage, slowdown };

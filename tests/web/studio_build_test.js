@@ -15,7 +15,7 @@
 const fs = require('fs');
 const path = require('path');
 const { isDeepStrictEqual } = require('util');
-const { inkShare, launchBrowser, startServer, watchProblems, regionShot } = require('./helpers.js');
+const { inkShare, launchBrowser, startServer, watchProblems, regionShot, newPage, slowdown } = require('./helpers.js');
 
 const [fsdb, source, webDir, out] = process.argv.slice(2);
 
@@ -26,7 +26,7 @@ async function main() {
   const times = [];
   const inks = [];
   try {
-    const page = await browser.newPage({ viewport: { width: 1280, height: 900 } });
+    const page = await newPage(browser, { viewport: { width: 1280, height: 900 } });
     // Words with a misspelling are refused when added (the one 422 expected, and the browser's
     // console line of it); nothing else may fail.
     let unknownWords = false;
@@ -86,7 +86,7 @@ async function main() {
       await page.fill('#add-text', 'a slightly bent cylinder');
       await page.click('[data-action="add-part"]');
       await page.waitForSelector('#tree li[data-node="part"][data-name="slightly-bent-cylinder"]');
-      await page.waitForFunction(() => (document.querySelector('#canvas').dataset.shown || '').startsWith('draft:'), null, { timeout: 60000 });
+      await page.waitForFunction(() => (document.querySelector('#canvas').dataset.shown || '').startsWith('draft:'), null, { timeout: 60000 * slowdown });
     });
     const unplaced = await picture('studio-build-unplaced');
     await step('build: place the cylinder about 3 right of the box, preview', async () => {
@@ -102,7 +102,7 @@ async function main() {
       await page.waitForFunction((w) => {
         const s = document.querySelector('#canvas').dataset.shown || '';
         return s.startsWith('draft:') && s !== w;
-      }, was, { timeout: 60000 });
+      }, was, { timeout: 60000 * slowdown });
       await page.waitForFunction(() => document.querySelector('#view-status').textContent.startsWith('new shape, not saved'));
     });
     const placedPicture = await picture('studio-build');
@@ -115,7 +115,7 @@ async function main() {
         await page.waitForFunction((w) => {
           const s = document.querySelector('#canvas').dataset.shown || '';
           return s.startsWith('draft:') && s !== w;
-        }, was, { timeout: 60000 });
+        }, was, { timeout: 60000 * slowdown });
       }
     });
     await region('studio-builder', '#canvas-box', '#panels');
@@ -124,7 +124,7 @@ async function main() {
       await page.fill('#shape-name', name);
       await page.click('[data-action="save-shape"]');
       await page.waitForFunction((n) => document.querySelector('#title').textContent.startsWith(`shape ${n} (#`) &&
-        (document.querySelector('#canvas').dataset.shown || '').startsWith('shape/'), name, { timeout: 60000 });
+        (document.querySelector('#canvas').dataset.shown || '').startsWith('shape/'), name, { timeout: 60000 * slowdown });
       return Number(/#(\d+)/.exec(await text('#title'))[1]);
     });
     const stored = await (await fetch(`${url}/shapes/${id}`)).json();
@@ -154,7 +154,7 @@ async function main() {
       await page.fill('#tree li[data-name="sphere"] .placement [data-field="distance"]', '1');
       await page.press('#tree li[data-name="sphere"] .placement [data-field="distance"]', 'Enter');
       await page.selectOption('#tree li[data-node="op"] > [data-action="set-op"]', 'difference');
-      await page.waitForFunction(() => document.querySelector('#view-status').textContent.startsWith('new shape, not saved'), null, { timeout: 60000 });
+      await page.waitForFunction(() => document.querySelector('#view-status').textContent.startsWith('new shape, not saved'), null, { timeout: 60000 * slowdown });
     });
     // An operation nested under the root waits for its two operands; removed, the tree previews again.
     await step('build: a nested operation added and removed', async () => {
@@ -163,7 +163,7 @@ async function main() {
         /the difference needs at least two parts \(it has 0\)/.test(document.querySelector('#view-status').textContent));
       await page.click('#tree li[data-node="op"] li[data-node="op"] > [data-action="remove-node"]');
       await page.waitForFunction(() => document.querySelectorAll('#tree li[data-node="op"]').length === 1 &&
-        document.querySelector('#view-status').textContent.startsWith('new shape, not saved'), null, { timeout: 60000 });
+        document.querySelector('#view-status').textContent.startsWith('new shape, not saved'), null, { timeout: 60000 * slowdown });
     });
     await picture('studio-build-difference');
     const draft = await page.evaluate(() => document.querySelector('#tree').textContent);
@@ -254,7 +254,7 @@ async function main() {
       if (!kept.length || kept.some((x) => x < 0.5) || kept.length >= all.length) throw new Error(`at least 0.5: ${kept} of ${all}`);
     });
     await page.waitForFunction(() => [...document.querySelectorAll('#results img')].every((i) => i.complete && i.naturalWidth > 0),
-      null, { timeout: 60000 });
+      null, { timeout: 60000 * slowdown });
     await page.screenshot({ path: path.join(out, 'studio-search-polish.png'), clip: { x: 0, y: 0, width: 1280, height: 520 } });
     await page.locator('#threshold').fill('0');
 
@@ -262,10 +262,10 @@ async function main() {
     // α slider are visible and within the screen's width, and nothing makes the page scroll sideways.
     for (const [label, width, height] of [['phone', 390, 844], ['tablet', 768, 1024]]) {
       await step(`layout: ${label} ${width}x${height}`, async () => {
-        const small = await browser.newPage({ viewport: { width, height }, isMobile: label === 'phone', hasTouch: true });
+        const small = await newPage(browser, { viewport: { width, height }, isMobile: label === 'phone', hasTouch: true });
         const smallProblems = watchProblems(small);
         await small.goto(`${url}/#/shapes/${id}`, { waitUntil: 'load' });
-        await small.waitForFunction((n) => (document.querySelector('#canvas').dataset.shown || '').startsWith(`shape/${n}@`), id, { timeout: 60000 });
+        await small.waitForFunction((n) => (document.querySelector('#canvas').dataset.shown || '').startsWith(`shape/${n}@`), id, { timeout: 60000 * slowdown });
         for (const selector of ['#canvas', '#query', '#alpha']) {
           const box = await small.locator(selector).boundingBox();
           if (!box || !(await small.locator(selector).isVisible())) throw new Error(`${label}: ${selector} is not visible`);
@@ -275,7 +275,7 @@ async function main() {
         if (wide > width) throw new Error(`${label}: the page is ${wide} px wide on a ${width} px screen`);
         // Usable: the slider moves the view, the search box searches.
         await small.locator('#alpha').fill('1');
-        await small.waitForFunction((n) => document.querySelector('#canvas').dataset.shown === `shape/${n}@1`, id, { timeout: 60000 });
+        await small.waitForFunction((n) => document.querySelector('#canvas').dataset.shown === `shape/${n}@1`, id, { timeout: 60000 * slowdown });
         await small.fill('#query', 'a bent cylinder');
         await small.press('#query', 'Enter');
         await small.waitForFunction(() => document.querySelector('#status').textContent.includes('linguistic search'));

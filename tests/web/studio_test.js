@@ -20,7 +20,7 @@
 const { execFileSync } = require('child_process');
 const fs = require('fs');
 const path = require('path');
-const { inkShare, launchBrowser, startServer, watchProblems, regionShot } = require('./helpers.js');
+const { inkShare, launchBrowser, startServer, watchProblems, regionShot, newPage, slowdown } = require('./helpers.js');
 
 const [fsdb, source, webDir, out, validatorDir] = process.argv.slice(2);
 
@@ -131,7 +131,7 @@ async function designTools(page, url, out, conflict) {
   const degrees = await step('members gallery', async () => {
     await page.click('[data-action="members"]');
     await page.waitForFunction(() => document.querySelectorAll('#members > li').length === 9 &&
-      [...document.querySelectorAll('#members > li')].every((li) => li.dataset.drawn === 'true'), null, { timeout: 60000 });
+      [...document.querySelectorAll('#members > li')].every((li) => li.dataset.drawn === 'true'), null, { timeout: 60000 * slowdown });
     return page.$$eval('#members > li', (lis) => lis.map((li) => Number(li.dataset.membership)));
   });
   if (degrees[0] !== 1 || degrees.some((d, i) => i && d > degrees[i - 1])) throw new Error(`member degrees: ${degrees}`);
@@ -194,7 +194,7 @@ async function main() {
   let conflictExpected = false;
   let conflicts = 0;
   try {
-    const page = await browser.newPage({ viewport: { width: 1280, height: 900 } });
+    const page = await newPage(browser, { viewport: { width: 1280, height: 900 } });
     const problems = watchProblems(page, {
       console: (line) => conflictExpected && /the server responded with a status of 412/.test(line),
       response: (r) => {
@@ -210,7 +210,7 @@ async function main() {
     await page.waitForSelector('#results > li img');
     const coldMillis = Date.now() - started;
     await page.waitForFunction(() => [...document.querySelectorAll('#results img')].every((i) => i.complete && i.naturalWidth > 0),
-      null, { timeout: 60000 });
+      null, { timeout: 60000 * slowdown });
     // Warm: everything, thumbnails included, from the server's cache. Reported, not asserted (the
     // goal, under 1 s, is a speed: docs/performance.md quotes it from a quiet run).
     started = Date.now();
