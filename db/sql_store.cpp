@@ -4,6 +4,7 @@
 #include "db/sql_store.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <unordered_map>
 
@@ -297,21 +298,29 @@ std::vector<StoredObject> SqlStore::described(const std::vector<std::string>& wo
   if (words.empty() || kinds.empty() || limit <= 0) return {};
   Lease connection(*this);
   const bool sqlite = (*connection).dialect() == sql::Dialect::kSqlite;
-  // Each word a phrase of its own (quotes doubled) for FTS5, so that no word is read as an
-  // operator (AND, NOT, NEAR, a column filter); PostgreSQL's plainto_tsquery takes plain text.
+  // FTS5: each run of letters and digits of a word a quoted term of its own, so that no word is
+  // read as an operator (AND, NOT, NEAR, a column filter) and none is a phrase ("2.5" is 2 and 5:
+  // the table keeps no positions); PostgreSQL's plainto_tsquery takes plain text.
   std::string query;
   for (const std::string& w : words) {
-    if (!query.empty()) query += ' ';
     if (!sqlite) {
-      query += w;
+      query += (query.empty() ? "" : " ") + w;
       continue;
     }
-    query += '"';
-    for (char c : w) query += c == '"' ? std::string("\"\"") : std::string(1, c);
-    query += '"';
+    std::string term;
+    const auto flush = [&] {
+      if (!term.empty()) query += (query.empty() ? "\"" : " \"") + term + "\"";
+      term.clear();
+    };
+    for (char c : w) {
+      if (std::isalnum(static_cast<unsigned char>(c)) || static_cast<unsigned char>(c) >= 0x80) term += c;
+      else flush();
+    }
+    flush();
   }
+  if (query.empty()) return {};
   const std::string matches =
-      sqlite ? "SELECT rowid AS id, rank AS r FROM object_text WHERE object_text MATCH ?1"
+      sqlite ? "SELECT rowid AS id, 0 AS r FROM object_text WHERE object_text MATCH ?1"
              : "SELECT object_id AS id, -ts_rank(words, plainto_tsquery('english', ?1)) AS r FROM object_text"
                " WHERE words @@ plainto_tsquery('english', ?1)";
   std::vector<std::string> kindList = kinds;

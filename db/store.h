@@ -278,8 +278,8 @@ class Store {
                                           const std::vector<std::string>& kinds) const = 0;
   // The latest versions of the parts and shapes of `kinds` whose search text (NewObject::
   // searchText, or the name) holds every one of `words` after stemming (SQLite FTS5's porter,
-  // PostgreSQL's 'english' configuration, which leaves out its stop words), best matches first,
-  // at most `limit` (1-1000). No words: none. invalid_parameter for more than kMaxTextWords words.
+  // PostgreSQL's 'english' configuration, which leaves out its stop words), by id (PostgreSQL:
+  // best ts_rank first), at most `limit` (1-1000). No words: none. invalid_parameter for more than kMaxTextWords words.
   static constexpr size_t kMaxTextWords = 32;
   virtual std::vector<StoredObject> described(const std::vector<std::string>& words,
                                               const std::vector<std::string>& kinds, int limit) const = 0;
