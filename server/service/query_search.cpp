@@ -252,31 +252,33 @@ nlohmann::json queryResponse(const Store& store, const nlohmann::json& request,
   const std::vector<std::string> words = wordsOfText(text, activeVocabulary());
   const size_t limit = requestLimit(request);
   const nlohmann::json named = objectsNamed(store, request, words);
-  const nlohmann::json described = objectsDescribed(store, request, words, limit);
+  // The full-text lookup only where its answer is used: not on the search's hot path.
+  const auto described = [&] { return objectsDescribed(store, request, words, limit); };
   try {
     nlohmann::json answer = searchText(store, request, text, linguisticLimits, csgLimits, graphs);
     // Where the meaning finds something whole, it is the answer: a description's words may meet
     // by chance ("a sharp cylinder" in "a very bent cylinder and a very sharp pyramid").
     const bool found = answer.contains("results") && !answer["results"].empty() && !answer.value("partial", false);
-    putWordMatches(&answer, named, found ? nlohmann::json::array() : described, limit);
+    putWordMatches(&answer, named, found ? nlohmann::json::array() : described(), limit);
     return answer;
   } catch (const Error& refused) {
     if (refused.code() != errc::kInvalidParameter || refused.path() != "text") throw;
     // Words no grammar reads that are a name: the named objects are the answer.
+    const nlohmann::json byWords = described();
     if (!named.empty()) {
       nlohmann::json answer = {{"search", "name"}, {"results", nlohmann::json::array()}};
-      putWordMatches(&answer, named, described, limit);
+      putWordMatches(&answer, named, byWords, limit);
       return answer;
     }
     try {
       nlohmann::json answer =
           readAroundUnknownWords(store, request, text, refused, linguisticLimits, csgLimits, graphs);
-      putWordMatches(&answer, named, described, limit);
+      putWordMatches(&answer, named, byWords, limit);
       return answer;
     } catch (const Error& unread) {
       // Words no grammar reads that objects are described by ("a mushroom form").
-      if (described.empty() || unread.code() != errc::kInvalidParameter || unread.path() != "text") throw;
-      return {{"search", "words"}, {"results", described}};
+      if (byWords.empty() || unread.code() != errc::kInvalidParameter || unread.path() != "text") throw;
+      return {{"search", "words"}, {"results", byWords}};
     }
   }
 }
