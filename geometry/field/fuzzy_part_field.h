@@ -51,12 +51,21 @@ class FuzzyPartField : public AlphaFieldSource {
   AlphaLevels levelsAt(const Vec3& p) const override;
   AlphaLevelBounds boundsOver(const Vec3& lo, const Vec3& hi) const override;
   void boundingBox(Vec3* lo, Vec3* hi) const override;
-  // Per block: bounds 4³ and then 2³ sub-blocks (boundsOver) and fills the uniform ones, so that
+  // Per block: bounds 4³ and then 2³ sub-blocks (boundsOver, then provenOverBlock where that is
+  // not uniform) and fills the uniform ones, so that
   // only voxels near the fuzzy band (or the crisp surface) are evaluated one by one; crisp parts
   // evaluate F there without the virtual call; a part with one fuzzy size (sizeLevels) answers a
   // non-uniform 4³ sub-block voxel by voxel. Same values as levelsAt (up to budget exhaustion,
   // as for the grid's own block pruning).
   void sampleBlock(const BlockLattice& b, AlphaLevels* out) const override;
+  // The block proof sampleBlock runs where boundsOver is not uniform (fuzzy_part_block.cpp): true
+  // when a branch and bound over P(0) with at most `budget` enclosure evaluations shows that no θ
+  // of P(0) puts any point of x × y × z inside (outside: the box is outside upper(0), u = 0 and
+  // l = never there), or that every θ puts every point inside (!outside: the box is in lower(0),
+  // u = 1 and l = 0). False when it cannot within the budget, or a crisp θ refutes the claim at
+  // the box's centre.
+  bool provenOverBlock(const Interval& x, const Interval& y, const Interval& z, bool outside,
+                       int budget) const;
 
   // The branch-and-bound predicates at one level α in [0, 1]: ∃θ ∈ P(α) with F(p; θ) <= 1, and
   // ∀θ ∈ P(α) F(p; θ) <= 1. Conservative on budget exhaustion (possibly: true, necessarily: false).

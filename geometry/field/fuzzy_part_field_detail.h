@@ -1,7 +1,7 @@
 #pragma once
-// Internal to geometry/field/fuzzy_part_field*.cpp: the helpers that the field, its max-min
-// search (fuzzy_part_search.cpp) and its monotone shortcut (fuzzy_part_monotone.cpp) share.
-// Not a public header: nothing outside those three files includes it.
+// Internal to geometry/field/fuzzy_part_*.cpp: the helpers that the field, its max-min search
+// (fuzzy_part_search.cpp), its monotone shortcut (fuzzy_part_monotone.cpp) and its block proof
+// (fuzzy_part_block.cpp) share. Not a public header: nothing outside those files includes it.
 #include <algorithm>
 
 #include "geometry/field/fuzzy_part_field.h"
@@ -75,6 +75,24 @@ inline bool narrowToQualifying(PartBox* box, const Vec3& p, bool inside, Interva
     *narrowed = w.lo != n.lo || w.hi != n.hi;
   }
   return true;
+}
+
+// The monotone collapse: each of the `count` values `open` whose slope d[j] keeps one sign is set
+// to its end where F is least (towardsLeast) or largest; true when any value was. Where F is
+// monotone in those values over the box, F's least (largest) value over the box is taken on the
+// collapsed box.
+inline bool collapseMonotone(PartBox* box, const int* open, int count, const Interval* d,
+                             bool towardsLeast) {
+  bool collapsed = false;
+  for (int j = 0; j < count; ++j) {
+    const int sign = d[j].lo >= 0.0 ? 1 : d[j].hi <= 0.0 ? -1 : 0;
+    if (sign == 0) continue;
+    Interval& v = slot(*box, open[j]);
+    const double end = (sign > 0) == towardsLeast ? v.lo : v.hi;
+    v = {end, end};
+    collapsed = true;
+  }
+  return collapsed;
 }
 
 // Quasi-concave envelope of a membership (the membership whose cuts are the hulls boxAt uses):

@@ -47,16 +47,7 @@ bool FuzzyPartField::collapsedExcludes(const PartBox& box, const Vec3& p, bool i
     // where it excludes the box no θ of it qualifies. (No outward rounding: boundsOver's margin.)
     const double end = meanValueEnd(c, p, inside, open, n, d);
     if (inside ? end > 1.0 + kMargin : end <= 1.0 - kMargin) return true;
-    bool collapsed = false;
-    for (int j = 0; j < n; ++j) {
-      const int sign = d[j].lo >= 0.0 ? 1 : d[j].hi <= 0.0 ? -1 : 0;
-      if (sign == 0) continue;
-      Interval& v = slot(c, open[j]);
-      const double end = (sign > 0) == inside ? v.lo : v.hi;
-      v = {end, end};
-      collapsed = true;
-    }
-    if (!collapsed) return false;
+    if (!collapseMonotone(&c, open, n, d, inside)) return false;
     ++*evaluations;
     // The enclosure, and the mean value form F(θ) ∈ F(m) + Σ D_j·(θ_j − m_j) about the centre m
     // (the slopes D over the larger box hold those over the collapsed one).
