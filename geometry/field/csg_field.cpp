@@ -7,6 +7,24 @@
 
 namespace fsdb {
 
+const char* csgOpName(CsgOp op) {
+  switch (op) {
+    case CsgOp::kUnion: return "union";
+    case CsgOp::kIntersection: return "intersection";
+    case CsgOp::kDifference: return "difference";
+  }
+  return "union";
+}
+
+bool csgOpFromName(const std::string& name, CsgOp* op) {
+  for (const CsgOp o : {CsgOp::kUnion, CsgOp::kIntersection, CsgOp::kDifference})
+    if (name == csgOpName(o)) {
+      *op = o;
+      return true;
+    }
+  return false;
+}
+
 AlphaLevelBounds boundsUnion(const AlphaLevelBounds& a, const AlphaLevelBounds& b) {
   return {std::max(a.upperMin, b.upperMin), std::max(a.upperMax, b.upperMax), std::min(a.lowerMin, b.lowerMin),
           std::min(a.lowerMax, b.lowerMax)};

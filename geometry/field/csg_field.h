@@ -17,6 +17,7 @@
 //   overlap collapses to a point: nothing is inside); difference → the first child's.
 #include <memory>
 #include <mutex>
+#include <string>
 #include <vector>
 
 #include "geometry/field/alpha_field.h"
@@ -24,6 +25,11 @@
 namespace fsdb {
 
 enum class CsgOp { kUnion, kIntersection, kDifference };
+
+// The operation's name in shape documents ("union", "intersection", "difference"), and the
+// operation of a name (false for any other word).
+const char* csgOpName(CsgOp op);
+bool csgOpFromName(const std::string& name, CsgOp* op);
 
 class CsgField : public AlphaFieldSource {
  public:

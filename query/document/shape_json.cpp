@@ -156,10 +156,7 @@ struct Walker {
     const std::string opPath = joinPath(path, "op");
     const std::string& op = requireString(requireField(node, "op", path), opPath);
     CsgOp csg;
-    if (op == "union") csg = CsgOp::kUnion;
-    else if (op == "intersection") csg = CsgOp::kIntersection;
-    else if (op == "difference") csg = CsgOp::kDifference;
-    else throw Error(errc::kInvalidDocument, "unknown op '" + quotedWord(op) + "'; expected union, intersection, difference", opPath);
+    if (!csgOpFromName(op, &csg)) throw Error(errc::kInvalidDocument, "unknown op '" + quotedWord(op) + "'; expected union, intersection, difference", opPath);
     rejectUnknownKeys(node, path, {"op", "operator", "children", "range", "step"}, " in a Boolean node");
     OperatorConfig config{"zadeh", {}, {}};
     if (node.contains("operator")) config = parseOperatorConfig(node["operator"], joinPath(path, "operator"));

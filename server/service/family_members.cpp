@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "geometry/core/error.h"
+#include "geometry/field/csg_field.h"
 #include "geometry/superquadric/fuzzy_part_members.h"
 #include "query/document/part_json.h"
 
@@ -21,15 +22,6 @@ void collectLeaves(const CsgTree& node, std::unordered_map<const CsgTree*, size_
   for (const auto& child : node.children) collectLeaves(*child, first, order);
 }
 
-const char* opName(CsgOp op) {
-  switch (op) {
-    case CsgOp::kUnion: return "union";
-    case CsgOp::kIntersection: return "intersection";
-    case CsgOp::kDifference: return "difference";
-  }
-  return "union";
-}
-
 // The member's tree: the shape's Booleans with every leaf replaced by its crisp member.
 nlohmann::json memberTree(const CsgTree& node, const std::unordered_map<const CsgTree*, FuzzyPart>& members,
                           size_t* nodes, size_t maxNodes) {
@@ -41,7 +33,7 @@ nlohmann::json memberTree(const CsgTree& node, const std::unordered_map<const Cs
   if (node.leaf) return {{"part", partToJson(members.at(&node))}};
   nlohmann::json children = nlohmann::json::array();
   for (const auto& child : node.children) children.push_back(memberTree(*child, members, nodes, maxNodes));
-  return {{"op", opName(node.op)}, {"children", std::move(children)}};
+  return {{"op", csgOpName(node.op)}, {"children", std::move(children)}};
 }
 
 }  // namespace

@@ -34,6 +34,19 @@ bool inLowerAt(CsgOp op, AlphaLevels a, AlphaLevels b, double alpha) {
   return false;
 }
 
+TEST(CsgField, OperationNamesRoundTrip) {
+  for (const CsgOp op : {CsgOp::kUnion, CsgOp::kIntersection, CsgOp::kDifference}) {
+    CsgOp back = op == CsgOp::kUnion ? CsgOp::kDifference : CsgOp::kUnion;
+    ASSERT_TRUE(csgOpFromName(csgOpName(op), &back)) << csgOpName(op);
+    EXPECT_EQ(back, op);
+  }
+  EXPECT_STREQ(csgOpName(CsgOp::kIntersection), "intersection");
+  CsgOp untouched = CsgOp::kUnion;
+  EXPECT_FALSE(csgOpFromName("minus", &untouched));
+  EXPECT_FALSE(csgOpFromName("Union", &untouched));
+  EXPECT_EQ(untouched, CsgOp::kUnion);
+}
+
 TEST(CsgField, LevelsAgreeWithThePerLevelSetDefinitionsOfSpec3) {
   auto a = ball({0, 0, 0}, 0.8, 1.0, 1.3), b = ball({1.1, 0, 0}, 0.7, 0.9, 1.0);
   std::mt19937 rng(7);
