@@ -65,4 +65,11 @@ size_t requestLength(const std::function<const std::string*(size_t)>& wordAt, co
   return next && *next == "for" ? verb + 1 : verb;
 }
 
+bool functionWord(const std::string& word) {
+  static const std::vector<std::string> kFunctionWords = {
+      "a",  "an", "the",  "and",   "or", "with", "of",  "on",  "in",   "at",  "to",
+      "by", "that", "which", "is", "are", "has",  "have", "its", "it", "for", "from"};
+  return std::find(kFunctionWords.begin(), kFunctionWords.end(), word) != kFunctionWords.end();
+}
+
 }  // namespace fsdb::query_tokens

@@ -32,6 +32,12 @@ struct TokenView {
 // is none of the above, naming its position.
 std::vector<Token> tokenize(const std::string& text, size_t from, size_t to);
 
+// Function words that carry no property of a shape: articles, conjunctions, prepositions, "is",
+// "has" and the like ("a", "and", "with", "of", "its", "for"). One list for the readers that set
+// them aside: the full-text search of objects' own words, and the joining words left dangling
+// where unknown words are dropped from a text.
+bool functionWord(const std::string& word);
+
 // The words without the vocabulary's fillers ("please"), which carry no meaning wherever they
 // stand, and without the comma that sets one off: the one after it ("please, find ...", "round,
 // please, tapered"), else the one before it when it ends the text ("small, please"). Word is any

@@ -30,10 +30,7 @@ bool knownWord(const std::string& word, const Vocabulary& vocabulary) {
 // Words that only join what follows them to what comes before: left dangling when every word
 // after them was unknown.
 bool joiningWord(const std::string& w) {
-  static const std::vector<std::string> kJoining = {",",    "and",  "or", "with", "that", "which", "is", "are",
-                                                    "has",  "have", "a",  "an",   "the",  "of",    "to", "on",
-                                                    "in",   "at",   "by", "from", "not",  "its"};
-  return std::find(kJoining.begin(), kJoining.end(), w) != kJoining.end();
+  return w == "," || w == "not" || query_tokens::functionWord(w);
 }
 
 bool readsAsQuery(const std::string& text, const Vocabulary& vocabulary) {

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "geometry/core/closest_names.h"
 #include "geometry/core/error.h"
@@ -68,13 +70,10 @@ constexpr double kDescribedScore = 0.5;
 // with "not" (a word search cannot say what an object is not).
 nlohmann::json objectsDescribed(const Store& store, const nlohmann::json& request, const std::vector<std::string>& words,
                                 size_t limit) {
-  static const std::vector<std::string> kLittle = {"a",  "an", "the", "and", "or", "with", "of", "on",  "in",  "at",
-                                                   "to", "by", "that", "which", "is", "are", "its", "it", "for", "from"};
   std::vector<std::string> content;
   for (const std::string& w : words) {
     if (w == "not" || w == "no" || w == "without") return nlohmann::json::array();
-    if (std::find(kLittle.begin(), kLittle.end(), w) == kLittle.end() &&
-        std::isalnum(static_cast<unsigned char>(w[0])))
+    if (!query_tokens::functionWord(w) && std::isalnum(static_cast<unsigned char>(w[0])))
       content.push_back(w);
   }
   nlohmann::json out = nlohmann::json::array();
@@ -111,25 +110,29 @@ void putWordMatches(nlohmann::json* answer, const nlohmann::json& named, const n
   if (named.empty() && described.empty()) return;
   nlohmann::json rest =
       answer->contains("results") && (*answer)["results"].is_array() ? (*answer)["results"] : nlohmann::json::array();
+  // Objects by id (as JSON text, so that any id type compares), each once: linear in the answer.
+  const auto key = [](const nlohmann::json& r) { return r.value("id", nlohmann::json()).dump(); };
+  std::unordered_map<std::string, size_t> resultAt;
+  for (size_t i = 0; i < rest.size(); ++i) resultAt.emplace(key(rest[i]), i);
   for (const nlohmann::json& d : described) {
-    bool found = false;
-    for (nlohmann::json& r : rest) {
-      if (r.value("id", nlohmann::json()) != d["id"]) continue;
-      found = true;
-      r["score"] = std::max(r.value("score", 0.0), d["score"].get<double>());
-      r["described"] = true;
-      if (r.contains("explain") && r["explain"].is_array()) r["explain"].push_back(d["explain"][0]);
+    const auto it = resultAt.find(key(d));
+    if (it == resultAt.end()) {
+      resultAt.emplace(key(d), rest.size());
+      rest.push_back(d);
+      continue;
     }
-    if (!found) rest.push_back(d);
+    nlohmann::json& r = rest[it->second];
+    r["score"] = std::max(r.value("score", 0.0), d["score"].get<double>());
+    r["described"] = true;
+    if (r.contains("explain") && r["explain"].is_array()) r["explain"].push_back(d["explain"][0]);
   }
   std::stable_sort(rest.begin(), rest.end(), [](const nlohmann::json& a, const nlohmann::json& b) {
     return a.value("score", 0.0) > b.value("score", 0.0);
   });
   nlohmann::json results = nlohmann::json::array();
-  const auto add = [&results](const nlohmann::json& r) {
-    for (const nlohmann::json& seen : results)
-      if (seen["id"] == r.value("id", nlohmann::json())) return;
-    results.push_back(r);
+  std::unordered_set<std::string> seen;
+  const auto add = [&](const nlohmann::json& r) {
+    if (seen.insert(key(r)).second) results.push_back(r);
   };
   for (const nlohmann::json& n : named) add(n);
   for (const nlohmann::json& r : rest) add(r);

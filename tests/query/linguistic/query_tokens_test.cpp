@@ -41,6 +41,11 @@ TEST(QueryTokens, FillersGoWithTheCommaThatSetsThemOff) {
   EXPECT_EQ(texts(withoutFillers(tokens("kindly show bent"), v())), "show|bent");
 }
 
+TEST(QueryTokens, FunctionWordsCarryNoPropertyOfAShape) {
+  for (const char* w : {"a", "the", "and", "with", "of", "its", "has", "for"}) EXPECT_TRUE(functionWord(w)) << w;
+  for (const char* w : {"bent", "cylinder", "not", "without", "box", ",", ""}) EXPECT_FALSE(functionWord(w)) << w;
+}
+
 TEST(QueryTokens, PhrasesAndRequests) {
   const std::vector<Token> t = tokens("i am looking for a double pyramid");
   EXPECT_EQ(phraseLength(wordsFrom(t, 5), "double pyramid"), 2u);
