@@ -92,4 +92,19 @@ async function newPage(browser, options) {
   return page;
 }
 
-module.exports = { startServer, launchBrowser, inkShare, watchProblems, regionShot, newPage, slowdown };
+// Runs a page test: body({ browser, url }) against a fresh server (startServer) in a fresh browser,
+// both closed however it ends; a failure ends the process with status 1 and its message.
+function runPageTest(fsdb, source, webDir, body) {
+  (async () => {
+    const { child, url } = await startServer(fsdb, source, webDir);
+    const browser = await launchBrowser();
+    try {
+      await body({ browser, url });
+    } finally {
+      await browser.close();
+      child.kill('SIGTERM');
+    }
+  })().catch((e) => { console.error(e.message || e); process.exit(1); });
+}
+
+module.exports = { runPageTest, startServer, launchBrowser, inkShare, watchProblems, regionShot, newPage, slowdown };

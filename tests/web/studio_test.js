@@ -20,7 +20,7 @@
 const { execFileSync } = require('child_process');
 const fs = require('fs');
 const path = require('path');
-const { inkShare, launchBrowser, startServer, watchProblems, regionShot, newPage, slowdown } = require('./helpers.js');
+const { inkShare, newPage, regionShot, runPageTest, slowdown, watchProblems } = require('./helpers.js');
 
 const [fsdb, source, webDir, out, validatorDir] = process.argv.slice(2);
 
@@ -185,156 +185,149 @@ async function designTools(page, url, out, conflict) {
   console.log(`ink share of the design tools' pictures: ${inks.join(', ')}`);
 }
 
-async function main() {
+async function main({ browser, url }) {
   fs.mkdirSync(out, { recursive: true });
-  const { child, url } = await startServer(fsdb, source, webDir);
-  const browser = await launchBrowser();
   // While the test makes a save conflict on purpose, the one 412 answer to a PUT is expected (it
   // is counted), and so is the browser's own console line about it; nothing else is.
   let conflictExpected = false;
   let conflicts = 0;
-  try {
-    const page = await newPage(browser, { viewport: { width: 1280, height: 900 } });
-    const problems = watchProblems(page, {
-      console: (line) => conflictExpected && /the server responded with a status of 412/.test(line),
-      response: (r) => {
-        if (!(conflictExpected && r.status() === 412 && r.request().method() === 'PUT')) return false;
-        conflicts += 1;
-        return true;
-      },
-    });
+  const page = await newPage(browser, { viewport: { width: 1280, height: 900 } });
+  const problems = watchProblems(page, {
+    console: (line) => conflictExpected && /the server responded with a status of 412/.test(line),
+    response: (r) => {
+      if (!(conflictExpected && r.status() === 412 && r.request().method() === 'PUT')) return false;
+      conflicts += 1;
+      return true;
+    },
+  });
 
-    // Cold: the page and the list of shapes (thumbnails are drawn on first request, then cached).
-    let started = Date.now();
-    await page.goto(`${url}/`, { waitUntil: 'domcontentloaded' });
-    await page.waitForSelector('#results > li img');
-    const coldMillis = Date.now() - started;
-    await page.waitForFunction(() => [...document.querySelectorAll('#results img')].every((i) => i.complete && i.naturalWidth > 0),
-      null, { timeout: 60000 * slowdown });
-    // Warm: everything, thumbnails included, from the server's cache. Reported, not asserted (the
-    // goal, under 1 s, is a speed: docs/performance.md quotes it from a quiet run).
-    started = Date.now();
-    await page.reload({ waitUntil: 'load' });
-    await page.waitForFunction(() => [...document.querySelectorAll('#results img')].every((i) => i.complete && i.naturalWidth > 0));
-    const loadMillis = Date.now() - started;
-    // Browsing: the name filter, and a stored part's parameters in the structure of a shape.
-    await page.fill('#filter', 'snowman');
-    const visible = await page.$$eval('#results > li', (items) => items.filter((li) => !li.hidden).map((li) => li.dataset.id));
-    if (visible.length !== 1) throw new Error(`the filter shows ${visible.length} cards`);
-    await page.click('#results > li:not([hidden])');
-    await page.waitForFunction(() => document.querySelector('#tree').textContent.includes('a1 = 2'));
-    await page.fill('#filter', '');
+  // Cold: the page and the list of shapes (thumbnails are drawn on first request, then cached).
+  let started = Date.now();
+  await page.goto(`${url}/`, { waitUntil: 'domcontentloaded' });
+  await page.waitForSelector('#results > li img');
+  const coldMillis = Date.now() - started;
+  await page.waitForFunction(() => [...document.querySelectorAll('#results img')].every((i) => i.complete && i.naturalWidth > 0),
+    null, { timeout: 60000 * slowdown });
+  // Warm: everything, thumbnails included, from the server's cache. Reported, not asserted (the
+  // goal, under 1 s, is a speed: docs/performance.md quotes it from a quiet run).
+  started = Date.now();
+  await page.reload({ waitUntil: 'load' });
+  await page.waitForFunction(() => [...document.querySelectorAll('#results img')].every((i) => i.complete && i.naturalWidth > 0));
+  const loadMillis = Date.now() - started;
+  // Browsing: the name filter, and a stored part's parameters in the structure of a shape.
+  await page.fill('#filter', 'snowman');
+  const visible = await page.$$eval('#results > li', (items) => items.filter((li) => !li.hidden).map((li) => li.dataset.id));
+  if (visible.length !== 1) throw new Error(`the filter shows ${visible.length} cards`);
+  await page.click('#results > li:not([hidden])');
+  await page.waitForFunction(() => document.querySelector('#tree').textContent.includes('a1 = 2'));
+  await page.fill('#filter', '');
 
-    // A misspelt word is left out and offered corrected, in one click.
-    await page.fill('#query', 'a bnet cylinder');
-    await page.press('#query', 'Enter');
-    await page.waitForSelector('#read-as a[data-action="did-you-mean"]');
-    const offered = await page.$eval('#read-as a[data-action="did-you-mean"]', (a) => a.textContent);
-    if (offered !== 'a bent cylinder') throw new Error(`did you mean: ${offered}`);
-    const reading = await page.$eval('#read-as', (p) => p.textContent);
-    if (!reading.includes('not understood: “bnet” (bent')) throw new Error(`reading: ${reading}`);
-    await page.click('#read-as a[data-action="did-you-mean"]');
-    await page.waitForFunction(() => document.querySelector('#query').value === 'a bent cylinder' &&
-      !document.querySelector('#read-as a') && document.querySelector('#status').textContent.includes('linguistic search'));
+  // A misspelt word is left out and offered corrected, in one click.
+  await page.fill('#query', 'a bnet cylinder');
+  await page.press('#query', 'Enter');
+  await page.waitForSelector('#read-as a[data-action="did-you-mean"]');
+  const offered = await page.$eval('#read-as a[data-action="did-you-mean"]', (a) => a.textContent);
+  if (offered !== 'a bent cylinder') throw new Error(`did you mean: ${offered}`);
+  const reading = await page.$eval('#read-as', (p) => p.textContent);
+  if (!reading.includes('not understood: “bnet” (bent')) throw new Error(`reading: ${reading}`);
+  await page.click('#read-as a[data-action="did-you-mean"]');
+  await page.waitForFunction(() => document.querySelector('#query').value === 'a bent cylinder' &&
+    !document.querySelector('#read-as a') && document.querySelector('#status').textContent.includes('linguistic search'));
 
-    await page.fill('#query', 'a very bent cylinder');
-    await page.press('#query', 'Enter');
-    await page.waitForFunction(() => document.querySelector('#status').textContent.includes('linguistic search') &&
-      document.querySelector('#read-as').textContent.includes('very bent'));
-    const ranked = await page.$$eval('#results > li', (items) => items.map((li) => ({
-      name: li.querySelector('.name').childNodes[0].textContent,
-      score: Number(li.querySelector('.score').textContent),
-    })));
-    if (ranked.length < 3) throw new Error(`expected ranked results, got ${JSON.stringify(ranked)}`);
-    for (let i = 1; i < ranked.length; i++)
-      if (ranked[i].score > ranked[i - 1].score) throw new Error(`not ranked: ${JSON.stringify(ranked)}`);
-    // Every thumbnail loaded (a decoded image has a natural width).
-    await page.waitForFunction(() => [...document.querySelectorAll('#results img')].every((i) => i.complete && i.naturalWidth > 0));
-    await page.screenshot({ path: path.join(out, 'studio-search.png') });
+  await page.fill('#query', 'a very bent cylinder');
+  await page.press('#query', 'Enter');
+  await page.waitForFunction(() => document.querySelector('#status').textContent.includes('linguistic search') &&
+    document.querySelector('#read-as').textContent.includes('very bent'));
+  const ranked = await page.$$eval('#results > li', (items) => items.map((li) => ({
+    name: li.querySelector('.name').childNodes[0].textContent,
+    score: Number(li.querySelector('.score').textContent),
+  })));
+  if (ranked.length < 3) throw new Error(`expected ranked results, got ${JSON.stringify(ranked)}`);
+  for (let i = 1; i < ranked.length; i++)
+    if (ranked[i].score > ranked[i - 1].score) throw new Error(`not ranked: ${JSON.stringify(ranked)}`);
+  // Every thumbnail loaded (a decoded image has a natural width).
+  await page.waitForFunction(() => [...document.querySelectorAll('#results img')].every((i) => i.complete && i.naturalWidth > 0));
+  await page.screenshot({ path: path.join(out, 'studio-search.png') });
 
-    // The first shape among the results (the view shows shapes and parts alike).
-    const first = await page.$eval('#results > li', (li) => `${li.dataset.kind}/${li.dataset.id}`);
-    const shown = (alpha) => page.waitForFunction((want) => document.querySelector('#canvas').dataset.shown === want,
-      `${first}@${alpha}`);
-    await page.click('#results > li');
-    await page.waitForSelector('#view:not([hidden])');
-    await shown('0.5');
-    // The coarse preview came first and the status line says what the view shows now.
-    const coarse = await page.$eval('#canvas', (c) => c.dataset.coarse);
-    if (coarse !== `${first}@0.5`) throw new Error(`no coarse preview before the full mesh: ${coarse}`);
-    const viewStatus = await page.$eval('#view-status', (p) => p.textContent);
-    if (!/^α = 0\.50 \(\d+\.\d s\)$/.test(viewStatus)) throw new Error(`view status: ${viewStatus}`);
-    await page.waitForSelector('#chart path[stroke="#eb8232"]');
-    await page.waitForTimeout(300);
-    const atHalf = await page.locator('#canvas-box').screenshot({ path: path.join(out, 'studio-alpha-0.5.png') });
-    await page.locator('#alpha').fill('1');
-    await shown('1');
-    await page.waitForTimeout(300);
-    const atOne = await page.locator('#canvas-box').screenshot({ path: path.join(out, 'studio-alpha-1.png') });
-    await page.locator('#alpha').fill('0');
-    await shown('0');
-    await page.waitForTimeout(300);
-    const atZero = await page.locator('#canvas-box').screenshot({ path: path.join(out, 'studio-alpha-0.png') });
-    await page.screenshot({ path: path.join(out, 'studio-view.png') });
+  // The first shape among the results (the view shows shapes and parts alike).
+  const first = await page.$eval('#results > li', (li) => `${li.dataset.kind}/${li.dataset.id}`);
+  const shown = (alpha) => page.waitForFunction((want) => document.querySelector('#canvas').dataset.shown === want,
+    `${first}@${alpha}`);
+  await page.click('#results > li');
+  await page.waitForSelector('#view:not([hidden])');
+  await shown('0.5');
+  // The coarse preview came first and the status line says what the view shows now.
+  const coarse = await page.$eval('#canvas', (c) => c.dataset.coarse);
+  if (coarse !== `${first}@0.5`) throw new Error(`no coarse preview before the full mesh: ${coarse}`);
+  const viewStatus = await page.$eval('#view-status', (p) => p.textContent);
+  if (!/^α = 0\.50 \(\d+\.\d s\)$/.test(viewStatus)) throw new Error(`view status: ${viewStatus}`);
+  await page.waitForSelector('#chart path[stroke="#eb8232"]');
+  await page.waitForTimeout(300);
+  const atHalf = await page.locator('#canvas-box').screenshot({ path: path.join(out, 'studio-alpha-0.5.png') });
+  await page.locator('#alpha').fill('1');
+  await shown('1');
+  await page.waitForTimeout(300);
+  const atOne = await page.locator('#canvas-box').screenshot({ path: path.join(out, 'studio-alpha-1.png') });
+  await page.locator('#alpha').fill('0');
+  await shown('0');
+  await page.waitForTimeout(300);
+  const atZero = await page.locator('#canvas-box').screenshot({ path: path.join(out, 'studio-alpha-0.png') });
+  await page.screenshot({ path: path.join(out, 'studio-view.png') });
 
-    // The object's address, and the download links at the slider's α (fetched as the browser
-    // would download them: a GLB of both bounds, an STL of upper).
-    const [kindOf, idOf] = first.split('/');
-    const address = await page.evaluate(() => location.hash);
-    if (address !== `#/${kindOf}s/${idOf}`) throw new Error(`address: ${address}`);
-    const glbHref = await page.$eval('[data-action="export-glb"]', (a) => a.getAttribute('href'));
-    if (glbHref !== `/${kindOf}s/${idOf}/mesh?format=glb&alpha=0`) throw new Error(`GLB link: ${glbHref}`);
-    const fetched = (href) => page.evaluate(async (h) => {
-      const r = await fetch(h);
-      const b = new Uint8Array(await r.arrayBuffer());
-      return { status: r.status, magic: String.fromCharCode(...b.slice(0, 4)), size: b.length, disposition: r.headers.get('content-disposition') };
-    }, href);
-    const glb = await fetched(glbHref);
-    if (glb.status !== 200 || glb.magic !== 'glTF' || !/^attachment/.test(glb.disposition || '')) throw new Error(`GLB download: ${JSON.stringify(glb)}`);
-    // The downloaded file, as the user gets it, through the Khronos glTF validator the
-    // gltf_validator ctest uses (tools/gltf-validate): valid, with its lower and upper meshes.
-    const glbBytes = await page.evaluate(async (h) => {
-      const b = new Uint8Array(await (await fetch(h)).arrayBuffer());
-      let s = '';
-      for (let i = 0; i < b.length; i += 0x8000) s += String.fromCharCode(...b.subarray(i, i + 0x8000));
-      return btoa(s);
-    }, glbHref);
-    const glbFile = path.join(out, 'download.glb');
-    fs.writeFileSync(glbFile, Buffer.from(glbBytes, 'base64'));
-    execFileSync(path.join(source, 'tools/gltf-validate/run-validator'), [fsdb, validatorDir, glbFile], { stdio: 'inherit' });
-    const stl = await fetched(await page.$eval('[data-action="export-stl"][data-bound="upper"]', (a) => a.getAttribute('href')));
-    if (stl.status !== 200 || stl.size < 84) throw new Error(`STL download: ${JSON.stringify(stl)}`);
-    for (const action of ['export-obj', 'export-vdb'])
-      if (!(await page.$eval(`[data-action="${action}"]`, (a) => a.getAttribute('href')))) throw new Error(`no ${action} link`);
-    // A reload (or a shared link) opens the object from its address.
-    await page.reload({ waitUntil: 'load' });
-    await page.waitForFunction((id) => !document.querySelector('#view').hidden &&
-      document.querySelector('#title').textContent.includes(`(#${id},`), idOf);
+  // The object's address, and the download links at the slider's α (fetched as the browser
+  // would download them: a GLB of both bounds, an STL of upper).
+  const [kindOf, idOf] = first.split('/');
+  const address = await page.evaluate(() => location.hash);
+  if (address !== `#/${kindOf}s/${idOf}`) throw new Error(`address: ${address}`);
+  const glbHref = await page.$eval('[data-action="export-glb"]', (a) => a.getAttribute('href'));
+  if (glbHref !== `/${kindOf}s/${idOf}/mesh?format=glb&alpha=0`) throw new Error(`GLB link: ${glbHref}`);
+  const fetched = (href) => page.evaluate(async (h) => {
+    const r = await fetch(h);
+    const b = new Uint8Array(await r.arrayBuffer());
+    return { status: r.status, magic: String.fromCharCode(...b.slice(0, 4)), size: b.length, disposition: r.headers.get('content-disposition') };
+  }, href);
+  const glb = await fetched(glbHref);
+  if (glb.status !== 200 || glb.magic !== 'glTF' || !/^attachment/.test(glb.disposition || '')) throw new Error(`GLB download: ${JSON.stringify(glb)}`);
+  // The downloaded file, as the user gets it, through the Khronos glTF validator the
+  // gltf_validator ctest uses (tools/gltf-validate): valid, with its lower and upper meshes.
+  const glbBytes = await page.evaluate(async (h) => {
+    const b = new Uint8Array(await (await fetch(h)).arrayBuffer());
+    let s = '';
+    for (let i = 0; i < b.length; i += 0x8000) s += String.fromCharCode(...b.subarray(i, i + 0x8000));
+    return btoa(s);
+  }, glbHref);
+  const glbFile = path.join(out, 'download.glb');
+  fs.writeFileSync(glbFile, Buffer.from(glbBytes, 'base64'));
+  execFileSync(path.join(source, 'tools/gltf-validate/run-validator'), [fsdb, validatorDir, glbFile], { stdio: 'inherit' });
+  const stl = await fetched(await page.$eval('[data-action="export-stl"][data-bound="upper"]', (a) => a.getAttribute('href')));
+  if (stl.status !== 200 || stl.size < 84) throw new Error(`STL download: ${JSON.stringify(stl)}`);
+  for (const action of ['export-obj', 'export-vdb'])
+    if (!(await page.$eval(`[data-action="${action}"]`, (a) => a.getAttribute('href')))) throw new Error(`no ${action} link`);
+  // A reload (or a shared link) opens the object from its address.
+  await page.reload({ waitUntil: 'load' });
+  await page.waitForFunction((id) => !document.querySelector('#view').hidden &&
+    document.querySelector('#title').textContent.includes(`(#${id},`), idOf);
 
-    // "More" asks for 12 results more.
-    await page.fill('#query', 'something');
-    await page.press('#query', 'Enter');
-    await page.waitForFunction(() => document.querySelector('#status').textContent.includes('12 results'));
-    await page.waitForSelector('[data-action="more-results"]:not([hidden])');
-    await page.click('[data-action="more-results"]');
-    await page.waitForFunction(() => document.querySelectorAll('#results > li').length > 12);
+  // "More" asks for 12 results more.
+  await page.fill('#query', 'something');
+  await page.press('#query', 'Enter');
+  await page.waitForFunction(() => document.querySelector('#status').textContent.includes('12 results'));
+  await page.waitForSelector('[data-action="more-results"]:not([hidden])');
+  await page.click('[data-action="more-results"]');
+  await page.waitForFunction(() => document.querySelectorAll('#results > li').length > 12);
 
-    await designTools(page, url, out, {
-      expectConflict: (on) => { conflictExpected = on; },
-      conflicts: () => conflicts,
-    });
+  await designTools(page, url, out, {
+    expectConflict: (on) => { conflictExpected = on; },
+    conflicts: () => conflicts,
+  });
 
-    const inks = [await inkShare(page, atZero), await inkShare(page, atHalf), await inkShare(page, atOne)];
-    console.log(`page and list in ${coldMillis} ms cold; page with every thumbnail in ${loadMillis} ms warm; results ${ranked.map((r) => `${r.name} ${r.score}`).join(', ')}`);
-    console.log(`ink share at alpha 0 / 0.5 / 1: ${inks.map((x) => x.toFixed(4)).join(' / ')}`);
-    if (inks.some((x) => x < 0.01)) throw new Error('a view screenshot is blank');
-    if (atZero.equals(atOne) || atHalf.equals(atOne)) throw new Error('the view does not change with alpha');
-    if (problems.length) throw new Error(problems.join('\n'));
-    console.log('studio page: ok');
-  } finally {
-    await browser.close();
-    child.kill('SIGTERM');
-  }
+  const inks = [await inkShare(page, atZero), await inkShare(page, atHalf), await inkShare(page, atOne)];
+  console.log(`page and list in ${coldMillis} ms cold; page with every thumbnail in ${loadMillis} ms warm; results ${ranked.map((r) => `${r.name} ${r.score}`).join(', ')}`);
+  console.log(`ink share at alpha 0 / 0.5 / 1: ${inks.map((x) => x.toFixed(4)).join(' / ')}`);
+  if (inks.some((x) => x < 0.01)) throw new Error('a view screenshot is blank');
+  if (atZero.equals(atOne) || atHalf.equals(atOne)) throw new Error('the view does not change with alpha');
+  if (problems.length) throw new Error(problems.join('\n'));
+  console.log('studio page: ok');
 }
 
-main().catch((e) => { console.error(e.message || e); process.exit(1); });
+runPageTest(fsdb, source, webDir, main);
