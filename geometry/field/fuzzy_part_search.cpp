@@ -222,6 +222,18 @@ FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const 
 }
 
 FuzzyPartField::Search FuzzyPartField::MaxMinSearch::run() {
+  // The peak of P(0), every value at its core's midpoint, first: where it is a witness, m = 1 is
+  // the answer with one crisp evaluation and no enclosure (tryWitnesses would find it too, but
+  // only after the first box's exclusion tests, which cannot succeed there).
+  {
+    double peak[kSlots];
+    for (int i = 0; i < kSlots; ++i) peak[i] = mid(slot(field_.core_, i));
+    const PlacedSuperquadric theta = thetaAt(field_.support_, peak);
+    if (witness(field_.valueAt(theta, p_))) {
+      improve(membershipAt(peak), theta);
+      if (s_.incumbent >= 1.0) return s_;
+    }
+  }
   heap_.push_back({field_.support_, 1.0, 0.0});
   // A dive that finds no witness in a quarter of the budget may find none at all (u_true <= τ, or
   // no θ of P(0) puts p outside): from then on best first, so that the proof lowers the largest
