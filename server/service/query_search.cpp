@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -95,6 +96,96 @@ nlohmann::json objectsNamed(const Store& store, const nlohmann::json& request, c
   return out;
 }
 
+// The names a text that no grammar reads as it is nearly holds: each run of up to four
+// consecutive words the grammars lack (unknown or only routed: "egg form" gives egg, form and
+// egg-form, "a mushroom form" mushroom), joined as namesOfText joins them; and, for the first
+// three unknown words (no route either) of four to twenty letters, every spelling one edit away (a letter left out,
+// added, changed, or two swapped: "snowmn" gives snowman, "tabel" table). Runs first.
+void nearNames(const std::string& text, const KnownWordsReading& reading, std::vector<std::string>* runs,
+               std::vector<std::string>* edits) {
+  std::vector<query_tokens::Token> tokens;
+  try {
+    tokens = query_tokens::tokenize(text, 0, text.size());
+  } catch (const Error&) {
+    return;
+  }
+  std::vector<size_t> lacking;  // offsets of the words the grammars lack
+  for (const UnknownWord& u : reading.unknown) lacking.push_back(u.at);
+  for (const RoutedWord& r : reading.routed) lacking.push_back(r.at);
+  const auto lacks = [&](const query_tokens::Token& t) {
+    return std::find(lacking.begin(), lacking.end(), t.offset) != lacking.end();
+  };
+  std::vector<std::string> words;
+  for (size_t i = 0; i <= tokens.size(); ++i) {
+    if (i < tokens.size() && lacks(tokens[i])) {
+      words.push_back(tokens[i].text);
+      continue;
+    }
+    for (size_t from = 0; from < words.size(); ++from)
+      for (size_t n = 1; n <= 4 && from + n <= words.size(); ++n)
+        for (std::string& name : namesOfText({words.begin() + static_cast<std::ptrdiff_t>(from),
+                                              words.begin() + static_cast<std::ptrdiff_t>(from + n)}))
+          if (std::find(runs->begin(), runs->end(), name) == runs->end()) runs->push_back(std::move(name));
+    words.clear();
+  }
+  static const std::string kLetters = "abcdefghijklmnopqrstuvwxyz-";
+  size_t edited = 0;
+  for (const UnknownWord& u : reading.unknown) {
+    const std::string& w = u.word;
+    if (edited == 3) break;
+    if (w.size() < 4 || w.size() > 20) continue;
+    ++edited;
+    std::vector<std::string> near;
+    for (size_t k = 0; k < w.size(); ++k) near.push_back(w.substr(0, k) + w.substr(k + 1));
+    for (size_t k = 0; k + 1 < w.size(); ++k) {
+      std::string swapped = w;
+      std::swap(swapped[k], swapped[k + 1]);
+      near.push_back(std::move(swapped));
+    }
+    for (size_t k = 0; k <= w.size(); ++k)
+      for (const char c : kLetters) {
+        near.push_back(w.substr(0, k) + c + w.substr(k));
+        if (k < w.size() && c != w[k]) near.push_back(w.substr(0, k) + c + w.substr(k + 1));
+      }
+    for (std::string& name : near)
+      if (name != w && std::find(edits->begin(), edits->end(), name) == edits->end()) edits->push_back(std::move(name));
+  }
+}
+
+// How names a text nearly holds score (nearNames): below an exact name (1) and above the
+// objects' own words (kDescribedScore); a name in the text's words above a spelling one edit away.
+constexpr double kNameInTextScore = 0.9;
+constexpr double kNearNameScore = 0.8;
+
+// The stored parts and shapes whose name the text nearly holds (nearNames), as named results:
+// the names in its words (kNameInTextScore), then those one edit away (kNearNameScore), each
+// object once, looked up kMaxNamedLookups names a statement.
+nlohmann::json objectsNearlyNamed(const Store& store, const nlohmann::json& request, const std::string& text,
+                                  const KnownWordsReading& reading) {
+  std::vector<std::string> runs, edits;
+  nearNames(text, reading, &runs, &edits);
+  nlohmann::json out = nlohmann::json::array();
+  std::unordered_set<int64_t> seen;
+  const std::vector<std::string> kinds = requestKinds(request);
+  for (const bool typo : {false, true}) {
+    const std::vector<std::string>& names = typo ? edits : runs;
+    for (size_t at = 0; at < names.size(); at += Store::kMaxNamedLookups) {
+      const std::vector<std::string> chunk(
+          names.begin() + static_cast<std::ptrdiff_t>(at),
+          names.begin() + static_cast<std::ptrdiff_t>(std::min(names.size(), at + Store::kMaxNamedLookups)));
+      for (const StoredObject& o : store.named(chunk, kinds)) {
+        if (!seen.insert(o.id).second) continue;
+        const double score = typo ? kNearNameScore : kNameInTextScore;
+        const std::string why = typo ? "the name '" + o.name + "', one letter away from a word of the text"
+                                     : "the name '" + o.name + "' among the words of the text";
+        out.push_back({{"id", o.id}, {"kind", o.kind}, {"name", o.name}, {"version", o.version}, {"score", score},
+                       {"named", true}, {"explain", {{{"text", why}, {"score", score}}}}});
+      }
+    }
+  }
+  return out;
+}
+
 // The request's limit as the searches read it (10 by default; an invalid one is theirs to refuse).
 size_t requestLimit(const nlohmann::json& request) {
   if (request.contains("limit") && request["limit"].is_number_integer() && request["limit"].get<int64_t>() > 0)
@@ -166,16 +257,12 @@ nlohmann::json searchText(const Store& store, const nlohmann::json& request, con
 // A text that neither grammar reads (`refused`): read without the words neither knows
 // (query/structural/unknown_words.h) or with their corrections; throws `refused`, or a refusal
 // naming every unknown word, when that does not read either.
-nlohmann::json readAroundUnknownWords(const Store& store, const nlohmann::json& request, const std::string& text,
-                                      const Error& refused, const LinguisticRequestLimits& linguisticLimits,
+nlohmann::json readAroundUnknownWords(const Store& store, const nlohmann::json& request,
+                                      const std::optional<KnownWordsReading>& known, const Error& refused,
+                                      const LinguisticRequestLimits& linguisticLimits,
                                       const CsgRequestLimits& csgLimits, StoredGraphCache& graphs) {
-  KnownWordsReading reading;
-  try {
-    reading = readKnownWords(text, activeVocabulary());
-  } catch (const Error&) {
-    throw refused;
-  }
-  if (reading.unknown.empty() && reading.routed.empty()) throw refused;
+  if (!known || (known->unknown.empty() && known->routed.empty())) throw refused;
+  const KnownWordsReading& reading = *known;
   // The text without them first; when that does not read, their corrections chosen together.
   std::vector<std::string> tries;
   if (!reading.text.empty()) tries.push_back(reading.text);
@@ -273,14 +360,29 @@ nlohmann::json queryResponse(const Store& store, const nlohmann::json& request,
       putWordMatches(&answer, named, byWords, limit);
       return answer;
     }
+    std::optional<KnownWordsReading> reading;
+    try {
+      reading = readKnownWords(text, activeVocabulary());
+    } catch (const Error&) {
+      // a character no query tokenises: refused below as it was
+    }
+    // Names among the words the grammars lack, or one letter from one ("egg form", "snowmn").
+    const nlohmann::json nearly =
+        reading ? objectsNearlyNamed(store, request, text, *reading) : nlohmann::json::array();
     try {
       nlohmann::json answer =
-          readAroundUnknownWords(store, request, text, refused, linguisticLimits, csgLimits, graphs);
-      putWordMatches(&answer, named, byWords, limit);
+          readAroundUnknownWords(store, request, reading, refused, linguisticLimits, csgLimits, graphs);
+      putWordMatches(&answer, nearly, byWords, limit);
       return answer;
     } catch (const Error& unread) {
+      if (unread.code() != errc::kInvalidParameter || unread.path() != "text") throw;
+      if (!nearly.empty()) {
+        nlohmann::json answer = {{"search", "name"}, {"results", nlohmann::json::array()}};
+        putWordMatches(&answer, nearly, byWords, limit);
+        return answer;
+      }
       // Words no grammar reads that objects are described by ("a mushroom form").
-      if (byWords.empty() || unread.code() != errc::kInvalidParameter || unread.path() != "text") throw;
+      if (byWords.empty()) throw;
       return {{"search", "words"}, {"results", byWords}};
     }
   }

@@ -432,6 +432,35 @@ TEST(DesignersQueries, NamesFindTheirObjectFirst) {
   EXPECT_EQ(server.post("/query", json{{"text", "purple elephant"}}).status, 422);
 }
 
+// A text no grammar reads that nearly holds a name: the name among words the grammars lack ("the
+// snowman figure"), or a word one letter from a name ("snowmn", "snowamn"), finds the object first,
+// marked named, below an exact name's score. A word the vocabulary knows is never taken for a name.
+TEST(DesignersQueries, NamesTheTextNearlyHoldsFindTheirObjectFirst) {
+  ServerProcess server({"--demo", kDemo});
+  for (const char* text : {"snowmn", "the snowamn", "show me the snowmen"}) {
+    auto typo = server.post("/query", json{{"text", text}});
+    ASSERT_EQ(typo.status, 200) << text << " " << typo.body;
+    ASSERT_FALSE(typo.json["results"].empty()) << text;
+    EXPECT_EQ(typo.json["results"][0]["name"], "snowman") << text;
+    EXPECT_EQ(typo.json["results"][0]["named"], true) << text;
+    EXPECT_EQ(typo.json["results"][0]["score"], 0.8) << text;
+  }
+  auto figure = server.post("/query", json{{"text", "the snowman figure"}});
+  ASSERT_EQ(figure.status, 200) << figure.body;
+  EXPECT_EQ(figure.json["search"], "name");
+  ASSERT_FALSE(figure.json["results"].empty());
+  EXPECT_EQ(figure.json["results"][0]["name"], "snowman");
+  EXPECT_EQ(figure.json["results"][0]["score"], 0.9);
+  // "sphere" is a word of the vocabulary (and an object's name): read as a word, not a name.
+  auto dots = server.post("/query", json{{"text", "a sphere with purple dots"}});
+  ASSERT_EQ(dots.status, 200) << dots.body;
+  for (const json& r : dots.json["results"]) EXPECT_FALSE(r.contains("named")) << r;
+  // The kind asked for holds.
+  auto shapes = server.post("/query", json{{"text", "snowmn"}, {"kind", "part"}});
+  EXPECT_EQ(shapes.status, 422) << shapes.body;
+  EXPECT_EQ(server.post("/query", json{{"text", "purple elephant"}}).status, 422);
+}
+
 // Nothing meets every condition: the closest partial matches, by the mean of the conditions, each
 // saying which condition fails.
 TEST(DesignersQueries, NoMatchGivesTheClosestPartialMatches) {
