@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 
 #include "geometry/core/closest_names.h"
 #include "query/linguistic/linguistic_query.h"
@@ -65,6 +66,55 @@ std::string rewrite(const std::string& text, const std::vector<query_tokens::Tok
   return collapsed;
 }
 
+// The run of consecutive words that reads as a query and holds the most content words (not
+// function words or commas; then the earliest, then the longest), among the tokens with routed
+// words replaced (replacement[i] non-empty) and unknown ones left out; runs neither start nor end
+// at a comma. The words outside it are listed with their offsets. At most kLongestRunTokens
+// tokens are considered (each run tried costs a parse).
+constexpr size_t kLongestRunTokens = 24;
+
+std::optional<ReadableRun> longestReadableRun(const std::vector<query_tokens::Token>& tokens,
+                                              const std::vector<std::string>& replacement,
+                                              const std::vector<bool>& unknown, const Vocabulary& vocabulary) {
+  std::vector<size_t> kept;  // token indices
+  for (size_t i = 0; i < tokens.size(); ++i)
+    if (!unknown[i] || !replacement[i].empty()) kept.push_back(i);
+  if (kept.empty() || kept.size() > kLongestRunTokens) return std::nullopt;
+  const auto word = [&](size_t i) { return unknown[i] ? replacement[i] : tokens[i].text; };
+  struct Run {
+    size_t from, length, content;
+  };
+  std::vector<Run> runs;
+  for (size_t from = 0; from < kept.size(); ++from) {
+    size_t content = 0;
+    for (size_t length = 1; from + length <= kept.size(); ++length) {
+      const std::string& w = tokens[kept[from + length - 1]].text;
+      content += w != "," && !query_tokens::functionWord(w);
+      if (tokens[kept[from]].text != "," && w != "," && content > 0) runs.push_back({from, length, content});
+    }
+  }
+  std::stable_sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) {
+    return a.content != b.content ? a.content > b.content
+                                  : a.from != b.from ? a.from < b.from : a.length > b.length;
+  });
+  for (const Run& r : runs) {
+    std::string run;
+    for (size_t k = r.from; k < r.from + r.length; ++k) {
+      const std::string w = word(kept[k]);
+      run += (run.empty() || w == "," ? "" : " ") + w;
+    }
+    if (!readsAsQuery(run, vocabulary)) continue;
+    ReadableRun out{run, {}};
+    for (size_t i = 0; i < tokens.size(); ++i) {
+      const bool inside = i >= kept[r.from] && i <= kept[r.from + r.length - 1];
+      if (!inside && tokens[i].text != "," && !(unknown[i] && replacement[i].empty()))
+        out.outside.push_back({tokens[i].text, tokens[i].offset, {}});
+    }
+    return out;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& vocabulary) {
@@ -119,7 +169,14 @@ KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& voca
     if (!u.closest.empty()) choice[i] = u.closest[0];
     reading.unknown.push_back(std::move(u));
   }
-  if (choice == leftOut || text.size() > kLongestCorrectedText) return reading;  // nothing to correct with
+  // Where neither the text without its unknown words nor a correction reads: the longest run of
+  // its words that does.
+  const auto withWindow = [&]() -> KnownWordsReading& {
+    if (!reading.corrected && text.size() <= kLongestCorrectedText && !readsAsQuery(reading.text, vocabulary))
+      reading.window = longestReadableRun(tokens, leftOut, unknown, vocabulary);
+    return reading;
+  };
+  if (choice == leftOut || text.size() > kLongestCorrectedText) return withWindow();  // nothing to correct with
   bool reads = readsAsQuery(textWith(choice), vocabulary);
   for (size_t i = 0, k = 0; i < tokens.size() && !reads; ++i) {
     if (!unknown[i] || routed[i]) continue;
@@ -137,7 +194,7 @@ KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& voca
     }
   }
   if (reads && choice != leftOut) reading.corrected = textWith(choice);
-  return reading;
+  return withWindow();
 }
 
 }  // namespace fsdb

@@ -31,6 +31,13 @@ struct RoutedWord {
   size_t at = 0;    // its character offset in the text
 };
 
+// A run of a text's words that reads as a query where the whole text does not: the words as read
+// (routed words replaced), and the known words outside it, which the search leaves out.
+struct ReadableRun {
+  std::string text;
+  std::vector<UnknownWord> outside;  // their `closest` is empty: they are words the grammars know
+};
+
 struct KnownWordsReading {
   std::vector<RoutedWord> routed;        // words read through their lemma or WordNet, in text order
   std::vector<UnknownWord> unknown;      // the others, in text order; empty: every word is known or routed
@@ -40,6 +47,11 @@ struct KnownWordsReading {
   // that the text still reads as a query (words with no such correction are left out); nullopt
   // when no word could be corrected.
   std::optional<std::string> corrected;
+  // Where neither `text` nor `corrected` reads (a word order or a construction no grammar has: "a
+  // square pyramid, base 2 x 2, height 2.4"): the longest run of consecutive words, unknown ones
+  // left out and routed ones replaced, that reads ("a square pyramid"); nullopt when none does,
+  // or for texts over 1000 characters or 24 words.
+  std::optional<ReadableRun> window;
 };
 
 // The reading of `text`. Corrections are looked for among the first 16 unknown words only (each

@@ -254,19 +254,34 @@ nlohmann::json searchText(const Store& store, const nlohmann::json& request, con
   return answer;
 }
 
+// How surely a run of a text's words (KnownWordsReading::window) says what the text means, before
+// the share of its words that the run holds.
+constexpr double kRunDiscount = 0.9;
+
+// The words of a text that carry meaning: not commas, fillers or function words (0 when it does
+// not tokenise).
+size_t contentWords(const std::string& text) {
+  size_t n = 0;
+  for (const std::string& w : wordsOfText(text, activeVocabulary()))
+    n += w != "," && !query_tokens::functionWord(w);
+  return n;
+}
+
 // A text that neither grammar reads (`refused`): read without the words neither knows
 // (query/structural/unknown_words.h) or with their corrections; throws `refused`, or a refusal
 // naming every unknown word, when that does not read either.
-nlohmann::json readAroundUnknownWords(const Store& store, const nlohmann::json& request,
+nlohmann::json readAroundUnknownWords(const Store& store, const nlohmann::json& request, const std::string& text,
                                       const std::optional<KnownWordsReading>& known, const Error& refused,
                                       const LinguisticRequestLimits& linguisticLimits,
                                       const CsgRequestLimits& csgLimits, StoredGraphCache& graphs) {
-  if (!known || (known->unknown.empty() && known->routed.empty())) throw refused;
+  if (!known || (known->unknown.empty() && known->routed.empty() && !known->window)) throw refused;
   const KnownWordsReading& reading = *known;
-  // The text without them first; when that does not read, their corrections chosen together.
+  // The text without them first; when that does not read, their corrections chosen together; then
+  // the longest run of its words that reads.
   std::vector<std::string> tries;
   if (!reading.text.empty()) tries.push_back(reading.text);
   if (reading.corrected) tries.push_back(*reading.corrected);
+  if (reading.window) tries.push_back(reading.window->text);
   nlohmann::json answer;
   std::string searched;
   for (const std::string& attempt : tries) {
@@ -299,6 +314,15 @@ nlohmann::json readAroundUnknownWords(const Store& store, const nlohmann::json& 
   nlohmann::json ignored = nlohmann::json::array();
   for (const UnknownWord& u : reading.unknown)
     ignored.push_back({{"word", quotedWord(u.word)}, {"at", u.at}, {"did_you_mean", u.closest}});
+  // Read by a run of its words: the known words outside the run are left out too, in text order.
+  const bool byRun = reading.window && searched == reading.window->text && searched != reading.text &&
+                     (!reading.corrected || searched != *reading.corrected);
+  if (byRun) {
+    for (const UnknownWord& u : reading.window->outside)
+      ignored.push_back({{"word", quotedWord(u.word)}, {"at", u.at}, {"did_you_mean", u.closest}});
+    std::stable_sort(ignored.begin(), ignored.end(),
+                     [](const nlohmann::json& a, const nlohmann::json& b) { return a["at"] < b["at"]; });
+  }
   answer["ignored"] = std::move(ignored);
   // Routed words (query/linguistic/word_routes.h): what each became and why; the text is read
   // less surely through them, so every score is multiplied by their discounts.
@@ -310,6 +334,16 @@ nlohmann::json readAroundUnknownWords(const Store& store, const nlohmann::json& 
     discount *= r.route.discount;
   }
   answer["routed"] = std::move(routed);
+  if (byRun) {
+    // The run says less than the text: every score is multiplied by kRunDiscount and the share of
+    // the text's content words it holds ("drilled cube" read as "cube": 0.45), so that objects
+    // whose own words hold the whole text (kDescribedScore) come before what a fragment means.
+    const double share = static_cast<double>(contentWords(searched)) /
+                         static_cast<double>(std::max<size_t>(1, contentWords(text)));
+    const double runDiscount = kRunDiscount * std::min(1.0, share);
+    answer["run_discount"] = runDiscount;
+    discount *= runDiscount;
+  }
   if (discount < 1.0 && answer.contains("results") && answer["results"].is_array()) {
     // The threshold (the request's, or the text's "at least") holds for the discounted scores:
     // the search kept every result at or above it before the discount, in the same order, so
@@ -371,7 +405,7 @@ nlohmann::json queryResponse(const Store& store, const nlohmann::json& request,
         reading ? objectsNearlyNamed(store, request, text, *reading) : nlohmann::json::array();
     try {
       nlohmann::json answer =
-          readAroundUnknownWords(store, request, reading, refused, linguisticLimits, csgLimits, graphs);
+          readAroundUnknownWords(store, request, text, reading, refused, linguisticLimits, csgLimits, graphs);
       putWordMatches(&answer, nearly, byWords, limit);
       return answer;
     } catch (const Error& unread) {

@@ -277,7 +277,9 @@ class Client:
 
         Words neither grammar knows are read around: answer["ignored"] lists them with their
         closest words, answer["read_text"] is what was searched, answer.get("did_you_mean") the
-        whole text corrected when the search ran without the corrections."""
+        whole text corrected when the search ran without the corrections. A text that no grammar
+        reads even so is searched by the run of its words that reads (answer["run_discount"]
+        multiplies its scores); names the text nearly holds come first (named: true)."""
         return self._http.json("POST", "/query", {"text": text, "limit": limit, **members})
 
     def query_linguistic(self, text: str, limit: int = 10, threshold: Optional[float] = None,

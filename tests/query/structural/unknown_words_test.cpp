@@ -58,6 +58,28 @@ TEST(UnknownWords, JoiningWordsLeftWithNothingToJoinGoToo) {
   EXPECT_EQ(readKnownWords("a purple box", v()).text, "a box");
 }
 
+// A word order no grammar has: the longest run of words that reads, the first of the longest, with
+// the words outside it listed; none where the text reads or the words left out make it read.
+TEST(UnknownWords, TextsNoGrammarReadsAreReadByTheirLongestRun) {
+  KnownWordsReading r = readKnownWords("a big box, height 2 x 3", v());
+  ASSERT_TRUE(r.window.has_value());
+  EXPECT_EQ(r.window->text, "a big box, height 2");
+  std::string outside;
+  for (const UnknownWord& u : r.window->outside) outside += u.word + "@" + std::to_string(u.at) + " ";
+  EXPECT_EQ(outside, "x@20 3@22 ");
+  // Unknown words are left out first, then the run is taken ("purple" is no word of the grammars);
+  // the run with the most content words wins, the first of them ("cone" before "the box").
+  r = readKnownWords("purple cone which stand on the box", v());
+  ASSERT_TRUE(r.window.has_value());
+  EXPECT_EQ(r.window->text, "cone");
+  EXPECT_FALSE(r.unknown.empty());
+  // Texts that read, or read without their unknown words, have no run.
+  EXPECT_FALSE(readKnownWords("a big box", v()).window.has_value());
+  EXPECT_FALSE(readKnownWords("a round box with purple stripes", v()).window.has_value());
+  // Nothing reads: no run.
+  EXPECT_FALSE(readKnownWords("purple elephant", v()).window.has_value());
+}
+
 TEST(UnknownWords, FarWordsHaveNoCorrection) {
   const KnownWordsReading r = readKnownWords("purple elephant", v());
   ASSERT_EQ(r.unknown.size(), 2u);

@@ -461,6 +461,32 @@ TEST(DesignersQueries, NamesTheTextNearlyHoldsFindTheirObjectFirst) {
   EXPECT_EQ(server.post("/query", json{{"text", "purple elephant"}}).status, 422);
 }
 
+// No dead end for a word order no grammar has: the run of its words with the most content words
+// that reads is searched, the words outside it are ignored, and the scores are discounted by the
+// share of the text the run holds.
+TEST(DesignersQueries, TextsNoGrammarReadsAreSearchedByTheirLongestRun) {
+  ServerProcess server({"--demo", kDemo});
+  EXPECT_EQ(server.post("/query/linguistic", json{{"text", "a big box, height 2 x 3"}}).status, 422);
+  auto run = server.post("/query", json{{"text", "a big box, height 2 x 3"}});
+  ASSERT_EQ(run.status, 200) << run.body;
+  EXPECT_EQ(run.json["read_text"], "a big box, height 2");
+  std::string ignored;
+  for (const json& i : run.json["ignored"]) ignored += i["word"].get<std::string>() + " ";
+  EXPECT_EQ(ignored, "x 3 ");
+  // Content words: big, box, height, 2, x, 3; the run holds four.
+  ASSERT_TRUE(run.json.contains("run_discount")) << run.body;
+  EXPECT_NEAR(run.json["run_discount"].get<double>(), 0.9 * 4 / 6, 1e-12);
+  ASSERT_FALSE(run.json["results"].empty());
+  auto whole = server.post("/query", json{{"text", "a big box, height 2"}});
+  ASSERT_EQ(whole.status, 200) << whole.body;
+  ASSERT_FALSE(whole.json["results"].empty());
+  EXPECT_EQ(run.json["results"][0]["name"], whole.json["results"][0]["name"]);
+  EXPECT_NEAR(run.json["results"][0]["score"].get<double>(),
+              0.6 * whole.json["results"][0]["score"].get<double>(), 1e-9);
+  // Nothing of the text reads: still the 422 that names its words.
+  EXPECT_EQ(server.post("/query", json{{"text", "purple elephant"}}).status, 422);
+}
+
 // Nothing meets every condition: the closest partial matches, by the mean of the conditions, each
 // saying which condition fails.
 TEST(DesignersQueries, NoMatchGivesTheClosestPartialMatches) {
