@@ -25,6 +25,15 @@ std::vector<Token> tokenize(const std::string& text, size_t from, size_t to) {
     if (std::isalpha(c)) {
       while (i < to && (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '-' || text[i] == '\''))
         t.text += static_cast<char>(std::tolower(static_cast<unsigned char>(text[i++])));
+      // The shorthand of "with" in notes: "w/" and a lone "w" ("a plate w/ a peg", "axle w wheels").
+      if (t.text == "w") {
+        if (i < to && text[i] == '/') ++i;
+        t.text = "with";
+      }
+    } else if (c == '~') {
+      // The tilde of "~3 across": about.
+      t.text = "about";
+      ++i;
     } else if (std::isdigit(c) || ((c == '-' || c == '+' || c == '.') && i + 1 < to &&
                                    (std::isdigit(static_cast<unsigned char>(text[i + 1])) || text[i + 1] == '.'))) {
       // strtod reads no blank, parenthesis or comma after its first character: it sees the run up

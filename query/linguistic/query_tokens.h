@@ -1,7 +1,8 @@
 #pragma once
 // The tokens of a linguistic or CSG query text: lower-case words (letters, digits, '-' and '\''),
 // numbers as strtod reads them, and the punctuation '(' ')' ','; each with its character offsets,
-// so that errors and parsed phrases can point into the text.
+// so that errors and parsed phrases can point into the text. Two shorthands of notes are read as
+// words: "w" and "w/" as "with", '~' as "about".
 #include <cstddef>
 #include <functional>
 #include <string>

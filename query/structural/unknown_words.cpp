@@ -66,11 +66,20 @@ std::string rewrite(const std::string& text, const std::vector<query_tokens::Tok
   return collapsed;
 }
 
-// The run of consecutive words that reads as a query and holds the most content words (not
-// function words or commas; then the earliest, then the longest), among the tokens with routed
-// words replaced (replacement[i] non-empty) and unknown ones left out; runs neither start nor end
-// at a comma. The words outside it are listed with their offsets. At most kLongestRunTokens
-// tokens are considered (each run tried costs a parse).
+// How much a word of a text says about the shape it means: a noun of the vocabulary (what the
+// thing is) 2, another word 1, and nothing for commas, numbers and function words, which say
+// something only about the words beside them.
+int contentWeight(const std::string& word, bool number, const Vocabulary& vocabulary) {
+  if (number || word == "," || word == "(" || word == ")" || query_tokens::functionWord(word)) return 0;
+  return vocabulary.noun(word) ? 2 : 1;
+}
+
+// The run of consecutive words that reads as a query and says the most (contentWeight; then the
+// earliest, then the longest), among the tokens with routed words replaced (replacement[i]
+// non-empty) and unknown ones left out; runs neither start nor end at a comma. The words outside
+// it are listed with their offsets, and the run's share of the weight of every word of the text
+// (unknown ones at 2: what the search could not read may well be what the thing is). At most kLongestRunTokens tokens are considered (each run tried costs a
+// parse).
 constexpr size_t kLongestRunTokens = 24;
 
 std::optional<ReadableRun> longestReadableRun(const std::vector<query_tokens::Token>& tokens,
@@ -81,15 +90,21 @@ std::optional<ReadableRun> longestReadableRun(const std::vector<query_tokens::To
     if (!unknown[i] || !replacement[i].empty()) kept.push_back(i);
   if (kept.empty() || kept.size() > kLongestRunTokens) return std::nullopt;
   const auto word = [&](size_t i) { return unknown[i] ? replacement[i] : tokens[i].text; };
+  const auto weight = [&](size_t i) {
+    return unknown[i] && replacement[i].empty() ? 2 : contentWeight(word(i), tokens[i].number, vocabulary);
+  };
+  int total = 0;
+  for (size_t i = 0; i < tokens.size(); ++i) total += weight(i);
   struct Run {
-    size_t from, length, content;
+    size_t from, length;
+    int content;
   };
   std::vector<Run> runs;
   for (size_t from = 0; from < kept.size(); ++from) {
-    size_t content = 0;
+    int content = 0;
     for (size_t length = 1; from + length <= kept.size(); ++length) {
+      content += weight(kept[from + length - 1]);
       const std::string& w = tokens[kept[from + length - 1]].text;
-      content += w != "," && !query_tokens::functionWord(w);
       if (tokens[kept[from]].text != "," && w != "," && content > 0) runs.push_back({from, length, content});
     }
   }
@@ -104,7 +119,7 @@ std::optional<ReadableRun> longestReadableRun(const std::vector<query_tokens::To
       run += (run.empty() || w == "," ? "" : " ") + w;
     }
     if (!readsAsQuery(run, vocabulary)) continue;
-    ReadableRun out{run, {}};
+    ReadableRun out{run, {}, static_cast<double>(r.content) / std::max(1, total)};
     for (size_t i = 0; i < tokens.size(); ++i) {
       const bool inside = i >= kept[r.from] && i <= kept[r.from + r.length - 1];
       if (!inside && tokens[i].text != "," && !(unknown[i] && replacement[i].empty()))

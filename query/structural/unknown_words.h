@@ -36,6 +36,10 @@ struct RoutedWord {
 struct ReadableRun {
   std::string text;
   std::vector<UnknownWord> outside;  // their `closest` is empty: they are words the grammars know
+  // The share of what the text says that the run holds: its words' weights over all of the text's
+  // (a noun of the vocabulary or an unknown word 2, another word 1, a number, comma or function
+  // word 0), in (0, 1].
+  double share = 1.0;
 };
 
 struct KnownWordsReading {
@@ -48,9 +52,10 @@ struct KnownWordsReading {
   // when no word could be corrected.
   std::optional<std::string> corrected;
   // Where neither `text` nor `corrected` reads (a word order or a construction no grammar has: "a
-  // square pyramid, base 2 x 2, height 2.4"): the longest run of consecutive words, unknown ones
-  // left out and routed ones replaced, that reads ("a square pyramid"); nullopt when none does,
-  // or for texts over 1000 characters or 24 words.
+  // square pyramid, base 2 x 2, height 2.4"): the run of consecutive words, unknown ones left out
+  // and routed ones replaced, that reads and says the most (its nouns count twice, numbers and
+  // function words not at all; then the first): "a square pyramid"; nullopt when none does, or
+  // for texts over 1000 characters or 24 words.
   std::optional<ReadableRun> window;
 };
 

@@ -255,17 +255,9 @@ nlohmann::json searchText(const Store& store, const nlohmann::json& request, con
 }
 
 // How surely a run of a text's words (KnownWordsReading::window) says what the text means, before
-// the share of its words that the run holds.
-constexpr double kRunDiscount = 0.9;
-
-// The words of a text that carry meaning: not commas, fillers or function words (0 when it does
-// not tokenise).
-size_t contentWords(const std::string& text) {
-  size_t n = 0;
-  for (const std::string& w : wordsOfText(text, activeVocabulary()))
-    n += w != "," && !query_tokens::functionWord(w);
-  return n;
-}
+// the share of the text the run holds: below kDescribedScore, so that an object whose own words
+// hold every word of the text comes before the meaning of a fragment of it, whatever the share.
+constexpr double kRunDiscount = 0.45;
 
 // A text that neither grammar reads (`refused`): read without the words neither knows
 // (query/structural/unknown_words.h) or with their corrections; throws `refused`, or a refusal
@@ -336,11 +328,9 @@ nlohmann::json readAroundUnknownWords(const Store& store, const nlohmann::json& 
   answer["routed"] = std::move(routed);
   if (byRun) {
     // The run says less than the text: every score is multiplied by kRunDiscount and the share of
-    // the text's content words it holds ("drilled cube" read as "cube": 0.45), so that objects
-    // whose own words hold the whole text (kDescribedScore) come before what a fragment means.
-    const double share = static_cast<double>(contentWords(searched)) /
-                         static_cast<double>(std::max<size_t>(1, contentWords(text)));
-    const double runDiscount = kRunDiscount * std::min(1.0, share);
+    // what the text says that it holds (ReadableRun::share), so that objects whose own words hold
+    // the whole text (kDescribedScore) come before what a fragment means.
+    const double runDiscount = kRunDiscount * std::min(1.0, reading.window->share);
     answer["run_discount"] = runDiscount;
     discount *= runDiscount;
   }

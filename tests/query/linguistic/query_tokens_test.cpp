@@ -34,6 +34,17 @@ TEST(QueryTokens, WordsNumbersAndPunctuationWithOffsets) {
   EXPECT_THROW(tokens("bent #"), Error);
 }
 
+TEST(QueryTokens, ShorthandsOfNotesAreWords) {
+  const std::vector<Token> t = tokens("plate w/ peg, ball ~3 across w hole");
+  EXPECT_EQ(texts(t), "plate|with|peg|,|ball|about|3|across|with|hole");
+  EXPECT_EQ(t[1].offset, 6u);
+  EXPECT_EQ(t[1].end, 8u);
+  EXPECT_EQ(t[5].offset, 19u);
+  EXPECT_EQ(t[5].end, 20u);
+  EXPECT_EQ(texts(tokens("wide wheels")), "wide|wheels");  // only the lone letter
+  EXPECT_THROW(tokens("plate / peg"), Error);
+}
+
 TEST(QueryTokens, FillersGoWithTheCommaThatSetsThemOff) {
   EXPECT_EQ(texts(withoutFillers(tokens("please, find round, please, tapered shapes, please"), v())),
             "find|round|,|tapered|shapes");
