@@ -277,14 +277,17 @@ std::vector<StoredObject> SqlStore::named(const std::vector<std::string>& names,
                                              std::to_string(kKinds) + " kinds a lookup", "name");
   if (names.empty() || kinds.empty()) return {};
   Lease connection(*this);
-  // Fixed placeholder counts (the last name and kind repeated to fill them): one prepared text.
+  // Fixed placeholder counts (the last name and kind repeated to fill them): one prepared text for
+  // the few spellings of a search-box text, one for the longer lists of near spellings.
+  constexpr size_t kFewNames = 16;
+  const size_t slots = names.size() <= kFewNames ? kFewNames : kMaxNamedLookups;
   auto statement = (*connection)
                        .prepare(objectColumnsSql((*connection).dialect()) +
                                 " AND v.version = o.latest_version WHERE o.kind IN (" + sql::listPlaceholders(1, static_cast<int>(kKinds)) +
-                                ") AND o.name IN (" + sql::listPlaceholders(static_cast<int>(1 + kKinds), static_cast<int>(kMaxNamedLookups)) +
+                                ") AND o.name IN (" + sql::listPlaceholders(static_cast<int>(1 + kKinds), static_cast<int>(slots)) +
                                 ") ORDER BY o.id");
   for (size_t i = 0; i < kKinds; ++i) statement->bind(static_cast<int>(1 + i), kinds[std::min(i, kinds.size() - 1)]);
-  for (size_t i = 0; i < kMaxNamedLookups; ++i)
+  for (size_t i = 0; i < slots; ++i)
     statement->bind(static_cast<int>(1 + kKinds + i), names[std::min(i, names.size() - 1)]);
   std::vector<StoredObject> objects;
   while (statement->step()) objects.push_back(readObject(*statement));

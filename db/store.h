@@ -272,8 +272,9 @@ class Store {
   virtual std::vector<StoredObject> list(const ListQuery& query) const = 0;
   // The latest versions of the live objects of `kinds` whose name is one of `names` (exact), by
   // id: one statement however many names and kinds (the search box asks a text's few spellings
-  // of one name on every query). At most kMaxNamedLookups names and 8 kinds (invalid_parameter).
-  static constexpr size_t kMaxNamedLookups = 16;
+  // of one name on every query, and the spellings one letter from its unknown words where no
+  // grammar reads it). At most kMaxNamedLookups names and 8 kinds (invalid_parameter).
+  static constexpr size_t kMaxNamedLookups = 256;
   virtual std::vector<StoredObject> named(const std::vector<std::string>& names,
                                           const std::vector<std::string>& kinds) const = 0;
   // The latest versions of the parts and shapes of `kinds` whose search text (NewObject::

@@ -96,6 +96,10 @@ nlohmann::json objectsNamed(const Store& store, const nlohmann::json& request, c
   return out;
 }
 
+// Texts longer than this are not searched for names they nearly hold (nearNames): at most about
+// 50 words, so at most a few hundred spellings to look up.
+constexpr size_t kLongestNearlyNamedText = 300;
+
 // The names a text that no grammar reads as it is nearly holds: each run of up to four
 // consecutive words the grammars lack (unknown or only routed: "egg form" gives egg, form and
 // egg-form, "a mushroom form" mushroom), joined as namesOfText joins them; and, for the first
@@ -103,6 +107,8 @@ nlohmann::json objectsNamed(const Store& store, const nlohmann::json& request, c
 // added, changed, or two swapped: "snowmn" gives snowman, "tabel" table). Runs first.
 void nearNames(const std::string& text, const KnownWordsReading& reading, std::vector<std::string>* runs,
                std::vector<std::string>* edits) {
+  // A name is a few words: long texts are not names, and each spelling costs a lookup.
+  if (text.size() > kLongestNearlyNamedText) return;
   std::vector<query_tokens::Token> tokens;
   try {
     tokens = query_tokens::tokenize(text, 0, text.size());

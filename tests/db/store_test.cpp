@@ -276,6 +276,16 @@ TEST_P(StoreTest, NamedFindsAnyOfTheNamesAcrossKinds) {
   store->remove("part", bolt, false);
   EXPECT_TRUE(store->named({"bolt"}, {"part", "shape"}).empty());
   EXPECT_THROW(store->named(std::vector<std::string>(Store::kMaxNamedLookups + 1, "x"), {"part"}), Error);
+  // A long list (the near spellings of a word): more than the few-names statement holds, up to the
+  // limit, with the match anywhere in it.
+  std::vector<std::string> many;
+  for (size_t i = 0; i + 1 < Store::kMaxNamedLookups; ++i) many.push_back("nut" + std::to_string(i));
+  many.insert(many.begin() + 40, "nut");
+  const auto nut = store->named(many, {"part"});
+  ASSERT_EQ(nut.size(), 1u);
+  EXPECT_EQ(nut[0].name, "nut");
+  many.erase(many.begin() + 40);
+  EXPECT_TRUE(store->named(many, {"part"}).empty());
 }
 
 // described: every word (stemmed) of the name and search text, the latest version's, live objects
