@@ -103,8 +103,9 @@ constexpr size_t kLongestNearlyNamedText = 300;
 // The names a text that no grammar reads as it is nearly holds: each run of up to four
 // consecutive words the grammars lack (unknown or only routed: "egg form" gives egg, form and
 // egg-form, "a mushroom form" mushroom), joined as namesOfText joins them; and, for the first
-// three unknown words (no route either) of four to twenty letters, every spelling one edit away (a letter left out,
-// added, changed, or two swapped: "snowmn" gives snowman, "tabel" table). Runs first.
+// three unknown words (no route either) of four to twenty letters, every spelling one edit away
+// (a letter left out, added, changed, or two swapped: "snowmn" gives snowman, "tabel" table).
+// Each name once, runs first.
 void nearNames(const std::string& text, const KnownWordsReading& reading, std::vector<std::string>* runs,
                std::vector<std::string>* edits) {
   // A name is a few words: long texts are not names, and each spelling costs a lookup.
@@ -121,6 +122,10 @@ void nearNames(const std::string& text, const KnownWordsReading& reading, std::v
   const auto lacks = [&](const query_tokens::Token& t) {
     return std::find(lacking.begin(), lacking.end(), t.offset) != lacking.end();
   };
+  std::unordered_set<std::string> listed;  // each name once (a word's spellings repeat)
+  const auto list = [&](std::vector<std::string>* names, std::string name) {
+    if (listed.insert(name).second) names->push_back(std::move(name));
+  };
   std::vector<std::string> words;
   for (size_t i = 0; i <= tokens.size(); ++i) {
     if (i < tokens.size() && lacks(tokens[i])) {
@@ -131,7 +136,7 @@ void nearNames(const std::string& text, const KnownWordsReading& reading, std::v
       for (size_t n = 1; n <= 4 && from + n <= words.size(); ++n)
         for (std::string& name : namesOfText({words.begin() + static_cast<std::ptrdiff_t>(from),
                                               words.begin() + static_cast<std::ptrdiff_t>(from + n)}))
-          if (std::find(runs->begin(), runs->end(), name) == runs->end()) runs->push_back(std::move(name));
+          list(runs, std::move(name));
     words.clear();
   }
   static const std::string kLetters = "abcdefghijklmnopqrstuvwxyz-";
@@ -154,7 +159,7 @@ void nearNames(const std::string& text, const KnownWordsReading& reading, std::v
         if (k < w.size() && c != w[k]) near.push_back(w.substr(0, k) + c + w.substr(k + 1));
       }
     for (std::string& name : near)
-      if (name != w && std::find(edits->begin(), edits->end(), name) == edits->end()) edits->push_back(std::move(name));
+      if (name != w) list(edits, std::move(name));
   }
 }
 
