@@ -78,8 +78,8 @@ int contentWeight(const std::string& word, bool number, const Vocabulary& vocabu
 // earliest, then the longest), among the tokens with routed words replaced (replacement[i]
 // non-empty) and unknown ones left out; runs neither start nor end at a comma. The words outside
 // it are listed with their offsets, and the run's share of the weight of every word of the text
-// (unknown ones at 2: what the search could not read may well be what the thing is). At most kLongestRunTokens tokens are considered (each run tried costs a
-// parse).
+// (unknown ones at 2: what the search could not read may well be what the thing is). At most
+// kLongestRunTokens tokens are considered (each run tried costs a parse).
 constexpr size_t kLongestRunTokens = 24;
 
 std::optional<ReadableRun> longestReadableRun(const std::vector<query_tokens::Token>& tokens,
@@ -186,12 +186,14 @@ KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& voca
   }
   // Where neither the text without its unknown words nor a correction reads: the longest run of
   // its words that does.
-  const auto withWindow = [&]() -> KnownWordsReading& {
+  const auto addWindow = [&] {
     if (!reading.corrected && text.size() <= kLongestCorrectedText && !readsAsQuery(reading.text, vocabulary))
       reading.window = longestReadableRun(tokens, leftOut, unknown, vocabulary);
-    return reading;
   };
-  if (choice == leftOut || text.size() > kLongestCorrectedText) return withWindow();  // nothing to correct with
+  if (choice == leftOut || text.size() > kLongestCorrectedText) {  // nothing to correct with
+    addWindow();
+    return reading;
+  }
   bool reads = readsAsQuery(textWith(choice), vocabulary);
   for (size_t i = 0, k = 0; i < tokens.size() && !reads; ++i) {
     if (!unknown[i] || routed[i]) continue;
@@ -209,7 +211,8 @@ KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& voca
     }
   }
   if (reads && choice != leftOut) reading.corrected = textWith(choice);
-  return withWindow();
+  addWindow();
+  return reading;
 }
 
 }  // namespace fsdb
