@@ -12,22 +12,6 @@ namespace fsdb {
 
 using namespace part_field_detail;
 
-namespace {
-
-// The enclosure of F over the point box x × y × z and the parameter box: the interval one,
-// intersected with the affine one unless the interval one already decides the question (as
-// pointEnclosure does for one point). *evaluations counts both.
-Interval blockEnclosure(const PartBox& box, const Interval& x, const Interval& y, const Interval& z,
-                        bool outside, int* evaluations) {
-  ++*evaluations;
-  const Interval f = insideOutsideBounds(box, x, y, z);
-  if (outside ? f.lo > 1.0 + kMargin : f.hi <= 1.0 - kMargin) return f;
-  ++*evaluations;
-  return intersect(f, insideOutsideAffineBounds(box, x, y, z));
-}
-
-}  // namespace
-
 bool FuzzyPartField::provenOverBlock(const Interval& x, const Interval& y, const Interval& z,
                                      bool outside, int budget) const {
   // outside: every (p, θ) of the block × P(0) has F > 1 (no point of it is in upper(0));
@@ -49,7 +33,7 @@ bool FuzzyPartField::provenOverBlock(const Interval& x, const Interval& y, const
     if (evaluations >= budget) return false;
     // Outside every S(θ)'s local hull: F > 1 on the box, however loose the enclosure.
     if (outside && missesDeformedHull(box, x, y, z)) continue;
-    if (decided(blockEnclosure(box, x, y, z, outside, &evaluations))) continue;
+    if (decided(boxEnclosure(box, x, y, z, outside, &evaluations))) continue;
     // Monotone collapse (as collapsedExcludes does for one point): where ∂F/∂θ_i keeps one sign
     // over the block and the box, F's least (outside) or largest value over the box is taken
     // with θ_i at one end, for every point of the block; so the claim holds on the box if it
@@ -62,7 +46,7 @@ bool FuzzyPartField::provenOverBlock(const Interval& x, const Interval& y, const
     if (n > 0 && insideOutsideSlopes(box, x, y, z, open, n, d)) {
       PartBox collapsed = box;
       if (collapseMonotone(&collapsed, open, n, d, outside) &&
-          decided(blockEnclosure(collapsed, x, y, z, outside, &evaluations)))
+          decided(boxEnclosure(collapsed, x, y, z, outside, &evaluations)))
         continue;
     }
     // Split across the value widest relative to its support.

@@ -230,12 +230,13 @@ void FuzzyPartField::sampleSubBlock(const BlockLattice& b, int i, int j, int k, 
     // P(0) for the whole sub-block before each voxel searches it alone. The core's midpoint at the
     // centre says which claim can hold (outside there refutes "in lower(0)", inside "outside
     // upper(0)").
-    const bool outside = signs->state == 2 && centreValue(core_, 0.5 * (lo + hi)) > 1.0;
-    if (signs->state == 2 &&
-        provenOverBlock({lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}, outside,
-                        size >= 4 ? kBlockProofBudget4 : kBlockProofBudget2))
-      bounds = outside ? AlphaLevelBounds{0.0f, 0.0f, kNeverInside, kNeverInside}
-                       : AlphaLevelBounds{1.0f, 1.0f, 0.0f, 0.0f};
+    if (signs->state == 2) {
+      const bool outside = centreValue(core_, 0.5 * (lo + hi)) > 1.0;
+      if (provenOverBlock({lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}, outside,
+                          size >= 4 ? kBlockProofBudget4 : kBlockProofBudget2))
+        bounds = outside ? AlphaLevelBounds{0.0f, 0.0f, kNeverInside, kNeverInside}
+                         : AlphaLevelBounds{1.0f, 1.0f, 0.0f, 0.0f};
+    }
   }
   const bool uniform = bounds.uniform();
   if (!uniform && sizeSlot_ >= 0) {

@@ -39,11 +39,19 @@ inline double centreValue(const PartBox& b, const Vec3& p) { return midpointPart
 // one (superquadric_affine.h). Both are sound; the affine one keeps the correlations between the
 // fourteen values along the inverse deformations, so over the small boxes of a search it is
 // usually the tighter (its remainder is second order), at about the cost of the interval one.
-inline Interval pointEnclosure(const PartBox& b, const Vec3& p, bool inside) {
-  const Interval px{p.x, p.x}, py{p.y, p.y}, pz{p.z, p.z};
-  const Interval f = insideOutsideBounds(b, px, py, pz);
+// The same over a box of points x × y × z (the block proof's enclosure); *evaluations, when given,
+// counts each of the two enclosures taken.
+inline Interval boxEnclosure(const PartBox& b, const Interval& x, const Interval& y, const Interval& z,
+                             bool inside, int* evaluations = nullptr) {
+  if (evaluations) ++*evaluations;
+  const Interval f = insideOutsideBounds(b, x, y, z);
   if (excludes(f, inside)) return f;
-  return intersect(f, insideOutsideAffineBounds(b, px, py, pz));
+  if (evaluations) ++*evaluations;
+  return intersect(f, insideOutsideAffineBounds(b, x, y, z));
+}
+
+inline Interval pointEnclosure(const PartBox& b, const Vec3& p, bool inside) {
+  return boxEnclosure(b, {p.x, p.x}, {p.y, p.y}, {p.z, p.z}, inside);
 }
 
 // The search's enclosure step (maxMin): the enclosure of pointEnclosure over the box at p, and the

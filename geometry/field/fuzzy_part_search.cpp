@@ -215,6 +215,7 @@ class FuzzyPartField::MaxMinSearch {
   // core). Only the guesses depend on it: every witness is checked by a crisp evaluation.
   double slopeAt_[kSlots];
   int evaluations_ = 0;
+  double corePeakValue_ = 0.0;  // F at the core's midpoint, taken first by run()
 };
 
 FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const {
@@ -229,7 +230,8 @@ FuzzyPartField::Search FuzzyPartField::MaxMinSearch::run() {
     double peak[kSlots];
     for (int i = 0; i < kSlots; ++i) peak[i] = mid(slot(field_.core_, i));
     const PlacedSuperquadric theta = thetaAt(field_.support_, peak);
-    if (witness(field_.valueAt(theta, p_))) {
+    corePeakValue_ = field_.valueAt(theta, p_);
+    if (witness(corePeakValue_)) {
       improve(membershipAt(peak), theta);
       if (s_.incumbent >= 1.0) return s_;
     }
@@ -448,14 +450,16 @@ bool FuzzyPartField::MaxMinSearch::excluded(Node* node, Interval* f) {
 // peak. kContinue when neither is a witness (the box is split).
 FuzzyPartField::MaxMinSearch::Outcome FuzzyPartField::MaxMinSearch::tryWitnesses(Node* node) {
   double peak[kSlots], centre[kSlots];
+  bool corePeak = true;  // the box holds the core's midpoint: its peak is P(0)'s, F known (run)
   for (int i = 0; i < kSlots; ++i) {
     const Interval& v = slot(node->box, i);
     const double c = mid(slot(field_.core_, i));
     peak[i] = std::min(std::max(c, v.lo), v.hi);
+    corePeak = corePeak && peak[i] == c;
     centre[i] = mid(v);
   }
   const PlacedSuperquadric peakTheta = thetaAt(node->box, peak);
-  const double fPeak = field_.valueAt(peakTheta, p_);
+  const double fPeak = corePeak ? corePeakValue_ : field_.valueAt(peakTheta, p_);
   if (witness(fPeak)) {
     improve(membershipAt(peak), peakTheta);
     return s_.incumbent >= 1.0 ? Outcome::kStop : Outcome::kNextBox;
