@@ -263,7 +263,7 @@ std::vector<Entry> buildTable() {
                      "blending range along x = y; smaller is closer to min (the paper's figures "
                      "use 1.5, 1.0, 0.5). With the general Coons corner term Identity and "
                      "Dominance hold for every delta, and values stay in [0, 1] (checked for "
-                     "delta from 0.01 to 100).")},
+                     "delta from 0.01 to 1e300); as delta grows AND tends to the product x y.")},
       "seed 000 eq. 8-9, 12, 14-20",
       "AND(x,y) = min_{n,delta}(x,y) - Coons patch of the boundary curves of min_{n,delta}",
       "Smooth piecewise polynomial intersection AND_{n,delta}; union by duality 1 - AND(1-x, "
@@ -277,7 +277,7 @@ std::vector<Entry> buildTable() {
        positiveParam("delta", 0.5,
                      "blending range; equals min exactly where delta <= x, y <= 1 - delta and "
                      "|x - y| >= delta. Identity and Dominance hold for every delta; values "
-                     "stay in [0, 1] (checked for delta from 0.01 to 100).")},
+                     "stay in [0, 1] (checked for delta from 0.01 to 1e300).")},
       "seed 000 eq. 10-11, 13, 21-24",
       "AND^(x,y) = min^_{n,delta}(x,y) - (S1^ + S2^ - S3^), boundary curves x*H_n(-n*x/delta)",
       "Shape-preserving smooth intersection: identical to min away from the blend region. "

@@ -53,6 +53,57 @@ double lowerSpanCore(int n, double delta, double x) {
   return delta / n * lowerAbsoluteCore(n, n * x / delta);
 }
 
+// |y0 + u| - |y0| without forming y0 + u when u is small against y0 (then it is +-u exactly):
+// y0 + u rounds to y0 for |u| below half an ulp of y0, and the difference would be lost.
+double absIncrement(double y0, double u) {
+  if (y0 > 0.0) return y0 + u >= 0.0 ? u : -2.0 * y0 - u;
+  if (y0 < 0.0) return y0 + u <= 0.0 ? -u : 2.0 * y0 + u;
+  return std::fabs(u);
+}
+
+// |x|_n - |0|_n (eq. 8) to an absolute error of a few roundings of x rather than of |0|_n.
+// upperAbsoluteCore(n, x) - upperAbsoluteCore(n, 0) carries the rounding of |0|_n (~ 0.3 to 1):
+// harmless in itself, but SmoothAnd scales the difference by delta/n, and for a large span the
+// rounding grew with delta (values of 1e22 outside [0, 1] at delta = 1e38). For |x| < 1 both
+// dynamic programmes run side by side, b for 0 and e for the difference, and e is propagated on
+// its own:
+//   e' = ((m - y) e[i] + (m + y) e[i+1] + x (b[i+1] - b[i])) / (2(m + 1)),   y = y0 + x,
+// whose terms are all O(x). Which rule applies is decided at y0 = 2i - (n - m) alone: the
+// recursion where |y0| <= m (at |y0| = m it equals |y0|, Proposition 3.1 (1)), |y| beyond.
+// Eq. 8 holds at every y, so the recursion is right on the whole of (y0 - 1, y0 + 1), and its
+// weights stay below 1 in size there. For |x| >= 1 the plain difference is as accurate.
+double upperAbsoluteIncrementCore(int n, double x) {
+  if (std::fabs(x) >= 1.0) return upperAbsoluteCore(n, x) - upperAbsoluteCore(n, 0.0);
+  double b[kMaxSmoothAbsoluteDegree + 1];  // |.|_m at y0
+  double e[kMaxSmoothAbsoluteDegree + 1];  // |.|_m at y0 + x, minus b[i]
+  for (int i = 0; i <= n; ++i) {
+    double y0 = 2 * i - n;
+    b[i] = std::fabs(y0);
+    e[i] = absIncrement(y0, x);
+  }
+  for (int m = 1; m <= n; ++m) {
+    double scale = 1.0 / (2.0 * (m + 1));
+    for (int i = 0; i <= n - m; ++i) {
+      double y0 = 2 * i - (n - m);
+      if (std::fabs(y0) <= m) {
+        double y = y0 + x;
+        e[i] = ((m - y) * e[i] + (m + y) * e[i + 1] + x * (b[i + 1] - b[i])) * scale;
+        b[i] = ((m - y0) * b[i] + (m + y0) * b[i + 1]) * scale;
+      } else {
+        e[i] = absIncrement(y0, x);
+        b[i] = std::fabs(y0);
+      }
+    }
+  }
+  return e[0];
+}
+
+// |x|_{n,delta} - |0|_{n,delta} (eq. 9), accurate however large delta is.
+double upperSpanIncrementCore(int n, double delta, double x) {
+  if (std::fabs(x) >= delta) return std::fabs(x) - delta / n * upperAbsoluteCore(n, 0.0);
+  return delta / n * upperAbsoluteIncrementCore(n, n * x / delta);
+}
+
 // Li & Tian, eq. 12; where |x - y| >= delta it is (x + y - |x - y|)/2 = min(x, y), returned
 // exactly.
 double smoothMinCore(int n, double delta, double x, double y) {
@@ -112,23 +163,28 @@ double smoothMinHat(int n, double delta, double x, double y) {
 
 SmoothAnd::SmoothAnd(int n, double delta) : n_(n), delta_(delta) {
   requireSpan(n, delta);
-  cornerDiagonal_ = c0(0.0);     // = c1(1) = -|0|_{n,delta}/2
-  cornerOffDiagonal_ = c0(1.0);  // = c1(0) = (1 - |1|_{n,delta})/2, 0 when delta <= 1
+  absZero_ = delta / n * upperAbsoluteCore(n, 0.0);
+  cornerOffDiagonal_ = c0(1.0);  // = c1(0) = (1 - (|1|_{n,delta} - |0|_{n,delta}))/2
 }
 
-// Li & Tian, eq. 14
-double SmoothAnd::c0(double x) const { return 0.5 * (x - upperSpanCore(n_, delta_, x)); }
-
-// Li & Tian, eq. 15
-double SmoothAnd::c1(double x) const {
-  return 0.5 * (1.0 - x - upperSpanCore(n_, delta_, 1.0 - x));
+// Up to a span of 4 the plain difference loses under 1e-15 and costs a third of the side-by-side
+// programme (measured 22 against 56 ns an evaluation of AND at n = 2).
+double SmoothAnd::spanIncrement(double t) const {
+  if (delta_ <= 4.0) return upperSpanCore(n_, delta_, t) - absZero_;
+  return upperSpanIncrementCore(n_, delta_, t);
 }
 
-// Li & Tian, eq. 20
+// Li & Tian, eq. 14, less its constant -|0|_{n,delta}/2 (see the class comment).
+double SmoothAnd::c0(double x) const { return 0.5 * (x - spanIncrement(x)); }
+
+// Li & Tian, eq. 15, less the same constant.
+double SmoothAnd::c1(double x) const { return 0.5 * (1.0 - x - spanIncrement(1.0 - x)); }
+
+// Li & Tian, eq. 20, with min_{n,delta} of eq. 12 less the same constant.
 double SmoothAnd::operator()(double x, double y) const {
-  double patch = coonsPatch(x, y, c0(x), c1(x), c0(y), c1(y), cornerDiagonal_, cornerOffDiagonal_,
-                            cornerDiagonal_);
-  return smoothMinCore(n_, delta_, x, y) - patch;
+  double patch = coonsPatch(x, y, c0(x), c1(x), c0(y), c1(y), 0.0, cornerOffDiagonal_, 0.0);
+  double shiftedMin = 0.5 * (x + y - spanIncrement(x - y));
+  return shiftedMin - patch;
 }
 
 SmoothAndHat::SmoothAndHat(int n, double delta) : n_(n), delta_(delta) {

@@ -48,6 +48,14 @@ double smoothMinHat(int n, double delta, double x, double y);
 // AND(x, 0) = -(1 - x) |0|_{n,delta}/2. The laws win: S3 is the general bilinear corner term,
 // which for delta <= 1 (where |1|_{n,delta} = 1) is the printed form with
 // alpha = -|0|_{n,delta}/2.
+//
+// The constant -|0|_{n,delta}/2 appears in min_{n,delta}, in C0, C1 and so in each of S1, S2 and
+// S3 (whose weights sum to 1): it cancels exactly in eq. 20, so the curves are evaluated without
+// it, from |t|_{n,delta} - |0|_{n,delta}. That matters for a large span: |0|_{n,delta} grows like
+// delta while AND stays in [0, 1], and subtracting it let rounding grow with delta. As delta
+// grows, AND tends to the product x y: a quadratic |t|_{n,delta} - |0|_{n,delta} = c t^2 cancels
+// in eq. 20, so for n = 1 AND is x y for every delta >= 1, and for n > 1 the distance to x y
+// falls like 1/delta^2.
 class SmoothAnd {
  public:
   SmoothAnd(int n, double delta);  // validates n in [1, 32], delta > 0
@@ -56,12 +64,13 @@ class SmoothAnd {
   double delta() const { return delta_; }
 
  private:
-  double c0(double x) const;  // eq. 14
-  double c1(double x) const;  // eq. 15
+  double spanIncrement(double t) const;  // |t|_{n,delta} - |0|_{n,delta}
+  double c0(double x) const;  // eq. 14 less its constant, so C0(0) = C1(1) = 0
+  double c1(double x) const;  // eq. 15 less its constant
   int n_;
   double delta_;
-  double cornerDiagonal_;     // C0(0) = C1(1)
-  double cornerOffDiagonal_;  // C0(1) = C1(0)
+  double absZero_;            // |0|_{n,delta}
+  double cornerOffDiagonal_;  // C0(1) = C1(0), less the constant
 };
 
 // Li & Tian, eq. 21-24: hatted AND_{n,delta}(x, y) = hatted min_{n,delta}(x, y) - (S1 + S2 - S3)
