@@ -12,7 +12,9 @@
 // exist, "did_you_mean" (the whole corrected text).
 // Names: a text that is a stored part's or shape's name (after a request phrase and articles;
 // words joined by "-", " ", "_" or nothing) puts that object first (score 1, "named": true); a
-// text no grammar reads but that is a name is answered {"search": "name", "results": [...]}.
+// text no grammar reads but that is a name is answered {"search": "name", "results": [...]}. In
+// a linguistic text without a relation, a name its words hold in another order scores 1, and a
+// name among more words comes first of the results with its score (docs/api.md).
 // Partial matches: a linguistic text without a relation that no object meets at all (every score
 // 0 under min, no threshold) is searched again by the mean of its conditions (the text's own
 // "using ..." too gives way); the answer and its results carry "partial": true.

@@ -53,6 +53,14 @@ std::vector<std::pair<int64_t, double>> withoutDescribed(std::vector<std::pair<i
   return ranking;
 }
 
+// A route's ranking without the objects the search box's answer `box` names (names among the
+// text's words rank their object first among equals, marked named).
+std::vector<std::pair<int64_t, double>> withoutNamed(std::vector<std::pair<int64_t, double>> ranking, const Answer& box) {
+  ranking.erase(std::remove_if(ranking.begin(), ranking.end(), [&](const auto& r) { return holds(box.named, r.first); }),
+                ranking.end());
+  return ranking;
+}
+
 Answer ask(const ServerProcess& server, const std::string& route, const std::string& text) {
   auto r = server.post(route, json{{"text", text}, {"limit", 50}});
   Answer a{r.status, r.body, r.json.value("search", std::string()), r.json.contains("parsed"), {}, {}, {}};
@@ -251,7 +259,9 @@ TEST(DesignersQueries, OneSearchBoxRunsTheSearchTheTextCallsFor) {
   EXPECT_EQ(around.json["ignored"][0]["word"], "bnet");
   EXPECT_EQ(around.json["ignored"][0]["at"], 2);
   EXPECT_EQ(around.json["ignored"][0]["did_you_mean"][0], "bent");
-  EXPECT_EQ(ask(server, "/query", "a bnet cylinder").ranking, ranking(server, "/query/linguistic", "a cylinder"));
+  const Answer bnet = ask(server, "/query", "a bnet cylinder");
+  EXPECT_EQ(bnet.named.size(), 1u) << bnet.body;  // the part named cylinder, first of equals
+  EXPECT_EQ(bnet.ranking, withoutNamed(ranking(server, "/query/linguistic", "a cylinder"), bnet));
   auto corrected = server.post("/query", json{{"text", "find a slightly bnet shape"}});
   ASSERT_EQ(corrected.status, 200) << corrected.body;
   EXPECT_EQ(corrected.json["read_text"], "find a slightly bent shape");
@@ -399,7 +409,8 @@ TEST(DesignersQueries, OwnWordsAnswerWhereTheMeaningFindsNothing) {
   const Answer round = ask(server, "/query", "a round sphere");
   ASSERT_EQ(round.status, 200) << round.body;
   EXPECT_TRUE(round.described.empty()) << round.body;
-  EXPECT_EQ(round.ranking, ranking(server, "/query/linguistic", "a round sphere"));
+  EXPECT_EQ(round.named.size(), 1u) << round.body;  // the part named sphere, first of equals
+  EXPECT_EQ(round.ranking, withoutNamed(ranking(server, "/query/linguistic", "a round sphere"), round));
   // The kind asked for holds.
   auto shapes = server.post("/query", json{{"text", "a mushroom form"}, {"kind", "shape"}});
   EXPECT_EQ(shapes.status, 422) << shapes.body;
@@ -459,6 +470,47 @@ TEST(DesignersQueries, NamesTheTextNearlyHoldsFindTheirObjectFirst) {
   auto shapes = server.post("/query", json{{"text", "snowmn"}, {"kind", "part"}});
   EXPECT_EQ(shapes.status, 422) << shapes.body;
   EXPECT_EQ(server.post("/query", json{{"text", "purple elephant"}}).status, 422);
+}
+
+// Names among a readable text's words. Every content word of the text is the name's, in another
+// order: the object is the text's name, score 1, first. A name that takes some of the words
+// changes no score (the meaning scores the rest), but of objects the meaning scores alike the
+// named one comes first: the meaning of "cylinder" fits any cylinder, the object so named best.
+TEST(DesignersQueries, NamesAmongTheWordsRankTheirObject) {
+  {
+    ServerProcess server({"--demo", kDemo});
+    for (const auto& [text, name] : std::vector<std::pair<const char*, const char*>>{
+             {"rod bent slightly", "slightly-bent-rod"}, {"cylinder bent", "bent-cylinder"}, {"a very bent rod", "very-bent-rod"}}) {
+      auto r = server.post("/query", json{{"text", text}});
+      ASSERT_EQ(r.status, 200) << text << " " << r.body;
+      EXPECT_EQ(r.json["search"], "linguistic") << text;
+      ASSERT_FALSE(r.json["results"].empty()) << text;
+      EXPECT_EQ(r.json["results"][0]["name"], name) << text;
+      EXPECT_EQ(r.json["results"][0]["score"], 1.0) << text;
+      EXPECT_EQ(r.json["results"][0]["named"], true) << text;
+    }
+    // A relation's answer is a whole of parts: no part's name goes before it.
+    auto relation = server.post("/query", json{{"text", "a cylinder left of a cube"}});
+    ASSERT_EQ(relation.status, 200) << relation.body;
+    for (const json& r : relation.json["results"]) EXPECT_FALSE(r.contains("named")) << r;
+  }
+  ServerProcess server;
+  const json cylinder = {{"eps1", 0.1}, {"eps2", 1}, {"a1", 1}, {"a3", 1.5}};  // the demo's cylinder
+  ASSERT_EQ(server.post("/parts", json{{"name", "first"}, {"params", cylinder}}).status, 201);
+  ASSERT_EQ(server.post("/parts", json{{"name", "cylinder"}, {"params", cylinder}}).status, 201);
+  const json meaning = server.post("/query/linguistic", json{{"text", "a straight cylinder"}}).json;
+  ASSERT_EQ(meaning["results"].size(), 2u) << meaning;
+  EXPECT_EQ(meaning["results"][0]["name"], "first");  // equal scores: by id
+  const double score = meaning["results"][0]["score"].get<double>();
+  EXPECT_EQ(meaning["results"][1]["score"], score);
+  auto box = server.post("/query", json{{"text", "a straight cylinder"}});
+  ASSERT_EQ(box.status, 200) << box.body;
+  ASSERT_EQ(box.json["results"].size(), 2u) << box.body;
+  EXPECT_EQ(box.json["results"][0]["name"], "cylinder");
+  EXPECT_EQ(box.json["results"][0]["named"], true);
+  EXPECT_EQ(box.json["results"][0]["score"], score);
+  EXPECT_EQ(box.json["results"][1]["name"], "first");
+  EXPECT_EQ(box.json["results"][1]["score"], score);
 }
 
 // No dead end for a word order no grammar has: the run of its words with the most content words
