@@ -197,76 +197,50 @@ nlohmann::json objectsNearlyNamed(const Store& store, const nlohmann::json& requ
   return out;
 }
 
-// Texts with more words than this are searched only for names of one or two adjacent words among
-// them (namesAmongWords): the ordered triples of a long text would be thousands of spellings.
-constexpr size_t kMostWordsForTriples = 12;
-// Texts with more content words than this are searched for three-word names in text order only:
-// six give 120 orders, 480 spellings.
-constexpr size_t kMostContentForOrders = 6;
-
-// The names a text's words hold, with how many of its words each takes: every content word
-// (singular too: "spheres" gives sphere), every two content words in either order ("ball small"
-// gives small-ball), every three in any order where the text has at most kMostContentForOrders
-// ("rod bent slightly" gives slightly-bent-rod), and every three words in text order that begin
-// and end with a content word ("the cone which stands on the box" gives cone-on-box), each joined
-// as namesOfText joins them.
-std::vector<std::pair<std::string, int>> namesAmongWords(const std::vector<std::string>& words) {
-  std::vector<size_t> content;  // positions of the words that are not function words or numbers
-  for (size_t i = 0; i < words.size(); ++i)
-    if (!query_tokens::functionWord(words[i]) && std::isalpha(static_cast<unsigned char>(words[i][0])))
-      content.push_back(i);
-  std::vector<std::pair<std::string, int>> names;
-  std::unordered_set<std::string> listed;
-  const auto list = [&](const std::vector<std::string>& run) {
-    for (std::string& name : namesOfText(run))
-      if (listed.insert(name).second) names.emplace_back(std::move(name), static_cast<int>(run.size()));
-  };
-  for (size_t i : content) {
-    list({words[i]});
-    const std::string& w = words[i];
-    if (w.size() > 3 && w.back() == 's' && w[w.size() - 2] != 's') list({w.substr(0, w.size() - 1)});
-  }
-  for (size_t a : content)
-    for (size_t b : content)
-      if (a != b && (a + 1 == b || b + 1 == a || words.size() <= kMostWordsForTriples)) list({words[a], words[b]});
-  if (content.size() <= kMostContentForOrders)
-    for (size_t a : content)
-      for (size_t b : content)
-        for (size_t c : content)
-          if (a != b && b != c && a != c) list({words[a], words[b], words[c]});
-  if (words.size() <= kMostWordsForTriples)
-    for (size_t a : content)
-      for (size_t b : content)
-        for (size_t m = a + 1; m < b; ++m) list({words[a], words[m], words[b]});
-  return names;
+// The content words of a text's words: not function words, not numbers.
+std::vector<std::string> contentWordsOf(const std::vector<std::string>& words) {
+  std::vector<std::string> content;
+  for (const std::string& w : words)
+    if (!query_tokens::functionWord(w) && std::isalpha(static_cast<unsigned char>(w[0]))) content.push_back(w);
+  return content;
 }
 
-// The stored objects whose name the text's words hold, each with the most words a name of it
-// takes; looked up kMaxNamedLookups spellings a statement.
-std::vector<std::pair<StoredObject, int>> objectsNamedAmongWords(const Store& store, const nlohmann::json& request,
-                                                                 const std::vector<std::string>& words) {
-  const std::vector<std::pair<std::string, int>> names = namesAmongWords(words);
-  std::unordered_map<std::string, int> wordsOfName;
-  for (const auto& [name, n] : names) wordsOfName.emplace(name, n);
-  const std::vector<std::string> kinds = requestKinds(request);
-  std::vector<std::pair<StoredObject, int>> out;
-  std::unordered_map<int64_t, size_t> at;
-  for (size_t from = 0; from < names.size(); from += Store::kMaxNamedLookups) {
-    std::vector<std::string> chunk;
-    for (size_t i = from; i < names.size() && i < from + Store::kMaxNamedLookups; ++i) chunk.push_back(names[i].first);
-    for (StoredObject& o : store.named(chunk, kinds)) {
-      const auto found = wordsOfName.find(o.name);
-      const int n = found == wordsOfName.end() ? 1 : found->second;
-      const auto seen = at.find(o.id);
-      if (seen != at.end()) {
-        out[seen->second].second = std::max(out[seen->second].second, n);
-        continue;
-      }
-      at.emplace(o.id, out.size());
-      out.emplace_back(std::move(o), n);
+// Texts with more content words than this are not looked up for their words' names in another
+// order: four give 24 orders, 96 spellings, one statement.
+constexpr size_t kMostWordsReordered = 4;
+
+// The stored objects whose name is the text's content words in another order ("rod bent slightly"
+// for slightly-bent-rod, "ball small" for small-ball), each order joined as namesOfText joins it:
+// one lookup. Texts of one content word, or more than kMostWordsReordered, look up nothing here.
+std::vector<StoredObject> objectsNamedReordered(const Store& store, const nlohmann::json& request,
+                                                std::vector<std::string> content) {
+  if (content.size() < 2 || content.size() > kMostWordsReordered) return {};
+  std::sort(content.begin(), content.end());
+  std::vector<std::string> names;
+  do {
+    for (std::string& name : namesOfText(content)) names.push_back(std::move(name));
+  } while (std::next_permutation(content.begin(), content.end()));
+  return store.named(names, requestKinds(request));
+}
+
+// How many words of a name ("slightly-bent-rod": 3), all of which are among `words` (or their
+// plurals: "spheres" holds sphere); 0 when one is not.
+int nameWordsAmong(const std::string& name, const std::vector<std::string>& words) {
+  int count = 0;
+  size_t from = 0;
+  while (from <= name.size()) {
+    size_t to = name.find_first_of("-_ ", from);
+    if (to == std::string::npos) to = name.size();
+    if (to > from) {
+      std::string w = name.substr(from, to - from);
+      std::transform(w.begin(), w.end(), w.begin(), [](unsigned char c) { return std::tolower(c); });
+      if (std::none_of(words.begin(), words.end(), [&](const std::string& t) { return t == w || t == w + "s"; }))
+        return 0;
+      ++count;
     }
+    from = to + 1;
   }
-  return out;
+  return count;
 }
 
 // Whether a parsed linguistic query (its "condition" tree) holds a relation between components.
@@ -282,49 +256,55 @@ bool holdsRelation(const nlohmann::json& node) {
   return false;
 }
 
-// Ranks the objects whose name the words of a linguistic text hold (objectsNamedAmongWords) into
-// its results, marked "named" with why in explain. A name that takes every content word of the
-// text ("ball small" for small-ball) is the text's name in another order: score 1, as an exact
-// name. A name that takes some of them changes no score, since the meaning already scores the
-// rest of the text ("a tiny little cube" wants a small cube more than the one named cube), but at
-// equal scores the named object comes first, and of two, the name that takes more words: the
-// meaning of "wedge" fits every wedge-like object equally, the object named wedge best. Not for
-// texts with a relation: their answer is a whole of parts, and each part's name would come
-// before it.
+// Ranks by name among the words of a linguistic text, marked "named" with why in explain. An
+// object whose name is the text's content words in another order (objectsNamedReordered) is the
+// text's name: score 1. A name of which every word is among the text's words (nameWordsAmong)
+// changes no score, since the meaning scores the rest of the text ("a tiny little cube" wants a
+// small cube more than the object named cube), but of results with equal scores the named one
+// comes first, and of two, the name of more words: the meaning of "wedge" fits every wedge-like
+// object alike, the object named wedge best. So only the results' own names are read for it,
+// and nothing is looked up. Not for texts with a relation: their answer is a whole of parts, and
+// each part's name would come before it.
 void rankNamesAmongWords(const Store& store, const nlohmann::json& request, const std::vector<std::string>& words,
                          nlohmann::json* answer, size_t limit) {
-  if (answer->value("search", "") != "linguistic" || !(*answer)["results"].is_array() ||
-      holdsRelation(answer->value("parsed", nlohmann::json::object())))
+  if (answer->value("search", "") != "linguistic" || !answer->contains("results") ||
+      !(*answer)["results"].is_array() || holdsRelation(answer->value("parsed", nlohmann::json::object())))
     return;
-  const std::vector<std::pair<StoredObject, int>> found = objectsNamedAmongWords(store, request, words);
-  if (found.empty()) return;
-  int contentWords = 0;
-  for (const std::string& w : words)
-    contentWords += !query_tokens::functionWord(w) && std::isalpha(static_cast<unsigned char>(w[0]));
+  const std::vector<std::string> content = contentWordsOf(words);
   nlohmann::json& results = (*answer)["results"];
   std::unordered_map<int64_t, size_t> resultAt;
   for (size_t i = 0; i < results.size(); ++i)
     if (results[i].contains("id") && results[i]["id"].is_number_integer())
       resultAt.emplace(results[i]["id"].get<int64_t>(), i);
   std::vector<int> nameWords(results.size(), 0);
-  for (const auto& [o, n] : found) {
-    const bool whole = n >= contentWords;
-    const auto it = resultAt.find(o.id);
-    if (it == resultAt.end() && !whole) continue;  // the meaning scores it below every result
-    const double score = whole ? 1.0 : results[it->second].value("score", 0.0);
+  const auto mark = [&](nlohmann::json& r, const std::string& name, bool whole) {
+    if (whole) r["score"] = 1.0;
+    r["named"] = true;
     const nlohmann::json why = {
-        {"text", "the name '" + o.name + (whole ? "', the words of the text" : "' among the words of the text")},
-        {"score", score}};
+        {"text", "the name '" + name + (whole ? "', the words of the text" : "' among the words of the text")},
+        {"score", r.value("score", 0.0)}};
+    if (!r.contains("explain") || !r["explain"].is_array()) r["explain"] = nlohmann::json::array();
+    r["explain"].push_back(why);
+  };
+  for (size_t i = 0; i < results.size(); ++i) {
+    const std::string name = results[i].value("name", "");
+    const int n = nameWordsAmong(name, words);
+    if (n == 0) continue;
+    nameWords[i] = n;
+    mark(results[i], name, false);
+  }
+  for (const StoredObject& o : objectsNamedReordered(store, request, content)) {
+    const int n = static_cast<int>(content.size());
+    const auto it = resultAt.find(o.id);
     if (it != resultAt.end()) {
       nlohmann::json& r = results[it->second];
-      if (whole) r["score"] = 1.0;
-      r["named"] = true;
-      if (r.contains("explain") && r["explain"].is_array()) r["explain"].push_back(why);
+      if (nameWords[it->second] > 0) r["explain"].erase(r["explain"].size() - 1);  // now whole
+      mark(r, o.name, true);
       nameWords[it->second] = n;
       continue;
     }
-    results.push_back({{"id", o.id}, {"kind", o.kind}, {"name", o.name}, {"version", o.version}, {"score", 1.0},
-                       {"named", true}, {"explain", {why}}});
+    results.push_back({{"id", o.id}, {"kind", o.kind}, {"name", o.name}, {"version", o.version}});
+    mark(results.back(), o.name, true);
     nameWords.push_back(n);
   }
   std::vector<size_t> order(results.size());
