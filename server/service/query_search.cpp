@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <functional>
 #include <optional>
 #include <unordered_map>
 #include <unordered_set>
@@ -206,22 +207,41 @@ std::vector<std::string> contentWordsOf(const std::vector<std::string>& words) {
 }
 
 // Texts with more content words than this are not looked up for their words' names in another
-// order: four give 24 orders, 96 spellings, one statement.
+// order: four give 24 orders, 96 spellings, one statement with the single words'.
 constexpr size_t kMostWordsReordered = 4;
 
-// The stored objects whose name is the text's content words in another order ("rod bent slightly"
-// for slightly-bent-rod, "ball small" for small-ball), each order joined as namesOfText joins it:
-// one lookup. Texts of one content word, or more than kMostWordsReordered, look up nothing here.
-std::vector<StoredObject> objectsNamedReordered(const Store& store, const nlohmann::json& request,
-                                                std::vector<std::string> content) {
-  if (content.size() < 2 || content.size() > kMostWordsReordered) return {};
-  std::sort(content.begin(), content.end());
+// The stored objects whose name is one content word of the text (or its singular: "spheres" gives
+// sphere), or all of them in any order ("rod bent slightly" for slightly-bent-rod, "ball small" for
+// small-ball; texts of two to kMostWordsReordered content words), each joined as namesOfText joins
+// them: one lookup. The second of each pair: whether the name is the whole text reordered.
+std::vector<std::pair<StoredObject, bool>> objectsNamedByWords(const Store& store, const nlohmann::json& request,
+                                                               std::vector<std::string> content) {
   std::vector<std::string> names;
-  do {
-    for (std::string& name : namesOfText(content)) names.push_back(std::move(name));
-  } while (std::next_permutation(content.begin(), content.end()));
-  return store.named(names, requestKinds(request));
+  for (const std::string& w : content) {
+    names.push_back(w);
+    if (w.size() > 3 && w.back() == 's' && w[w.size() - 2] != 's') names.push_back(w.substr(0, w.size() - 1));
+  }
+  const size_t singles = names.size();
+  if (content.size() >= 2 && content.size() <= kMostWordsReordered) {
+    std::sort(content.begin(), content.end());
+    do {
+      for (std::string& name : namesOfText(content)) names.push_back(std::move(name));
+    } while (std::next_permutation(content.begin(), content.end()));
+  }
+  if (names.empty()) return {};
+  const std::unordered_set<std::string> single(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(singles));
+  std::vector<std::pair<StoredObject, bool>> out;
+  for (StoredObject& o : store.named(names, requestKinds(request))) {
+    const bool whole = content.size() >= 2 && !single.count(o.name);
+    out.emplace_back(std::move(o), whole);
+  }
+  return out;
 }
+
+// How deep the search box reads a linguistic answer again for a named object that its first
+// `limit` results leave out: an object named by a word of the text ties with the last result
+// more often than not ("a hockey puck": every puck-like object scores 1), and the tie decides.
+constexpr size_t kNamedTieDepth = 100;
 
 // How many words of a name ("slightly-bent-rod": 3), all of which are among `words` (or their
 // plurals: "spheres" holds sphere); 0 when one is not.
@@ -257,25 +277,29 @@ bool holdsRelation(const nlohmann::json& node) {
 }
 
 // Ranks by name among the words of a linguistic text, marked "named" with why in explain. An
-// object whose name is the text's content words in another order (objectsNamedReordered) is the
+// object whose name is the text's content words in another order (objectsNamedByWords) is the
 // text's name: score 1. A name of which every word is among the text's words (nameWordsAmong)
 // changes no score, since the meaning scores the rest of the text ("a tiny little cube" wants a
 // small cube more than the object named cube), but of results with equal scores the named one
 // comes first, and of two, the name of more words: the meaning of "wedge" fits every wedge-like
-// object alike, the object named wedge best. So only the results' own names are read for it,
-// and nothing is looked up. Not for texts with a relation: their answer is a whole of parts, and
-// each part's name would come before it.
+// object alike, the object named wedge best. An object named by one word of the text that the
+// first `limit` results leave out is looked for in the first kNamedTieDepth (`deeper`, when
+// given, answers the same request with that limit): it comes in where it ties with the last.
+// Not for texts with a relation: their answer is a whole of parts, and each part's name would
+// come before it.
 void rankNamesAmongWords(const Store& store, const nlohmann::json& request, const std::vector<std::string>& words,
-                         nlohmann::json* answer, size_t limit) {
+                         nlohmann::json* answer, size_t limit,
+                         const std::function<nlohmann::json(size_t)>& deeper = nullptr) {
   if (answer->value("search", "") != "linguistic" || !answer->contains("results") ||
       !(*answer)["results"].is_array() || holdsRelation(answer->value("parsed", nlohmann::json::object())))
     return;
   const std::vector<std::string> content = contentWordsOf(words);
   nlohmann::json& results = (*answer)["results"];
+  const auto idOf = [](const nlohmann::json& r) {
+    return r.contains("id") && r["id"].is_number_integer() ? r["id"].get<int64_t>() : int64_t{-1};
+  };
   std::unordered_map<int64_t, size_t> resultAt;
-  for (size_t i = 0; i < results.size(); ++i)
-    if (results[i].contains("id") && results[i]["id"].is_number_integer())
-      resultAt.emplace(results[i]["id"].get<int64_t>(), i);
+  for (size_t i = 0; i < results.size(); ++i) resultAt.emplace(idOf(results[i]), i);
   std::vector<int> nameWords(results.size(), 0);
   const auto mark = [&](nlohmann::json& r, const std::string& name, bool whole) {
     if (whole) r["score"] = 1.0;
@@ -293,19 +317,39 @@ void rankNamesAmongWords(const Store& store, const nlohmann::json& request, cons
     nameWords[i] = n;
     mark(results[i], name, false);
   }
-  for (const StoredObject& o : objectsNamedReordered(store, request, content)) {
-    const int n = static_cast<int>(content.size());
+  const double lastScore = results.empty() ? 0.0 : results.back().value("score", 0.0);
+  std::optional<nlohmann::json> deep;  // the first kNamedTieDepth results, read once if needed
+  for (const auto& [o, whole] : objectsNamedByWords(store, request, content)) {
+    const int n = whole ? static_cast<int>(content.size()) : nameWordsAmong(o.name, words);
     const auto it = resultAt.find(o.id);
     if (it != resultAt.end()) {
+      if (!whole) continue;  // marked above
       nlohmann::json& r = results[it->second];
       if (nameWords[it->second] > 0) r["explain"].erase(r["explain"].size() - 1);  // now whole
       mark(r, o.name, true);
       nameWords[it->second] = n;
       continue;
     }
-    results.push_back({{"id", o.id}, {"kind", o.kind}, {"name", o.name}, {"version", o.version}});
-    mark(results.back(), o.name, true);
-    nameWords.push_back(n);
+    if (whole) {
+      results.push_back({{"id", o.id}, {"kind", o.kind}, {"name", o.name}, {"version", o.version}});
+      mark(results.back(), o.name, true);
+      nameWords.push_back(n);
+      resultAt.emplace(o.id, results.size() - 1);
+      continue;
+    }
+    // Left out: it can only tie with the last result, and only when the answer was cut there.
+    if (!deeper || results.size() < limit || n == 0) continue;
+    if (!deep) deep = deeper(kNamedTieDepth);
+    for (const nlohmann::json& r : deep->value("results", nlohmann::json::array())) {
+      if (idOf(r) != o.id) continue;
+      if (r.value("score", 0.0) >= lastScore && !answer->value("partial", false)) {
+        results.push_back(r);
+        mark(results.back(), o.name, false);
+        nameWords.push_back(n);
+        resultAt.emplace(o.id, results.size() - 1);
+      }
+      break;
+    }
   }
   std::vector<size_t> order(results.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = i;
@@ -505,7 +549,11 @@ nlohmann::json queryResponse(const Store& store, const nlohmann::json& request,
     // Where the meaning finds something whole, it is the answer: a description's words may meet
     // by chance ("a sharp cylinder" in "a very bent cylinder and a very sharp pyramid").
     const bool found = answer.contains("results") && !answer["results"].empty() && !answer.value("partial", false);
-    rankNamesAmongWords(store, request, words, &answer, limit);
+    rankNamesAmongWords(store, request, words, &answer, limit, [&](size_t depth) {
+      nlohmann::json deeper = request;
+      deeper["limit"] = depth;
+      return searchText(store, deeper, text, linguisticLimits, csgLimits, graphs);
+    });
     putWordMatches(&answer, named, found ? nlohmann::json::array() : described(), limit);
     return answer;
   } catch (const Error& refused) {
