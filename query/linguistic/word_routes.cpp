@@ -18,6 +18,7 @@ constexpr double kSimilarTo = 0.9;
 constexpr double kHypernym = 0.9;
 constexpr double kAlsoSee = 0.85;
 constexpr double kAntonym = 0.85;
+constexpr double kDerived = 0.9;
 
 // WordNet's lexicographer files of nouns that name things with a shape (lexnames(5WN)).
 constexpr int kNounArtifact = 6, kNounObject = 17, kNounShape = 25;
@@ -134,6 +135,34 @@ void wordNetRoutes(const Vocabulary& v, const WordNet& wn, const std::string& ba
   }
 }
 
+// An adjective made from a stem by -y or -ish ("twisty", "pointy", "bendy", "roundish"), which
+// WordNet mostly lacks or files under a looser head ("twisty" is similar to crooked, whose
+// antonym is straight): the stem itself where it is a known adjective ("roundish" -> round), or
+// the known adjective that is the stem's past participle ("twisty" -> twist -> twisted, "bendy"
+// -> bend -> bent). Stems as spelt, with a doubled last letter undone ("knobby" -> knob) and
+// with an e restored ("curvy" -> curve). Nouns are no targets ("party" is not a part).
+Candidate derivedAdjective(const Vocabulary& v, const WordNet& wn, const std::string& word) {
+  std::string stem;
+  if (word.size() >= 5 && word.compare(word.size() - 3, 3, "ish") == 0) {
+    stem = word.substr(0, word.size() - 3);
+  } else if (word.size() >= 4 && word.back() == 'y') {
+    stem = word.substr(0, word.size() - 1);
+  } else {
+    return {};
+  }
+  std::vector<std::string> stems = {stem, stem + "e"};
+  if (stem.size() >= 3 && stem[stem.size() - 1] == stem[stem.size() - 2]) stems.push_back(stem.substr(0, stem.size() - 1));
+  for (const std::string& s : stems)
+    if (s != word && v.adjective(s)) return {s, "derivation", word + " -> " + s, kDerived, 0};
+  for (const std::string& a : v.adjectiveWords()) {
+    if (!v.adjective(a)) continue;
+    for (const std::string& base : wn.baseForms(a, Pos::kVerb))
+      if (base != a && std::find(stems.begin(), stems.end(), base) != stems.end())
+        return {a, "derivation", word + " -> " + base + " -> " + a, kDerived, 0};
+  }
+  return {};
+}
+
 }  // namespace
 
 std::optional<WordRoute> routeWord(const std::string& word, const std::string& next, const Vocabulary& vocabulary,
@@ -160,6 +189,12 @@ std::optional<WordRoute> routeWord(const std::string& word, const std::string& n
       wordNetRoutes(vocabulary, *wordnet, base, pos, &best);
       if (best.became != before.became || best.via != before.via) best.noun = pos == Pos::kNoun && base != word;
     }
+  // After WordNet's own links, which win a tie ("curvy" is similar to curved in WordNet too).
+  {
+    Candidate before = best;
+    consider(&best, derivedAdjective(vocabulary, *wordnet, word));
+    if (best.became != before.became) best.noun = false;
+  }
   if (best.became.empty()) return std::nullopt;
   if (best.noun) {
     // The plural the vocabulary gives the noun reached ("wands" -> rods).

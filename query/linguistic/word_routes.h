@@ -16,6 +16,9 @@
 //   also-see     0.85  an adjective's "see also" link
 //   antonym      0.85  the other pole of a known adjective's descriptor ("unbent" -> bent's other
 //                      pole: straight)
+//   derivation   0.9   an adjective by -y or -ish from a known adjective or from the verb of one
+//                      ("roundish" -> round, "twisty" -> twisted, "bendy" -> bent); WordNet's
+//                      links win a tie (it is weighed with them, not before)
 // Only the first senses count (three for adjectives and adverbs, four for nouns): a rare sense
 // ("slender": "small" by its fourth) is no route; and a noun's sense only where WordNet files it
 // as an artifact, an object or a shape ("egg" is no ball by its sense of a body part). Targets are the vocabulary's adjectives, nouns
@@ -37,7 +40,7 @@ struct WordRoute {
   std::string became;   // the known word it reads as; "" when it is left out (a support verb)
   std::string why;      // the kind: "lemma", "joining verb", "cutting verb", "support verb",
                         // "WordNet synonym", "WordNet similar-to", "WordNet hypernym",
-                        // "WordNet also-see", "WordNet antonym"
+                        // "WordNet also-see", "WordNet antonym", "derivation"
   std::string via;      // the WordNet words on the way ("skinny -> thin -> ..."), for `routed`
   double discount = 1.0;
 };

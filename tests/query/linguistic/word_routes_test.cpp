@@ -59,6 +59,24 @@ TEST(WordRoutes, WordNetLinksReachTheVocabularyWithTheirDiscounts) {
   expectRoute("curvier", "curved", "WordNet similar-to", 0.9);    // its lemma curvy, then WordNet
 }
 
+TEST(WordRoutes, AdjectivesByYAndIshReachTheirStemsAdjective) {
+  expectRoute("twisty", "twisted", "derivation", 0.9);  // WordNet: similar to crooked, antonym 0.765
+  expectRoute("pointy", "pointed", "derivation", 0.9);  // not in WordNet
+  expectRoute("bendy", "bent", "derivation", 0.9);      // bent's verb by the exception list
+  expectRoute("sharpish", "sharp", "derivation", 0.9);
+  expectRoute("thinnish", "thin", "derivation", 0.9);   // the doubled letter undone
+  expectRoute("flattish", "flat", "derivation", 0.9);
+  expectRoute("biggish", "large", "WordNet similar-to", 0.9);  // WordNet's own link first
+  expectRoute("curvy", "curved", "WordNet similar-to", 0.9);  // WordNet wins the tie
+  // Only adjectives are targets: "party" is not a part, "penny" no pen.
+  for (const char* w : {"party", "penny", "jelly", "bumpy"}) {
+    const std::optional<WordRoute> r = route(w);
+    if (r) {
+      EXPECT_NE(r->why, "derivation") << w << " -> " << r->became;
+    }
+  }
+}
+
 TEST(WordRoutes, NounsReachTheirMoreGeneralNoun) {
   expectRoute("wand", "rod", "WordNet hypernym", 0.9);
   expectRoute("ingot", "block", "WordNet hypernym", 0.9);
