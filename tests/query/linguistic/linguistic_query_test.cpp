@@ -372,6 +372,12 @@ TEST(LinguisticQuery, TraverseSections) {
             meaning("find a very sharp shape with squarish traverse section"));
   // Without a section word the adjective means the whole shape, as before.
   expectLeaf(parse("a squarish shape").root, "squariness", v().plain(), "squarish");
+  // Designers' shape adjectives: cylindrical and tubular say the section, the others the whole.
+  for (const auto& [word, descriptor] : std::vector<std::pair<const char*, const char*>>{
+           {"cylindrical", "section-roundness"}, {"tubular", "section-roundness"}, {"spherical", "roundness"},
+           {"conical", "taperness"}, {"pyramidal", "taperness"}, {"cubic", "squariness"},
+           {"rectangular", "squariness"}, {"filleted", "roundness"}, {"radiused", "roundness"}})
+    expectLeaf(parse(std::string("a ") + word + " shape").root, descriptor, v().plain(), word);
   // An adjective that says nothing of a section is an error naming the words and the ones that do.
   const std::string e = errorOf("a shape with a bent cross-section");
   EXPECT_NE(e.find("'a bent cross-section' at character 13"), std::string::npos) << e;
