@@ -57,7 +57,9 @@ using SmoothedNodes = std::map<const AlphaFieldSource*, std::shared_ptr<const Al
 std::shared_ptr<const AlphaFieldSource> smoothCrispPartsOnce(const std::shared_ptr<const AlphaFieldSource>& field,
                                                              const LeafSmoothing& smoothing, SmoothedNodes* made) {
   if (const auto* part = dynamic_cast<const FuzzyPartField*>(field.get()))
-    return part->isCrisp() ? std::make_shared<SmoothedPartField>(*part, smoothing) : field;
+    return part->isCrisp()
+               ? std::make_shared<SmoothedPartField>(std::shared_ptr<const FuzzyPartField>(field, part), smoothing)
+               : field;
   if (const auto* shared = dynamic_cast<const SharedField*>(field.get())) {
     auto it = made->find(shared);
     if (it != made->end()) return it->second;
@@ -123,7 +125,6 @@ MembershipCsgField::MembershipCsgField(CsgOp op, NodeOperator nodeOperator,
                                        std::vector<std::shared_ptr<const MembershipField>> children)
     : op_(op), operator_(std::move(nodeOperator)), children_(std::move(children)) {
   checkChildren(children_);
-  csgBoundingBox(op_, {children_.begin(), children_.end()}, &lo_, &hi_);
 }
 
 double MembershipCsgField::membership(const Vec3& p) const {
@@ -135,6 +136,7 @@ MembershipRange MembershipCsgField::membershipOver(const Vec3& lo, const Vec3& h
 }
 
 void MembershipCsgField::boundingBox(Vec3* lo, Vec3* hi) const {
+  std::call_once(boxOnce_, [this] { csgBoundingBox(op_, {children_.begin(), children_.end()}, &lo_, &hi_); });
   *lo = lo_;
   *hi = hi_;
 }

@@ -39,6 +39,7 @@
 // "children" with fewer than two children or an empty one (the constructors check the children
 // too).
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "geometry/field/alpha_field.h"
@@ -91,7 +92,10 @@ class MembershipCsgField : public MembershipField {
   CsgOp op_;
   NodeOperator operator_;
   std::vector<std::shared_ptr<const MembershipField>> children_;
-  Vec3 lo_, hi_;  // csgBoundingBox of the children
+  // csgBoundingBox of the children, on the first boundingBox: a shape read only for its parts (the
+  // linguistic search scores a stored shape's components) does not tighten its leaves' boxes.
+  mutable std::once_flag boxOnce_;
+  mutable Vec3 lo_, hi_;
 };
 
 // `field` with every crisp FuzzyPartField reached through CsgField nodes replaced by its

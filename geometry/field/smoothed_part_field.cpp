@@ -37,27 +37,35 @@ std::shared_ptr<const UnaryFunction> validateLeafSmoothing(const LeafSmoothing& 
   return f;
 }
 
-SmoothedPartField::SmoothedPartField(const FuzzyPartField& leaf, const LeafSmoothing& smoothing)
-    : part_(crispPart(leaf)),
-      range_(smoothing.range ? *smoothing.range : defaultSmoothingRange(leaf.part().coreRepresentative())),
-      step_(validateLeafSmoothing(smoothing)) {
-  leaf.boundingBox(&lo_, &hi_);
-  lo_ = lo_ - Vec3{range_, range_, range_};
-  hi_ = hi_ + Vec3{range_, range_, range_};
+SmoothedPartField::SmoothedPartField(std::shared_ptr<const FuzzyPartField> leaf, const LeafSmoothing& smoothing)
+    : leaf_(std::move(leaf)),
+      part_(crispPart(*leaf_)),
+      range_(smoothing.range ? *smoothing.range : defaultSmoothingRange(leaf_->part().coreRepresentative())),
+      step_(validateLeafSmoothing(smoothing)) {}
+
+void SmoothedPartField::growBox() const {
+  std::call_once(boxOnce_, [this] {
+    leaf_->boundingBox(&lo_, &hi_);
+    lo_ = lo_ - Vec3{range_, range_, range_};
+    hi_ = hi_ + Vec3{range_, range_, range_};
+  });
 }
 
 double SmoothedPartField::membership(const Vec3& p) const {
+  growBox();
   if (p.x < lo_.x || p.y < lo_.y || p.z < lo_.z || p.x > hi_.x || p.y > hi_.y || p.z > hi_.z) return 0.0;
   const double mu = (*step_)(-part_.pseudoDistance(p) / range_);  // Li & Tian, §2.1: μ(F(P))
   return mu < kSmallestMembership ? 0.0 : mu;
 }
 
 MembershipRange SmoothedPartField::membershipOver(const Vec3& lo, const Vec3& hi) const {
+  growBox();
   if (!boxesMeet(lo, hi, lo_, hi_)) return {0.0, 0.0};
   return {0.0, 1.0};
 }
 
 void SmoothedPartField::boundingBox(Vec3* lo, Vec3* hi) const {
+  growBox();
   *lo = lo_;
   *hi = hi_;
 }

@@ -97,8 +97,8 @@ TEST(SmoothCsgField, BlendedUnionsFillTheNeckAndKeepTheSurfacesElsewhere) {
 TEST(SmoothCsgField, CrispOnlySmoothUnionCoreIsTheHalfLevelOfTheBlendedMembership) {
   const LeafSmoothing smoothing{0.2, {"polynomial", {{"n", 3.0}}, {}}};
   const Children spheres = twoSpheres();
-  const SmoothedPartField a(static_cast<const FuzzyPartField&>(*spheres[0]), smoothing);
-  const SmoothedPartField b(static_cast<const FuzzyPartField&>(*spheres[1]), smoothing);
+  const SmoothedPartField a(std::static_pointer_cast<const FuzzyPartField>(spheres[0]), smoothing);
+  const SmoothedPartField b(std::static_pointer_cast<const FuzzyPartField>(spheres[1]), smoothing);
   for (const char* name : {"bezier", "algebraic", "ext_max", "int_max"}) {
     const NodeOperator op({name, {}, {}});
     const auto f = membershipNode(CsgOp::kUnion, {name, {}, {}}, spheres, smoothing);
@@ -296,7 +296,7 @@ TEST(SmoothCsgField, NestedMembershipsCombineAndMeetPairsThroughTheMap) {
   const auto inner = membershipNode(CsgOp::kUnion, {"bezier", {}, {}}, twoSpheres(), smoothing);
   const auto third = sphere({0, 0.9, 0}, 0.6);
   const auto outer = membershipNode(CsgOp::kDifference, {"bezier", {}, {}}, {inner, third}, smoothing);
-  const SmoothedPartField thirdSmoothed(*third, smoothing);
+  const SmoothedPartField thirdSmoothed(third, smoothing);
   const auto ball = std::make_shared<FuzzyBall>(Vec3{0, -0.8, 0}, 0.4, 0.6, 0.8);
   const Field mixed = node(CsgOp::kUnion, {"bezier", {}, {}}, {inner, ball}, smoothing);
   ASSERT_NE(dynamic_cast<const SmoothCsgField*>(mixed.get()), nullptr);

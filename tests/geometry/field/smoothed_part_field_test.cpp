@@ -14,15 +14,15 @@ namespace fsdb {
 namespace {
 
 // A crisp sphere of radius r at c (scale r on the unit sphere).
-FuzzyPartField sphere(Vec3 c, double r) {
+std::shared_ptr<const FuzzyPartField> sphere(Vec3 c, double r) {
   PlacedSuperquadric s;
   s.placement.translate = c;
   s.placement.scale = r;
-  return FuzzyPartField(FuzzyPart::fromCrisp(s));
+  return std::make_shared<const FuzzyPartField>(FuzzyPart::fromCrisp(s));
 }
 
 TEST(SmoothedPartField, MembershipIsTheStepOfMinusDistanceOverRange) {
-  const FuzzyPartField leaf = sphere({1, 2, 3}, 2.0);
+  const auto leaf = sphere({1, 2, 3}, 2.0);
   const SmoothedPartField f(leaf, {0.5, {"polynomial", {{"n", 3.0}}, {}}});
   EXPECT_EQ(f.range(), 0.5);
   for (double d : {-0.7, -0.5, -0.2, 0.0, 0.1, 0.3, 0.49, 0.6}) {
@@ -49,16 +49,16 @@ TEST(SmoothedPartField, DefaultRangeIsATenthOfTheSmallestHalfLengthTimesScale) {
   s.params.a3 = 3.0;
   s.placement.scale = 4.0;
   EXPECT_DOUBLE_EQ(defaultSmoothingRange(s), 0.1 * 4.0 * 1.0);
-  const FuzzyPartField leaf(FuzzyPart::fromCrisp(s));
+  const auto leaf = std::make_shared<const FuzzyPartField>(FuzzyPart::fromCrisp(s));
   EXPECT_DOUBLE_EQ(SmoothedPartField(leaf, {}).range(), 0.4);
 }
 
 TEST(SmoothedPartField, ZeroOutsideTheGrownBoxAndTheBoxCutIsInactiveForUndeformedParts) {
-  const FuzzyPartField leaf = sphere({0, 0, 0}, 1.0);
+  const auto leaf = sphere({0, 0, 0}, 1.0);
   const SmoothedPartField f(leaf, {0.3, {"polynomial", {{"n", 3.0}}, {}}});
   Vec3 lo, hi, plo, phi;
   f.boundingBox(&lo, &hi);
-  leaf.boundingBox(&plo, &phi);
+  leaf->boundingBox(&plo, &phi);
   EXPECT_DOUBLE_EQ(hi.x, phi.x + 0.3);
   EXPECT_DOUBLE_EQ(lo.z, plo.z - 0.3);
   // Just inside the grown box: at distance R from the sphere the step has (all but) reached 0,
@@ -70,7 +70,7 @@ TEST(SmoothedPartField, ZeroOutsideTheGrownBoxAndTheBoxCutIsInactiveForUndeforme
 }
 
 TEST(SmoothedPartField, BoundsHoldTheLevelsOfEveryPointOfTheBox) {
-  const FuzzyPartField leaf = sphere({0.2, 0, 0}, 1.0);
+  const auto leaf = sphere({0.2, 0, 0}, 1.0);
   const SmoothedPartField f(leaf, {0.25, {"bspline", {{"m", 3.0}}, {}}});
   std::mt19937 rng(2);
   std::uniform_real_distribution<double> c(-2.0, 2.0), w(0.0, 0.6), t(0.0, 1.0);
@@ -92,7 +92,7 @@ TEST(SmoothedPartField, BoundsHoldTheLevelsOfEveryPointOfTheBox) {
 }
 
 TEST(SmoothedPartField, RefusesBadRangesStepsAndFuzzyParts) {
-  const FuzzyPartField leaf = sphere({0, 0, 0}, 1.0);
+  const auto leaf = sphere({0, 0, 0}, 1.0);
   expectInvalidParameter([&] { SmoothedPartField(leaf, {0.0, {"polynomial", {}, {}}}); }, "range");
   expectInvalidParameter([&] { SmoothedPartField(leaf, {-1.0, {"polynomial", {}, {}}}); }, "range");
   expectInvalidParameter([&] { SmoothedPartField(leaf, {{}, {"polynomial", {{"n", 40.0}}, {}}}); }, "step.n");
@@ -104,7 +104,7 @@ TEST(SmoothedPartField, RefusesBadRangesStepsAndFuzzyParts) {
   EXPECT_NO_THROW(validateLeafSmoothing({{}, {"rising_cutoff_squared", {}, {}}}));
   FuzzyPart fuzzy;
   fuzzy.a1 = FuzzyNumber::triangular(0.9, 1.0, 1.1);
-  const FuzzyPartField fuzzyLeaf(fuzzy);
+  const auto fuzzyLeaf = std::make_shared<const FuzzyPartField>(fuzzy);
   try {
     SmoothedPartField(fuzzyLeaf, {});
     ADD_FAILURE() << "a fuzzy part was smoothed";
