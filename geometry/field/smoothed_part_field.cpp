@@ -43,11 +43,15 @@ SmoothedPartField::SmoothedPartField(std::shared_ptr<const FuzzyPartField> leaf,
       range_(smoothing.range ? *smoothing.range : defaultSmoothingRange(leaf_->part().coreRepresentative())),
       step_(validateLeafSmoothing(smoothing)) {}
 
+// std::call_once alone costs a library call on every membership (measured +2.5 % of CPU on a
+// smooth difference of three parts at 192); the flag keeps the common path to one load.
 void SmoothedPartField::growBox() const {
+  if (boxReady_.load(std::memory_order_acquire)) return;
   std::call_once(boxOnce_, [this] {
     leaf_->boundingBox(&lo_, &hi_);
     lo_ = lo_ - Vec3{range_, range_, range_};
     hi_ = hi_ + Vec3{range_, range_, range_};
+    boxReady_.store(true, std::memory_order_release);
   });
 }
 

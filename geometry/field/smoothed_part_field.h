@@ -19,6 +19,7 @@
 // distance bound, and this cut keeps boundingBox and boundsOver sound by construction.
 // membershipOver (and so boundsOver): 0 on boxes outside the grown box, else the trivial [0, 1]
 // (there is no interval evaluation of d yet, so blocks inside the part are never proven uniform).
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -67,6 +68,7 @@ class SmoothedPartField : public MembershipField {
   double range_;
   std::shared_ptr<const UnaryFunction> step_;
   mutable std::once_flag boxOnce_;
+  mutable std::atomic<bool> boxReady_{false};  // set after boxOnce_ ran: membership's fast path
   mutable Vec3 lo_, hi_;  // the part's bounding box grown by range_
 };
 
