@@ -15,6 +15,17 @@ namespace fsdb {
 namespace {
 
 constexpr size_t kCorrectedWords = 16;
+
+// Whether WordNet knows `word` in some form (a noun, verb, adjective or adverb): then it is a word
+// the writer meant, not a typo ("pillow" is no misspelt pillar), and the search does not read it
+// as its closest vocabulary word; the closest words are still offered. False without WordNet.
+bool dictionaryWord(const std::string& word) {
+  const WordNet* wn = systemWordNet();
+  if (!wn) return false;
+  for (WordNet::Pos pos : {WordNet::Pos::kNoun, WordNet::Pos::kVerb, WordNet::Pos::kAdjective, WordNet::Pos::kAdverb})
+    if (!wn->baseForms(word, pos).empty()) return true;
+  return false;
+}
 // Texts longer than this get each word's closest words but no corrected text: finding it parses
 // the whole text up to 49 times (as the linguistic parser's did-you-mean, which stops at the same length).
 constexpr size_t kLongestCorrectedText = 1000;
@@ -176,12 +187,14 @@ KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& voca
   // the text, the other words as chosen so far, reads.
   const std::vector<std::string> correctable = correctableWords(vocabulary);
   std::vector<std::string> choice = leftOut;
+  std::vector<bool> typo(tokens.size(), false);  // unknown to WordNet too: correctable
   size_t tried = 0;
   for (size_t i = 0; i < tokens.size(); ++i) {
     if (!unknown[i] || routed[i]) continue;
     UnknownWord u{tokens[i].text, tokens[i].offset, {}};
     if (tried++ < kCorrectedWords) u.closest = nearestNames(u.word, correctable, 3, plausibleTypoDistance(u.word.size()));
-    if (!u.closest.empty()) choice[i] = u.closest[0];
+    typo[i] = !dictionaryWord(u.word);
+    if (!u.closest.empty() && typo[i]) choice[i] = u.closest[0];
     reading.unknown.push_back(std::move(u));
   }
   // Where neither the text without its unknown words nor a correction reads: the longest run of
@@ -198,6 +211,7 @@ KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& voca
   for (size_t i = 0, k = 0; i < tokens.size() && !reads; ++i) {
     if (!unknown[i] || routed[i]) continue;
     const std::vector<std::string>& closest = reading.unknown[k++].closest;
+    if (!typo[i]) continue;  // a word of the language: left out, never replaced
     std::vector<std::string> options(closest.begin() + (closest.empty() ? 0 : 1), closest.end());
     options.push_back("");
     for (const std::string& option : options) {

@@ -89,6 +89,20 @@ TEST(UnknownWords, FarWordsHaveNoCorrection) {
   EXPECT_FALSE(r.corrected);
 }
 
+// A word of the language is what the writer meant, not a typo: "pillow" is offered pillar but
+// not read as it; "pilllar", which WordNet does not know, is.
+TEST(UnknownWords, DictionaryWordsAreOfferedButNotCorrected) {
+  const KnownWordsReading pillow = readKnownWords("a pillow", v());
+  ASSERT_EQ(pillow.unknown.size(), 1u);
+  ASSERT_FALSE(pillow.unknown[0].closest.empty());
+  EXPECT_EQ(pillow.unknown[0].closest[0], "pillar");
+  EXPECT_FALSE(pillow.corrected);
+  const KnownWordsReading typo = readKnownWords("a pilllar", v());
+  ASSERT_EQ(typo.unknown.size(), 1u);
+  ASSERT_TRUE(typo.corrected);
+  EXPECT_EQ(*typo.corrected, "a pillar");
+}
+
 TEST(UnknownWords, OnlyTheFirstSixteenAreCorrected) {
   std::string text = "a";
   for (int i = 0; i < 20; ++i) text += " bnet";
