@@ -213,21 +213,29 @@ constexpr size_t kMostWordsReordered = 4;
 // The stored objects whose name is one content word of the text (or its singular: "spheres" gives
 // sphere), or all of them in any order ("rod bent slightly" for slightly-bent-rod, "ball small" for
 // small-ball; texts of two to kMostWordsReordered content words), each joined as namesOfText joins
-// them: one lookup. The second of each pair: whether the name is the whole text reordered.
+// them: one lookup of at most Store::kMaxNamedLookups spellings. A text of more distinct words
+// than that looks up none: a name is a few words, and a long text's words name many things by
+// chance. The second of each pair: whether the name is the whole text reordered.
 std::vector<std::pair<StoredObject, bool>> objectsNamedByWords(const Store& store, const nlohmann::json& request,
                                                                std::vector<std::string> content) {
   std::vector<std::string> names;
+  std::unordered_set<std::string> listed;
+  const auto list = [&](std::string name) {
+    if (listed.insert(name).second) names.push_back(std::move(name));
+  };
   for (const std::string& w : content) {
-    names.push_back(w);
-    if (w.size() > 3 && w.back() == 's' && w[w.size() - 2] != 's') names.push_back(w.substr(0, w.size() - 1));
+    list(w);
+    if (w.size() > 3 && w.back() == 's' && w[w.size() - 2] != 's') list(w.substr(0, w.size() - 1));
   }
+  if (names.size() > Store::kMaxNamedLookups) return {};
   const size_t singles = names.size();
   if (content.size() >= 2 && content.size() <= kMostWordsReordered) {
     std::sort(content.begin(), content.end());
     do {
-      for (std::string& name : namesOfText(content)) names.push_back(std::move(name));
-    } while (std::next_permutation(content.begin(), content.end()));
+      for (std::string& name : namesOfText(content)) list(std::move(name));
+    } while (std::next_permutation(content.begin(), content.end()) && names.size() < Store::kMaxNamedLookups);
   }
+  if (names.size() > Store::kMaxNamedLookups) names.resize(Store::kMaxNamedLookups);
   if (names.empty()) return {};
   const std::unordered_set<std::string> single(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(singles));
   std::vector<std::pair<StoredObject, bool>> out;
