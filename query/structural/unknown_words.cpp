@@ -187,13 +187,13 @@ KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& voca
   // the text, the other words as chosen so far, reads.
   const std::vector<std::string> correctable = correctableWords(vocabulary);
   std::vector<std::string> choice = leftOut;
-  std::vector<bool> typo(tokens.size(), false);  // unknown to WordNet too: correctable
+  std::vector<bool> typo(tokens.size(), false);  // has corrections and is unknown to WordNet
   size_t tried = 0;
   for (size_t i = 0; i < tokens.size(); ++i) {
     if (!unknown[i] || routed[i]) continue;
     UnknownWord u{tokens[i].text, tokens[i].offset, {}};
     if (tried++ < kCorrectedWords) u.closest = nearestNames(u.word, correctable, 3, plausibleTypoDistance(u.word.size()));
-    typo[i] = !dictionaryWord(u.word);
+    typo[i] = !u.closest.empty() && !dictionaryWord(u.word);  // WordNet asked only where it matters
     if (!u.closest.empty() && typo[i]) choice[i] = u.closest[0];
     reading.unknown.push_back(std::move(u));
   }
