@@ -318,46 +318,42 @@ void rankNamesAmongWords(const Store& store, const nlohmann::json& request, cons
     if (!r.contains("explain") || !r["explain"].is_array()) r["explain"] = nlohmann::json::array();
     r["explain"].push_back(why);
   };
+  // The lookup first, so that each result is marked once, whole or not.
+  const std::vector<std::pair<StoredObject, bool>> found = objectsNamedByWords(store, request, content);
+  std::unordered_set<int64_t> wholeIds;
+  for (const auto& [o, whole] : found)
+    if (whole) wholeIds.insert(o.id);
   for (size_t i = 0; i < results.size(); ++i) {
     const std::string name = results[i].value("name", "");
-    const int n = nameWordsAmong(name, words);
+    const bool whole = wholeIds.count(idOf(results[i])) > 0;
+    const int n = whole ? static_cast<int>(content.size()) : nameWordsAmong(name, words);
     if (n == 0) continue;
     nameWords[i] = n;
-    mark(results[i], name, false);
+    mark(results[i], name, whole);
   }
+  // Objects the answer left out: a whole name comes in at 1; a name among the words can only tie
+  // with the last result, and only where the answer was cut there (not a partial answer, whose
+  // scores are another aggregation's).
   const double lastScore = results.empty() ? 0.0 : results.back().value("score", 0.0);
+  const bool cut = deeper && results.size() >= limit && !answer->value("partial", false);
   std::optional<nlohmann::json> deep;  // the first kNamedTieDepth results, read once if needed
-  for (const auto& [o, whole] : objectsNamedByWords(store, request, content)) {
+  for (const auto& [o, whole] : found) {
+    if (resultAt.count(o.id)) continue;
     const int n = whole ? static_cast<int>(content.size()) : nameWordsAmong(o.name, words);
-    const auto it = resultAt.find(o.id);
-    if (it != resultAt.end()) {
-      if (!whole) continue;  // marked above
-      nlohmann::json& r = results[it->second];
-      if (nameWords[it->second] > 0) r["explain"].erase(r["explain"].size() - 1);  // now whole
-      mark(r, o.name, true);
-      nameWords[it->second] = n;
-      continue;
-    }
     if (whole) {
       results.push_back({{"id", o.id}, {"kind", o.kind}, {"name", o.name}, {"version", o.version}});
-      mark(results.back(), o.name, true);
-      nameWords.push_back(n);
-      resultAt.emplace(o.id, results.size() - 1);
-      continue;
+    } else {
+      if (!cut || n == 0) continue;
+      if (!deep) deep = deeper(kNamedTieDepth);
+      const nlohmann::json& deepResults = (*deep)["results"];
+      const auto at = std::find_if(deepResults.begin(), deepResults.end(),
+                                   [&](const nlohmann::json& r) { return idOf(r) == o.id; });
+      if (at == deepResults.end() || at->value("score", 0.0) < lastScore) continue;
+      results.push_back(*at);
     }
-    // Left out: it can only tie with the last result, and only when the answer was cut there.
-    if (!deeper || results.size() < limit || n == 0) continue;
-    if (!deep) deep = deeper(kNamedTieDepth);
-    for (const nlohmann::json& r : deep->value("results", nlohmann::json::array())) {
-      if (idOf(r) != o.id) continue;
-      if (r.value("score", 0.0) >= lastScore && !answer->value("partial", false)) {
-        results.push_back(r);
-        mark(results.back(), o.name, false);
-        nameWords.push_back(n);
-        resultAt.emplace(o.id, results.size() - 1);
-      }
-      break;
-    }
+    mark(results.back(), o.name, whole);
+    nameWords.push_back(n);
+    resultAt.emplace(o.id, results.size() - 1);
   }
   std::vector<size_t> order(results.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = i;
