@@ -346,8 +346,9 @@ void rankNamesAmongWords(const Store& store, const nlohmann::json& request, cons
       if (!cut || n == 0) continue;
       if (!deep) deep = deeper(kNamedTieDepth);
       const nlohmann::json& deepResults = (*deep)["results"];
+      const int64_t id = o.id;  // a structured binding cannot be captured (C++17)
       const auto at = std::find_if(deepResults.begin(), deepResults.end(),
-                                   [&](const nlohmann::json& r) { return idOf(r) == o.id; });
+                                   [&](const nlohmann::json& r) { return idOf(r) == id; });
       if (at == deepResults.end() || at->value("score", 0.0) < lastScore) continue;
       results.push_back(*at);
     }
