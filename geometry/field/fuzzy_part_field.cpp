@@ -409,15 +409,23 @@ void FuzzyPartField::tightenBoundingBox() const {
     const double rx = cells(b.x - a.x, finest.x), ry = cells(b.y - a.y, finest.y),
                  rz = cells(b.z - a.z, finest.z);
     const double widest = std::max({rx, ry, rz});
-    if (!(widest > 1.0 + 1e-9)) {
+    // The side's midpoint, or NaN where the side has no double strictly inside it: far from the
+    // origin (a part placed at 1e16, where doubles are 2 apart) a side can be wider than the
+    // finest cell and still not split, and halving it would give the same cell back for ever.
+    const auto midpoint = [](double l, double h) {
+      const double m = 0.5 * l + 0.5 * h;
+      return (m > l && m < h) ? m : NAN;
+    };
+    const double m = widest == rx ? midpoint(a.x, b.x) : widest == ry ? midpoint(a.y, b.y) : midpoint(a.z, b.z);
+    if (!(widest > 1.0 + 1e-9) || std::isnan(m)) {
       hullLo = componentMin(hullLo, a);
       hullHi = componentMax(hullHi, b);
       continue;
     }
     Vec3 midLo = b, midHi = a;  // the two halves: [a, midLo] and [midHi, b]
-    if (widest == rx) midLo.x = midHi.x = 0.5 * (a.x + b.x);
-    else if (widest == ry) midLo.y = midHi.y = 0.5 * (a.y + b.y);
-    else midLo.z = midHi.z = 0.5 * (a.z + b.z);
+    if (widest == rx) midLo.x = midHi.x = m;
+    else if (widest == ry) midLo.y = midHi.y = m;
+    else midLo.z = midHi.z = m;
     std::pair<Vec3, Vec3> first{a, midLo}, second{midHi, b};
     if (distance(first) > distance(second)) std::swap(first, second);
     stack.push_back(second);  // popped after the nearer half

@@ -795,6 +795,25 @@ TEST(FuzzyPartFieldTest, BoundingBoxOfAThinBentRodIsNearUpperZero) {
 }
 
 
+// Far from the origin the doubles are wider apart than the finest cell of the tightening (2 apart
+// at 1.2e16, the fuzzer's placement): halving such a side gave the same cell back, and the
+// tightening never ended. It now keeps a side that has no double inside it as a finest cell: the
+// box comes back at once and still holds the part's placed core point.
+TEST(FuzzyPartFieldTest, BoundingBoxOfAPartFarFromTheOriginEnds) {
+  for (const double far : {-1.2099999999999099e16, 3.0e17, 1.0e300}) {
+    FuzzyPart part = thinBentRod();
+    part.tx = FuzzyNumber::crisp(far);
+    part.tz = FuzzyNumber::crisp(90.0);
+    const FuzzyPartField field(part);
+    Vec3 lo, hi;
+    field.boundingBox(&lo, &hi);
+    EXPECT_LE(lo.x, far);
+    EXPECT_GE(hi.x, far);
+    EXPECT_LT(lo.z, 90.0);
+    EXPECT_GT(hi.z, 90.0);
+  }
+}
+
 // Two parts as words make them (the vocabulary's "slightly bent" and "very twisted", "long"):
 // one or two values fuzzy over wide trapezoids, so the enclosure over all of P(0) at a block
 // (boundsOver) leaves many blocks undecided.
