@@ -21,9 +21,9 @@ constexpr double kPi = 3.14159265358979323846;
 
 // The order in which adjectives act (see the header): the shape, then its size and extents, then
 // the deformations (a bend's degree is its angle over the length the extents gave).
-const std::vector<std::string> kOrder = {"squariness", "roundness", "bevelness", "pinchness", "elongation", "size",
-                                         "length",     "width",     "thickness", "height",
-                                         "bendness",   "taperness", "twistness"};
+const std::vector<std::string> kOrder = {"squariness", "roundness", "bevelness", "pinchness", "elongation",
+                                         "slenderness", "flatness", "size",    "length",    "width",
+                                         "thickness",  "height",    "bendness",  "taperness", "twistness"};
 
 bool isExtent(const std::string& descriptor) {
   return descriptor == "length" || descriptor == "width" || descriptor == "thickness" || descriptor == "height";
@@ -52,6 +52,27 @@ void realize(const std::string& descriptor, const FuzzyNumber& d, FuzzyPart* par
       x = std::min(0.98, std::max(0.02, x));
       return x < 0.5 ? 2.0 * x : 1.0 / (2.0 - 2.0 * x);
     });
+  }
+  // The proportions act on B and C (A = a1 is the unit they are measured in): flatness on the
+  // shorter, slenderness on the longer (C on a tie, so "a flat sphere" is squashed along its z axis
+  // and "a long sphere" stretched along it, the axis its bend and taper follow). With the half-lengths
+  // 1 : a2 : a3, slenderness sets the longer to the middle of the three over (1 − d), and flatness
+  // the shorter to (1 − d) times the middle. Slenderness goes first: it leaves the middle at 1 (A),
+  // where flatness then measures from, so "a long flat board" is d_s slender and d_f flat at their
+  // cores (flatness first would measure from a board's width, which slenderness then moves).
+  if (descriptor == "flatness" || descriptor == "slenderness") {
+    const SuperquadricParams now = part->coreRepresentative().params;
+    const bool cLonger = now.a3 >= now.a2;
+    FuzzyNumber* longer = cLonger ? &part->a3 : &part->a2;
+    FuzzyNumber* shorter = cLonger ? &part->a2 : &part->a3;
+    const double longerCore = cLonger ? now.a3 : now.a2, shorterCore = cLonger ? now.a2 : now.a3;
+    if (descriptor == "flatness") {
+      const double middle = std::min(1.0, longerCore);  // of 1, the longer, and the shorter set below it
+      *shorter = mapIncreasing(negate(d), [middle](double x) { return middle * (1.0 + std::max(-0.96, std::min(0.0, x))); });
+    } else {
+      const double middle = std::max(1.0, shorterCore);
+      *longer = mapIncreasing(d, [middle](double x) { return middle / (1.0 - std::min(0.96, std::max(0.0, x))); });
+    }
   }
   const SuperquadricParams core = part->coreRepresentative().params;  // the size so far
   if (descriptor == "bendness") part->kv = scale(d, kPi / (2.0 * core.a1 * core.a3));

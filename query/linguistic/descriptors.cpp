@@ -38,6 +38,13 @@ std::array<double, 3> sortedExtents(const Values& v) {
   return e;
 }
 
+// The half-lengths A : B : C = 1 : a2 : a3, sorted (a1 and the scale cancel in their ratios).
+std::array<double, 3> sortedProportions(const Values& v) {
+  std::array<double, 3> s{1.0, v[kA2], v[kA3]};
+  std::sort(s.begin(), s.end());
+  return s;
+}
+
 double degree(int index, const Values& v) {
   switch (index) {
     case 0: return (sq(v[kEps1]) + sq(v[kEps2])) / 2.0;
@@ -58,6 +65,8 @@ double degree(int index, const Values& v) {
     case 12: return extentDegreeOf(sortedExtents(v)[1]);  // width: the middle one
     case 13: return extentDegreeOf(sortedExtents(v)[0]);  // thickness: the shortest
     case 14: return extentDegreeOf(2.0 * v[kScale] * v[kA1] * v[kA3]);  // height: along the part's own z axis
+    case 15: return 1.0 - sortedProportions(v)[0] / sortedProportions(v)[1];  // flatness: 1 − s1/s2
+    case 16: return 1.0 - sortedProportions(v)[1] / sortedProportions(v)[2];  // slenderness: 1 − s2/s3
     default: return 0.0;
   }
 }
@@ -80,6 +89,8 @@ const Reads& readsOf(int index) {
       // of rising functions rises), so the corners hold their extremes.
       {{kScale, kA1, kA2, kA3}, {}},        {{kScale, kA1, kA2, kA3}, {}},
       {{kScale, kA1, kA2, kA3}, {}},        {{kScale, kA1, kA3}, {}},
+      // The proportions turn where a2 or a3 passes 1 (A) and where they pass each other (below).
+      {{kA2, kA3}, {1.0}},                  {{kA2, kA3}, {1.0}},
   };
   return table[index];
 }
@@ -104,7 +115,7 @@ const std::vector<std::string>& descriptorNames() {
   static const std::vector<std::string> names = {
       "squariness", "roundness", "bevelness",  "pinchness",          "bendness",         "taperness",
       "twistness",  "size",      "elongation", "section-squariness", "section-roundness",
-      "length",     "width",     "thickness",  "height"};
+      "length",     "width",     "thickness",  "height",             "flatness",         "slenderness"};
   return names;
 }
 
@@ -125,8 +136,9 @@ Interval descriptorRange(int index, const PartBox& box) {
     const Interval& r = intervals[p];
     std::vector<double> c{r.lo, r.hi};
     for (double x : reads.critical) addIfInside(&c, r, x);
-    // elongation also turns where a2 = a3 (the sorted order of B and C swaps).
-    if (index == 8) {
+    // elongation, flatness and slenderness also turn where a2 = a3 (the sorted order of B and C
+    // swaps).
+    if (index == 8 || index == 15 || index == 16) {
       const Interval& other = intervals[p == kA2 ? kA3 : kA2];
       addIfInside(&c, r, other.lo);
       addIfInside(&c, r, other.hi);
@@ -180,7 +192,7 @@ std::vector<DescriptorValue> describePart(const FuzzyPart& part) {
       measureLevels.push_back(j);
   }
   for (size_t i = 0; i < names.size(); ++i) {
-    const bool measure = i >= kDescriptorsBeforeMeasures;
+    const bool measure = i >= kDescriptorsBeforeMeasures && i < kDescriptorsBeforeProportions;
     std::vector<double> at;
     std::vector<Interval> cuts;
     for (size_t j = 0; j < levels.size(); ++j) {

@@ -37,6 +37,13 @@
 //                The four are the undeformed part's box: a taper or bend changes them little.
 //                Measures in queries ("about 10 long", "2 across", "3 units tall") are conditions
 //                on them (query/linguistic/linguistic_query.h, measureSet).
+//   flatness    = 1 − s1/s2   how much thinner the part is than it is wide: 0.9 for a plate 10
+//                             times thinner than its side, 0 for a cube or a rod
+//   slenderness = 1 − s2/s3   how much longer the part is than it is wide: 0.9 for a rod 10 times
+//                             longer than across, 0 for a cube or a square plate
+//                (s1 <= s2 <= s3 the sorted half-lengths, as for elongation.) A board 8 × 1 × 0.2
+//                is both (flatness 0.8, slenderness 0.875), where elongation puts it at 0.54,
+//                between a plate and a rod: "long" and "flat" are words on these two.
 // Every function is continuous and piecewise monotone in each parameter.
 //
 // A fuzzy part's descriptor values are fuzzy numbers by the extension principle (Zhang, Pham &
@@ -63,7 +70,7 @@ inline constexpr int kMeasureLevels = 4;
 
 // The descriptor names in index order: "squariness","roundness","bevelness","pinchness",
 // "bendness","taperness","twistness","size","elongation","section-squariness","section-roundness",
-// "length","width","thickness","height".
+// "length","width","thickness","height","flatness","slenderness".
 const std::vector<std::string>& descriptorNames();
 
 // How many descriptors there were before the two section descriptors (vocabulary files of then
@@ -71,6 +78,8 @@ const std::vector<std::string>& descriptorNames();
 inline constexpr size_t kDescriptorsBeforeSections = 9;
 // How many there were before the four measures (length, width, thickness, height).
 inline constexpr size_t kDescriptorsBeforeMeasures = 11;
+// How many there were before the two proportions (flatness, slenderness).
+inline constexpr size_t kDescriptorsBeforeProportions = 15;
 
 // A world-unit extent e as the degree the measure descriptors use: e / (1 + e), 0 for e <= 0.
 double extentDegree(double e);

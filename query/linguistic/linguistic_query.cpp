@@ -128,6 +128,10 @@ bool isExponentShape(const std::string& d) {
          d == "section-roundness";
 }
 
+// The part's proportions: elongation (a noun's default) and the flatness and slenderness that
+// "flat" and "long" say.
+bool isProportion(const std::string& d) { return d == "elongation" || d == "flatness" || d == "slenderness"; }
+
 // Whether two sets over the degrees contradict each other: no degree belongs to both (exactly).
 bool contradicts(const FuzzyNumber& a, const FuzzyNumber& b) { return heightOfIntersection(a, b) == 0.0; }
 
@@ -140,10 +144,12 @@ bool contradicts(const FuzzyNumber& a, const FuzzyNumber& b) { return heightOfIn
 //    condition to be itself ("a round plate" stays flat, "a square disc" too; a box or a sphere is
 //    its exponents' shape, so "a round box" and "a very round box" keep the box's and find the
 //    roundest boxes);
-//  * for the noun's proportions (elongation), words on two or more extents ("a board 8 long and
-//    1 wide", "a thin pole 10 long"), or a dimension adjective with an intensity ("a moderately
-//    long stick": a part made from it takes that length whatever the stick's usual proportions;
-//    a measure alone, "a sphere 2 across", keeps them).
+//  * for the noun's proportions (elongation, flatness, slenderness), words on two or more extents
+//    ("a board 8 long and 1 wide", "a thin pole 10 long"), or a dimension adjective with an
+//    intensity ("a very thin stick": a part made from it takes that thickness whatever the
+//    stick's usual proportions; a measure alone, "a sphere 2 across", keeps them);
+//  * for the noun's elongation, a word on flatness or slenderness ("a long plate" is a plank, not
+//    a square plate: the words' proportions replace the noun's).
 // `graded(c)` says whether a condition states a degree of its own (an intensity, a number or a
 // measure; not a plain adjective).
 bool overriddenByWords(const NounCondition& condition, const Noun& noun, const std::vector<const QueryCondition*>& said,
@@ -155,12 +161,13 @@ bool overriddenByWords(const NounCondition& condition, const Noun& noun, const s
   for (const QueryCondition* c : said) {
     if (c->descriptor == descriptor && (graded(*c) || contradicts(c->set, condition.set))) return true;
     if (isExponentShape(descriptor) && isExponentShape(c->descriptor) && keepsAnother) return true;
+    if (descriptor == "elongation" && (c->descriptor == "flatness" || c->descriptor == "slenderness")) return true;
     if (c->descriptor == "length" || c->descriptor == "width" || c->descriptor == "thickness" || c->descriptor == "height") {
       extents.insert(c->descriptor);
-      if (descriptor == "elongation" && !c->measure && graded(*c)) return true;
+      if (isProportion(descriptor) && !c->measure && graded(*c)) return true;
     }
   }
-  return descriptor == "elongation" && extents.size() >= 2;
+  return isProportion(descriptor) && extents.size() >= 2;
 }
 
 class Parser {

@@ -117,15 +117,16 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
 
   // descriptors: documentation of the code's functions, in the code's order.
   // Files written before the section descriptors document the first nine, files written before
-  // the measures the first eleven; both still load.
+  // the measures the first eleven, files before the proportions the first fifteen; all still load.
   const auto& descriptors = requireArray(requireField(doc, "descriptors", ""), "descriptors");
   if (descriptors.size() != descriptorNames().size() && descriptors.size() != kDescriptorsBeforeSections &&
-      descriptors.size() != kDescriptorsBeforeMeasures)
+      descriptors.size() != kDescriptorsBeforeMeasures && descriptors.size() != kDescriptorsBeforeProportions)
     throw Error(errc::kInvalidDocument,
                 "descriptors must document the " + std::to_string(descriptorNames().size()) +
-                    " descriptors of the code, in order (or the first " + std::to_string(kDescriptorsBeforeMeasures) +
+                    " descriptors of the code, in order (or the first " +
+                    std::to_string(kDescriptorsBeforeProportions) + ", " + std::to_string(kDescriptorsBeforeMeasures) +
                     " or " + std::to_string(kDescriptorsBeforeSections) +
-                    ", as files before the measures and the section descriptors did)",
+                    ", as files before the proportions, the measures and the section descriptors did)",
                 "descriptors");
   for (size_t i = 0; i < descriptors.size(); ++i) {
     const std::string p = joinPath("descriptors", i);

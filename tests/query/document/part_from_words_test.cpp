@@ -57,13 +57,37 @@ TEST(PartFromWords, AdjectivesSetTheirDescriptor) {
   // Plain adjectives take the vocabulary's create set, or their own.
   EXPECT_NEAR(similarity(valueOf(make("a bent rod"), "bendness"), v().plainCreate()), 1.0, 1e-9);
   EXPECT_EQ(make("a straight rod").kv, FuzzyNumber::crisp(0));
-  // Proportions and size: long, flat, small and large move elongation and size the right way.
+  // Proportions and size: long and flat set slenderness and flatness to their create sets or
+  // intensities (and move elongation the right way); small and large move size.
   const double sphereSize = valueOf(make("a sphere"), "size").core().lo;
   EXPECT_GT(valueOf(make("a large sphere"), "size").core().lo, sphereSize);
   EXPECT_LT(valueOf(make("a small sphere"), "size").core().hi, sphereSize);
-  EXPECT_GT(valueOf(make("a long box"), "elongation").core().lo, 0.7);
-  EXPECT_LT(valueOf(make("a flat box"), "elongation").core().hi, 0.15);
-  EXPECT_NEAR(valueOf(make("a very flat box"), "elongation").core().hi, 0.25, 1e-9);  // 1 − the core start of very
+  const FuzzyNumber longSet = *v().adjective("long")->create, flatSet = *v().adjective("flat")->create;
+  // The degree is the create set's at its core and support (exact at the breakpoints; between
+  // them the ratio of linearly interpolated axes is not linear in alpha).
+  const auto expectSet = [](const FuzzyNumber& value, const FuzzyNumber& set, const char* words) {
+    for (double alpha : {0.0, 1.0}) {
+      EXPECT_NEAR(value.alphaCut(alpha).lo, set.alphaCut(alpha).lo, 1e-9) << words << " alpha " << alpha;
+      EXPECT_NEAR(value.alphaCut(alpha).hi, set.alphaCut(alpha).hi, 1e-9) << words << " alpha " << alpha;
+    }
+  };
+  expectSet(valueOf(make("a long box"), "slenderness"), longSet, "a long box");
+  expectSet(valueOf(make("a flat box"), "flatness"), flatSet, "a flat box");
+  const double boxElongation = valueOf(make("a box"), "elongation").core().lo;  // 0.5: a cube
+  EXPECT_GT(valueOf(make("a long box"), "elongation").core().lo, boxElongation + 0.1);
+  EXPECT_LT(valueOf(make("a flat box"), "elongation").core().hi, boxElongation - 0.2);
+  EXPECT_NEAR(valueOf(make("a very flat box"), "flatness").core().lo, 0.75, 1e-9);  // the core start of very
+  EXPECT_NEAR(valueOf(make("a very flat box"), "flatness").core().hi, 0.96, 1e-9);  // very's 1, clamped
+  // Both on one part, whichever axis the noun has longest: each is its own set.
+  for (const char* words : {"a long flat box", "a flat long box", "a long flat board", "a long flat disc"}) {
+    const FuzzyPart part = make(words);
+    expectSet(valueOf(part, "slenderness"), longSet, words);
+    expectSet(valueOf(part, "flatness"), flatSet, words);
+  }
+  // A board is long and flat without the words; "a flat board" keeps its length.
+  EXPECT_GT(valueOf(make("a board"), "slenderness").core().lo, 0.6);
+  EXPECT_GT(valueOf(make("a board"), "flatness").core().lo, 0.6);
+  EXPECT_NEAR(valueOf(make("a flat board"), "slenderness").core().lo, valueOf(make("a board"), "slenderness").core().lo, 1e-12);
 }
 
 // A part made from words is found by the same words.

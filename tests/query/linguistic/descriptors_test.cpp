@@ -26,9 +26,11 @@ TEST(Descriptors, NamesInIndexOrder) {
   EXPECT_EQ(descriptorNames(), (std::vector<std::string>{"squariness", "roundness", "bevelness", "pinchness",
                                                           "bendness", "taperness", "twistness", "size",
                                                           "elongation", "section-squariness", "section-roundness",
-                                                          "length", "width", "thickness", "height"}));
+                                                          "length", "width", "thickness", "height",
+                                                          "flatness", "slenderness"}));
   EXPECT_EQ(descriptorIndex("section-roundness"), 10);
-  EXPECT_EQ(descriptorNames().size(), kDescriptorsBeforeSections + 2 + 4);
+  EXPECT_EQ(descriptorNames().size(), kDescriptorsBeforeSections + 2 + 4 + 2);
+  EXPECT_EQ(kDescriptorsBeforeProportions, kDescriptorsBeforeMeasures + 4);
   EXPECT_EQ(kDescriptorsBeforeMeasures, kDescriptorsBeforeSections + 2);
   EXPECT_EQ(descriptorIndex("bendness"), 4);
   EXPECT_EQ(descriptorIndex("bentness"), -1);
@@ -228,6 +230,48 @@ TEST(Descriptors, MeasuresAreTheExtentsInWorldUnits) {
   const Interval length = descriptorRange(descriptorIndex("length"), box);
   EXPECT_DOUBLE_EQ(length.lo, extentDegree(4));
   EXPECT_DOUBLE_EQ(length.hi, extentDegree(6));
+}
+
+// The proportions: flatness = 1 − s1/s2 and slenderness = 1 − s2/s3 of the sorted half-lengths,
+// whatever the axis order, the size or the scale. A board is both, where elongation puts it
+// between a plate and a rod.
+TEST(Descriptors, ProportionsSayFlatAndLong) {
+  const auto part = [](double a1, double a2, double a3, double scale) {
+    PlacedSuperquadric p;
+    p.params.a1 = a1;
+    p.params.a2 = a2;
+    p.params.a3 = a3;
+    p.placement.scale = scale;
+    return p;
+  };
+  const PlacedSuperquadric board = part(4, 0.125, 0.025, 1);  // 8 x 1 x 0.2
+  EXPECT_DOUBLE_EQ(degreeOf("flatness", board), 1 - 0.2 / 1.0);
+  EXPECT_DOUBLE_EQ(degreeOf("slenderness", board), 1 - 1.0 / 8.0);
+  EXPECT_NEAR(degreeOf("elongation", board), 0.5375, 1e-12);
+  const PlacedSuperquadric rod = part(0.2, 1, 10, 3);  // a round section ten times shorter
+  EXPECT_DOUBLE_EQ(degreeOf("flatness", rod), 0.0);
+  EXPECT_DOUBLE_EQ(degreeOf("slenderness", rod), 0.9);
+  const PlacedSuperquadric plate = part(1, 1, 0.1, 0.5);
+  EXPECT_DOUBLE_EQ(degreeOf("flatness", plate), 0.9);
+  EXPECT_DOUBLE_EQ(degreeOf("slenderness", plate), 0.0);
+  const PlacedSuperquadric cube = part(2, 1, 1, 1);
+  EXPECT_DOUBLE_EQ(degreeOf("flatness", cube), 0.0);
+  EXPECT_DOUBLE_EQ(degreeOf("slenderness", cube), 0.0);
+  // The same board along another axis order (its length on B, its thickness on A).
+  const PlacedSuperquadric turned = part(0.1, 40, 5, 1);  // 0.2 x 8 x 1
+  EXPECT_DOUBLE_EQ(degreeOf("flatness", turned), degreeOf("flatness", board));
+  EXPECT_DOUBLE_EQ(degreeOf("slenderness", turned), degreeOf("slenderness", board));
+  // Over a box where a2 and a3 pass each other and 1, the range is found exactly: slenderness
+  // is 0 where a2 = a3 = 1 is in the box, and its largest where a3 is longest over a2 near 1.
+  PartBox box = crispPartBox(PlacedSuperquadric{});
+  box.params.a2 = Interval{0.5, 2};
+  box.params.a3 = Interval{0.8, 4};
+  const Interval slender = descriptorRange(descriptorIndex("slenderness"), box);
+  EXPECT_DOUBLE_EQ(slender.lo, 0.0);
+  EXPECT_DOUBLE_EQ(slender.hi, 1 - 1.0 / 4.0);
+  const Interval flat = descriptorRange(descriptorIndex("flatness"), box);
+  EXPECT_DOUBLE_EQ(flat.lo, 0.0);
+  EXPECT_DOUBLE_EQ(flat.hi, 1 - 0.5 / 1.0);
 }
 
 // A fuzzy extent's set over the degrees: the image of its cuts, exact at each level.

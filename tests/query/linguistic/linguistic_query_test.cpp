@@ -111,8 +111,17 @@ TEST(LinguisticQuery, NounsAreDefaultsTheWordsOverride) {
   EXPECT_EQ(descriptorsOfNoun("a moderately tapered pyramid"), (std::vector<std::string>{"squariness"}));
   EXPECT_EQ(descriptorsOfNoun("a tapered pyramid"), (std::vector<std::string>{"squariness", "taperness"}));
   // A dimension adjective with an intensity sets the proportions; a plain one does not.
+  EXPECT_EQ(descriptorsOfNoun("a very thin stick"), std::vector<std::string>{"roundness"});
+  EXPECT_EQ(descriptorsOfNoun("a thin stick"), (std::vector<std::string>{"roundness", "elongation"}));
+  // Words on the proportions themselves (long, flat) replace the noun's elongation, plain or not:
+  // "a long plate" is a plank, long and flat, not a square plate.
   EXPECT_EQ(descriptorsOfNoun("a moderately long stick"), std::vector<std::string>{"roundness"});
-  EXPECT_EQ(descriptorsOfNoun("a long stick"), (std::vector<std::string>{"roundness", "elongation"}));
+  EXPECT_EQ(descriptorsOfNoun("a long stick"), std::vector<std::string>{"roundness"});
+  EXPECT_EQ(descriptorsOfNoun("a long plate"), std::vector<std::string>{"squariness"});
+  EXPECT_EQ(descriptorsOfNoun("a flat sphere"), std::vector<std::string>{"roundness"});
+  // A board is its own noun: square-edged, flat and long; "a long board" agrees with it.
+  EXPECT_EQ(descriptorsOfNoun("a bent plank"), (std::vector<std::string>{"squariness", "flatness", "slenderness"}));
+  EXPECT_EQ(descriptorsOfNoun("a long board"), (std::vector<std::string>{"squariness", "flatness", "slenderness"}));
   // Words on two extents set the proportions; one does not.
   EXPECT_EQ(descriptorsOfNoun("a plate 8 long and 1 wide"), std::vector<std::string>{"squariness"});
   EXPECT_EQ(descriptorsOfNoun("a sphere 2 across"), (std::vector<std::string>{"roundness", "elongation"}));
@@ -252,7 +261,9 @@ TEST(LinguisticQuery, NounConditions) {
 TEST(LinguisticQuery, PlainAndLowPoleAdjectives) {
   expectLeaf(parse("find a bent shape").root, "bendness", v().plain(), "bent");
   const FuzzyNumber mirroredPlain = add(negate(v().plain()), FuzzyNumber::crisp(1));
-  expectLeaf(parse("find a flat shape").root, "elongation", mirroredPlain, "flat");
+  expectLeaf(parse("find a narrow shape").root, "width", mirroredPlain, "narrow");
+  expectLeaf(parse("find a flat shape").root, "flatness", v().plain(), "flat");
+  expectLeaf(parse("find a long shape").root, "slenderness", v().plain(), "long");
   const FuzzyNumber mirroredVery = add(negate(*v().intensity("very")), FuzzyNumber::crisp(1));
   expectLeaf(parse("find a very small part").root, "size", mirroredVery, "very small");
   EXPECT_EQ(mirroredVery.membership(0.1), 1.0);

@@ -94,14 +94,19 @@ TEST(Vocabulary, IntensitiesAreMonotone) {
 // (the intensity's, else the adjective's own create as written, else the intensities' create).
 TEST(Vocabulary, PlainAndCreatedSetsOfAnAdjective) {
   const Adjective& bent = *v().adjective("bent");
+  const Adjective& narrow = *v().adjective("narrow");
   const Adjective& flat = *v().adjective("flat");
   const Adjective& straight = *v().adjective("straight");
   EXPECT_EQ(v().plainSet(bent), v().plain());
-  EXPECT_DOUBLE_EQ(v().plainSet(flat).membership(0.2), 0.8);  // 1 − d
+  EXPECT_DOUBLE_EQ(v().plainSet(narrow).membership(0.2), 0.8);  // 1 − d
   EXPECT_EQ(v().createdSet(bent, nullptr), v().plainCreate());
   EXPECT_EQ(v().createdSet(bent, v().intensity("very")), *v().intensity("very"));
-  EXPECT_EQ(v().createdSet(flat, nullptr), *flat.create);     // its own, not mirrored
-  EXPECT_DOUBLE_EQ(v().createdSet(flat, v().intensity("very")).membership(0.1), 1.0);  // very, mirrored
+  EXPECT_EQ(v().createdSet(narrow, nullptr), *narrow.create);     // its own, not mirrored
+  EXPECT_DOUBLE_EQ(v().createdSet(narrow, v().intensity("very")).membership(0.1), 1.0);  // very, mirrored
+  // "flat" is the high end of flatness: its sets are not mirrored.
+  EXPECT_EQ(flat.descriptor, "flatness");
+  EXPECT_EQ(v().plainSet(flat), v().plain());
+  EXPECT_EQ(v().createdSet(flat, nullptr), *flat.create);
   EXPECT_EQ(v().createdSet(straight, nullptr), FuzzyNumber::crisp(0));
   // Sizes to the huge end: huge, enormous and giant make the same set, above big's core.
   for (const char* word : {"huge", "enormous", "giant"}) {
@@ -151,7 +156,9 @@ TEST(Vocabulary, LookupsResolvePluralsAndSameAs) {
   EXPECT_EQ(v().noun("shape")->subject, "any");
   EXPECT_EQ(v().noun("parts")->subject, "part");
   EXPECT_EQ(v().noun("gizmo"), nullptr);
-  EXPECT_TRUE(v().adjective("flat")->lowPole);
+  EXPECT_TRUE(v().adjective("narrow")->lowPole);
+  EXPECT_FALSE(v().adjective("flat")->lowPole);
+  EXPECT_EQ(v().noun("planks")->word, "board");
   EXPECT_FALSE(v().adjective("bent")->lowPole);
   EXPECT_EQ(v().direction("above")->word, "top");
   EXPECT_NE(v().distance("close"), nullptr);
@@ -326,7 +333,20 @@ TEST(Vocabulary, SectionsAndHoles) {
   auto doc = builtinDocument();
   doc.erase("sections");
   doc.erase("holes");
-  // A file of then documents the first nine descriptors; one written before the measures, eleven.
+  // A file of then documents the first nine descriptors; one written before the measures, eleven;
+  // one written before the proportions, fifteen (with "long" and "flat" on elongation then).
+  auto beforeProportions = builtinDocument();
+  while (beforeProportions["descriptors"].size() > kDescriptorsBeforeProportions)
+    beforeProportions["descriptors"].erase(beforeProportions["descriptors"].size() - 1);
+  beforeProportions["adjectives"]["long"]["descriptor"] = "elongation";
+  beforeProportions["adjectives"]["elongated"]["descriptor"] = "elongation";
+  beforeProportions["adjectives"]["flat"]["descriptor"] = "elongation";
+  beforeProportions["nouns"].erase("board");
+  beforeProportions["nouns"].erase("plank");
+  EXPECT_NO_THROW(Vocabulary::fromJson(beforeProportions));
+  auto fourteen = beforeProportions;
+  fourteen["descriptors"].erase(fourteen["descriptors"].size() - 1);
+  EXPECT_NE(loadError(fourteen, nullptr).find("descriptors must document"), std::string::npos);
   auto beforeMeasures = builtinDocument();
   while (beforeMeasures["descriptors"].size() > kDescriptorsBeforeMeasures)
     beforeMeasures["descriptors"].erase(beforeMeasures["descriptors"].size() - 1);
