@@ -435,6 +435,27 @@ nlohmann::json searchText(const Store& store, const nlohmann::json& request, con
   return answer;
 }
 
+// The stored objects named by the text as it was read around its unknown words (readAround-
+// UnknownWords' "read_text": without them, or corrected), as named results: "a hockey puck" is
+// read as "a puck", and the object named puck is what that names, as it would be for "a puck".
+// Scored 1 times the reading's discount (its routed words'); none where a run of the text was
+// read (a fragment of it names less than the text).
+nlohmann::json objectsNamedAsRead(const Store& store, const nlohmann::json& request, const nlohmann::json& answer) {
+  if (!answer.contains("read_text") || !answer["read_text"].is_string() || answer.contains("run_discount"))
+    return nlohmann::json::array();
+  double discount = 1.0;
+  if (answer.contains("routed") && answer["routed"].is_array())
+    for (const nlohmann::json& r : answer["routed"]) discount *= r.value("discount", 1.0);
+  const std::string& read = answer["read_text"].get_ref<const std::string&>();
+  nlohmann::json named = objectsNamed(store, request, wordsOfText(read, activeVocabulary()));
+  for (nlohmann::json& n : named) {
+    n["score"] = discount;
+    n["explain"] = {{{"text", "the name '" + n.value("name", "") + "', the words read ('" + read + "')"},
+                     {"score", discount}}};
+  }
+  return named;
+}
+
 // How surely a run of a text's words (KnownWordsReading::window) says what the text means, before
 // the share of the text the run holds: below kDescribedScore, so that an object whose own words
 // hold every word of the text comes before the meaning of a fragment of it, whatever the share.
@@ -583,7 +604,9 @@ nlohmann::json queryResponse(const Store& store, const nlohmann::json& request,
       nlohmann::json answer =
           readAroundUnknownWords(store, request, text, reading, refused, linguisticLimits, csgLimits, graphs);
       rankNamesAmongWords(store, request, words, &answer, limit);
-      putWordMatches(&answer, nearly, byWords, limit);
+      nlohmann::json names = objectsNamedAsRead(store, request, answer);
+      for (const nlohmann::json& n : nearly) names.push_back(n);
+      putWordMatches(&answer, names, byWords, limit);
       return answer;
     } catch (const Error& unread) {
       if (unread.code() != errc::kInvalidParameter || unread.path() != "text") throw;

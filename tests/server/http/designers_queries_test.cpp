@@ -466,6 +466,20 @@ TEST(DesignersQueries, NamesTheTextNearlyHoldsFindTheirObjectFirst) {
   auto dots = server.post("/query", json{{"text", "a sphere with purple dots"}});
   ASSERT_EQ(dots.status, 200) << dots.body;
   for (const json& r : dots.json["results"]) EXPECT_FALSE(r.contains("named")) << r;
+  // A text read without its unknown words names what the words read name: "a purple sphere" is
+  // read as "a sphere", and the part named sphere comes first at 1, as it does for "a sphere".
+  for (const char* text : {"a purple sphere", "sphere of purple"}) {
+    auto read = server.post("/query", json{{"text", text}, {"limit", 3}});
+    ASSERT_EQ(read.status, 200) << text << " " << read.body;
+    ASSERT_FALSE(read.json["ignored"].empty()) << text;
+    ASSERT_FALSE(read.json["results"].empty()) << text;
+    EXPECT_EQ(read.json["results"][0]["name"], "sphere") << text;
+    EXPECT_EQ(read.json["results"][0]["named"], true) << text;
+    EXPECT_EQ(read.json["results"][0]["score"], 1.0) << text;
+    EXPECT_NE(read.json["results"][0]["explain"][0]["text"].get<std::string>().find("the words read"),
+              std::string::npos) << read.body;
+    for (size_t i = 1; i < read.json["results"].size(); ++i) EXPECT_NE(read.json["results"][i]["name"], "sphere");
+  }
   // The kind asked for holds.
   auto shapes = server.post("/query", json{{"text", "snowmn"}, {"kind", "part"}});
   EXPECT_EQ(shapes.status, 422) << shapes.body;
