@@ -21,7 +21,8 @@ constexpr double kPi = 3.14159265358979323846;
 
 // The order in which adjectives act (see the header): the shape, then its size and extents, then
 // the deformations (a bend's degree is its angle over the length the extents gave).
-const std::vector<std::string> kOrder = {"squariness", "roundness", "bevelness", "pinchness", "elongation",
+const std::vector<std::string> kOrder = {"squariness", "roundness", "bevelness", "pinchness",
+                                         "section-squariness", "section-roundness", "elongation",
                                          "slenderness", "flatness", "size",    "length",    "width",
                                          "thickness",  "height",    "bendness",  "taperness", "twistness"};
 
@@ -46,6 +47,9 @@ void realize(const std::string& descriptor, const FuzzyNumber& d, FuzzyPart* par
   if (descriptor == "roundness") part->eps1 = part->eps2 = affine(d, 0.95, 0.05);
   if (descriptor == "bevelness") part->eps1 = part->eps2 = affine(d, 1.0, 1.0);
   if (descriptor == "pinchness") part->eps1 = part->eps2 = affine(d, 2.0, 2.0);
+  // The traverse section alone (eps2), after the whole shape: "a round box with a square section".
+  if (descriptor == "section-squariness") part->eps2 = affine(d, -0.95, 1.0);
+  if (descriptor == "section-roundness") part->eps2 = affine(d, 0.95, 0.05);
   if (descriptor == "elongation") {
     part->a2 = FuzzyNumber::crisp(1.0);
     part->a3 = mapIncreasing(d, [](double x) {
@@ -184,9 +188,13 @@ FuzzyPart partFromWords(const std::string& text, const Vocabulary& vocabulary) {
                 "text");
   FuzzyPart part = parsePart({{"params", words.noun->params}}, "");
   std::vector<AdjectiveUse> uses = words.adjectives;
-  std::stable_sort(uses.begin(), uses.end(), [](const AdjectiveUse& a, const AdjectiveUse& b) {
-    return std::find(kOrder.begin(), kOrder.end(), a.adjective->descriptor) <
-           std::find(kOrder.begin(), kOrder.end(), b.adjective->descriptor);
+  // An outline adjective on a flat noun sets its section ("a round plate": eps2).
+  const auto descriptorOf = [&](const AdjectiveUse& use) -> const std::string& {
+    return vocabulary.descriptorOn(*use.adjective, words.noun);
+  };
+  std::stable_sort(uses.begin(), uses.end(), [&](const AdjectiveUse& a, const AdjectiveUse& b) {
+    return std::find(kOrder.begin(), kOrder.end(), descriptorOf(a)) <
+           std::find(kOrder.begin(), kOrder.end(), descriptorOf(b));
   });
   // Extents from adjectives ("a thin rod": a degree, read back through e = d / (1 − d)) and
   // measures ("about 10 long", which win over an adjective of the same extent), set together
@@ -201,18 +209,19 @@ FuzzyPart partFromWords(const std::string& text, const Vocabulary& vocabulary) {
   };
   for (const AdjectiveUse& use : uses) {
     const Adjective& a = *use.adjective;
+    const std::string& descriptor = descriptorOf(use);
     const FuzzyNumber d = vocabulary.createdSet(a, use.intensity);
-    const bool deformation = std::find(kOrder.begin(), kOrder.end(), a.descriptor) >=
+    const bool deformation = std::find(kOrder.begin(), kOrder.end(), descriptor) >=
                              std::find(kOrder.begin(), kOrder.end(), "bendness");
     if (deformation) setExtents();
-    if (isExtent(a.descriptor)) {
-      extents[a.descriptor] = mapIncreasing(d, [](double x) {
+    if (isExtent(descriptor)) {
+      extents[descriptor] = mapIncreasing(d, [](double x) {
         x = std::min(0.98, std::max(0.02, x));
         return x / (1.0 - x);
       });
       continue;
     }
-    realize(a.descriptor, d, &part);
+    realize(descriptor, d, &part);
   }
   setExtents();
   try {

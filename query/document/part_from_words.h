@@ -5,7 +5,10 @@
 // the descriptor function (the "create" rules of schema/vocabulary.json):
 //   squariness  eps1 = eps2 = 1 − 0.95·d      roundness  eps1 = eps2 = 0.05 + 0.95·d
 //   bevelness   eps1 = eps2 = 1 + d            pinchness  eps1 = eps2 = 2 + 2·d
+//   section-squariness  eps2 = 1 − 0.95·d     section-roundness  eps2 = 0.05 + 0.95·d
 //   elongation  a2 = 1, a3 = 2d (d < 1/2) or 1 / (2 − 2d), d clamped to [0.02, 0.98]
+//   slenderness the longer of B, C = the middle half-length / (1 − d), d clamped to [0, 0.96]
+//   flatness    the shorter of B, C = (1 − d) · the middle half-length, d clamped to [0, 0.96]
 //   bendness    kv = d·π / (2C)                taperness  kx = ky = −d (narrowing towards +z)
 //   twistness   t = π·d
 //   size        transform.scale = (d / (1 − d)) / L, d clamped to [0.05, 0.95]
@@ -15,7 +18,7 @@
 //               is which; an axis as long as a measured one follows it; height is C)
 // with C and L (query/linguistic/descriptors.h) of the part so far (core midpoints). The degree d is the
 // intensity's set ("slightly bent": `slightly`), else the adjective's own "create", else the
-// vocabulary's plain "create" set; low-pole adjectives ("flat", "small") mirror the intensity and
+// vocabulary's plain "create" set; low-pole adjectives ("narrow", "small") mirror the intensity and
 // plain sets (d → 1 − d; an adjective's own "create" is its degree as written). Adjectives act in
 // the order shape, proportions, size, extents, deformations, whatever their order in the text,
 // so a bend is measured on the final length; measures override an adjective of the same extent. Affine rules are exact; elongation and

@@ -626,6 +626,10 @@ class Parser {
         clause.push_back(condition());
       }
     }
+    // Outline adjectives describe a flat noun's outline, its traverse section ("a round plate",
+    // "a plate that is not square"); elsewhere they keep their descriptor.
+    for (std::vector<QueryCondition>* said : {&parts, &clause})
+      for (QueryCondition& c : *said) turnOutlines(&c, noun);
     if (!noun.conditions.empty()) {
       // Nouns are defaults: a condition the words state themselves may replace the noun's on the
       // same quality (overriddenByWords): "a round plate" is round, not square.
@@ -771,7 +775,20 @@ class Parser {
       descriptor = *section;
       pos_ += k;
     }
-    return descriptorCondition(descriptor, set, span(start, pos_));
+    QueryCondition c = descriptorCondition(descriptor, set, span(start, pos_));
+    c.outline = adjective.outline && sectionWord.empty();
+    return c;
+  }
+
+  // Every outline leaf of `c` resolved for `noun` (Vocabulary::descriptorOn): on the section's
+  // descriptor where the noun is flat, on its own elsewhere; either way no longer pending.
+  void turnOutlines(QueryCondition* c, const Noun& noun) const {
+    if (c->kind == Kind::kDescriptor && c->outline) {
+      if (noun.flat)
+        if (const std::string* section = v_.sectionDescriptor(c->descriptor)) c->descriptor = *section;
+      c->outline = false;
+    }
+    for (QueryCondition& child : c->children) turnOutlines(&child, noun);
   }
 
   // The adjectives whose descriptor has a section descriptor ("round", "square", ...).

@@ -87,6 +87,9 @@ struct QueryCondition {
   // relative clause).
   std::string noun;
   bool nounPhrase = false;
+  // An outline adjective's condition ("round", "square": Adjective::outline) not yet turned onto
+  // a flat noun's section (Vocabulary::descriptorOn): the noun phrase turns it once its noun is read.
+  bool outline = false;
   // A measure ("about 10 long", "a radius of 1"): the extent it asks for in world units (a
   // radius already doubled) and `set` its image over the descriptor's degrees (extentDegreeSet).
   std::optional<FuzzyNumber> measure;

@@ -115,6 +115,9 @@ class Printer {
         for (const std::string& section : v_.sectionWords())
           for (const char* article : {"", "a ", "an "})
             if (article + words + " " + section == text) return words + " " + section;
+        // An outline adjective as written turned onto a flat noun's section ("a round plate"):
+        // only its noun phrase turns it, so the same words next to the same noun read the same.
+        if (a.outline && words == text) return words;
         if (first.empty()) first = words + " " + v_.sectionWords().front();
       }
     }

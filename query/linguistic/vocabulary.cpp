@@ -161,7 +161,7 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
   for (auto it = adjectives.begin(); it != adjectives.end(); ++it) {
     const std::string p = joinPath("adjectives", it.key());
     const auto& a = requireObject(it.value(), p);
-    rejectUnknownKeys(a, p, {"descriptor", "pole", "create"});
+    rejectUnknownKeys(a, p, {"descriptor", "pole", "create", "outline"});
     Adjective adj;
     adj.word = it.key();
     adj.descriptor = checkedDescriptor(requireField(a, "descriptor", p), joinPath(p, "descriptor"));
@@ -172,6 +172,11 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
       adj.lowPole = pole == "low";
     }
     if (a.contains("create")) adj.create = parseDegreeSet(a["create"], joinPath(p, "create"));
+    if (a.contains("outline")) {
+      if (!a["outline"].is_boolean())
+        throw Error(errc::kInvalidDocument, "outline must be true or false", joinPath(p, "outline"));
+      adj.outline = a["outline"].get<bool>();
+    }
     v.adjectives_[adj.word] = adj;
   }
 
@@ -204,7 +209,14 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
         return descriptorIndex(a.descriptor) < descriptorIndex(b.descriptor);
       });
     }
-    if (n.contains("params")) noun.params = requireObject(n["params"], joinPath(p, "params"));
+    if (n.contains("params")) {
+      noun.params = requireObject(n["params"], joinPath(p, "params"));
+      const auto axis = [&](const char* key) {
+        const nlohmann::json& x = noun.params.contains(key) ? noun.params[key] : nlohmann::json(1.0);
+        return x.is_number() ? x.get<double>() : 1.0;  // a fuzzy axis: parts from words check it
+      };
+      noun.flat = axis("a3") < kFlatNounRatio * std::min(1.0, axis("a2"));
+    }
     if (n.contains("pronoun")) {
       if (!n["pronoun"].is_boolean())
         throw Error(errc::kInvalidDocument, "pronoun must be true or false", joinPath(p, "pronoun"));
@@ -284,6 +296,13 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
       v.sectionDescriptors_[it.key()] = to;
     }
   }
+  // An outline adjective turns onto its descriptor's section descriptor: it needs one.
+  for (const auto& [word, adjective] : v.adjectives_)
+    if (adjective.outline && !v.sectionDescriptor(adjective.descriptor))
+      throw Error(errc::kInvalidDocument,
+                  "outline needs a descriptor with a section descriptor (sections.descriptors); '" +
+                      adjective.descriptor + "' has none",
+                  joinPath(joinPath("adjectives", word), "outline"));
 
   // Optional: vocabulary files written before requests were data still load.
   if (doc.contains("requests")) {

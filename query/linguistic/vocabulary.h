@@ -13,8 +13,10 @@
 //                 "very bent" is the term `very` over bendness; plain "bent" searches with `plain`
 //                 (μ(d) = d: plainSet) and a part made from it takes `create` (createdSet).
 //   hedges        {"not": text}: `not X` scores 1 − score(X) (query/linguistic/linguistic_query.h).
-//   adjectives    {word: {descriptor, pole: "high"|"low", create: fuzzy number}}: a low-pole
-//                 adjective ("flat", "small", "straight") mirrors its sets, d → 1 − d.
+//   adjectives    {word: {descriptor, pole: "high"|"low", create: fuzzy number, outline: bool}}: a
+//                 low-pole adjective ("small", "narrow", "straight") mirrors its sets, d → 1 − d; an
+//                 outline adjective ("round", "square") describes a flat noun's outline, its traverse
+//                 section (descriptorOn), where the descriptor has a section descriptor.
 //   nouns         {word: {subject: "any"|"part", plural, conditions{descriptor: fuzzy set},
 //                 params{a part's params for parts from words}, pronoun: true for words such as
 //                 "something" that take their adjectives after them} or {same_as: word, plural}.
@@ -52,8 +54,9 @@ namespace fsdb {
 struct Adjective {
   std::string word;
   std::string descriptor;
-  bool lowPole = false;                // the adjective names the low end ("flat", "small")
+  bool lowPole = false;                // the adjective names the low end ("small", "narrow")
   std::optional<FuzzyNumber> create;   // the degree of a part made from the plain adjective
+  bool outline = false;                // on a flat noun it says the outline: descriptorOn
 };
 
 struct NounCondition {
@@ -67,7 +70,12 @@ struct Noun {
   std::vector<NounCondition> conditions;   // empty: no constraint ("shape")
   nlohmann::json params;                   // null for nouns without a shape ("shape", "part")
   bool pronoun = false;                    // takes its adjectives after it: "something twisted"
+  // Whether the noun lies flat on its own z axis: its params' C is under kFlatNounRatio of the
+  // shorter of A and B (a plate, a disc, a board; not a dome). Its outline is its traverse
+  // section, which outline adjectives then describe ("a round plate": descriptorOn).
+  bool flat = false;
 };
+inline constexpr double kFlatNounRatio = 0.4;
 
 // A direction of Zhang, Pham & Chen, §2.2: a set over beta (XZ plane, degrees, period 360) and/or
 // one over gamma (angle from the top, 0..180).
@@ -123,6 +131,14 @@ class Vocabulary {
   // the section an adjective's descriptor turns into after them (nullptr: none; "with squarish
   // traverse section" reads squariness as section-squariness).
   const std::vector<std::string>& sectionWords() const { return sectionWords_; }
+  // The descriptor an adjective's condition is on when it describes `noun` (null: none said): the
+  // section descriptor for an outline adjective and a flat noun ("a round plate" is round in
+  // outline, its traverse section: section-roundness; "a round ball" is roundness), else its own.
+  const std::string& descriptorOn(const Adjective& adjective, const Noun* noun) const {
+    if (adjective.outline && noun && noun->flat)
+      if (const std::string* section = sectionDescriptor(adjective.descriptor)) return *section;
+    return adjective.descriptor;
+  }
   const std::string* sectionDescriptor(const std::string& descriptor) const {
     auto it = sectionDescriptors_.find(descriptor);
     return it == sectionDescriptors_.end() ? nullptr : &it->second;

@@ -152,6 +152,37 @@ TEST(PartFromWords, MeasuresSetTheExtents) {
   EXPECT_GT(thin.score, 0.8);
 }
 
+// Words on the traverse section set eps2 alone ("a cylindrical box" keeps the box's eps1, so its
+// ends stay flat), after the whole shape's words. They set nothing before: the part was the box.
+TEST(PartFromWords, SectionWordsSetTheSectionAlone) {
+  const FuzzyPart box = make("a box"), cylindrical = make("a cylindrical box");
+  EXPECT_EQ(cylindrical.eps1, box.eps1);
+  EXPECT_NE(cylindrical.eps2, box.eps2);
+  // The same rule as roundness's (0.05 + 0.95·d), on eps2 alone: the same degrees.
+  EXPECT_NEAR(similarity(valueOf(cylindrical, "section-roundness"), valueOf(make("a round box"), "roundness")), 1.0,
+              1e-9);
+  EXPECT_NEAR(similarity(valueOf(make("a very tubular box"), "section-roundness"),
+                         valueOf(make("a very round box"), "roundness")),
+              1.0, 1e-9);
+  // A section word acts after a word on the whole shape, whatever the text's order.
+  EXPECT_EQ(make("a cylindrical square box").eps2, cylindrical.eps2);
+  EXPECT_EQ(make("a cylindrical square box").eps1, make("a square box").eps1);
+}
+
+// On a flat noun "round" and "square" make the outline: a round plate is a plate with a round
+// section and flat faces (eps1 kept), found by the same words.
+TEST(PartFromWords, OutlineWordsOnAFlatNounSetItsSection) {
+  const FuzzyPart plate = make("a plate"), round = make("a round plate");
+  EXPECT_EQ(round.eps1, plate.eps1);
+  EXPECT_EQ(round.eps2, make("a cylindrical plate").eps2);  // section-roundness said outright
+  EXPECT_EQ(round.a3, plate.a3);
+  EXPECT_GT(valueOf(round, "section-roundness").core().lo, valueOf(plate, "section-roundness").core().hi + 0.3);
+  EXPECT_EQ(make("a square disc").eps1, make("a disc").eps1);
+  // A ball's "round" is still the whole shape's.
+  EXPECT_EQ(make("a round ball").eps1, make("a round ball").eps2);
+  EXPECT_NE(make("a round ball").eps1, make("a ball").eps1);
+}
+
 TEST(PartFromWords, AdjectivesActInATableOrder) {
   // The bend is measured on the final length: "bent long" equals "long bent".
   const FuzzyPart a = make("a slightly bent long rod"), b = make("a long slightly bent rod");

@@ -101,6 +101,25 @@ TEST(LinguisticQuery, NounsAreDefaultsTheWordsOverride) {
   // A plate stays flat when it is round; a disc stays flat when square.
   EXPECT_EQ(descriptorsOfNoun("a round plate"), std::vector<std::string>{"elongation"});
   EXPECT_EQ(descriptorsOfNoun("a square disc"), std::vector<std::string>{"elongation"});
+  // And "round" and "square" say a flat noun's outline, its traverse section, before or after it
+  // and under "not"; on a ball, a box or no noun they say the whole shape.
+  const auto leafDescriptors = [](const std::string& text) {
+    std::vector<std::string> out;
+    for (const QueryCondition& leaf : leavesOf(parse(text).root))
+      if (leaf.noun.empty() && leaf.text.find(':') == std::string::npos) out.push_back(leaf.descriptor);
+    return out;
+  };
+  EXPECT_EQ(leafDescriptors("a round plate"), std::vector<std::string>{"section-roundness"});
+  EXPECT_EQ(leafDescriptors("a big round plate"), (std::vector<std::string>{"size", "section-roundness"}));
+  EXPECT_EQ(leafDescriptors("plate round big thin"),
+            (std::vector<std::string>{"section-roundness", "size", "thickness"}));
+  EXPECT_EQ(leafDescriptors("a square disc"), std::vector<std::string>{"section-squariness"});
+  EXPECT_EQ(leafDescriptors("a board that is not square"), std::vector<std::string>{"section-squariness"});
+  EXPECT_EQ(leafDescriptors("a round ball"), std::vector<std::string>{"roundness"});
+  EXPECT_EQ(leafDescriptors("a square box"), std::vector<std::string>{"squariness"});
+  EXPECT_EQ(leafDescriptors("round"), std::vector<std::string>{"roundness"});
+  EXPECT_EQ(leafDescriptors("a filleted plate"), std::vector<std::string>{"roundness"});
+  EXPECT_EQ(leafDescriptors("a plate with a round cross-section"), std::vector<std::string>{"section-roundness"});
   // A box is its exponents' shape: "a round box" keeps it.
   EXPECT_EQ(descriptorsOfNoun("a round box"), std::vector<std::string>{"squariness"});
   // The same descriptor: replaced only where the words contradict the noun.

@@ -35,6 +35,10 @@ TEST(QueryPrint, CanonicalPhrasing) {
   EXPECT_EQ(printed("find a cone close to the top right of a plate"), "find a cone close to the top right of a plate");
   EXPECT_EQ(printed("a ball between 2 and 4 behind shapes"), "find a sphere between 2 and 4 to the back of a shape");
   EXPECT_EQ(printed("anything"), "find a shape");
+  // An outline word on a flat noun prints as written (it says the section only beside that noun).
+  EXPECT_EQ(printed("a round plate"), "find a round plate");
+  EXPECT_EQ(printed("plate round big thin"), "find a plate that is round and big and thin");
+  EXPECT_EQ(printed("a plate with a round cross-section"), "find a plate that is round cross-section");
   // Words in any case (a fuzz finding: a descriptor degree written "bEndness" was unprintable).
   EXPECT_EQ(printed("find shapes with bEndness at least 0.5"), "find a shape that is bendness at least 0.5");
   EXPECT_EQ(printed("a Slightly BENT shape"), "find a shape that is slightly bent");
@@ -49,7 +53,8 @@ TEST(QueryPrint, PrintedTextsMeanTheQuery) {
         "find shapes with bendness between 0.2 and 0.4", "a cylinder about 10 long and 1 across",
         "a box 4 by 2 by 1", "a ball of radius 0.5", "a rod exactly 6 long that is slightly bent",
         "something between 3 and 4 wide", "a disc with a radius of about 1", "a disc of radius about 0.3",
-        "ball small", "a box 4 x 2 x 1 and 3 tall", "rod 6 long thin with a round cross-section"}) {
+        "ball small", "a box 4 x 2 x 1 and 3 tall", "rod 6 long thin with a round cross-section",
+        "a square disc on a round plate", "a board that is not square", "a long flat board"}) {
     const LinguisticQuery q = parseLinguisticQuery(text, v());
     const std::string once = linguisticQueryText(q, v());
     EXPECT_EQ(testing::queryMeaning(parseLinguisticQuery(once, v())), testing::queryMeaning(q))

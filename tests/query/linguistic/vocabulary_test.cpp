@@ -333,6 +333,14 @@ TEST(Vocabulary, SectionsAndHoles) {
   auto doc = builtinDocument();
   doc.erase("sections");
   doc.erase("holes");
+  // Outline adjectives came after the sections: a file without sections has none, and one that
+  // marks an adjective outline must say its section descriptor.
+  {
+    std::string path;
+    EXPECT_NE(loadError(doc, &path).find("outline needs a descriptor with a section descriptor"), std::string::npos);
+    EXPECT_EQ(path.rfind("adjectives.", 0), 0u) << path;
+  }
+  for (auto& [word, adjective] : doc["adjectives"].items()) adjective.erase("outline");
   // A file of then documents the first nine descriptors; one written before the measures, eleven;
   // one written before the proportions, fifteen (with "long" and "flat" on elongation then).
   auto beforeProportions = builtinDocument();
@@ -369,6 +377,32 @@ TEST(Vocabulary, SectionsAndHoles) {
   doc["sections"]["words"][0] = "Cross Section";
   loadError(doc, &path);
   EXPECT_EQ(path, "sections.words[0]");
+}
+
+// Outline adjectives describe a flat noun's outline, its traverse section: descriptorOn turns
+// them onto the section descriptor for plates, discs and boards (C the thinnest axis by far), and
+// leaves them, and every other adjective, on their own descriptor elsewhere.
+TEST(Vocabulary, OutlineAdjectivesDescribeAFlatNounsSection) {
+  for (const char* noun : {"plate", "disc", "board", "coin", "slab", "planks"}) EXPECT_TRUE(v().noun(noun)->flat) << noun;
+  for (const char* noun : {"dome", "sphere", "cube", "cylinder", "rod", "shape"}) EXPECT_FALSE(v().noun(noun)->flat) << noun;
+  const Noun& plate = *v().noun("plate");
+  const Noun& ball = *v().noun("ball");
+  EXPECT_EQ(v().descriptorOn(*v().adjective("round"), &plate), "section-roundness");
+  EXPECT_EQ(v().descriptorOn(*v().adjective("square"), v().noun("disc")), "section-squariness");
+  EXPECT_EQ(v().descriptorOn(*v().adjective("round"), &ball), "roundness");
+  EXPECT_EQ(v().descriptorOn(*v().adjective("round"), nullptr), "roundness");
+  // Not every word of a shape is an outline: a filleted plate has rounded edges (eps1 too).
+  EXPECT_EQ(v().descriptorOn(*v().adjective("filleted"), &plate), "roundness");
+  EXPECT_EQ(v().descriptorOn(*v().adjective("bent"), &plate), "bendness");
+  auto doc = builtinDocument();
+  doc["adjectives"]["bent"]["outline"] = true;
+  std::string path;
+  EXPECT_NE(loadError(doc, &path).find("'bendness' has none"), std::string::npos);
+  EXPECT_EQ(path, "adjectives.bent.outline");
+  doc = builtinDocument();
+  doc["adjectives"]["round"]["outline"] = "yes";
+  EXPECT_NE(loadError(doc, &path).find("outline must be true or false"), std::string::npos);
+  EXPECT_EQ(path, "adjectives.round.outline");
 }
 
 // Users extend the vocabulary with their own words.
