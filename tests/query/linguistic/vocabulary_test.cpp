@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <functional>
 
 #include "geometry/core/error.h"
 #include "geometry/fuzzy/fuzzy_similarity.h"
@@ -30,6 +31,16 @@ std::string loadError(const nlohmann::json& doc, std::string* path = nullptr) {
   }
   ADD_FAILURE() << "no error";
   return "";
+}
+
+// The built-in document changed by `change` is refused with a message holding `message`, at `path`.
+void expectRefused(const std::function<void(nlohmann::json&)>& change, const std::string& message,
+                   const std::string& path) {
+  nlohmann::json doc = builtinDocument();
+  change(doc);
+  std::string at;
+  EXPECT_NE(loadError(doc, &at).find(message), std::string::npos) << message;
+  EXPECT_EQ(at, path);
 }
 
 TEST(Vocabulary, BuiltinIsTheSchemaFile) {
@@ -364,15 +375,10 @@ TEST(Vocabulary, SectionsAndHoles) {
   EXPECT_TRUE(old.sectionWords().empty());
   EXPECT_EQ(old.holeNoun("cylindrical"), nullptr);
   EXPECT_THROW(parseLinguisticQuery("a shape with a square cross-section", old), Error);
+  expectRefused([](nlohmann::json& d) { d["sections"]["descriptors"]["roundness"] = "section-wobbliness"; },
+                "section-wobbliness", "sections.descriptors.roundness");
+  expectRefused([](nlohmann::json& d) { d["holes"]["words"]["oval"] = "egg"; }, "'egg' is no noun", "holes.words.oval");
   std::string path;
-  doc = builtinDocument();
-  doc["sections"]["descriptors"]["roundness"] = "section-wobbliness";
-  EXPECT_NE(loadError(doc, &path).find("section-wobbliness"), std::string::npos);
-  EXPECT_EQ(path, "sections.descriptors.roundness");
-  doc = builtinDocument();
-  doc["holes"]["words"]["oval"] = "egg";
-  EXPECT_NE(loadError(doc, &path).find("'egg' is no noun"), std::string::npos);
-  EXPECT_EQ(path, "holes.words.oval");
   doc = builtinDocument();
   doc["sections"]["words"][0] = "Cross Section";
   loadError(doc, &path);
@@ -394,15 +400,10 @@ TEST(Vocabulary, OutlineAdjectivesDescribeAFlatNounsSection) {
   // Not every word of a shape is an outline: a filleted plate has rounded edges (eps1 too).
   EXPECT_EQ(v().descriptorOn(*v().adjective("filleted"), &plate), "roundness");
   EXPECT_EQ(v().descriptorOn(*v().adjective("bent"), &plate), "bendness");
-  auto doc = builtinDocument();
-  doc["adjectives"]["bent"]["outline"] = true;
-  std::string path;
-  EXPECT_NE(loadError(doc, &path).find("'bendness' has none"), std::string::npos);
-  EXPECT_EQ(path, "adjectives.bent.outline");
-  doc = builtinDocument();
-  doc["adjectives"]["round"]["outline"] = "yes";
-  EXPECT_NE(loadError(doc, &path).find("outline must be true or false"), std::string::npos);
-  EXPECT_EQ(path, "adjectives.round.outline");
+  expectRefused([](nlohmann::json& d) { d["adjectives"]["bent"]["outline"] = true; }, "'bendness' has none",
+                "adjectives.bent.outline");
+  expectRefused([](nlohmann::json& d) { d["adjectives"]["round"]["outline"] = "yes"; },
+                "outline must be true or false", "adjectives.round.outline");
 }
 
 // Users extend the vocabulary with their own words.
