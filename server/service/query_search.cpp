@@ -211,13 +211,14 @@ std::vector<std::string> contentWordsOf(const std::vector<std::string>& words) {
 constexpr size_t kMostWordsReordered = 4;
 
 // The stored objects whose name is one content word of the text (or its singular: "spheres" gives
-// sphere), or all of them in any order ("rod bent slightly" for slightly-bent-rod, "ball small" for
+// sphere) or a synonym of one of its nouns (nounSynonymsOf), or all its words in any order ("rod bent slightly" for slightly-bent-rod, "ball small" for
 // small-ball; texts of two to kMostWordsReordered content words), each joined as namesOfText joins
 // them: one lookup of at most Store::kMaxNamedLookups spellings. A text of more distinct words
 // than that looks up none: a name is a few words, and a long text's words name many things by
 // chance. The second of each pair: whether the name is the whole text reordered.
 std::vector<std::pair<StoredObject, bool>> objectsNamedByWords(const Store& store, const nlohmann::json& request,
-                                                               std::vector<std::string> content) {
+                                                               std::vector<std::string> content,
+                                                               const std::vector<std::string>& synonyms) {
   std::vector<std::string> names;
   std::unordered_set<std::string> listed;
   const auto list = [&](std::string name) {
@@ -227,6 +228,7 @@ std::vector<std::pair<StoredObject, bool>> objectsNamedByWords(const Store& stor
     list(w);
     if (w.size() > 3 && w.back() == 's' && w[w.size() - 2] != 's') list(w.substr(0, w.size() - 1));
   }
+  for (const std::string& w : synonyms) list(w);
   if (names.size() > Store::kMaxNamedLookups) return {};
   const size_t singles = names.size();
   if (content.size() >= 2 && content.size() <= kMostWordsReordered) {
@@ -242,6 +244,23 @@ std::vector<std::pair<StoredObject, bool>> objectsNamedByWords(const Store& stor
   for (StoredObject& o : store.named(names, requestKinds(request))) {
     const bool whole = content.size() >= 2 && !single.count(o.name);
     out.emplace_back(std::move(o), whole);
+  }
+  return out;
+}
+
+// The words of the vocabulary's nouns that mean what a noun among `words` means, and are not
+// among them ("a sphere" gives ball, balls, spheres): an object named ball is the plainest sphere,
+// so of the objects "a sphere" scores alike it comes first (rankNamesAmongWords). Nouns with a
+// shape only ("shape" and "thing" name no geometry).
+std::vector<std::string> nounSynonymsOf(const std::vector<std::string>& words, const Vocabulary& vocabulary) {
+  std::unordered_set<std::string> meant;
+  for (const std::string& w : words)
+    if (const Noun* n = vocabulary.noun(w); n && !n->params.is_null()) meant.insert(n->word);
+  std::vector<std::string> out;
+  if (meant.empty()) return out;
+  for (const std::string& w : vocabulary.nounWords()) {
+    const Noun* n = vocabulary.noun(w);
+    if (n && meant.count(n->word) && std::find(words.begin(), words.end(), w) == words.end()) out.push_back(w);
   }
   return out;
 }
@@ -302,6 +321,10 @@ void rankNamesAmongWords(const Store& store, const nlohmann::json& request, cons
       !(*answer)["results"].is_array() || holdsRelation(answer->value("parsed", nlohmann::json::object())))
     return;
   const std::vector<std::string> content = contentWordsOf(words);
+  // Ties are broken by the text's words and by its nouns' synonyms ("a sphere": the object named ball).
+  const std::vector<std::string> synonyms = nounSynonymsOf(content, activeVocabulary());
+  std::vector<std::string> tieWords = words;
+  tieWords.insert(tieWords.end(), synonyms.begin(), synonyms.end());
   nlohmann::json& results = (*answer)["results"];
   const auto idOf = [](const nlohmann::json& r) {
     return r.contains("id") && r["id"].is_number_integer() ? r["id"].get<int64_t>() : int64_t{-1};
@@ -309,24 +332,32 @@ void rankNamesAmongWords(const Store& store, const nlohmann::json& request, cons
   std::unordered_map<int64_t, size_t> resultAt;
   for (size_t i = 0; i < results.size(); ++i) resultAt.emplace(idOf(results[i]), i);
   std::vector<int> nameWords(results.size(), 0);
+  // How a name breaks ties: twice its words among the text's, so that a name the text says ("a
+  // washer": washer) comes before one its noun's synonym gives (disc); else its words among the
+  // text's and the synonyms (the object named ball for "a sphere").
+  const auto tieRank = [&](const std::string& name) {
+    const int said = nameWordsAmong(name, words);
+    return said > 0 ? 2 * said : nameWordsAmong(name, tieWords);
+  };
   const auto mark = [&](nlohmann::json& r, const std::string& name, bool whole) {
     if (whole) r["score"] = 1.0;
     r["named"] = true;
-    const nlohmann::json why = {
-        {"text", "the name '" + name + (whole ? "', the words of the text" : "' among the words of the text")},
-        {"score", r.value("score", 0.0)}};
+    const std::string how = whole                                ? "', the words of the text"
+                            : nameWordsAmong(name, words) > 0 ? "' among the words of the text"
+                                                                 : "', a synonym of a noun of the text";
+    const nlohmann::json why = {{"text", "the name '" + name + how}, {"score", r.value("score", 0.0)}};
     if (!r.contains("explain") || !r["explain"].is_array()) r["explain"] = nlohmann::json::array();
     r["explain"].push_back(why);
   };
   // The lookup first, so that each result is marked once, whole or not.
-  const std::vector<std::pair<StoredObject, bool>> found = objectsNamedByWords(store, request, content);
+  const std::vector<std::pair<StoredObject, bool>> found = objectsNamedByWords(store, request, content, synonyms);
   std::unordered_set<int64_t> wholeIds;
   for (const auto& [o, whole] : found)
     if (whole) wholeIds.insert(o.id);
   for (size_t i = 0; i < results.size(); ++i) {
     const std::string name = results[i].value("name", "");
     const bool whole = wholeIds.count(idOf(results[i])) > 0;
-    const int n = whole ? static_cast<int>(content.size()) : nameWordsAmong(name, words);
+    const int n = whole ? 2 * static_cast<int>(content.size()) : tieRank(name);
     if (n == 0) continue;
     nameWords[i] = n;
     mark(results[i], name, whole);
@@ -339,7 +370,7 @@ void rankNamesAmongWords(const Store& store, const nlohmann::json& request, cons
   std::optional<nlohmann::json> deep;  // the first kNamedTieDepth results, read once if needed
   for (const auto& [o, whole] : found) {
     if (resultAt.count(o.id)) continue;
-    const int n = whole ? static_cast<int>(content.size()) : nameWordsAmong(o.name, words);
+    const int n = whole ? 2 * static_cast<int>(content.size()) : tieRank(o.name);
     if (whole) {
       results.push_back({{"id", o.id}, {"kind", o.kind}, {"name", o.name}, {"version", o.version}});
     } else {
@@ -603,7 +634,16 @@ nlohmann::json queryResponse(const Store& store, const nlohmann::json& request,
     try {
       nlohmann::json answer =
           readAroundUnknownWords(store, request, text, reading, refused, linguisticLimits, csgLimits, graphs);
-      rankNamesAmongWords(store, request, words, &answer, limit);
+      // Names among the words as written and as read ("sphre" read as "sphere": the object named ball).
+      std::vector<std::string> readWords = words;
+      if (answer.contains("read_text") && answer["read_text"].is_string())
+        for (std::string& w : wordsOfText(answer["read_text"].get<std::string>(), activeVocabulary()))
+          if (std::find(readWords.begin(), readWords.end(), w) == readWords.end()) readWords.push_back(std::move(w));
+      rankNamesAmongWords(store, request, readWords, &answer, limit, [&](size_t depth) {
+        nlohmann::json deeper = request;
+        deeper["limit"] = depth;
+        return readAroundUnknownWords(store, deeper, text, reading, refused, linguisticLimits, csgLimits, graphs);
+      });
       nlohmann::json names = objectsNamedAsRead(store, request, answer);
       for (const nlohmann::json& n : nearly) names.push_back(n);
       putWordMatches(&answer, names, byWords, limit);

@@ -546,6 +546,18 @@ TEST(DesignersQueries, NamesAmongTheWordsRankTheirObject) {
   auto all = server.post("/query", json{{"text", "a straight cylinder"}, {"limit", 20}});
   ASSERT_EQ(all.json["results"].size(), 11u) << all.body;
   EXPECT_EQ(all.json["results"][0]["name"], "cylinder");
+  // A synonym of the text's noun names the plainest of equals too ("a barrel": the object named
+  // cylinder, the noun "barrel" means), below a name the text says itself ("a drum": drum), and
+  // the same for a text read around a typo ("a cylindr" is read as "a cylinder").
+  ASSERT_EQ(server.post("/parts", json{{"name", "drum"}, {"params", cylinder}}).status, 201);
+  for (const auto& [text, first] : std::vector<std::pair<const char*, const char*>>{
+           {"a straight drum", "drum"}, {"a straight barrel", "cylinder"}, {"a straight cylindr", "cylinder"}}) {
+    auto r = server.post("/query", json{{"text", text}, {"limit", 3}});
+    ASSERT_EQ(r.status, 200) << text << " " << r.body;
+    ASSERT_FALSE(r.json["results"].empty()) << text;
+    EXPECT_EQ(r.json["results"][0]["name"], first) << text << " " << r.body;
+    EXPECT_EQ(r.json["results"][0]["named"], true) << text;
+  }
 }
 
 // No dead end for a word order no grammar has: the run of its words with the most content words
