@@ -277,9 +277,15 @@ std::vector<StoredObject> SqlStore::named(const std::vector<std::string>& names,
                                              std::to_string(kKinds) + " kinds a lookup", "name");
   if (names.empty() || kinds.empty()) return {};
   Lease connection(*this);
-  // Fixed placeholder counts (the last name and kind repeated to fill them): one prepared text for
-  // the few spellings of a search-box text, one for the longer lists of near spellings.
+  // Fixed placeholder counts (the shortest name and the last kind repeated to fill them): one
+  // prepared text for the few spellings of a search-box text, one for the longer lists of near
+  // spellings. The shortest, not the last: a text's last spellings join all its words, and 256
+  // copies of a 5 MB word were over PostgreSQL's 1 GB message limit.
   constexpr size_t kFewNames = 16;
+  const size_t shortest = static_cast<size_t>(
+      std::min_element(names.begin(), names.end(),
+                       [](const std::string& a, const std::string& b) { return a.size() < b.size(); }) -
+      names.begin());
   const size_t slots = names.size() <= kFewNames ? kFewNames : kMaxNamedLookups;
   auto statement = (*connection)
                        .prepare(objectColumnsSql((*connection).dialect()) +
@@ -288,7 +294,7 @@ std::vector<StoredObject> SqlStore::named(const std::vector<std::string>& names,
                                 ") ORDER BY o.id");
   for (size_t i = 0; i < kKinds; ++i) statement->bind(static_cast<int>(1 + i), kinds[std::min(i, kinds.size() - 1)]);
   for (size_t i = 0; i < slots; ++i)
-    statement->bind(static_cast<int>(1 + kKinds + i), names[std::min(i, names.size() - 1)]);
+    statement->bind(static_cast<int>(1 + kKinds + i), names[i < names.size() ? i : shortest]);
   std::vector<StoredObject> objects;
   while (statement->step()) objects.push_back(readObject(*statement));
   return objects;

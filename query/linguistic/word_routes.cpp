@@ -135,13 +135,27 @@ void wordNetRoutes(const Vocabulary& v, const WordNet& wn, const std::string& ba
   }
 }
 
-// An adjective made from a stem by -y or -ish ("twisty", "pointy", "bendy", "roundish"), which
+// An adjective behind a verb made from it by -en ("flattened" -> flatten -> flat, "widened" ->
+// wide), which WordNet does not link (its derivations join nouns and verbs). Or an adjective made
+// from a stem by -y or -ish ("twisty", "pointy", "bendy", "roundish"), which
 // WordNet mostly lacks or files under a looser head ("twisty" is similar to crooked, whose
 // antonym is straight): the stem itself where it is a known adjective ("roundish" -> round), or
 // the known adjective that is the stem's past participle ("twisty" -> twist -> twisted, "bendy"
 // -> bend -> bent). Stems as spelt, with a doubled last letter undone ("knobby" -> knob) and
 // with an e restored ("curvy" -> curve). Nouns are no targets ("party" is not a part).
 Candidate derivedAdjective(const Vocabulary& v, const WordNet& wn, const std::string& word) {
+  // A verb made from an adjective by -en, in any form ("flattened", "widening", "sharpens": flatten,
+  // widen, sharpen): the adjective itself ("sharp"), with its e restored ("wide") or its doubled
+  // last letter undone ("flat").
+  for (const std::string& verb : wn.baseForms(word, Pos::kVerb)) {
+    if (verb.size() < 5 || verb.compare(verb.size() - 2, 2, "en") != 0) continue;
+    const std::string stem = verb.substr(0, verb.size() - 2);
+    std::vector<std::string> adjectives = {stem, stem + "e"};  // "widen": wide
+    if (stem.size() >= 3 && stem.back() == stem[stem.size() - 2]) adjectives.push_back(stem.substr(0, stem.size() - 1));
+    for (const std::string& adjective : adjectives)
+      if (adjective != word && v.adjective(adjective))
+        return {adjective, "derivation", word + " -> " + verb + " -> " + adjective, kDerived, 0};
+  }
   std::string stem;
   if (word.size() >= 5 && word.compare(word.size() - 3, 3, "ish") == 0) {
     stem = word.substr(0, word.size() - 3);

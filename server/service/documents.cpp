@@ -15,8 +15,6 @@
 namespace fsdb {
 namespace {
 
-constexpr size_t kMaxNameLength = 200;
-
 void checkName(const nlohmann::json& doc, const std::string& path) {
   const std::string np = joinPath(path, "name");
   const std::string& name = requireString(requireField(doc, "name", path), np);

@@ -30,6 +30,10 @@
 
 namespace fsdb {
 
+// The longest name a stored object has, in bytes ("name" of a document): the search box looks up
+// no longer spelling (server/service/query_search.cpp).
+inline constexpr size_t kMaxNameLength = 200;
+
 struct ServerLimits;
 
 // What prepareDocument enforces; the defaults are those of `fsdb serve`.

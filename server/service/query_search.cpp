@@ -17,6 +17,7 @@
 #include "query/linguistic/vocabulary.h"
 #include "query/structural/csg_query_text.h"
 #include "query/structural/unknown_words.h"
+#include "server/service/documents.h"
 
 namespace fsdb {
 
@@ -42,14 +43,18 @@ std::vector<std::string> wordsOfText(const std::string& text, const Vocabulary& 
 }
 
 // The names a text may be ("snowman", "the dumbbell", "a round plate" for round-plate): its words
-// joined by "-", " ", "_" and nothing.
+// joined by "-", " ", "_" and nothing; none longer than a stored name may be (kMaxNameLength).
 std::vector<std::string> namesOfText(const std::vector<std::string>& words) {
   if (words.empty() || words.size() > 8) return {};
+  size_t letters = 0;
+  for (const std::string& w : words) letters += w.size();
+  if (letters > kMaxNameLength) return {};
   std::vector<std::string> names;
   for (const char* joiner : {"-", " ", "_", ""}) {
     std::string name;
     for (size_t i = 0; i < words.size(); ++i) name += (i ? joiner : "") + words[i];
-    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    if (name.size() <= kMaxNameLength && std::find(names.begin(), names.end(), name) == names.end())
+      names.push_back(name);
   }
   return names;
 }
@@ -222,7 +227,7 @@ std::vector<std::pair<StoredObject, bool>> objectsNamedByWords(const Store& stor
   std::vector<std::string> names;
   std::unordered_set<std::string> listed;
   const auto list = [&](std::string name) {
-    if (listed.insert(name).second) names.push_back(std::move(name));
+    if (name.size() <= kMaxNameLength && listed.insert(name).second) names.push_back(std::move(name));
   };
   for (const std::string& w : content) {
     list(w);

@@ -286,6 +286,14 @@ TEST_P(StoreTest, NamedFindsAnyOfTheNamesAcrossKinds) {
   EXPECT_EQ(nut[0].name, "nut");
   many.erase(many.begin() + 40);
   EXPECT_TRUE(store->named(many, {"part"}).empty());
+  // The statement's free slots repeat the shortest name, not the last: seventeen names ending in
+  // 5 MB filled 256 slots with 1.3 GB, over PostgreSQL's message limit (the connection closed).
+  std::vector<std::string> seventeen{"nut"};
+  for (int i = 0; i < 15; ++i) seventeen.push_back("bolt" + std::to_string(i));
+  seventeen.push_back(std::string(5'000'000, 'q'));
+  const auto withLong = store->named(seventeen, {"part"});
+  ASSERT_EQ(withLong.size(), 1u);
+  EXPECT_EQ(withLong[0].name, "nut");
 }
 
 // described: every word (stemmed) of the name and search text, the latest version's, live objects

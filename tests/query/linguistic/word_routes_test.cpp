@@ -54,7 +54,7 @@ TEST(WordRoutes, WordNetLinksReachTheVocabularyWithTheirDiscounts) {
   expectRoute("huge", "large", "WordNet similar-to", 0.9);
   expectRoute("curvy", "curved", "WordNet similar-to", 0.9);
   expectRoute("skinny", "thin", "WordNet similar-to", 0.9);
-  expectRoute("slender", "slim", "WordNet synonym", 0.95);        // its first sense {slender, slim, ...}
+  expectRoute("lean", "thin", "WordNet synonym", 0.95);        // the synset {lean, thin}
   expectRoute("crooked", "bent", "WordNet antonym", 0.85);        // the other pole of straight
   expectRoute("curvier", "curved", "WordNet similar-to", 0.9);    // its lemma curvy, then WordNet
 }
@@ -66,6 +66,13 @@ TEST(WordRoutes, AdjectivesByYAndIshReachTheirStemsAdjective) {
   expectRoute("sharpish", "sharp", "derivation", 0.9);
   expectRoute("thinnish", "thin", "derivation", 0.9);   // the doubled letter undone
   expectRoute("flattish", "flat", "derivation", 0.9);
+  // Verbs made from an adjective by -en, in any form: the adjective ("flattened" -> flatten -> flat).
+  expectRoute("flattened", "flat", "derivation", 0.9);  // the doubled letter undone
+  expectRoute("widened", "wide", "derivation", 0.9);
+  expectRoute("straightened", "straight", "derivation", 0.9);
+  expectRoute("broadens", "broad", "derivation", 0.9);
+  // WordNet's own links still win: "thickening" is a noun, a synonym of knob.
+  expectRoute("thickening", "knob", "WordNet synonym", 0.95);
   expectRoute("biggish", "large", "WordNet similar-to", 0.9);  // WordNet's own link first
   expectRoute("curvy", "curved", "WordNet similar-to", 0.9);  // WordNet wins the tie
   // Only adjectives are targets: "party" is not a part, "penny" no pen.
