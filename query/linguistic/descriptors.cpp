@@ -181,9 +181,10 @@ std::vector<DescriptorValue> describePart(const FuzzyPart& part) {
   boxes.reserve(levels.size());
   for (double a : levels) boxes.push_back(part.boxAt(a));
 
-  // The measures keep the part's breakpoint levels and every 1/kMeasureLevels only: they are
-  // products of positive values, smooth in α, and four of them at every 1/16 doubled the stored
-  // rows of a fuzzy catalogue (docs/performance.md).
+  // The measures and the proportions keep the part's breakpoint levels and every 1/kMeasureLevels
+  // only: they are products and ratios of positive values, smooth in α, and four of them at every
+  // 1/16 doubled the stored rows of a fuzzy catalogue (docs/performance.md); the two proportions
+  // at every 1/16 raised the soak's database 21.6 → 26.2 MiB and its RSS growth to 8.4 %.
   const std::vector<double> breaks = part.breakpointLevels();
   std::vector<size_t> measureLevels;
   for (size_t j = 0; j < levels.size(); ++j) {
@@ -192,7 +193,7 @@ std::vector<DescriptorValue> describePart(const FuzzyPart& part) {
       measureLevels.push_back(j);
   }
   for (size_t i = 0; i < names.size(); ++i) {
-    const bool measure = i >= kDescriptorsBeforeMeasures && i < kDescriptorsBeforeProportions;
+    const bool measure = i >= kDescriptorsBeforeMeasures;  // the measures and the proportions
     std::vector<double> at;
     std::vector<Interval> cuts;
     for (size_t j = 0; j < levels.size(); ++j) {

@@ -52,7 +52,7 @@
 // between its critical values (e = 0, 1, 2; kv, kx, ky, t = 0; a2 = 1, a3 = 1, a2 = a3), so the
 // extremes over a box lie on the box's corners with those critical values put in where they fall
 // inside. Levels: FuzzyPart::breakpointLevels() plus k/kDescriptorLevels (k/kMeasureLevels for the
-// four measures); linear in α between them
+// four measures and the two proportions); linear in α between them
 // (FuzzyNumber::fromAlphaCuts). A crisp part has crisp values.
 #include <string>
 #include <vector>
@@ -65,7 +65,8 @@ namespace fsdb {
 
 // Uniform levels k/16 added to the parts' breakpoint levels.
 inline constexpr int kDescriptorLevels = 16;
-// The measures (length, width, thickness, height) use k/kMeasureLevels with the breakpoint levels.
+// The measures (length, width, thickness, height) and the proportions (flatness, slenderness) use
+// k/kMeasureLevels with the breakpoint levels.
 inline constexpr int kMeasureLevels = 4;
 
 // The descriptor names in index order: "squariness","roundness","bevelness","pinchness",
