@@ -37,10 +37,12 @@ const std::vector<double>& Metrics::latencyBuckets() {
   return buckets;
 }
 
-void Metrics::observe(const std::string& method, const std::string& route, int status, double seconds) {
+void Metrics::observe(const std::string& method, const std::string& route, int status, double seconds,
+                      const std::string& code) {
   const auto& buckets = latencyBuckets();
   std::lock_guard<std::mutex> lock(mutex_);
   ++requests_[{method, route, status}];
+  if (!code.empty()) ++rejected_[code];
   Histogram& h = latency_[{method, route}];
   if (h.counts.empty()) h.counts.assign(buckets.size() + 1, 0);
   size_t b = 0;

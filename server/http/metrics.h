@@ -3,9 +3,11 @@
 // who tune the server's limits (docs/api.md §4 lists every metric).
 //
 // Contract:
-// - observe(method, route, status, seconds) counts one answered request under its route's
+// - observe(method, route, status, seconds, code) counts one answered request under its route's
 //   template ("/parts/{id}", not the id: a bounded set of series), "page" for the studio page's
-//   files and "none" for paths no route has; and adds its latency to the route's histogram.
+//   files and "none" for paths no route has; adds its latency to the route's histogram; and, with
+//   a non-empty error code, counts its refusal as reject does, in the same step (a reader of
+//   text() never sees the request without its refusal).
 // - reject(code) counts a request refused with an error code that says the server or a limit
 //   refused it (unauthorized, limit_exceeded, overloaded, method_not_allowed, storage_error, ...).
 // - text(gauges) writes every counter and histogram, then the gauges given (name, help, value)
@@ -31,7 +33,8 @@ class Metrics {
   // Upper bounds of the latency histogram's buckets, in seconds (+Inf follows).
   static const std::vector<double>& latencyBuckets();
 
-  void observe(const std::string& method, const std::string& route, int status, double seconds);
+  void observe(const std::string& method, const std::string& route, int status, double seconds,
+               const std::string& code = "");
   void reject(const std::string& code);
   std::string text(const std::vector<MetricGauge>& gauges) const;
 

@@ -24,7 +24,7 @@ TEST(Metrics, CountersHistogramsAndGaugesInTheTextFormat) {
   Metrics m;
   m.observe("GET", "/parts/{id}", 200, 0.003);
   m.observe("GET", "/parts/{id}", 200, 0.2);
-  m.observe("GET", "/parts/{id}", 404, 0.0005);
+  m.observe("GET", "/parts/{id}", 404, 0.0005, "not_found");  // the request and its refusal at once
   m.observe("POST", "/say \"hi\"", 201, 100);  // beyond the last bucket; a label to escape
   m.reject("unauthorized");
   m.reject("unauthorized");
@@ -48,6 +48,7 @@ TEST(Metrics, CountersHistogramsAndGaugesInTheTextFormat) {
   EXPECT_TRUE(has(text, R"(fsdb_http_request_duration_seconds_bucket{method="POST",route="/say \"hi\"",le="+Inf"} 1)"))
       << text;
   EXPECT_TRUE(has(text, R"(fsdb_rejected_requests_total{cause="unauthorized"} 2)")) << text;
+  EXPECT_TRUE(has(text, R"(fsdb_rejected_requests_total{cause="not_found"} 1)")) << text;
   EXPECT_TRUE(has(text, "# TYPE fsdb_x gauge")) << text;
   EXPECT_TRUE(has(text, "fsdb_x 2.5")) << text;
   EXPECT_TRUE(has(text, "# TYPE fsdb_y_total counter")) << text;
