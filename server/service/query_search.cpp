@@ -340,16 +340,20 @@ void rankNamesAmongWords(const Store& store, const nlohmann::json& request, cons
   // How a name breaks ties: twice its words among the text's, so that a name the text says ("a
   // washer": washer) comes before one its noun's synonym gives (disc); else its words among the
   // text's and the synonyms (the object named ball for "a sphere").
+  struct Tie {
+    int rank;
+    bool said;  // the name's words are the text's, not a synonym's
+  };
   const auto tieRank = [&](const std::string& name) {
     const int said = nameWordsAmong(name, words);
-    return said > 0 ? 2 * said : nameWordsAmong(name, tieWords);
+    return said > 0 ? Tie{2 * said, true} : Tie{nameWordsAmong(name, tieWords), false};
   };
-  const auto mark = [&](nlohmann::json& r, const std::string& name, bool whole) {
+  const auto mark = [&](nlohmann::json& r, const std::string& name, bool whole, bool said) {
     if (whole) r["score"] = 1.0;
     r["named"] = true;
-    const std::string how = whole                                ? "', the words of the text"
-                            : nameWordsAmong(name, words) > 0 ? "' among the words of the text"
-                                                                 : "', a synonym of a noun of the text";
+    const std::string how = whole  ? "', the words of the text"
+                            : said ? "' among the words of the text"
+                                   : "', a synonym of a noun of the text";
     const nlohmann::json why = {{"text", "the name '" + name + how}, {"score", r.value("score", 0.0)}};
     if (!r.contains("explain") || !r["explain"].is_array()) r["explain"] = nlohmann::json::array();
     r["explain"].push_back(why);
@@ -362,10 +366,10 @@ void rankNamesAmongWords(const Store& store, const nlohmann::json& request, cons
   for (size_t i = 0; i < results.size(); ++i) {
     const std::string name = results[i].value("name", "");
     const bool whole = wholeIds.count(idOf(results[i])) > 0;
-    const int n = whole ? 2 * static_cast<int>(content.size()) : tieRank(name);
-    if (n == 0) continue;
-    nameWords[i] = n;
-    mark(results[i], name, whole);
+    const Tie tie = whole ? Tie{2 * static_cast<int>(content.size()), true} : tieRank(name);
+    if (tie.rank == 0) continue;
+    nameWords[i] = tie.rank;
+    mark(results[i], name, whole, tie.said);
   }
   // Objects the answer left out: a whole name comes in at 1; a name among the words can only tie
   // with the last result, and only where the answer was cut there (not a partial answer, whose
@@ -375,11 +379,11 @@ void rankNamesAmongWords(const Store& store, const nlohmann::json& request, cons
   std::optional<nlohmann::json> deep;  // the first kNamedTieDepth results, read once if needed
   for (const auto& [o, whole] : found) {
     if (resultAt.count(o.id)) continue;
-    const int n = whole ? 2 * static_cast<int>(content.size()) : tieRank(o.name);
+    const Tie tie = whole ? Tie{2 * static_cast<int>(content.size()), true} : tieRank(o.name);
     if (whole) {
       results.push_back({{"id", o.id}, {"kind", o.kind}, {"name", o.name}, {"version", o.version}});
     } else {
-      if (!cut || n == 0) continue;
+      if (!cut || tie.rank == 0) continue;
       if (!deep) deep = deeper(kNamedTieDepth);
       const nlohmann::json& deepResults = (*deep)["results"];
       const int64_t id = o.id;  // a structured binding cannot be captured (C++17)
@@ -388,8 +392,8 @@ void rankNamesAmongWords(const Store& store, const nlohmann::json& request, cons
       if (at == deepResults.end() || at->value("score", 0.0) < lastScore) continue;
       results.push_back(*at);
     }
-    mark(results.back(), o.name, whole);
-    nameWords.push_back(n);
+    mark(results.back(), o.name, whole, tie.said);
+    nameWords.push_back(tie.rank);
     resultAt.emplace(o.id, results.size() - 1);
   }
   std::vector<size_t> order(results.size());
@@ -475,15 +479,16 @@ nlohmann::json searchText(const Store& store, const nlohmann::json& request, con
 // UnknownWords' "read_text": without them, or corrected), as named results: "a hockey puck" is
 // read as "a puck", and the object named puck is what that names, as it would be for "a puck".
 // Scored 1 times the reading's discount (its routed words'); none where a run of the text was
-// read (a fragment of it names less than the text).
-nlohmann::json objectsNamedAsRead(const Store& store, const nlohmann::json& request, const nlohmann::json& answer) {
+// read (a fragment of it names less than the text). `readWords`: wordsOfText of that "read_text".
+nlohmann::json objectsNamedAsRead(const Store& store, const nlohmann::json& request, const nlohmann::json& answer,
+                                  const std::vector<std::string>& readWords) {
   if (!answer.contains("read_text") || !answer["read_text"].is_string() || answer.contains("run_discount"))
     return nlohmann::json::array();
   double discount = 1.0;
   if (answer.contains("routed") && answer["routed"].is_array())
     for (const nlohmann::json& r : answer["routed"]) discount *= r.value("discount", 1.0);
   const std::string& read = answer["read_text"].get_ref<const std::string&>();
-  nlohmann::json named = objectsNamed(store, request, wordsOfText(read, activeVocabulary()));
+  nlohmann::json named = objectsNamed(store, request, readWords);
   for (nlohmann::json& n : named) {
     n["score"] = discount;
     n["explain"] = {{{"text", "the name '" + n.value("name", "") + "', the words read ('" + read + "')"},
@@ -640,16 +645,19 @@ nlohmann::json queryResponse(const Store& store, const nlohmann::json& request,
       nlohmann::json answer =
           readAroundUnknownWords(store, request, text, reading, refused, linguisticLimits, csgLimits, graphs);
       // Names among the words as written and as read ("sphre" read as "sphere": the object named ball).
+      const std::vector<std::string> asRead =
+          answer.contains("read_text") && answer["read_text"].is_string()
+              ? wordsOfText(answer["read_text"].get<std::string>(), activeVocabulary())
+              : std::vector<std::string>{};
       std::vector<std::string> readWords = words;
-      if (answer.contains("read_text") && answer["read_text"].is_string())
-        for (std::string& w : wordsOfText(answer["read_text"].get<std::string>(), activeVocabulary()))
-          if (std::find(readWords.begin(), readWords.end(), w) == readWords.end()) readWords.push_back(std::move(w));
+      for (const std::string& w : asRead)
+        if (std::find(readWords.begin(), readWords.end(), w) == readWords.end()) readWords.push_back(w);
       rankNamesAmongWords(store, request, readWords, &answer, limit, [&](size_t depth) {
         nlohmann::json deeper = request;
         deeper["limit"] = depth;
         return readAroundUnknownWords(store, deeper, text, reading, refused, linguisticLimits, csgLimits, graphs);
       });
-      nlohmann::json names = objectsNamedAsRead(store, request, answer);
+      nlohmann::json names = objectsNamedAsRead(store, request, answer, asRead);
       for (const nlohmann::json& n : nearly) names.push_back(n);
       putWordMatches(&answer, names, byWords, limit);
       return answer;
