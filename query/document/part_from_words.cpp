@@ -42,14 +42,25 @@ FuzzyNumber mapIncreasing(const FuzzyNumber& d, F f) {
   return FuzzyNumber::fromPoints(points);
 }
 
+// The exponent descriptors: ε = slope·d + offset. A whole-shape one sets ε1 and ε2; a section one
+// sets ε2 alone, after the whole shape ("a round box with a square section"), by the same rule
+// as the whole-shape descriptor of its name.
+struct ExponentRule {
+  const char* descriptor;
+  double slope, offset;
+};
+constexpr ExponentRule kExponentRules[] = {
+    {"squariness", -0.95, 1.0}, {"roundness", 0.95, 0.05}, {"bevelness", 1.0, 1.0}, {"pinchness", 2.0, 2.0}};
+constexpr const char* kSectionPrefix = "section-";
+
 void realize(const std::string& descriptor, const FuzzyNumber& d, FuzzyPart* part) {
-  if (descriptor == "squariness") part->eps1 = part->eps2 = affine(d, -0.95, 1.0);
-  if (descriptor == "roundness") part->eps1 = part->eps2 = affine(d, 0.95, 0.05);
-  if (descriptor == "bevelness") part->eps1 = part->eps2 = affine(d, 1.0, 1.0);
-  if (descriptor == "pinchness") part->eps1 = part->eps2 = affine(d, 2.0, 2.0);
-  // The traverse section alone (eps2), after the whole shape: "a round box with a square section".
-  if (descriptor == "section-squariness") part->eps2 = affine(d, -0.95, 1.0);
-  if (descriptor == "section-roundness") part->eps2 = affine(d, 0.95, 0.05);
+  const bool section = descriptor.rfind(kSectionPrefix, 0) == 0;
+  const std::string shape = section ? descriptor.substr(std::char_traits<char>::length(kSectionPrefix)) : descriptor;
+  for (const ExponentRule& rule : kExponentRules)
+    if (shape == rule.descriptor) {
+      part->eps2 = affine(d, rule.slope, rule.offset);
+      if (!section) part->eps1 = part->eps2;
+    }
   if (descriptor == "elongation") {
     part->a2 = FuzzyNumber::crisp(1.0);
     part->a3 = mapIncreasing(d, [](double x) {
