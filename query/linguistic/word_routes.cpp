@@ -1,6 +1,7 @@
 // See query/linguistic/word_routes.h.
 #include "query/linguistic/word_routes.h"
 
+#include "geometry/core/closest_names.h"
 #include "query/linguistic/query_tokens.h"
 
 #include <algorithm>
@@ -19,6 +20,7 @@ constexpr double kHypernym = 0.9;
 constexpr double kAlsoSee = 0.85;
 constexpr double kAntonym = 0.85;
 constexpr double kDerived = 0.9;
+constexpr double kAbbreviation = 0.9;
 
 // WordNet's lexicographer files of nouns that name things with a shape (lexnames(5WN)).
 constexpr int kNounArtifact = 6, kNounObject = 17, kNounShape = 25;
@@ -177,6 +179,52 @@ Candidate derivedAdjective(const Vocabulary& v, const WordNet& wn, const std::st
   return {};
 }
 
+// A word WordNet lacks in every part of speech that begins one shape noun of the vocabulary and
+// no other ("cyl" -> cylinder, "pyr" -> pyramid), or, with no noun, one adjective ("rect" ->
+// rectangular): a writer in a hurry abbreviates. Three letters at least; a trailing s is a plural
+// ("cyls" -> cylinders). Where two nouns begin so ("co": cone, coin) it is no route, nor where a
+// word of the vocabulary is a plausible typo away: that is for the corrections ("cylindr" is a
+// cylinder misspelt, not cylindrical cut short).
+Candidate abbreviated(const Vocabulary& v, const WordNet& wn, const std::string& word) {
+  constexpr size_t kShortest = 3;
+  for (Pos pos : {Pos::kAdjective, Pos::kNoun, Pos::kAdverb, Pos::kVerb})
+    if (!wn.baseForms(word, pos).empty()) return {};
+  const size_t typo = plausibleTypoDistance(word.size());
+  if (!nearestNames(word, v.nounWords(), 1, typo).empty() || !nearestNames(word, v.adjectiveWords(), 1, typo).empty())
+    return {};
+  const auto begins = [](const std::string& w, const std::string& a) {
+    return w.size() > a.size() && w.compare(0, a.size(), a) == 0;
+  };
+  // The one word of `words` that `a` begins, counting a noun's plural and synonyms as one word
+  // (the shortest spelling that `a` begins: "sph" -> sphere, not spheres); "" when none or two.
+  const auto only = [&](const std::vector<std::string>& words, const std::string& a, bool nouns) {
+    std::string found, meaning;
+    for (const std::string& w : words) {
+      if (!begins(w, a) || (nouns ? !shapeNoun(v, w) : !v.adjective(w))) continue;
+      const std::string m = nouns ? v.noun(w)->word : w;
+      if (!meaning.empty() && meaning != m) return std::string();
+      meaning = m;
+      if (found.empty() || w.size() < found.size()) found = w;
+    }
+    return found;
+  };
+  const bool plural = word.size() > kShortest && word.back() == 's';
+  for (const std::string& a : plural ? std::vector<std::string>{word, word.substr(0, word.size() - 1)}
+                                     : std::vector<std::string>{word}) {
+    if (a.size() < kShortest) continue;
+    std::string noun = only(v.nounWords(), a, true);
+    if (!noun.empty()) {
+      Candidate c{noun, "abbreviation", word + " -> " + noun, kAbbreviation, 0};
+      c.noun = a != word;  // said in the plural
+      return c;
+    }
+    if (a != word) continue;  // an adjective has no plural
+    const std::string adjective = only(v.adjectiveWords(), a, false);
+    if (!adjective.empty()) return {adjective, "abbreviation", word + " -> " + adjective, kAbbreviation, 0};
+  }
+  return {};
+}
+
 }  // namespace
 
 std::optional<WordRoute> routeWord(const std::string& word, const std::string& next, const Vocabulary& vocabulary,
@@ -209,6 +257,7 @@ std::optional<WordRoute> routeWord(const std::string& word, const std::string& n
     consider(&best, derivedAdjective(vocabulary, *wordnet, word));
     if (best.became != before.became) best.noun = false;
   }
+  if (best.became.empty()) best = abbreviated(vocabulary, *wordnet, word);
   if (best.became.empty()) return std::nullopt;
   if (best.noun) {
     // The plural the vocabulary gives the noun reached ("wands" -> rods).

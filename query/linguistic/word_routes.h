@@ -19,6 +19,9 @@
 //   derivation   0.9   an adjective by -y or -ish from a known adjective or from the verb of one
 //                      ("roundish" -> round, "twisty" -> twisted, "bendy" -> bent); WordNet's
 //                      links win a tie (it is weighed with them, not before)
+//   abbreviation 0.9   a word WordNet lacks that begins one shape noun of the vocabulary, or with
+//                      none one adjective ("cyl" -> cylinder, "cyls" -> cylinders, "rect" ->
+//                      rectangular); last, and only for words WordNet lacks in every part of speech
 // Only the first senses count (three for adjectives and adverbs, four for nouns): a rare sense
 // ("slender": "small" by its fourth) is no route; and a noun's sense only where WordNet files it
 // as an artifact, an object or a shape ("egg" is no ball by its sense of a body part). Targets are the vocabulary's adjectives, nouns

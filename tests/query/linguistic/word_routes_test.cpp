@@ -91,6 +91,27 @@ TEST(WordRoutes, NounsReachTheirMoreGeneralNoun) {
   expectRoute("wands", "rods", "WordNet hypernym", 0.9);          // a plural stays plural
 }
 
+TEST(WordRoutes, AbbreviationsOfOneWordReachIt) {
+  expectRoute("cyl", "cylinder", "abbreviation", 0.9);
+  expectRoute("cyls", "cylinders", "abbreviation", 0.9);  // a plural stays plural
+  expectRoute("pyr", "pyramid", "abbreviation", 0.9);
+  expectRoute("colu", "column", "abbreviation", 0.9);  // not "columns": the shortest spelling
+  // Two nouns of other meanings (sphere, spheroid): the one adjective, spherical.
+  expectRoute("sph", "spherical", "abbreviation", 0.9);
+  expectRoute("rect", "rectangular", "abbreviation", 0.9); // no noun begins so: the adjective
+  // Too short, two nouns begin so, or a word WordNet has: no abbreviation.
+  EXPECT_FALSE(route("cy").has_value());
+  EXPECT_FALSE(route("co").has_value());                  // cone, coin, column, ...
+  EXPECT_FALSE(route("cylindr").has_value());             // cylinder misspelt: for the corrections
+  EXPECT_FALSE(route("pil").has_value());                 // pin, one letter away
+  for (const char* w : {"cub", "pill"}) {                 // WordNet nouns (cube, pillar begin so)
+    const std::optional<WordRoute> r = route(w);
+    if (r) {
+      EXPECT_NE(r->why, "abbreviation") << w << " -> " << r->became;
+    }
+  }
+}
+
 TEST(WordRoutes, RareSensesUnknownWordsAndNonWordsRouteNowhere) {
   EXPECT_FALSE(route("purple").has_value());   // a colour: no shape word near it
   EXPECT_FALSE(route("sphre").has_value());    // a typo is for the corrections, not WordNet
