@@ -335,6 +335,17 @@ TEST(DesignersQueries, WordsTheVocabularyLacksAreRoutedThroughWordNet) {
   auto glued = server.post("/query", json{{"text", "a cylinder glued to a box"}});
   ASSERT_EQ(glued.status, 200) << glued.body;
   EXPECT_EQ(glued.json["routed"][0]["became"], "joined");
+  // A writer in a hurry abbreviates: the one noun a word begins, read with the same discount, and
+  // the same ranking as the whole word.
+  auto cyls = server.post("/query", json{{"text", "2 cyls"}});
+  ASSERT_EQ(cyls.status, 200) << cyls.body;
+  EXPECT_EQ(cyls.json["read_text"], "2 cylinders") << cyls.body;
+  ASSERT_EQ(cyls.json["routed"].size(), 1u) << cyls.body;
+  EXPECT_EQ(cyls.json["routed"][0]["why"], "abbreviation");
+  const json cylinders = server.post("/query", json{{"text", "2 cylinders"}}).json;
+  ASSERT_EQ(cyls.json["results"].size(), cylinders["results"].size()) << cyls.body;
+  for (size_t i = 0; i < cylinders["results"].size(); ++i)
+    EXPECT_EQ(cyls.json["results"][i]["id"], cylinders["results"][i]["id"]);
   // Nouns of the vocabulary now: no route, no discount.
   auto pole = server.post("/query", json{{"text", "a pole"}});
   ASSERT_EQ(pole.status, 200) << pole.body;
