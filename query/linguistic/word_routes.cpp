@@ -179,6 +179,45 @@ Candidate derivedAdjective(const Vocabulary& v, const WordNet& wn, const std::st
   return {};
 }
 
+// A past participle ("flexed", "crushed", "curled") of a verb one of whose first senses has a
+// synonym of which a known adjective is the participle: flex = bend -> bent, crush = squash ->
+// squashed, curl = curve -> curved. Only where no other route reaches the vocabulary (WordNet's
+// links from adjectives, nouns and adverbs win: "crooked", an adjective, is straight's antonym);
+// WordNet has no links from verbs to the vocabulary, so this is the route of a synonym of the
+// verb, at a synonym's discount. Not a present participle or
+// a third person ("spinning", "bows": a verb's other forms say what a part does, not is).
+Candidate synonymVerbParticiple(const Vocabulary& v, const WordNet& wn, const std::string& word) {
+  const auto endsWith = [&](const char* tail) {
+    const size_t n = std::char_traits<char>::length(tail);
+    return word.size() > n && word.compare(word.size() - n, n, tail) == 0;
+  };
+  if (endsWith("ing") || endsWith("s")) return {};
+  std::vector<std::string> verbs;
+  for (const std::string& verb : wn.baseForms(word, Pos::kVerb))
+    if (verb != word) verbs.push_back(verb);
+  if (verbs.empty()) return {};
+  // The known adjectives that are a verb's participle, by that verb ("curved": curve).
+  std::vector<std::pair<std::string, std::string>> participles;
+  for (const std::string& a : v.adjectiveWords()) {
+    if (!v.adjective(a) || a == word) continue;
+    for (const std::string& base : wn.baseForms(a, Pos::kVerb))
+      if (base != a) participles.emplace_back(base, a);
+  }
+  Candidate best;
+  for (const std::string& verb : verbs) {
+    const std::vector<WordNet::Synset> senses = wn.senses(verb, Pos::kVerb);
+    for (size_t rank = 0; rank < senses.size() && rank < sensesThatCount(Pos::kVerb); ++rank)
+      for (const std::string& synonym : senses[rank].words) {
+        if (synonym == verb) continue;
+        for (const auto& [base, adjective] : participles)
+          if (base == synonym)
+            consider(&best, {adjective, "WordNet synonym", word + " -> " + verb + " = " + synonym + " -> " + adjective,
+                             kSynonym, rank});
+      }
+  }
+  return best;
+}
+
 // A word WordNet lacks in every part of speech that begins one shape noun of the vocabulary and
 // no other ("cyl" -> cylinder, "pyr" -> pyramid), or, with no noun, one adjective ("rect" ->
 // rectangular): a writer in a hurry abbreviates. Three letters at least; a trailing s is a plural
@@ -257,6 +296,7 @@ std::optional<WordRoute> routeWord(const std::string& word, const std::string& n
     consider(&best, derivedAdjective(vocabulary, *wordnet, word));
     if (best.became != before.became) best.noun = false;
   }
+  if (best.became.empty()) best = synonymVerbParticiple(vocabulary, *wordnet, word);
   if (best.became.empty()) best = abbreviated(vocabulary, *wordnet, word);
   if (best.became.empty()) return std::nullopt;
   if (best.noun) {

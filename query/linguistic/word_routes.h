@@ -10,7 +10,9 @@
 //   cutting verb 1.0   a verb of making a hole (bore, cut, carve, punch, ...) -> "drilled"
 //   support verb 1.0   a verb of resting (rest, sit, lie, stand, ...) -> left out before a relation
 //                      word ("a cone resting on a box" reads "a cone on a box")
-//   synonym      0.95  a word of the same synset ("enormous" and "tremendous")
+//   synonym      0.95  a word of the same synset ("enormous" and "tremendous"); for a verb's past
+//                      participle, the participle of a synonym of the verb that is a known
+//                      adjective ("flexed" -> flex = bend -> bent, "crushed" -> squashed)
 //   similar-to   0.9   an adjective satellite and its head ("colossal" -> large)
 //   hypernym     0.9   a noun's more general noun ("pole" -> rod), 0.81 two steps up
 //   also-see     0.85  an adjective's "see also" link

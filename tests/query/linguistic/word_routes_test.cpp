@@ -91,6 +91,21 @@ TEST(WordRoutes, NounsReachTheirMoreGeneralNoun) {
   expectRoute("wands", "rods", "WordNet hypernym", 0.9);          // a plural stays plural
 }
 
+TEST(WordRoutes, ParticiplesOfVerbsReachTheirSynonymsParticiple) {
+  expectRoute("flexed", "bent", "WordNet synonym", 0.95);      // flex = bend
+  expectRoute("crushed", "squashed", "WordNet synonym", 0.95); // crush = squash
+  // WordNet's links from an adjective come first: "arched" is an adjective, a synonym of bowed.
+  expectRoute("arched", "bowed", "WordNet synonym", 0.95);
+  // A verb's other forms say what a part does: spin = twist, but "spinning" and "flexes" are no
+  // twisted or bent part.
+  for (const char* w : {"spinning", "flexes"}) {
+    const std::optional<WordRoute> r = route(w);
+    if (r) {
+      EXPECT_EQ(r->via.find(" = "), std::string::npos) << w << " -> " << r->became << " via " << r->via;
+    }
+  }
+}
+
 TEST(WordRoutes, AbbreviationsOfOneWordReachIt) {
   expectRoute("cyl", "cylinder", "abbreviation", 0.9);
   expectRoute("cyls", "cylinders", "abbreviation", 0.9);  // a plural stays plural
