@@ -97,6 +97,12 @@ double relationScore(const QueryCondition& c, Context& ctx) {
   return best;
 }
 
+// Two descriptor conditions that score alike on any part: same descriptor, set and words.
+bool sameDescriptorCondition(const QueryCondition& a, const QueryCondition& b) {
+  return a.kind == Kind::kDescriptor && b.kind == Kind::kDescriptor && a.descriptor == b.descriptor &&
+         a.text == b.text && a.set == b.set;
+}
+
 double score(const QueryCondition& c, Context& ctx) {
   if (c.kind == Kind::kRelation) return relationScore(c, ctx);
   const size_t slot = ctx.explain->size();
@@ -110,7 +116,21 @@ double score(const QueryCondition& c, Context& ctx) {
       break;
     case Kind::kAnd: {
       std::vector<double> scores;
-      for (const QueryCondition& child : c.children) scores.push_back(score(child, ctx));
+      scores.reserve(c.children.size());
+      const QueryCondition* previous = nullptr;  // the last descriptor child scored
+      for (const QueryCondition& child : c.children) {
+        // A descriptor condition said again right after itself ("a large large ... ball") scores
+        // what it scored: the same set against the same value. Its explain entry is repeated, so
+        // the answer is the same under every aggregation; only the similarity is not recomputed
+        // (a 10,000-word text of one repeated word computed it 10,000 times per candidate).
+        if (previous && sameDescriptorCondition(*previous, child)) {
+          if (!child.text.empty()) ctx.explain->push_back({child.text, scores.back(), ctx.component});
+          scores.push_back(scores.back());
+          continue;
+        }
+        scores.push_back(score(child, ctx));
+        previous = child.kind == Kind::kDescriptor ? &child : nullptr;
+      }
       s = aggregate(ctx.query->aggregation, scores);
       break;
     }

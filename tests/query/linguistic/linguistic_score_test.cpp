@@ -153,6 +153,35 @@ TEST(LinguisticScore, AndOrNotAggregationAndExplain) {
   EXPECT_EQ(r.explain[0].text, "a sphere above a box");
 }
 
+// A condition said again right after itself is scored once (linguistic_score.cpp) but answers as
+// if scored each time: its explain entry is repeated, and every aggregation counts it again.
+TEST(LinguisticScore, AConditionSaidAgainCountsAgain) {
+  const FuzzyPart p = part({{"a1", 1}, {"eps1", 0.7}, {"eps2", 0.7}, {"kx", -0.2}, {"ky", -0.2}});  // roundness 0.7, taper 0.2
+  const auto values = describePart(p);
+  const LinguisticQuery round = parseLinguisticQuery("find very round shapes", Vocabulary::builtin());
+  const LinguisticQuery tapered = parseLinguisticQuery("find tapered shapes", Vocabulary::builtin());
+  ASSERT_EQ(round.root.kind, QueryCondition::Kind::kDescriptor);
+  ASSERT_EQ(tapered.root.kind, QueryCondition::Kind::kDescriptor);
+  LinguisticQuery q = round;
+  q.root = QueryCondition{};
+  q.root.kind = QueryCondition::Kind::kAnd;
+  q.root.children = {round.root, round.root, tapered.root, round.root, round.root};
+  const double r = scoreDescriptors(round, values).score;
+  const double t = scoreDescriptors(tapered, values).score;
+  ASSERT_GT(r, 0.0);
+  ASSERT_NE(r, t);
+  QueryScore s = scoreDescriptors(q, values);
+  ASSERT_EQ(s.explain.size(), 5u);
+  for (size_t i : {0u, 1u, 3u, 4u}) {
+    EXPECT_EQ(s.explain[i].text, round.root.text);
+    EXPECT_DOUBLE_EQ(s.explain[i].score, r);
+  }
+  EXPECT_DOUBLE_EQ(s.explain[2].score, t);
+  EXPECT_DOUBLE_EQ(s.score, std::min(r, t));
+  q.aggregation = "mean";
+  EXPECT_NEAR(scoreDescriptors(q, values).score, (4 * r + t) / 5, 1e-12);
+}
+
 TEST(LinguisticScore, NounsPickTheirPrimitives) {
   const Vocabulary& v = Vocabulary::builtin();
   std::vector<Item> catalogue;
