@@ -23,8 +23,10 @@
 // The difference is exact except on the single level α = uB itself when 0 < uB < 1 (a point
 // counts as necessarily inside from α = uB on, instead of just above it): a set of measure zero
 // in α, and for one requested α a set of measure zero in space; volumes are unaffected.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <unordered_set>
 
 #include "geometry/core/vec3.h"
@@ -69,13 +71,25 @@ struct AlphaLevelBounds {
 // The voxel centres of one 8³ block, per axis: voxel (i, j, k) of the block is the point
 // (x[i], y[j], z[k]), and its levels go to index (i·8 + j)·8 + k (OpenVDB's leaf order). The
 // block's box of centres is [(x[0], y[0], z[0]), (x[7], y[7], z[7])] (coordinates increase).
+// `checkpoint` is the running check of the build that asks for the block (its deadline), or
+// null: a source whose voxels cost much (a fuzzy part's searches) calls check() between them, and
+// whatever it throws stops the build, which then keeps nothing of the block. Without it a build
+// could run past its deadline by one block's samples, seconds for a part with every value fuzzy.
 struct BlockLattice {
   static constexpr int kDim = 8;
   static constexpr int kSize = kDim * kDim * kDim;
   double x[kDim], y[kDim], z[kDim];
+  const std::function<void()>* checkpoint = nullptr;
   Vec3 lo() const { return {x[0], y[0], z[0]}; }
   Vec3 hi() const { return {x[kDim - 1], y[kDim - 1], z[kDim - 1]}; }
   Vec3 at(int i, int j, int k) const { return {x[i], y[j], z[k]}; }
+  void check() const {
+    if (checkpoint && *checkpoint) (*checkpoint)();
+  }
+  // The same voxel centres (whatever the checkpoint).
+  bool samePoints(const BlockLattice& o) const {
+    return std::equal(x, x + kDim, o.x) && std::equal(y, y + kDim, o.y) && std::equal(z, z + kDim, o.z);
+  }
 };
 
 // Directed conversions of a level to float storage: u rounds down and l up, so that the stored
@@ -101,13 +115,16 @@ class AlphaFieldSource {
   // An axis-aligned box that holds upper(0) (everything outside has u = 0, l = never).
   virtual void boundingBox(Vec3* lo, Vec3* hi) const = 0;
   // The levels of the 8³ voxels of a block (out[(i·8 + j)·8 + k] = levelsAt(b.at(i, j, k)), the
-  // same values). The default asks levelsAt voxel by voxel; implementations override it to share
-  // work across the block (CSG nodes drop the children that cannot matter there).
+  // same values). The default asks levelsAt voxel by voxel, with b.check() before each row;
+  // implementations override it to share work across the block (CSG nodes drop the children
+  // that cannot matter there) and call b.check() between their costly voxels.
   virtual void sampleBlock(const BlockLattice& b, AlphaLevels* out) const {
     for (int i = 0; i < BlockLattice::kDim; ++i)
-      for (int j = 0; j < BlockLattice::kDim; ++j)
+      for (int j = 0; j < BlockLattice::kDim; ++j) {
+        b.check();  // a row of levelsAt may be a row of fuzzy searches (a smooth node's children)
         for (int k = 0; k < BlockLattice::kDim; ++k)
           out[(i * BlockLattice::kDim + j) * BlockLattice::kDim + k] = levelsAt(b.at(i, j, k));
+      }
   }
   // How many point searches ran out of their budget since construction and answered with a
   // conservative bound instead of the level to the tolerance (upper too high, lower too low):

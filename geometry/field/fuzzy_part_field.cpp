@@ -249,7 +249,7 @@ void FuzzyPartField::sampleSubBlock(const BlockLattice& b, int i, int j, int k, 
         for (int z = k; z < k + size; ++z)
           out[(x * d + y) * d + z] = sizeLevels(b.at(x, y, z), &sized)
                                          ? sized
-                                         : FuzzyPartField::levelsAt(b.at(x, y, z));
+                                         : (b.check(), FuzzyPartField::levelsAt(b.at(x, y, z)));
     return;
   }
   if (!uniform && size <= 2 && !crisp_) {
@@ -259,12 +259,14 @@ void FuzzyPartField::sampleSubBlock(const BlockLattice& b, int i, int j, int k, 
       signs->state = monotoneSigns(b.lo(), b.hi(), signs->sign) ? 1 : 2;
     // Inside S(θ) for every θ of P(1) (boundsOver): g(1) <= 1, so u = 1 with no evaluation.
     const bool inCore = bounds.upperMin == 1.0f;
+    // The build's deadline is checked before each voxel's search (BlockLattice::checkpoint): one
+    // search is bounded by its budget, a block of them is not (seconds for the all-fuzzy part).
     for (int x = i; x < i + size; ++x)
       for (int y = j; y < j + size; ++y)
         for (int z = k; z < k + size; ++z)
           out[(x * d + y) * d + z] =
               signs->state == 1 ? cornerLevels(b.at(x, y, z), signs->sign, inCore)
-                                : FuzzyPartField::levelsAt(b.at(x, y, z));
+                                : (b.check(), FuzzyPartField::levelsAt(b.at(x, y, z)));
     return;
   }
   if (uniform || size <= 2) {
@@ -273,7 +275,7 @@ void FuzzyPartField::sampleSubBlock(const BlockLattice& b, int i, int j, int k, 
       for (int y = j; y < j + size; ++y)
         for (int z = k; z < k + size; ++z)
           out[(x * d + y) * d + z] = uniform ? AlphaLevels{bounds.upperMin, bounds.lowerMin}
-                                             : FuzzyPartField::levelsAt(b.at(x, y, z));
+                                             : (b.check(), FuzzyPartField::levelsAt(b.at(x, y, z)));
     return;
   }
   const int half = size / 2;

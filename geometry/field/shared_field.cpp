@@ -68,7 +68,7 @@ AlphaLevelBounds SharedField::boundsOver(const Vec3& lo, const Vec3& hi) const {
 
 void SharedField::sampleBlock(const BlockLattice& b, AlphaLevels* out) const {
   Remembered& m = memory();
-  if (m.hasBlock && std::memcmp(&m.lattice, &b, sizeof b) == 0) {
+  if (m.hasBlock && m.lattice.samePoints(b)) {
     std::copy(m.block->begin(), m.block->end(), out);
     return;
   }
@@ -76,6 +76,7 @@ void SharedField::sampleBlock(const BlockLattice& b, AlphaLevels* out) const {
   if (!m.block) m.block = std::make_unique<std::array<AlphaLevels, BlockLattice::kSize>>();
   std::copy(out, out + BlockLattice::kSize, m.block->begin());
   m.lattice = b;
+  m.lattice.checkpoint = nullptr;  // the build's, gone with it
   m.hasBlock = true;
 }
 

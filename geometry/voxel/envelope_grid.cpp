@@ -12,6 +12,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -55,20 +56,27 @@ class BlockSampler {
   virtual ~BlockSampler() = default;
   // True, with the value, when every voxel of `box` provably has the same levels.
   virtual bool uniformOver(const CoordBBox& box, AlphaLevels* value) const = 0;
-  // The levels of the 8³ voxels of the leaf at `origin`, in leaf offset order.
-  virtual void sampleLeaf(const Coord& origin, AlphaLevels* out) const = 0;
+  // The levels of the 8³ voxels of the leaf at `origin`, in leaf offset order; `checkpoint`
+  // is the build's running check, for samplers whose voxels cost much (BlockLattice).
+  virtual void sampleLeaf(const Coord& origin, AlphaLevels* out, const std::function<void()>& checkpoint) const = 0;
 };
 
 // The running checks of EnvelopeBuildLimits, shared by every task of one build. Throwing from a
 // TBB task cancels the others and rethrows in the caller; each of them stops at its next check.
 class BuildGuard {
  public:
-  explicit BuildGuard(const EnvelopeBuildLimits& limits) : limits_(limits) {}
+  explicit BuildGuard(const EnvelopeBuildLimits& limits) : limits_(limits) {
+    if (limits_.deadline != std::chrono::steady_clock::time_point::max()) checkpoint_ = [this] { checkTime(); };
+  }
+  BuildGuard(const BuildGuard&) = delete;
+  BuildGuard& operator=(const BuildGuard&) = delete;
   void checkTime() const {
     if (limits_.deadline != std::chrono::steady_clock::time_point::max() &&
         std::chrono::steady_clock::now() > limits_.deadline)
       throw Error(errc::kLimitExceeded, "the grid build ran past its deadline", kDeadlinePath);
   }
+  // checkTime for a source's block (BlockLattice::checkpoint); empty without a deadline.
+  const std::function<void()>& checkpoint() const { return checkpoint_; }
   // Before a leaf pair is made: counts it, and throws when the leaves would pass the limit.
   void countLeafPair() {
     if (limits_.reserveLeafBytes) limits_.reserveLeafBytes(EnvelopeGrid::leafPairBytes());
@@ -85,6 +93,7 @@ class BuildGuard {
  private:
   const EnvelopeBuildLimits& limits_;
   std::atomic<std::uint64_t> leafPairs_{0};
+  std::function<void()> checkpoint_;
 };
 
 // One 8³ block of the result: a leaf pair, or (upper == nullptr) an active tile of value `tile`.
@@ -102,7 +111,7 @@ void buildLeafBlock(const BlockSampler& s, const Coord& origin, BuildGuard& guar
     return;
   }
   std::array<AlphaLevels, LeafT::SIZE> values;
-  s.sampleLeaf(origin, values.data());
+  s.sampleLeaf(origin, values.data(), guard.checkpoint());
   bool constant = true, any = false;
   for (const AlphaLevels& x : values) {
     constant = constant && sameLevels(x, values[0]);
@@ -279,9 +288,10 @@ class SourceSampler : public BlockSampler {
     *value = {b.upperMin, b.lowerMin};
     return true;
   }
-  void sampleLeaf(const Coord& origin, AlphaLevels* out) const override {
+  void sampleLeaf(const Coord& origin, AlphaLevels* out, const std::function<void()>& checkpoint) const override {
     static_assert(BlockLattice::kDim == kLeafDim, "a block is one leaf");
     BlockLattice b;
+    b.checkpoint = &checkpoint;
     for (int n = 0; n < kLeafDim; ++n) {
       const Vec3 c = centre(origin.offsetBy(n));
       b.x[n] = c.x;
@@ -316,7 +326,7 @@ class CombineSampler : public BlockSampler {
                    {trees[2]->getValue(o), trees[3]->getValue(o)});
     return true;
   }
-  void sampleLeaf(const Coord& origin, AlphaLevels* out) const override {
+  void sampleLeaf(const Coord& origin, AlphaLevels* out, const std::function<void()>&) const override {
     const Side a = side(a_, origin), b = side(b_, origin);
     for (openvdb::Index n = 0; n < LeafT::SIZE; ++n) out[n] = apply(a.at(n), b.at(n));
   }

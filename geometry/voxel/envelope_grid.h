@@ -50,8 +50,9 @@ struct EnvelopeBuildLimits {
   // Exceeded: Error(limit_exceeded, ..., kMaxLeafBytesPath) as soon as the leaf that would pass
   // it is about to be made.
   std::uint64_t maxLeafBytes = 0;
-  // Checked before every 8³ block is sampled (every TBB task checks it), so a build stops within
-  // the time of one block's samples past it: Error(limit_exceeded, ..., kDeadlinePath).
+  // Checked before every 8³ block is sampled (every TBB task checks it), and by a source between
+  // its costly voxels (BlockLattice::checkpoint: a fuzzy part before each voxel's search), so a
+  // build stops within about one voxel's search past it: Error(limit_exceeded, ..., kDeadlinePath).
   std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
   // Called with leafPairBytes() before each leaf pair is made (from any task of the build), so a
   // caller can hold the memory to a budget shared with other builds; whatever it throws stops

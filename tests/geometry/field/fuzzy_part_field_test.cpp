@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -911,6 +912,34 @@ TEST(FuzzyPartFieldTest, SampleBlockWithBlockProofsMatchesLevelsAt) {
     }
   }
   EXPECT_GT(voxels, 1000);
+}
+
+// A block of searches checks the build's checkpoint between voxels (BlockLattice::checkpoint), so
+// a deadline stops a build within one search: what the checkpoint throws comes out of
+// sampleBlock, after only as many searches as it let run; and without a checkpoint, nothing
+// changes.
+TEST(FuzzyPartFieldTest, SampleBlockChecksItsCheckpointBetweenSearches) {
+  const FuzzyPartField field(veryTwistedLongBox());
+  Vec3 lo, hi;
+  field.boundingBox(&lo, &hi);
+  // A block across the band: from the centre of the box towards its corner.
+  const Vec3 c = 0.5 * (lo + hi);
+  const double h = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) / 48;
+  const BlockLattice free = latticeAt(c + 0.25 * (hi - c), h);
+  AlphaLevels out[BlockLattice::kSize];
+  field.sampleBlock(free, out);  // no checkpoint: runs to the end
+  int calls = 0;
+  const std::function<void()> stopAtThird = [&] {
+    if (++calls == 3) throw Error(errc::kLimitExceeded, "stop", "deadline");
+  };
+  BlockLattice checked = free;
+  checked.checkpoint = &stopAtThird;
+  expectError([&] { field.sampleBlock(checked, out); }, errc::kLimitExceeded, "deadline");
+  EXPECT_EQ(calls, 3);
+  // An empty function is no checkpoint.
+  const std::function<void()> none;
+  checked.checkpoint = &none;
+  field.sampleBlock(checked, out);
 }
 
 }  // namespace

@@ -70,7 +70,7 @@ TEST_F(TightLimits, EvaluationTimeLimitIs413NamingMaxEvalMs) {
   auto r = server->post("/evaluate", json{{"shape", slowPart()}, {"resolution", 64}});
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   expectLimit(r, "max_eval_ms=300");
-  EXPECT_LT(seconds, 1.5 * fsdb::testing::kSlowdown);  // the build stops within a block of the deadline
+  EXPECT_LT(seconds, 1.5 * fsdb::testing::kSlowdown);  // the build stops within a search of the deadline (BlockLattice::checkpoint)
   EXPECT_EQ(server->get("/health").status, 200);
   const std::string at = "/shapes/" + std::to_string(storeShape(*server, "slow", slowPart()));
   expectLimit(server->post(at + "/evaluate", json{{"resolution", 64}}), "max_eval_ms=300");

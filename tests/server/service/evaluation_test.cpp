@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <functional>
 #include <thread>
 #include <vector>
 
@@ -20,18 +21,38 @@ ParsedShape slowPart() {
   return parseShapeField(partToJson(testing::allValuesFuzzyPart()), "", 10000, {});
 }
 
+// The tests of build sharing are not about time: under the sanitizers the slow part's concurrent
+// builds take about a minute, as long as the default max_eval_ms, so they run without a deadline.
+EvaluationLimits noTimeLimit() {
+  EvaluationLimits limits;
+  limits.maxEvalMs = 0;
+  return limits;
+}
+
+// Runs `body` on a thread of its own; an error it throws becomes this test's failure (an
+// exception that leaves a std::thread would abort the whole test binary).
+std::thread testThread(std::function<void()> body) {
+  return std::thread([body = std::move(body)] {
+    try {
+      body();
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "the thread threw: " << e.what();
+    }
+  });
+}
+
 // Requests for the same shape (one content key) at the same resolution at the same moment (a
 // thumbnail, a mesh and the chart of a part just made) share one grid build: the grid, the field
 // it sampled and the exhausted-search count are the first request's.
 TEST(EvaluationTest, ConcurrentBuildsOfOneKeyRunOnce) {
   const ParsedShape shape = slowPart();
-  const EvaluationLimits limits;
+  const EvaluationLimits limits = noTimeLimit();
   const nlohmann::json request = {{"resolution", 24}, {"alphas", {0.5}}};
   constexpr int kRequests = 4;
   std::vector<Evaluation> got(kRequests);
   std::vector<std::thread> threads;
   for (int i = 0; i < kRequests; ++i)
-    threads.emplace_back([&, i] { got[i] = evaluateParsedShape(request, shape, limits, "same-content"); });
+    threads.push_back(testThread([&, i] { got[i] = evaluateParsedShape(request, shape, limits, "same-content"); }));
   for (std::thread& t : threads) t.join();
   for (int i = 1; i < kRequests; ++i) {
     EXPECT_EQ(got[i].grid.get(), got[0].grid.get()) << i;
@@ -68,11 +89,11 @@ TEST(EvaluationTest, MeshesAreHeldToTheEvaluationTimeLimit) {
 
 TEST(EvaluationTest, DifferentKeysOrResolutionsBuildApart) {
   const ParsedShape shape = slowPart();
-  const EvaluationLimits limits;
+  const EvaluationLimits limits = noTimeLimit();
   Evaluation a, b, c;
-  std::thread ta([&] { a = evaluateParsedShape({{"resolution", 24}}, shape, limits, "content-a"); });
-  std::thread tb([&] { b = evaluateParsedShape({{"resolution", 24}}, shape, limits, "content-b"); });
-  std::thread tc([&] { c = evaluateParsedShape({{"resolution", 20}}, shape, limits, "content-a"); });
+  std::thread ta = testThread([&] { a = evaluateParsedShape({{"resolution", 24}}, shape, limits, "content-a"); });
+  std::thread tb = testThread([&] { b = evaluateParsedShape({{"resolution", 24}}, shape, limits, "content-b"); });
+  std::thread tc = testThread([&] { c = evaluateParsedShape({{"resolution", 20}}, shape, limits, "content-a"); });
   ta.join();
   tb.join();
   tc.join();
