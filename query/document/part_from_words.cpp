@@ -43,23 +43,24 @@ FuzzyNumber mapIncreasing(const FuzzyNumber& d, F f) {
 }
 
 // The exponent descriptors: ε = slope·d + offset. A whole-shape one sets ε1 and ε2; a section one
-// sets ε2 alone, after the whole shape ("a round box with a square section"), by the same rule
-// as the whole-shape descriptor of its name.
+// sets ε2 alone, after the whole shape ("a round box with a square section"), by the rule of its
+// whole-shape descriptor (Vocabulary::wholeShapeDescriptor).
 struct ExponentRule {
   const char* descriptor;
   double slope, offset;
 };
 constexpr ExponentRule kExponentRules[] = {
     {"squariness", -0.95, 1.0}, {"roundness", 0.95, 0.05}, {"bevelness", 1.0, 1.0}, {"pinchness", 2.0, 2.0}};
-constexpr const char* kSectionPrefix = "section-";
 
-void realize(const std::string& descriptor, const FuzzyNumber& d, FuzzyPart* part) {
-  const bool section = descriptor.rfind(kSectionPrefix, 0) == 0;
-  const std::string shape = section ? descriptor.substr(std::char_traits<char>::length(kSectionPrefix)) : descriptor;
+// A section descriptor is found through the vocabulary's sections map (section-squariness is
+// squariness's), not by its name.
+void realize(const std::string& descriptor, const FuzzyNumber& d, const Vocabulary& vocabulary, FuzzyPart* part) {
+  const std::string* whole = vocabulary.wholeShapeDescriptor(descriptor);
+  const std::string& shape = whole ? *whole : descriptor;
   for (const ExponentRule& rule : kExponentRules)
     if (shape == rule.descriptor) {
       part->eps2 = affine(d, rule.slope, rule.offset);
-      if (!section) part->eps1 = part->eps2;
+      if (!whole) part->eps1 = part->eps2;
     }
   if (descriptor == "elongation") {
     part->a2 = FuzzyNumber::crisp(1.0);
@@ -232,7 +233,7 @@ FuzzyPart partFromWords(const std::string& text, const Vocabulary& vocabulary) {
       });
       continue;
     }
-    realize(descriptor, d, &part);
+    realize(descriptor, d, vocabulary, &part);
   }
   setExtents();
   try {

@@ -126,7 +126,6 @@ class Vocabulary {
   // and whether a word is a filler the parsers skip wherever it stands.
   const std::vector<std::string>& requestPhrases() const { return requestPhrases_; }
   bool isFiller(const std::string& word) const { return fillers_.count(word) > 0; }
-  // Every single word of all those phrases ("double pyramid" gives "double" and "pyramid").
   // The words of a traverse section ("traverse section", "cross-section") and the descriptor of
   // the section an adjective's descriptor turns into after them (nullptr: none; "with squarish
   // traverse section" reads squariness as section-squariness).
@@ -142,6 +141,13 @@ class Vocabulary {
   const std::string* sectionDescriptor(const std::string& descriptor) const {
     auto it = sectionDescriptors_.find(descriptor);
     return it == sectionDescriptors_.end() ? nullptr : &it->second;
+  }
+  // The whole-shape descriptor whose section descriptor `section` is (section-squariness:
+  // squariness), or nullptr when it is none's.
+  const std::string* wholeShapeDescriptor(const std::string& section) const {
+    for (const auto& [whole, of] : sectionDescriptors_)
+      if (of == section) return &whole;
+    return nullptr;
   }
   // The noun a hole's shape word names in structural queries ("cylindrical": cylinder), or
   // nullptr; and the noun of a hole without a word ("a cube with a hole"; empty: none).

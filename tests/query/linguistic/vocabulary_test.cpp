@@ -336,6 +336,10 @@ TEST(Vocabulary, RequestsFillersAndPronouns) {
 TEST(Vocabulary, SectionsAndHoles) {
   EXPECT_EQ(*v().sectionDescriptor("squariness"), "section-squariness");
   EXPECT_EQ(v().sectionDescriptor("bendness"), nullptr);
+  EXPECT_EQ(*v().wholeShapeDescriptor("section-squariness"), "squariness");
+  EXPECT_EQ(*v().wholeShapeDescriptor("section-roundness"), "roundness");
+  EXPECT_EQ(v().wholeShapeDescriptor("squariness"), nullptr);
+  EXPECT_EQ(v().wholeShapeDescriptor("bendness"), nullptr);
   EXPECT_EQ(v().sectionWords().front(), "traverse section");
   EXPECT_TRUE(v().knowsWord("traverse"));
   EXPECT_EQ(*v().holeNoun("cylindrical"), "cylinder");
