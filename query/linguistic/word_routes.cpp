@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace fsdb {
@@ -137,6 +139,18 @@ void wordNetRoutes(const Vocabulary& v, const WordNet& wn, const std::string& ba
   }
 }
 
+// The known adjectives that are a verb's past participle, as (verb, adjective) pairs ("bent": bend,
+// "curved": curve), in the vocabulary's order; both routes below look a stem or a synonym up in them.
+std::vector<std::pair<std::string, std::string>> participleAdjectives(const Vocabulary& v, const WordNet& wn) {
+  std::vector<std::pair<std::string, std::string>> pairs;
+  for (const std::string& a : v.adjectiveWords()) {
+    if (!v.adjective(a)) continue;
+    for (const std::string& base : wn.baseForms(a, Pos::kVerb))
+      if (base != a) pairs.emplace_back(base, a);
+  }
+  return pairs;
+}
+
 // An adjective behind a verb made from it by -en ("flattened" -> flatten -> flat, "widened" ->
 // wide), which WordNet does not link (its derivations join nouns and verbs). Or an adjective made
 // from a stem by -y or -ish ("twisty", "pointy", "bendy", "roundish"), which
@@ -170,12 +184,9 @@ Candidate derivedAdjective(const Vocabulary& v, const WordNet& wn, const std::st
   if (stem.size() >= 3 && stem[stem.size() - 1] == stem[stem.size() - 2]) stems.push_back(stem.substr(0, stem.size() - 1));
   for (const std::string& s : stems)
     if (s != word && v.adjective(s)) return {s, "derivation", word + " -> " + s, kDerived, 0};
-  for (const std::string& a : v.adjectiveWords()) {
-    if (!v.adjective(a)) continue;
-    for (const std::string& base : wn.baseForms(a, Pos::kVerb))
-      if (base != a && std::find(stems.begin(), stems.end(), base) != stems.end())
-        return {a, "derivation", word + " -> " + base + " -> " + a, kDerived, 0};
-  }
+  for (const auto& [base, a] : participleAdjectives(v, wn))
+    if (std::find(stems.begin(), stems.end(), base) != stems.end())
+      return {a, "derivation", word + " -> " + base + " -> " + a, kDerived, 0};
   return {};
 }
 
@@ -196,13 +207,7 @@ Candidate synonymVerbParticiple(const Vocabulary& v, const WordNet& wn, const st
   for (const std::string& verb : wn.baseForms(word, Pos::kVerb))
     if (verb != word) verbs.push_back(verb);
   if (verbs.empty()) return {};
-  // The known adjectives that are a verb's participle, by that verb ("curved": curve).
-  std::vector<std::pair<std::string, std::string>> participles;
-  for (const std::string& a : v.adjectiveWords()) {
-    if (!v.adjective(a) || a == word) continue;
-    for (const std::string& base : wn.baseForms(a, Pos::kVerb))
-      if (base != a) participles.emplace_back(base, a);
-  }
+  const std::vector<std::pair<std::string, std::string>> participles = participleAdjectives(v, wn);
   Candidate best;
   for (const std::string& verb : verbs) {
     const std::vector<WordNet::Synset> senses = wn.senses(verb, Pos::kVerb);
@@ -210,7 +215,7 @@ Candidate synonymVerbParticiple(const Vocabulary& v, const WordNet& wn, const st
       for (const std::string& synonym : senses[rank].words) {
         if (synonym == verb) continue;
         for (const auto& [base, adjective] : participles)
-          if (base == synonym)
+          if (base == synonym && adjective != word)
             consider(&best, {adjective, "WordNet synonym", word + " -> " + verb + " = " + synonym + " -> " + adjective,
                              kSynonym, rank});
       }
