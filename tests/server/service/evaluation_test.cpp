@@ -16,7 +16,7 @@ namespace fsdb {
 namespace {
 
 // The bench part with all fourteen values fuzzy: its grid takes long enough (about a second at
-// this resolution) that requests started together all arrive while the first one builds.
+// resolution 16) that requests started together all arrive while the first one builds.
 ParsedShape slowPart() {
   return parseShapeField(partToJson(testing::allValuesFuzzyPart()), "", 10000, {});
 }
@@ -47,7 +47,7 @@ std::thread testThread(std::function<void()> body) {
 TEST(EvaluationTest, ConcurrentBuildsOfOneKeyRunOnce) {
   const ParsedShape shape = slowPart();
   const EvaluationLimits limits = noTimeLimit();
-  const nlohmann::json request = {{"resolution", 24}, {"alphas", {0.5}}};
+  const nlohmann::json request = {{"resolution", 16}, {"alphas", {0.5}}};
   constexpr int kRequests = 4;
   std::vector<Evaluation> got(kRequests);
   std::vector<std::thread> threads;
@@ -91,16 +91,16 @@ TEST(EvaluationTest, DifferentKeysOrResolutionsBuildApart) {
   const ParsedShape shape = slowPart();
   const EvaluationLimits limits = noTimeLimit();
   Evaluation a, b, c;
-  std::thread ta = testThread([&] { a = evaluateParsedShape({{"resolution", 24}}, shape, limits, "content-a"); });
-  std::thread tb = testThread([&] { b = evaluateParsedShape({{"resolution", 24}}, shape, limits, "content-b"); });
-  std::thread tc = testThread([&] { c = evaluateParsedShape({{"resolution", 20}}, shape, limits, "content-a"); });
+  std::thread ta = testThread([&] { a = evaluateParsedShape({{"resolution", 16}}, shape, limits, "content-a"); });
+  std::thread tb = testThread([&] { b = evaluateParsedShape({{"resolution", 16}}, shape, limits, "content-b"); });
+  std::thread tc = testThread([&] { c = evaluateParsedShape({{"resolution", 12}}, shape, limits, "content-a"); });
   ta.join();
   tb.join();
   tc.join();
   EXPECT_NE(a.grid.get(), b.grid.get());
   EXPECT_NE(a.grid.get(), c.grid.get());
-  EXPECT_EQ(a.result["resolution"], 24);
-  EXPECT_EQ(c.result["resolution"], 20);
+  EXPECT_EQ(a.result["resolution"], 16);
+  EXPECT_EQ(c.result["resolution"], 12);
 }
 
 // A build that fails (here: past max_eval_ms) fails every request that waited for it, with the
