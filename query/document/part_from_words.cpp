@@ -42,15 +42,57 @@ FuzzyNumber mapIncreasing(const FuzzyNumber& d, F f) {
   return FuzzyNumber::fromPoints(points);
 }
 
-// The exponent descriptors: ε = slope·d + offset. A whole-shape one sets ε1 and ε2; a section one
-// sets ε2 alone, after the whole shape ("a round box with a square section"), by the rule of its
-// whole-shape descriptor (Vocabulary::wholeShapeDescriptor).
+// The exponent descriptors: ε = max(kMinExponent, slope·d + offset), the inverse of the
+// descriptor's function (descriptors.h: squariness 1 − ε, roundness ε below 1, bevelness ε − 1,
+// pinchness (ε − 2)/2), so a part made "moderately round" is exactly as round as the words say,
+// except where ε would fall under the smallest exponent a part is made with (a box's edges, not
+// a cube's corners of zero radius). A whole-shape one sets ε1 and ε2; a section one sets ε2 alone,
+// after the whole shape ("a round box with a square section"), by the rule of its whole-shape
+// descriptor (Vocabulary::wholeShapeDescriptor).
 struct ExponentRule {
   const char* descriptor;
   double slope, offset;
 };
 constexpr ExponentRule kExponentRules[] = {
-    {"squariness", -0.95, 1.0}, {"roundness", 0.95, 0.05}, {"bevelness", 1.0, 1.0}, {"pinchness", 2.0, 2.0}};
+    {"squariness", -1.0, 1.0}, {"roundness", 1.0, 0.0}, {"bevelness", 1.0, 1.0}, {"pinchness", 2.0, 2.0}};
+constexpr double kMinExponent = 0.05;
+
+// The image of the degree d under ε = max(kMinExponent, slope·d + offset) by the extension
+// principle: the affine image with the part under kMinExponent gathered at it (a breakpoint put
+// where a segment crosses it, so the image is exact, not a chord over the kink).
+FuzzyNumber exponentOf(const FuzzyNumber& d, double slope, double offset) {
+  const FuzzyNumber e = affine(d, slope, offset);
+  std::vector<Breakpoint> points;
+  const std::vector<Breakpoint>& in = e.breakpoints();
+  for (size_t i = 0; i < in.size(); ++i) {
+    if (i > 0) {
+      const Breakpoint& a = in[i - 1];
+      const Breakpoint& b = in[i];
+      if (a.x < kMinExponent - 1e-12 && b.x > kMinExponent + 1e-12) {
+        const double t = (kMinExponent - a.x) / (b.x - a.x);
+        points.push_back({kMinExponent, a.mu + t * (b.mu - a.mu)});
+      }
+    }
+    // Within rounding of the smallest exponent is at it (1 − 0.95 is 0.05000000000000004).
+    points.push_back({in[i].x < kMinExponent + 1e-12 ? kMinExponent : in[i].x, in[i].mu});
+  }
+  // Points gathered at kMinExponent keep the highest membership among them (the sup of the image).
+  std::vector<Breakpoint> out;
+  double gathered = -1.0;
+  for (const Breakpoint& p : points) {
+    if (p.x == kMinExponent) {
+      gathered = std::max(gathered, p.mu);
+      continue;
+    }
+    if (gathered >= 0.0) {
+      out.push_back({kMinExponent, gathered});
+      gathered = -1.0;
+    }
+    out.push_back(p);
+  }
+  if (gathered >= 0.0) out.push_back({kMinExponent, gathered});
+  return FuzzyNumber::fromPoints(out);
+}
 
 // A section descriptor is found through the vocabulary's sections map (section-squariness is
 // squariness's), not by its name.
@@ -59,7 +101,7 @@ void realize(const std::string& descriptor, const FuzzyNumber& d, const Vocabula
   const std::string& shape = whole ? *whole : descriptor;
   for (const ExponentRule& rule : kExponentRules)
     if (shape == rule.descriptor) {
-      part->eps2 = affine(d, rule.slope, rule.offset);
+      part->eps2 = exponentOf(d, rule.slope, rule.offset);
       if (!whole) part->eps1 = part->eps2;
     }
   if (descriptor == "elongation") {
@@ -222,7 +264,8 @@ FuzzyPart partFromWords(const std::string& text, const Vocabulary& vocabulary) {
   for (const AdjectiveUse& use : uses) {
     const Adjective& a = *use.adjective;
     const std::string& descriptor = descriptorOf(use);
-    const FuzzyNumber d = vocabulary.createdSet(a, use.intensity);
+    // Plain words on the edges take the vocabulary's edge set ("a box with rounded edges").
+    const FuzzyNumber d = use.edges && !use.intensity ? vocabulary.edgeSet() : vocabulary.createdSet(a, use.intensity);
     const bool deformation = std::find(kOrder.begin(), kOrder.end(), descriptor) >=
                              std::find(kOrder.begin(), kOrder.end(), "bendness");
     if (deformation) setExtents();

@@ -3,9 +3,9 @@
 // noun gives the base parameters (vocabulary "nouns.*.params"), each adjective sets the
 // parameters its descriptor reads to the fuzzy degree its words mean, through the inverse of
 // the descriptor function (the "create" rules of schema/vocabulary.json):
-//   squariness  eps1 = eps2 = 1 − 0.95·d      roundness  eps1 = eps2 = 0.05 + 0.95·d
+//   squariness  eps1 = eps2 = max(0.05, 1 − d) roundness  eps1 = eps2 = max(0.05, d)
 //   bevelness   eps1 = eps2 = 1 + d            pinchness  eps1 = eps2 = 2 + 2·d
-//   section-squariness  eps2 = 1 − 0.95·d     section-roundness  eps2 = 0.05 + 0.95·d
+//   section-squariness  eps2 = max(0.05, 1 − d) section-roundness  eps2 = max(0.05, d)
 //   elongation  a2 = 1, a3 = 2d (d < 1/2) or 1 / (2 − 2d), d clamped to [0.02, 0.98]
 //   slenderness the longer of B, C = the middle half-length / (1 − d), d clamped to [0, 0.96]
 //   flatness    the shorter of B, C = (1 − d) · the middle half-length, d clamped to [0, 0.96]

@@ -128,6 +128,13 @@ bool isExponentShape(const std::string& d) {
          d == "section-roundness";
 }
 
+// Whether a noun is square (a condition on squariness): its edges are what "rounded" says
+// before it ("a rounded box"; Vocabulary::saysEdgesBeforeNouns).
+bool isSquareNoun(const Noun& noun) {
+  return std::any_of(noun.conditions.begin(), noun.conditions.end(),
+                     [](const NounCondition& c) { return c.descriptor == "squariness"; });
+}
+
 // The part's proportions: elongation (a noun's default) and the flatness and slenderness that
 // "flat" and "long" say.
 bool isProportion(const std::string& d) { return d == "elongation" || d == "flatness" || d == "slenderness"; }
@@ -144,6 +151,8 @@ bool contradicts(const FuzzyNumber& a, const FuzzyNumber& b) { return heightOfIn
 //    condition to be itself ("a round plate" stays flat, "a square disc" too; a box or a sphere is
 //    its exponents' shape, so "a round box" and "a very round box" keep the box's and find the
 //    roundest boxes);
+//  * for the shape of the exponents, words on the part's edges ("a box with rounded edges", "a
+//    rounded box": QueryCondition::edges), which say that shape themselves;
 //  * for the noun's proportions (elongation, flatness, slenderness), words on two or more extents
 //    ("a board 8 long and 1 wide", "a thin pole 10 long"), or a dimension adjective with an
 //    intensity ("a very thin stick": a part made from it takes that thickness whatever the
@@ -160,6 +169,7 @@ bool overriddenByWords(const NounCondition& condition, const Noun& noun, const s
   std::set<std::string> extents;
   for (const QueryCondition* c : said) {
     if (c->descriptor == descriptor && (graded(*c) || contradicts(c->set, condition.set))) return true;
+    if (isExponentShape(descriptor) && c->edges) return true;  // "a box with rounded edges" is no longer square
     if (isExponentShape(descriptor) && isExponentShape(c->descriptor) && keepsAnother) return true;
     if (descriptor == "elongation" && (c->descriptor == "flatness" || c->descriptor == "slenderness")) return true;
     if (c->descriptor == "length" || c->descriptor == "width" || c->descriptor == "thickness" || c->descriptor == "height") {
@@ -256,7 +266,7 @@ class Parser {
     return out;
   }
 
-  // part_description = [ article ] { [ intensity ] adjective [ "," | "and" ] } noun
+  // part_description = [ article ] { [ intensity ] adjective [ "," | "and" ] } noun { measure } [ edges ]
   PartDescription partDescription() {
     entry_ = Entry::kPartDescription;
     PartDescription d;
@@ -300,6 +310,30 @@ class Parser {
       else leaves = std::move(m.children);
       for (const QueryCondition& leaf : leaves) d.measures.push_back({leaf.descriptor, *leaf.measure, leaf.text});
     }
+    // edges = "with" [ "a" | "an" ] [ intensity ] adjective edge-word ("a cube with rounded
+    // edges"): the adjective, as it would be before the noun.
+    if (at("with")) {
+      const size_t start = ++pos_;
+      acceptAny({"a", "an"});
+      const FuzzyNumber* intensity = nullptr;
+      if (size_t n = matchPhrase(intensityWords_, &word)) {
+        intensity = v_.intensity(word);
+        pos_ += n;
+      }
+      const size_t n = matchPhrase(adjectiveWords_, &word);
+      std::string edgeWord;
+      if (n == 0 || v_.adjective(word)->descriptor != v_.edgeDescriptor() ||
+          !matchPhrase(v_.edgeWords(), &edgeWord, n))
+        fail({"the shape of its edges ('with rounded edges')"});
+      pos_ += n;
+      d.adjectives.push_back({v_.adjective(word), intensity, span(start, pos_), true});
+      pos_ += matchPhrase(v_.edgeWords(), &edgeWord);
+    }
+    // A plain edges.before_nouns adjective of a noun with a squariness condition says its edges
+    // ("a rounded box"), as in a query.
+    const bool square = isSquareNoun(*d.noun);
+    for (AdjectiveUse& use : d.adjectives)
+      if (square && !use.intensity && v_.saysEdgesBeforeNouns(use.adjective->word)) use.edges = true;
     if (pos_ < tokens_.size())
       fail({"the end of the description (a part is adjectives, one noun and its measures: 'a pole about 10 long')"});
     return d;
@@ -629,7 +663,10 @@ class Parser {
     // Outline adjectives describe a flat noun's outline, its traverse section ("a round plate",
     // "a plate that is not square"); elsewhere they keep their descriptor.
     for (std::vector<QueryCondition>* said : {&parts, &clause})
-      for (QueryCondition& c : *said) turnOutlines(&c, noun);
+      for (QueryCondition& c : *said) {
+        turnOutlines(&c, noun);
+        turnEdges(&c, noun);
+      }
     if (!noun.conditions.empty()) {
       // Nouns are defaults: a condition the words state themselves may replace the noun's on the
       // same quality (overriddenByWords): "a round plate" is round, not square.
@@ -701,15 +738,15 @@ class Parser {
     return c;
   }
 
-  // "a" | "an", [ intensity ], adjective, section word: "a square cross-section", "a very round
-  // traverse section" (the article opens only a section).
+  // "a" | "an", [ intensity ], adjective, section or edge word: "a square cross-section", "a very
+  // round traverse section", "a rounded edge" (the article opens only these).
   bool startsArticleSection() const {
     if (!at("a") && !at("an")) return false;
     std::string m;
     size_t k = 1;
     k += matchPhrase(intensityWords_, &m, k);
     const size_t n = matchPhrase(adjectiveWords_, &m, k);
-    return n > 0 && matchPhrase(v_.sectionWords(), &m, k + n) > 0;
+    return n > 0 && (matchPhrase(v_.sectionWords(), &m, k + n) > 0 || matchPhrase(v_.edgeWords(), &m, k + n) > 0);
   }
 
   // negation = "not" negation | "(" condition ")" | [ intensity ] adjective [ section ]
@@ -762,6 +799,17 @@ class Parser {
     const FuzzyNumber set =
         intensity ? (adjective.lowPole ? mirroredDegrees(*intensity) : *intensity) : v_.plainSet(adjective);
     std::string descriptor = adjective.descriptor;
+    // edge = an edge word of the vocabulary after an adjective of its descriptor ("round edges",
+    // "softened corners"): the shape of the part's edges; plain, the vocabulary's edge set
+    // (between square and round), which a part made from the words takes too.
+    std::string edgeWord;
+    if (descriptor == v_.edgeDescriptor())
+      if (const size_t k = matchPhrase(v_.edgeWords(), &edgeWord)) {
+        pos_ += k;
+        QueryCondition c = descriptorCondition(descriptor, intensity ? set : v_.edgeSet(), span(start, pos_));
+        c.edges = true;
+        return c;
+      }
     // section = a section word of the vocabulary: the adjective describes the traverse section alone.
     std::string sectionWord;
     if (const size_t k = matchPhrase(v_.sectionWords(), &sectionWord)) {
@@ -777,7 +825,23 @@ class Parser {
     }
     QueryCondition c = descriptorCondition(descriptor, set, span(start, pos_));
     c.outline = adjective.outline && sectionWord.empty();
+    if (!intensity && sectionWord.empty() && v_.saysEdgesBeforeNouns(word)) c.edgeSet = v_.edgeSet();
     return c;
+  }
+
+  // Every pending edge leaf of `c` (QueryCondition::edgeSet) resolved for `noun`: the edges of a
+  // noun with a squariness condition ("a rounded box"), else the adjective as it is ("a rounded
+  // ball" is a round ball).
+  // Under "not" it stays the adjective ("a box that is not rounded" is a square box).
+  void turnEdges(QueryCondition* c, const Noun& noun, bool negated = false) const {
+    if (c->kind == Kind::kDescriptor && c->edgeSet) {
+      if (isSquareNoun(noun) && !negated) {
+        c->set = *c->edgeSet;
+        c->edges = true;
+      }
+      c->edgeSet.reset();
+    }
+    for (QueryCondition& child : c->children) turnEdges(&child, noun, negated || c->kind == Kind::kNot);
   }
 
   // Every outline leaf of `c` resolved for `noun` (Vocabulary::descriptorOn): on the section's
@@ -944,7 +1008,8 @@ std::vector<std::string> correctableWords(const Vocabulary& vocabulary) {
   for (const std::string& w : measureWords())
     if (w.size() >= 3 && !contains(grammarWords(), w)) words.push_back(w);
   for (const auto* list : {&vocabulary.intensityWords(), &vocabulary.adjectiveWords(), &vocabulary.nounWords(),
-                           &vocabulary.directionWords(), &vocabulary.distanceWords(), &vocabulary.sectionWords()})
+                           &vocabulary.directionWords(), &vocabulary.distanceWords(), &vocabulary.sectionWords(),
+                           &vocabulary.edgeWords()})
     for (const std::string& phrase : *list)
       for (size_t at = 0; at < phrase.size();) {
         size_t end = phrase.find(' ', at);

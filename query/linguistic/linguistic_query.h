@@ -90,6 +90,12 @@ struct QueryCondition {
   // An outline adjective's condition ("round", "square": Adjective::outline) not yet turned onto
   // a flat noun's section (Vocabulary::descriptorOn): the noun phrase turns it once its noun is read.
   bool outline = false;
+  // Whether it says a part's edges ("with rounded edges", "a rounded box": Vocabulary::edgeWords):
+  // it replaces a noun's conditions on the shape of the exponents. `edgeSet`: a plain adjective
+  // of edges.before_nouns not yet turned, and the set it takes if its noun has a squariness
+  // condition (the noun phrase turns it once its noun is read).
+  bool edges = false;
+  std::optional<FuzzyNumber> edgeSet;
   // A measure ("about 10 long", "a radius of 1"): the extent it asks for in world units (a
   // radius already doubled) and `set` its image over the descriptor's degrees (extentDegreeSet).
   std::optional<FuzzyNumber> measure;
@@ -171,6 +177,7 @@ struct AdjectiveUse {
   const Adjective* adjective;
   const FuzzyNumber* intensity;  // null: the plain adjective
   std::string text;              // "slightly bent"
+  bool edges = false;            // it says the part's edges (Vocabulary::edgeSet when plain)
 };
 // A measure of a part described by words ("a skinny pole about 10 long"): the descriptor
 // (length, width, thickness, height) and the extent in world units.

@@ -304,6 +304,41 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
                       adjective.descriptor + "' has none",
                   joinPath(joinPath("adjectives", word), "outline"));
 
+  // Optional: the words of a part's edges ("a cube with rounded edges", "a rounded box").
+  if (doc.contains("edges")) {
+    const auto& e = requireObject(doc["edges"], "edges");
+    rejectUnknownKeys(e, "edges", {"about", "words", "descriptor", "set", "before_nouns"});
+    const auto lowerWords = [&](const char* key, bool required) {
+      std::vector<std::string> out;
+      if (!required && !e.contains(key)) return out;
+      const std::string path = std::string("edges.") + key;
+      const auto& list = requireArray(requireField(e, key, "edges"), path);
+      for (size_t i = 0; i < list.size(); ++i) {
+        const std::string ip = path + "[" + std::to_string(i) + "]";
+        std::string w = requireString(list[i], ip);
+        if (w.empty() || std::any_of(w.begin(), w.end(), [](char c) { return !std::islower(static_cast<unsigned char>(c)); }))
+          throw Error(errc::kInvalidDocument, "'" + w + "' must be one lower-case word", ip);
+        out.push_back(std::move(w));
+      }
+      return out;
+    };
+    v.edgeWords_ = lowerWords("words", true);
+    if (v.edgeWords_.empty()) throw Error(errc::kInvalidDocument, "edges needs at least one word", "edges.words");
+    v.edgeDescriptor_ = requireString(requireField(e, "descriptor", "edges"), "edges.descriptor");
+    if (descriptorIndex(v.edgeDescriptor_) < 0)
+      throw Error(errc::kInvalidDocument, "unknown descriptor '" + v.edgeDescriptor_ + "'", "edges.descriptor");
+    v.edgeSet_ = parseDegreeSet(requireField(e, "set", "edges"), "edges.set");
+    const std::vector<std::string> before = lowerWords("before_nouns", false);
+    for (size_t i = 0; i < before.size(); ++i) {
+      auto it = v.adjectives_.find(before[i]);
+      if (it == v.adjectives_.end() || it->second.descriptor != v.edgeDescriptor_)
+        throw Error(errc::kInvalidDocument,
+                    "'" + before[i] + "' must be an adjective of " + v.edgeDescriptor_ + " (adjectives)",
+                    "edges.before_nouns[" + std::to_string(i) + "]");
+      v.edgesBeforeNouns_.insert(before[i]);
+    }
+  }
+
   // Optional: vocabulary files written before requests were data still load.
   if (doc.contains("requests")) {
     const auto& r = requireObject(doc["requests"], "requests");
@@ -341,7 +376,8 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
   const std::vector<std::string> fillerWords(v.fillers_.begin(), v.fillers_.end());
   const std::initializer_list<const std::vector<std::string>*> lists = {
       &v.intensityWords_, &v.adjectiveWords_, &v.nounWords_,    &v.directionWords_,
-      &v.distanceWords_,  &v.requestPhrases_, &fillerWords, &v.sectionWords_};
+      &v.distanceWords_,  &v.requestPhrases_, &fillerWords, &v.sectionWords_,
+      &v.edgeWords_};
   for (const std::vector<std::string>* list : lists)
     for (const std::string& phrase : *list) {
       size_t i = 0;

@@ -29,6 +29,10 @@
 //                 queries ("a cube with a cylindrical hole"), and the noun of a hole without one.
 //   sections      {words[], descriptors{descriptor: section descriptor}} (optional): "with squarish
 //                 traverse section" is squariness read as section-squariness (query/linguistic/descriptors.h).
+//   edges         {words[], descriptor, set, before_nouns[]} (optional): "with rounded edges" (an
+//                 adjective of the descriptor, then an edge word) says the shape of a part's edges,
+//                 plainly the degree `set`; so do the adjectives `before_nouns`, plain before a noun
+//                 with a squariness condition ("a rounded box", "a filleted cube").
 //   requests      {phrases[], fillers[]} (optional): the request that may open a query ("show me",
 //                 "I am looking for"; the longest that matches is skipped) and the words skipped
 //                 wherever they stand ("please").
@@ -156,6 +160,16 @@ class Vocabulary {
     return it == holeNouns_.end() ? nullptr : &it->second;
   }
   const std::string& plainHoleNoun() const { return plainHoleNoun_; }
+  // The words of a part's edges ("edges", "corners"; empty: the vocabulary has none), the
+  // descriptor that says their shape (roundness), and whether a plain adjective before a noun
+  // with a squariness condition says its edges ("a rounded box" is a box with rounded edges,
+  // not a round one).
+  const std::vector<std::string>& edgeWords() const { return edgeWords_; }
+  const std::string& edgeDescriptor() const { return edgeDescriptor_; }
+  // The degree of that descriptor rounded edges have, said plainly: the condition of "with
+  // rounded edges" and the degree a part made from those words takes.
+  const FuzzyNumber& edgeSet() const { return edgeSet_; }
+  bool saysEdgesBeforeNouns(const std::string& adjective) const { return edgesBeforeNouns_.count(adjective) > 0; }
   bool knowsWord(const std::string& word) const { return words_.count(word) > 0; }
   const std::set<std::string>& words() const { return words_; }
 
@@ -177,6 +191,10 @@ class Vocabulary {
   std::map<std::string, std::string> holeNouns_;
   std::string plainHoleNoun_;
   std::map<std::string, std::string> sectionDescriptors_;
+  std::vector<std::string> edgeWords_;
+  std::string edgeDescriptor_;
+  FuzzyNumber edgeSet_;
+  std::set<std::string> edgesBeforeNouns_;
   std::vector<std::string> intensityWords_, adjectiveWords_, nounWords_, directionWords_, distanceWords_;
   std::set<std::string> words_;
 };

@@ -11,6 +11,7 @@
 #include "query/linguistic/descriptors.h"
 #include "query/linguistic/linguistic_query.h"
 #include "query/document/part_json.h"
+#include "query/json/fuzzy_json.h"
 #include "query/linguistic/vocabulary.h"
 
 namespace fsdb {
@@ -158,7 +159,7 @@ TEST(PartFromWords, SectionWordsSetTheSectionAlone) {
   const FuzzyPart box = make("a box"), cylindrical = make("a cylindrical box");
   EXPECT_EQ(cylindrical.eps1, box.eps1);
   EXPECT_NE(cylindrical.eps2, box.eps2);
-  // The same rule as roundness's (0.05 + 0.95·d), on eps2 alone: the same degrees.
+  // The same rule as roundness's (max(0.05, d)), on eps2 alone: the same degrees.
   EXPECT_NEAR(similarity(valueOf(cylindrical, "section-roundness"), valueOf(make("a round box"), "roundness")), 1.0,
               1e-9);
   EXPECT_NEAR(similarity(valueOf(make("a very tubular box"), "section-roundness"),
@@ -188,6 +189,48 @@ TEST(PartFromWords, AdjectivesActInATableOrder) {
   const FuzzyPart a = make("a slightly bent long rod"), b = make("a long slightly bent rod");
   EXPECT_EQ(a.kv, b.kv);
   EXPECT_EQ(a.a3, b.a3);
+}
+
+// The exponent words invert their descriptor exactly (ε = d for roundness, 1 − d for squariness)
+// down to the smallest exponent, 0.05, where the image gathers what lies below it (the extension
+// principle: its membership is the highest of those degrees).
+TEST(PartFromWords, ExponentWordsInvertTheirDescriptorExactly) {
+  EXPECT_EQ(make("a moderately round ball").eps1, FuzzyNumber::trapezoidal(0.3, 0.45, 0.6, 0.75));
+  EXPECT_EQ(make("a moderately square box").eps2, FuzzyNumber::trapezoidal(0.25, 0.4, 0.55, 0.7));
+  const auto expectPoints = [](const FuzzyNumber& got, const std::vector<Breakpoint>& want) {
+    ASSERT_EQ(got.breakpoints().size(), want.size()) << toJson(got);
+    for (size_t i = 0; i < want.size(); ++i) {
+      EXPECT_NEAR(got.breakpoints()[i].x, want[i].x, 1e-12) << i;
+      EXPECT_NEAR(got.breakpoints()[i].mu, want[i].mu, 1e-12) << i;
+    }
+  };
+  // (A set starts at membership 0: a jump is two points at one x.)
+  expectPoints(make("an extremely square box").eps1, {{0.05, 0}, {0.05, 1}, {0.2, 0}});
+  // slightly: trap(0, 0.1, 0.25, 0.4); the degrees under 0.05 (membership up to 0.5) gather at it.
+  expectPoints(make("a slightly round box").eps1, {{0.05, 0}, {0.05, 0.5}, {0.1, 1}, {0.25, 1}, {0.4, 0}});
+  const LinguisticQuery q = parseLinguisticQuery("find a moderately round shape", v());
+  EXPECT_NEAR(scoreDescriptors(q, describePart(make("a moderately round ball"))).score, 1.0, 1e-9);
+}
+
+// "with rounded edges" sets the exponents as the adjective before the noun does ("a rounded
+// box"): the vocabulary's edge set, between the box's square and a round shape; the words find
+// that part with a score of 1.
+TEST(PartFromWords, EdgeWordsRoundTheEdges) {
+  const FuzzyPart with = make("a box with rounded edges");
+  EXPECT_EQ(with.eps1, make("a rounded box").eps1);
+  EXPECT_EQ(with.eps2, make("a rounded box").eps2);
+  EXPECT_EQ(with.a3, make("a box").a3);
+  EXPECT_EQ(with.eps1, v().edgeSet());  // roundness is ε itself below 1
+  EXPECT_NE(make("a rounded ball").eps1, with.eps1);  // a ball has no edges: plain "rounded"
+  EXPECT_EQ(make("a cube with very soft corners").eps1, make("a very soft cube").eps1);
+  EXPECT_EQ(make("a cube with a rounded edge").eps1, make("a rounded cube").eps1);
+  for (const char* words : {"a box with rounded edges", "a rounded box", "a cube with softened corners",
+                            "a filleted cube"}) {
+    const LinguisticQuery q = parseLinguisticQuery(std::string("find ") + words, v());
+    EXPECT_NEAR(scoreDescriptors(q, describePart(make(words))).score, 1.0, 1e-9) << words;
+  }
+  EXPECT_NE(errorOf("a cube with bent edges").find("the shape of its edges"), std::string::npos);
+  EXPECT_NE(errorOf("a cube with rounded").find("the shape of its edges"), std::string::npos);
 }
 
 TEST(PartFromWords, Errors) {

@@ -89,6 +89,35 @@ TEST(LinguisticQuery, MeasuresAreConditionsOnTheExtents) {
   EXPECT_EQ(parse("find a sphere about 3 units above a box").root.kind, Kind::kRelation);
 }
 
+// Edges ("with rounded edges", "a rounded box"): the edge descriptor's condition, plain the
+// vocabulary's edge set (between square and round), with an intensity its set.
+TEST(LinguisticQuery, EdgeWordsSayTheShapeOfTheEdges) {
+  const auto edgeLeaf = [](const std::string& text) {
+    for (const QueryCondition& leaf : leavesOf(parse(text).root))
+      if (leaf.edges) return leaf;
+    ADD_FAILURE() << "no edge condition in " << text;
+    return QueryCondition{};
+  };
+  const Vocabulary& v = Vocabulary::builtin();
+  const FuzzyNumber& created = v.edgeSet();
+  for (const char* text : {"a cube with round edges", "a cube with rounded corners", "a box with a rounded edge",
+                           "a rounded box", "a filleted cube", "a radiused box", "a box with smooth edges",
+                           "cube with round edge"}) {
+    const QueryCondition c = edgeLeaf(text);
+    EXPECT_EQ(c.descriptor, "roundness") << text;
+    EXPECT_EQ(c.set, created) << text;
+  }
+  EXPECT_EQ(edgeLeaf("a cube with very rounded edges").set, *v.intensity("very"));
+  EXPECT_EQ(edgeLeaf("a cube with round edges").text, "round edges");
+  // Not edges: an adjective of a ball (no squareness to round), under "not", or with an intensity
+  // before the noun (a degree of roundness of its own).
+  for (const char* text : {"a rounded ball", "a box that is not rounded", "a very rounded box", "rounded"})
+    for (const QueryCondition& leaf : leavesOf(parse(text).root)) EXPECT_FALSE(leaf.edges) << text;
+  EXPECT_EQ(leavesOf(parse("a rounded ball").root).front().set, v.plainSet(*v.adjective("rounded")));
+  // An edge word after an adjective of another descriptor is no edge phrase.
+  EXPECT_THROW(parse("a cube with bent edges"), Error);
+}
+
 // Nouns are defaults, not vetoes: the words replace a noun's condition they contradict.
 TEST(LinguisticQuery, NounsAreDefaultsTheWordsOverride) {
   const auto descriptorsOfNoun = [](const std::string& text) {
@@ -144,6 +173,14 @@ TEST(LinguisticQuery, NounsAreDefaultsTheWordsOverride) {
   // Words on two extents set the proportions; one does not.
   EXPECT_EQ(descriptorsOfNoun("a plate 8 long and 1 wide"), std::vector<std::string>{"squariness"});
   EXPECT_EQ(descriptorsOfNoun("a sphere 2 across"), (std::vector<std::string>{"roundness", "elongation"}));
+  // Words on a part's edges say the shape of its exponents: they replace a box's squareness
+  // whatever else the box keeps; "rounded" before a noun that is square says its edges too.
+  EXPECT_EQ(descriptorsOfNoun("a cube with round edges"), std::vector<std::string>{"elongation"});
+  EXPECT_EQ(descriptorsOfNoun("a box with softened corners"), std::vector<std::string>{});
+  EXPECT_EQ(descriptorsOfNoun("a rounded box"), std::vector<std::string>{});
+  EXPECT_EQ(descriptorsOfNoun("a box that is rounded"), std::vector<std::string>{});
+  EXPECT_EQ(descriptorsOfNoun("a box that is not rounded"), std::vector<std::string>{"squariness"});
+  EXPECT_EQ(descriptorsOfNoun("a round box"), std::vector<std::string>{"squariness"});
   // A noun with all its conditions replaced still names itself (printing, explain).
   const LinguisticQuery q = parse("a slightly tapered square cone");
   EXPECT_EQ(q.root.children.at(1).noun, "cone");

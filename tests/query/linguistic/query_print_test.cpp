@@ -39,6 +39,11 @@ TEST(QueryPrint, CanonicalPhrasing) {
   EXPECT_EQ(printed("a round plate"), "find a round plate");
   EXPECT_EQ(printed("plate round big thin"), "find a plate that is round and big and thin");
   EXPECT_EQ(printed("a plate with a round cross-section"), "find a plate that is round cross-section");
+  // Edges print as written, after "with" when they name their edges.
+  EXPECT_EQ(printed("a cube with round edges"), "find a cube with round edges");
+  EXPECT_EQ(printed("a box which has very softened corners"), "find a box with very softened corners");
+  EXPECT_EQ(printed("a rounded box"), "find a rounded box");
+  EXPECT_EQ(printed("a cube with a rounded edge"), "find a cube with rounded edge");
   // Words in any case (a fuzz finding: a descriptor degree written "bEndness" was unprintable).
   EXPECT_EQ(printed("find shapes with bEndness at least 0.5"), "find a shape that is bendness at least 0.5");
   EXPECT_EQ(printed("a Slightly BENT shape"), "find a shape that is slightly bent");
@@ -54,7 +59,8 @@ TEST(QueryPrint, PrintedTextsMeanTheQuery) {
         "a box 4 by 2 by 1", "a ball of radius 0.5", "a rod exactly 6 long that is slightly bent",
         "something between 3 and 4 wide", "a disc with a radius of about 1", "a disc of radius about 0.3",
         "ball small", "a box 4 x 2 x 1 and 3 tall", "rod 6 long thin with a round cross-section",
-        "a square disc on a round plate", "a board that is not square", "a long flat board"}) {
+        "a square disc on a round plate", "a board that is not square", "a long flat board",
+        "a cube with round edges", "a rounded box", "a bent box with very soft corners", "a box that is rounded"}) {
     const LinguisticQuery q = parseLinguisticQuery(text, v());
     const std::string once = linguisticQueryText(q, v());
     EXPECT_EQ(testing::queryMeaning(parseLinguisticQuery(once, v())), testing::queryMeaning(q))

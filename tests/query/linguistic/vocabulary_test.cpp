@@ -288,6 +288,25 @@ TEST(Vocabulary, LoadErrorsNameThePath) {
   loadError(doc, &path);
   EXPECT_EQ(path, "directions.secondary.top right.gamma");
 
+  doc = builtinDocument();
+  doc["edges"]["descriptor"] = "edginess";
+  EXPECT_NE(loadError(doc, &path).find("unknown descriptor 'edginess'"), std::string::npos);
+  EXPECT_EQ(path, "edges.descriptor");
+
+  doc = builtinDocument();
+  doc["edges"]["before_nouns"].push_back("bent");
+  EXPECT_NE(loadError(doc, &path).find("must be an adjective of roundness"), std::string::npos);
+  EXPECT_EQ(path, "edges.before_nouns[7]");
+
+  doc = builtinDocument();
+  doc["edges"]["words"] = nlohmann::json::array({"Edges"});
+  EXPECT_NE(loadError(doc, &path).find("one lower-case word"), std::string::npos);
+  EXPECT_EQ(path, "edges.words[0]");
+
+  doc = builtinDocument();
+  doc.erase("edges");  // optional: a file without it has no edge words
+  EXPECT_TRUE(Vocabulary::fromJson(doc).edgeWords().empty());
+
   EXPECT_THROW(Vocabulary::fromFile("/nonexistent/vocabulary.json"), Error);
 }
 
@@ -340,6 +359,11 @@ TEST(Vocabulary, SectionsAndHoles) {
   EXPECT_EQ(*v().wholeShapeDescriptor("section-roundness"), "roundness");
   EXPECT_EQ(v().wholeShapeDescriptor("squariness"), nullptr);
   EXPECT_EQ(v().wholeShapeDescriptor("bendness"), nullptr);
+  EXPECT_EQ(v().edgeWords().front(), "edges");
+  EXPECT_EQ(v().edgeDescriptor(), "roundness");
+  EXPECT_TRUE(v().saysEdgesBeforeNouns("rounded"));
+  EXPECT_FALSE(v().saysEdgesBeforeNouns("round"));
+  EXPECT_TRUE(v().knowsWord("corners"));
   EXPECT_EQ(v().sectionWords().front(), "traverse section");
   EXPECT_TRUE(v().knowsWord("traverse"));
   EXPECT_EQ(*v().holeNoun("cylindrical"), "cylinder");
