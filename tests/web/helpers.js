@@ -7,10 +7,18 @@ const os = require('os');
 const path = require('path');
 const { chromium } = require('playwright-core');
 
+// How many times slower than a Release build the server under test runs (FSDB_SLOWDOWN: the
+// sanitizer build sets it, tests/CMakeLists.txt); every wait scales with it.
+const slowdown = Number(process.env.FSDB_SLOWDOWN || '1');
+
+// The server's time limit per evaluation scales with the slowdown as every wait does: under the
+// sanitizers (8x) a view of a fuzzy demo part may need more than the default 60 s, and a build
+// now stops within a search of its deadline instead of finishing the block it is in.
 function startServer(fsdb, source, webDir) {
   const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'fsdb-studio-'));
   const child = spawn(fsdb, ['--log-level', 'warn', 'serve', '--port', '0', '--db', path.join(dir, 'db.sqlite'),
-    '--demo', path.join(source, 'schema/demo'), '--web', webDir], { stdio: ['ignore', 'pipe', 'inherit'] });
+    '--demo', path.join(source, 'schema/demo'), '--web', webDir, '--max-eval-ms', String(60000 * slowdown)],
+  { stdio: ['ignore', 'pipe', 'inherit'] });
   return new Promise((resolve, reject) => {
     let buffered = '';
     child.stdout.on('data', (chunk) => {
@@ -81,9 +89,6 @@ async function regionShot(page, file, from, to) {
   await page.screenshot({ path: file, fullPage: true, clip: { x: view.x, y: a.y, width: view.width, height: b.y + b.height - a.y } });
 }
 
-// How many times slower than a Release build the server under test runs (FSDB_SLOWDOWN: the
-// sanitizer build sets it, tests/CMakeLists.txt); every wait scales with it.
-const slowdown = Number(process.env.FSDB_SLOWDOWN || '1');
 
 // A page whose waits (Playwright's default 30 s) scale with the slowdown.
 async function newPage(browser, options) {
