@@ -9,6 +9,7 @@
 #include "geometry/fuzzy/fuzzy_arithmetic.h"
 #include "query/linguistic/degree_sets.h"
 #include "query/linguistic/descriptors.h"
+#include "query/linguistic/edges.h"
 #include "query/linguistic/linguistic_query.h"
 #include "query/document/part_json.h"
 #include "query/linguistic/vocabulary.h"
@@ -92,6 +93,17 @@ FuzzyNumber exponentOf(const FuzzyNumber& d, double slope, double offset) {
   }
   if (gathered >= 0.0) out.push_back({kMinExponent, gathered});
   return FuzzyNumber::fromPoints(out);
+}
+
+// The edge exponents of `noun` (edgeExponentsOf) at degree `d` of the vocabulary's edge
+// descriptor, through that descriptor's exponent rule; the others as they are.
+void realizeEdges(const FuzzyNumber& d, const Noun& noun, const Vocabulary& vocabulary, FuzzyPart* part) {
+  const EdgeExponents edges = edgeExponentsOf(&noun);
+  for (const ExponentRule& rule : kExponentRules)
+    if (vocabulary.edgeDescriptor() == rule.descriptor) {
+      if (edges.eps1) part->eps1 = exponentOf(d, rule.slope, rule.offset);
+      if (edges.eps2) part->eps2 = exponentOf(d, rule.slope, rule.offset);
+    }
 }
 
 // A section descriptor is found through the vocabulary's sections map (section-squariness is
@@ -264,8 +276,7 @@ FuzzyPart partFromWords(const std::string& text, const Vocabulary& vocabulary) {
   for (const AdjectiveUse& use : uses) {
     const Adjective& a = *use.adjective;
     const std::string& descriptor = descriptorOf(use);
-    // Plain words on the edges take the vocabulary's edge set ("a box with rounded edges").
-    const FuzzyNumber d = use.edges && !use.intensity ? vocabulary.edgeSet() : vocabulary.createdSet(a, use.intensity);
+    const FuzzyNumber d = vocabulary.createdSet(a, use.intensity);
     const bool deformation = std::find(kOrder.begin(), kOrder.end(), descriptor) >=
                              std::find(kOrder.begin(), kOrder.end(), "bendness");
     if (deformation) setExtents();
@@ -278,6 +289,9 @@ FuzzyPart partFromWords(const std::string& text, const Vocabulary& vocabulary) {
     }
     realize(descriptor, d, vocabulary, &part);
   }
+  // The edges, after the shape the adjectives gave ("a round box with sharp edges" is a box):
+  // the noun's edge exponents at the degree the words say (query/linguistic/edges.h).
+  if (words.edges) realizeEdges(words.edges->degree, *words.noun, vocabulary, &part);
   setExtents();
   try {
     part.validate();

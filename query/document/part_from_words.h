@@ -23,6 +23,10 @@
 // the order shape, proportions, size, extents, deformations, whatever their order in the text,
 // so a bend is measured on the final length; measures override an adjective of the same extent. Affine rules are exact; elongation and
 // size map the set's breakpoints (exact there, linear between).
+// Edges ("a box with rounded edges", "a rounded box", "a cylinder with sharp edges") act after
+// the shape's adjectives: the noun's edge exponents (query/linguistic/edges.h: those below 1; a
+// cylinder's eps1 alone) take the edge degree through the rule of the vocabulary's edge
+// descriptor above (roundness: ε = max(0.05, d)); the others keep what the words gave them.
 // A word the grammar lacks is routed onto the vocabulary first (query/linguistic/word_routes.h:
 // its lemma, WordNet's links), so "a skinny pole" is made as "a thin pole"; the document keeps
 // the words as written.

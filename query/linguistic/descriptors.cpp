@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
+
+#include "geometry/core/error.h"
 
 namespace fsdb {
 namespace {
@@ -209,6 +212,17 @@ std::vector<DescriptorValue> describePart(const FuzzyPart& part) {
 }  // namespace fsdb
 
 namespace fsdb {
+
+double exponentDegree(int index, double e) {
+  switch (index) {
+    case 0: return sq(e);
+    case 1: return ro(e);
+    case 2: return be(e);
+    case 3: return pi(e);
+    default:
+      throw Error(errc::kInvalidParameter, "descriptor " + std::to_string(index) + " is no exponent shape", "descriptor");
+  }
+}
 
 double extentDegree(double e) { return extentDegreeOf(e); }
 

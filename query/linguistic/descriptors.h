@@ -89,6 +89,11 @@ double extentDegree(double e);
 // between (the same levels a fuzzy part's descriptor values have).
 FuzzyNumber extentDegreeSet(const FuzzyNumber& extent);
 
+// What one exponent e gives a whole-shape exponent descriptor (index 0-3: sq, ro, be, pi above):
+// squariness and roundness, bevelness and pinchness are the mean of it over eps1 and eps2. Throws
+// invalid_parameter for any other index.
+double exponentDegree(int index, double e);
+
 // Index of a name in descriptorNames(), or -1.
 int descriptorIndex(const std::string& name);
 

@@ -17,6 +17,7 @@
 #include "query/json/fuzzy_json.h"
 #include "query/json/number_phrases.h"
 #include "query/linguistic/degree_sets.h"
+#include "query/linguistic/edges.h"
 #include "query/linguistic/query_tokens.h"
 #include "query/linguistic/vocabulary.h"
 
@@ -169,7 +170,7 @@ bool overriddenByWords(const NounCondition& condition, const Noun& noun, const s
   std::set<std::string> extents;
   for (const QueryCondition* c : said) {
     if (c->descriptor == descriptor && (graded(*c) || contradicts(c->set, condition.set))) return true;
-    if (isExponentShape(descriptor) && c->edges) return true;  // "a box with rounded edges" is no longer square
+    if (isExponentShape(descriptor) && c->edges != QueryCondition::Edges::kNone) return true;  // "a box with rounded edges" is no longer square
     if (isExponentShape(descriptor) && isExponentShape(c->descriptor) && keepsAnother) return true;
     if (descriptor == "elongation" && (c->descriptor == "flatness" || c->descriptor == "slenderness")) return true;
     if (c->descriptor == "length" || c->descriptor == "width" || c->descriptor == "thickness" || c->descriptor == "height") {
@@ -266,7 +267,7 @@ class Parser {
     return out;
   }
 
-  // part_description = [ article ] { [ intensity ] adjective [ "," | "and" ] } noun { measure } [ edges ]
+  // part_description = [ article ] { [ intensity ] adjective [ "," | "and" ] } noun { measure } [ "with" edge ]
   PartDescription partDescription() {
     entry_ = Entry::kPartDescription;
     PartDescription d;
@@ -310,30 +311,22 @@ class Parser {
       else leaves = std::move(m.children);
       for (const QueryCondition& leaf : leaves) d.measures.push_back({leaf.descriptor, *leaf.measure, leaf.text});
     }
-    // edges = "with" [ "a" | "an" ] [ intensity ] adjective edge-word ("a cube with rounded
-    // edges"): the adjective, as it would be before the noun.
+    // [ "with" edge ] ("a cube with rounded edges", "a cylinder with sharp edges"); or a plain
+    // edges.before_nouns adjective of a noun with a squariness condition says its edges ("a
+    // rounded box"), as in a query.
     if (at("with")) {
       const size_t start = ++pos_;
-      acceptAny({"a", "an"});
-      const FuzzyNumber* intensity = nullptr;
-      if (size_t n = matchPhrase(intensityWords_, &word)) {
-        intensity = v_.intensity(word);
-        pos_ += n;
-      }
-      const size_t n = matchPhrase(adjectiveWords_, &word);
-      std::string edgeWord;
-      if (n == 0 || v_.adjective(word)->descriptor != v_.edgeDescriptor() ||
-          !matchPhrase(v_.edgeWords(), &edgeWord, n))
-        fail({"the shape of its edges ('with rounded edges')"});
-      pos_ += n;
-      d.adjectives.push_back({v_.adjective(word), intensity, span(start, pos_), true});
-      pos_ += matchPhrase(v_.edgeWords(), &edgeWord);
+      std::optional<FuzzyNumber> degree = edgePhrase();
+      if (!degree) fail({"the shape of its edges ('with rounded edges', 'with sharp edges')"});
+      d.edges = EdgeUse{std::move(*degree), span(start, pos_)};
     }
-    // A plain edges.before_nouns adjective of a noun with a squariness condition says its edges
-    // ("a rounded box"), as in a query.
-    const bool square = isSquareNoun(*d.noun);
-    for (AdjectiveUse& use : d.adjectives)
-      if (square && !use.intensity && v_.saysEdgesBeforeNouns(use.adjective->word)) use.edges = true;
+    if (isSquareNoun(*d.noun))
+      for (auto use = d.adjectives.begin(); use != d.adjectives.end(); ++use)
+        if (!use->intensity && v_.saysEdgesBeforeNouns(use->adjective->word)) {
+          if (!d.edges) d.edges = EdgeUse{v_.edgeSet(), use->text};  // the words after the noun win
+          d.adjectives.erase(use);
+          break;
+        }
     if (pos_ < tokens_.size())
       fail({"the end of the description (a part is adjectives, one noun and its measures: 'a pole about 10 long')"});
     return d;
@@ -784,6 +777,14 @@ class Parser {
       FuzzyNumber set = degree();
       return descriptorCondition(descriptor, std::move(set), span(start, pos_));
     }
+    // The part's edges ("round edges", "a softened corner", "sharp edges"): the degree of its
+    // edge exponents, turned into a condition for the noun once it is read (turnEdges).
+    if (std::optional<FuzzyNumber> degree = edgePhrase()) {
+      QueryCondition c = descriptorCondition(v_.edgeDescriptor(), *degree, span(start, pos_));
+      c.edges = QueryCondition::Edges::kNamed;
+      c.edgeDegree = std::move(degree);
+      return c;
+    }
     std::string word;
     const bool article = startsArticleSection();
     if (article) ++pos_;
@@ -799,17 +800,6 @@ class Parser {
     const FuzzyNumber set =
         intensity ? (adjective.lowPole ? mirroredDegrees(*intensity) : *intensity) : v_.plainSet(adjective);
     std::string descriptor = adjective.descriptor;
-    // edge = an edge word of the vocabulary after an adjective of its descriptor ("round edges",
-    // "softened corners"): the shape of the part's edges; plain, the vocabulary's edge set
-    // (between square and round), which a part made from the words takes too.
-    std::string edgeWord;
-    if (descriptor == v_.edgeDescriptor())
-      if (const size_t k = matchPhrase(v_.edgeWords(), &edgeWord)) {
-        pos_ += k;
-        QueryCondition c = descriptorCondition(descriptor, intensity ? set : v_.edgeSet(), span(start, pos_));
-        c.edges = true;
-        return c;
-      }
     // section = a section word of the vocabulary: the adjective describes the traverse section alone.
     std::string sectionWord;
     if (const size_t k = matchPhrase(v_.sectionWords(), &sectionWord)) {
@@ -825,21 +815,51 @@ class Parser {
     }
     QueryCondition c = descriptorCondition(descriptor, set, span(start, pos_));
     c.outline = adjective.outline && sectionWord.empty();
-    if (!intensity && sectionWord.empty() && v_.saysEdgesBeforeNouns(word)) c.edgeSet = v_.edgeSet();
+    // A plain edges.before_nouns adjective may say the edges of a square noun ("a rounded box").
+    if (!intensity && sectionWord.empty() && v_.saysEdgesBeforeNouns(word)) c.edgeDegree = v_.edgeSet();
     return c;
   }
 
-  // Every pending edge leaf of `c` (QueryCondition::edgeSet) resolved for `noun`: the edges of a
-  // noun with a squariness condition ("a rounded box"), else the adjective as it is ("a rounded
-  // ball" is a round ball).
-  // Under "not" it stays the adjective ("a box that is not rounded" is a square box).
+  // edge = [ "a" | "an" ] [ intensity ] adjective edge-word, the adjective one of the edge
+  // descriptor's ("rounded edges", "a softened corner") or a sharp one ("sharp edges", "square
+  // corners": Vocabulary::sharpEdgeWords): the degree of the part's edge exponents (edges.h).
+  // Plain, the vocabulary's edge or sharp edge set; with an intensity its set, mirrored for sharp
+  // edges (the low end of the descriptor) as for a low-pole adjective. Where the tokens at pos_
+  // are no edge phrase, nothing is read and the answer is empty.
+  std::optional<FuzzyNumber> edgePhrase() {
+    size_t k = at("a") || at("an") ? 1 : 0;
+    std::string word;
+    const FuzzyNumber* intensity = nullptr;
+    if (const size_t n = matchPhrase(intensityWords_, &word, k)) {
+      intensity = v_.intensity(word);
+      k += n;
+    }
+    const size_t n = matchPhrase(adjectiveWords_, &word, k);
+    if (n == 0) return std::nullopt;
+    const Adjective& adjective = *v_.adjective(word);
+    const bool sharp = contains(v_.sharpEdgeWords(), word);
+    if (!sharp && adjective.descriptor != v_.edgeDescriptor()) return std::nullopt;
+    std::string edgeWord;
+    const size_t e = matchPhrase(v_.edgeWords(), &edgeWord, k + n);
+    if (e == 0) return std::nullopt;
+    pos_ += k + n + e;
+    if (sharp) return intensity ? mirroredDegrees(*intensity) : v_.sharpEdgeSet();
+    if (!intensity) return v_.edgeSet();
+    return adjective.lowPole ? mirroredDegrees(*intensity) : *intensity;
+  }
+
+  // Every pending edge leaf of `c` (QueryCondition::edgeDegree) resolved for `noun`: named edges
+  // ("with sharp edges") become the set of the edge descriptor a part of the noun with those
+  // edges has (edgeDescriptorSet: a cylinder's round section stays round). A plain adjective
+  // before a noun with a squariness condition says its edges too ("a rounded box"); before any
+  // other noun it stays the adjective ("a rounded ball" is a round ball), and so it does under
+  // "not" ("a box that is not rounded" is a square box).
   void turnEdges(QueryCondition* c, const Noun& noun, bool negated = false) const {
-    if (c->kind == Kind::kDescriptor && c->edgeSet) {
-      if (isSquareNoun(noun) && !negated) {
-        c->set = *c->edgeSet;
-        c->edges = true;
-      }
-      c->edgeSet.reset();
+    if (c->kind == Kind::kDescriptor && c->edgeDegree) {
+      if (c->edges == QueryCondition::Edges::kNone && isSquareNoun(noun) && !negated)
+        c->edges = QueryCondition::Edges::kBeforeNoun;
+      if (c->edges != QueryCondition::Edges::kNone) c->set = edgeDescriptorSet(*c->edgeDegree, &noun, v_);
+      c->edgeDegree.reset();
     }
     for (QueryCondition& child : c->children) turnEdges(&child, noun, negated || c->kind == Kind::kNot);
   }

@@ -90,12 +90,16 @@ struct QueryCondition {
   // An outline adjective's condition ("round", "square": Adjective::outline) not yet turned onto
   // a flat noun's section (Vocabulary::descriptorOn): the noun phrase turns it once its noun is read.
   bool outline = false;
-  // Whether it says a part's edges ("with rounded edges", "a rounded box": Vocabulary::edgeWords):
-  // it replaces a noun's conditions on the shape of the exponents. `edgeSet`: a plain adjective
-  // of edges.before_nouns not yet turned, and the set it takes if its noun has a squariness
-  // condition (the noun phrase turns it once its noun is read).
-  bool edges = false;
-  std::optional<FuzzyNumber> edgeSet;
+  // Whether it says a part's edges (query/linguistic/edges.h), and how: named by an edge word
+  // ("with rounded edges", "sharp corners": Vocabulary::edgeWords) or plainly before a noun with a
+  // squariness condition ("a rounded box": Vocabulary::saysEdgesBeforeNouns). It replaces a
+  // noun's conditions on the shape of the exponents. `edgeDegree`: the degree of the edge
+  // exponents the words say, not yet turned into `set` for the noun (edgeDescriptorSet; a plain
+  // adjective before a noun that is not square, or under "not", stays the adjective); the noun
+  // phrase turns it once its noun is read.
+  enum class Edges { kNone, kNamed, kBeforeNoun };
+  Edges edges = Edges::kNone;
+  std::optional<FuzzyNumber> edgeDegree;
   // A measure ("about 10 long", "a radius of 1"): the extent it asks for in world units (a
   // radius already doubled) and `set` its image over the descriptor's degrees (extentDegreeSet).
   std::optional<FuzzyNumber> measure;
@@ -177,7 +181,12 @@ struct AdjectiveUse {
   const Adjective* adjective;
   const FuzzyNumber* intensity;  // null: the plain adjective
   std::string text;              // "slightly bent"
-  bool edges = false;            // it says the part's edges (Vocabulary::edgeSet when plain)
+};
+// The edges of a part described by words ("a box with rounded edges", "a rounded box", "a
+// cylinder with sharp edges"): the degree of its edge exponents (query/linguistic/edges.h).
+struct EdgeUse {
+  FuzzyNumber degree;
+  std::string text;  // "rounded edges"
 };
 // A measure of a part described by words ("a skinny pole about 10 long"): the descriptor
 // (length, width, thickness, height) and the extent in world units.
@@ -190,6 +199,7 @@ struct PartDescription {
   const Noun* noun = nullptr;
   std::vector<AdjectiveUse> adjectives;
   std::vector<MeasureUse> measures;  // after the noun: [ "," ] measure { ( "," | "and" ) measure }
+  std::optional<EdgeUse> edges;      // after the measures: "with" edge phrase; or a plain before_nouns adjective
 };
 PartDescription parsePartDescription(const std::string& text, const Vocabulary& vocabulary);
 

@@ -96,7 +96,7 @@ class Printer {
     if (descriptorIndex(firstWord(text)) >= 0 && firstWord(text) == c.descriptor) return text;
     // A part's edges: the words as written ("rounded edges", or "rounded" before a square noun,
     // which its noun phrase turns the same way again).
-    if (c.edges) return text.rfind("a ", 0) == 0 ? text.substr(2) : text.rfind("an ", 0) == 0 ? text.substr(3) : text;
+    if (c.edges != QueryCondition::Edges::kNone) return text.rfind("a ", 0) == 0 ? text.substr(2) : text.rfind("an ", 0) == 0 ? text.substr(3) : text;
     std::string first;
     for (const std::string& word : v_.adjectiveWords()) {
       const Adjective& a = *v_.adjective(word);
@@ -183,20 +183,13 @@ class Printer {
     std::string out = article + " ";
     if (modifiers) out += modifierText(*modifiers) + " ";
     out += noun;
-    if (clause) out += (saysEdgeWord(*clause) ? " with " : " that is ") + condition(*clause);
+    // Edges named by an edge word ("round edges") read better after "with" than "that is".
+    const bool namedEdges = clause && clause->edges == QueryCondition::Edges::kNamed;
+    if (clause) out += (namedEdges ? " with " : " that is ") + condition(*clause);
     return out;
   }
 
  private:
-  // An edge leaf that names its edges ("round edges"): "with" reads better than "that is".
-  bool saysEdgeWord(const QueryCondition& c) const {
-    if (!c.edges) return false;
-    const std::string text = lowerCase(c.text);
-    const size_t blank = text.rfind(' ');
-    const std::string last = blank == std::string::npos ? text : text.substr(blank + 1);
-    return std::find(v_.edgeWords().begin(), v_.edgeWords().end(), last) != v_.edgeWords().end();
-  }
-
   // Before a noun, an "or" or a "not" is one parenthesised condition, so the noun ends it.
   std::string modifierText(const QueryCondition& c) const {
     return c.kind == Kind::kAnd || c.kind == Kind::kDescriptor ? condition(c) : "(" + condition(c) + ")";

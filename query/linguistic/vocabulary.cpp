@@ -307,7 +307,7 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
   // Optional: the words of a part's edges ("a cube with rounded edges", "a rounded box").
   if (doc.contains("edges")) {
     const auto& e = requireObject(doc["edges"], "edges");
-    rejectUnknownKeys(e, "edges", {"about", "words", "descriptor", "set", "before_nouns"});
+    rejectUnknownKeys(e, "edges", {"about", "words", "descriptor", "set", "before_nouns", "sharp", "sharp_set"});
     const auto lowerWords = [&](const char* key, bool required) {
       std::vector<std::string> out;
       if (!required && !e.contains(key)) return out;
@@ -325,8 +325,11 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
     v.edgeWords_ = lowerWords("words", true);
     if (v.edgeWords_.empty()) throw Error(errc::kInvalidDocument, "edges needs at least one word", "edges.words");
     v.edgeDescriptor_ = requireString(requireField(e, "descriptor", "edges"), "edges.descriptor");
-    if (descriptorIndex(v.edgeDescriptor_) < 0)
-      throw Error(errc::kInvalidDocument, "unknown descriptor '" + v.edgeDescriptor_ + "'", "edges.descriptor");
+    // The edges are exponents (query/linguistic/edges.h): a descriptor of their shape.
+    if (descriptorIndex(v.edgeDescriptor_) < 0 || descriptorIndex(v.edgeDescriptor_) > 3)
+      throw Error(errc::kInvalidDocument,
+                  "'" + v.edgeDescriptor_ + "' is no descriptor of the exponents' shape (squariness, roundness, bevelness, pinchness)",
+                  "edges.descriptor");
     v.edgeSet_ = parseDegreeSet(requireField(e, "set", "edges"), "edges.set");
     const std::vector<std::string> before = lowerWords("before_nouns", false);
     for (size_t i = 0; i < before.size(); ++i) {
@@ -337,6 +340,18 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
                     "edges.before_nouns[" + std::to_string(i) + "]");
       v.edgesBeforeNouns_.insert(before[i]);
     }
+    // Optional: the adjectives that, before an edge word, say sharp edges ("a cylinder with
+    // sharp edges"), and the degree of the descriptor sharp edges have. An adjective of any
+    // descriptor ("sharp" is a taper before a noun): only the edge word makes it this.
+    const std::vector<std::string> sharp = lowerWords("sharp", false);
+    for (size_t i = 0; i < sharp.size(); ++i) {
+      if (!v.adjectives_.count(sharp[i]))
+        throw Error(errc::kInvalidDocument, "'" + sharp[i] + "' must be an adjective (adjectives)",
+                    "edges.sharp[" + std::to_string(i) + "]");
+      v.sharpEdgeWords_.push_back(sharp[i]);
+    }
+    if (!sharp.empty()) v.sharpEdgeSet_ = parseDegreeSet(requireField(e, "sharp_set", "edges"), "edges.sharp_set");
+    else if (e.contains("sharp_set")) throw Error(errc::kInvalidDocument, "sharp_set needs sharp words", "edges.sharp_set");
   }
 
   // Optional: vocabulary files written before requests were data still load.

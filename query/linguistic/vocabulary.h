@@ -29,10 +29,13 @@
 //                 queries ("a cube with a cylindrical hole"), and the noun of a hole without one.
 //   sections      {words[], descriptors{descriptor: section descriptor}} (optional): "with squarish
 //                 traverse section" is squariness read as section-squariness (query/linguistic/descriptors.h).
-//   edges         {words[], descriptor, set, before_nouns[]} (optional): "with rounded edges" (an
-//                 adjective of the descriptor, then an edge word) says the shape of a part's edges,
-//                 plainly the degree `set`; so do the adjectives `before_nouns`, plain before a noun
-//                 with a squariness condition ("a rounded box", "a filleted cube").
+//   edges         {words[], descriptor, set, before_nouns[], sharp[], sharp_set} (optional): "with
+//                 rounded edges" (an adjective of the descriptor, then an edge word) says the shape
+//                 of a part's edges, plainly the degree `set`; so do the adjectives `before_nouns`,
+//                 plain before a noun with a squariness condition ("a rounded box", "a filleted
+//                 cube"); the adjectives `sharp` before an edge word say sharp edges, plainly the
+//                 degree `sharp_set` ("a cylinder with sharp edges"). The degree is that of the
+//                 part's edge exponents (query/linguistic/edges.h).
 //   requests      {phrases[], fillers[]} (optional): the request that may open a query ("show me",
 //                 "I am looking for"; the longest that matches is skipped) and the words skipped
 //                 wherever they stand ("please").
@@ -170,6 +173,10 @@ class Vocabulary {
   // rounded edges" and the degree a part made from those words takes.
   const FuzzyNumber& edgeSet() const { return edgeSet_; }
   bool saysEdgesBeforeNouns(const std::string& adjective) const { return edgesBeforeNouns_.count(adjective) > 0; }
+  // The adjectives that say sharp edges before an edge word ("sharp edges", "square corners";
+  // empty: none), and the degree of the edge descriptor sharp edges have, said plainly.
+  const std::vector<std::string>& sharpEdgeWords() const { return sharpEdgeWords_; }
+  const FuzzyNumber& sharpEdgeSet() const { return sharpEdgeSet_; }
   bool knowsWord(const std::string& word) const { return words_.count(word) > 0; }
   const std::set<std::string>& words() const { return words_; }
 
@@ -195,6 +202,8 @@ class Vocabulary {
   std::string edgeDescriptor_;
   FuzzyNumber edgeSet_;
   std::set<std::string> edgesBeforeNouns_;
+  std::vector<std::string> sharpEdgeWords_;
+  FuzzyNumber sharpEdgeSet_;
   std::vector<std::string> intensityWords_, adjectiveWords_, nounWords_, directionWords_, distanceWords_;
   std::set<std::string> words_;
 };

@@ -140,8 +140,10 @@ void wordNetRoutes(const Vocabulary& v, const WordNet& wn, const std::string& ba
 }
 
 // The known adjectives that are a verb's past participle, as (verb, adjective) pairs ("bent": bend,
-// "curved": curve), in the vocabulary's order; both routes below look a stem or a synonym up in them.
-std::vector<std::pair<std::string, std::string>> participleAdjectives(const Vocabulary& v, const WordNet& wn) {
+// "curved": curve), in the vocabulary's order; both routes below look a stem or a synonym up in them
+// (routeWord builds the list once for both).
+using Participles = std::vector<std::pair<std::string, std::string>>;
+Participles participleAdjectives(const Vocabulary& v, const WordNet& wn) {
   std::vector<std::pair<std::string, std::string>> pairs;
   for (const std::string& a : v.adjectiveWords()) {
     if (!v.adjective(a)) continue;
@@ -159,7 +161,8 @@ std::vector<std::pair<std::string, std::string>> participleAdjectives(const Voca
 // the known adjective that is the stem's past participle ("twisty" -> twist -> twisted, "bendy"
 // -> bend -> bent). Stems as spelt, with a doubled last letter undone ("knobby" -> knob) and
 // with an e restored ("curvy" -> curve). Nouns are no targets ("party" is not a part).
-Candidate derivedAdjective(const Vocabulary& v, const WordNet& wn, const std::string& word) {
+Candidate derivedAdjective(const Vocabulary& v, const WordNet& wn, const std::string& word,
+                           const Participles& participles) {
   // A verb made from an adjective by -en, in any form ("flattened", "widening", "sharpens": flatten,
   // widen, sharpen): the adjective itself ("sharp"), with its e restored ("wide") or its doubled
   // last letter undone ("flat").
@@ -184,7 +187,7 @@ Candidate derivedAdjective(const Vocabulary& v, const WordNet& wn, const std::st
   if (stem.size() >= 3 && stem[stem.size() - 1] == stem[stem.size() - 2]) stems.push_back(stem.substr(0, stem.size() - 1));
   for (const std::string& s : stems)
     if (s != word && v.adjective(s)) return {s, "derivation", word + " -> " + s, kDerived, 0};
-  for (const auto& [base, a] : participleAdjectives(v, wn))
+  for (const auto& [base, a] : participles)
     if (std::find(stems.begin(), stems.end(), base) != stems.end())
       return {a, "derivation", word + " -> " + base + " -> " + a, kDerived, 0};
   return {};
@@ -197,7 +200,7 @@ Candidate derivedAdjective(const Vocabulary& v, const WordNet& wn, const std::st
 // WordNet has no links from verbs to the vocabulary, so this is the route of a synonym of the
 // verb, at a synonym's discount. Not a present participle or
 // a third person ("spinning", "bows": a verb's other forms say what a part does, not is).
-Candidate synonymVerbParticiple(const Vocabulary& v, const WordNet& wn, const std::string& word) {
+Candidate synonymVerbParticiple(const WordNet& wn, const std::string& word, const Participles& participles) {
   const auto endsWith = [&](const char* tail) {
     const size_t n = std::char_traits<char>::length(tail);
     return word.size() > n && word.compare(word.size() - n, n, tail) == 0;
@@ -207,7 +210,6 @@ Candidate synonymVerbParticiple(const Vocabulary& v, const WordNet& wn, const st
   for (const std::string& verb : wn.baseForms(word, Pos::kVerb))
     if (verb != word) verbs.push_back(verb);
   if (verbs.empty()) return {};
-  const std::vector<std::pair<std::string, std::string>> participles = participleAdjectives(v, wn);
   Candidate best;
   for (const std::string& verb : verbs) {
     const std::vector<WordNet::Synset> senses = wn.senses(verb, Pos::kVerb);
@@ -296,12 +298,13 @@ std::optional<WordRoute> routeWord(const std::string& word, const std::string& n
       if (best.became != before.became || best.via != before.via) best.noun = pos == Pos::kNoun && base != word;
     }
   // After WordNet's own links, which win a tie ("curvy" is similar to curved in WordNet too).
+  const Participles participles = participleAdjectives(vocabulary, *wordnet);
   {
     Candidate before = best;
-    consider(&best, derivedAdjective(vocabulary, *wordnet, word));
+    consider(&best, derivedAdjective(vocabulary, *wordnet, word, participles));
     if (best.became != before.became) best.noun = false;
   }
-  if (best.became.empty()) best = synonymVerbParticiple(vocabulary, *wordnet, word);
+  if (best.became.empty()) best = synonymVerbParticiple(*wordnet, word, participles);
   if (best.became.empty()) best = abbreviated(vocabulary, *wordnet, word);
   if (best.became.empty()) return std::nullopt;
   if (best.noun) {

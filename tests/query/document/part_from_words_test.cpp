@@ -233,6 +233,40 @@ TEST(PartFromWords, EdgeWordsRoundTheEdges) {
   EXPECT_NE(errorOf("a cube with rounded").find("the shape of its edges"), std::string::npos);
 }
 
+// Edges are the noun's exponents below 1: a cylinder's rims (eps1) round or sharpen and its
+// round section (eps2 = 1) stays; sharp edges take the sharp edge set ("sharp" is no taper
+// there); the words after the noun win over a shape word before it. Every one is found by its
+// own words with a score of 1.
+TEST(PartFromWords, EdgesAreTheNounsExponentsBelowOne) {
+  const FuzzyPart cylinder = make("a cylinder with rounded edges");
+  EXPECT_EQ(cylinder.eps1, v().edgeSet());
+  EXPECT_EQ(cylinder.eps2, make("a cylinder").eps2);
+  EXPECT_EQ(make("a rounded cylinder").eps1, v().edgeSet());
+  EXPECT_EQ(make("a rounded cylinder").eps2, make("a cylinder").eps2);
+  const FuzzyPart sharp = make("a cylinder with sharp edges");
+  EXPECT_EQ(sharp.eps2, make("a cylinder").eps2);
+  EXPECT_LE(sharp.eps1.support().hi, 0.15 + 1e-12);
+  EXPECT_EQ(sharp.kx, make("a cylinder").kx);  // no taper
+  const FuzzyPart box = make("a round box with sharp edges");
+  EXPECT_EQ(box.eps1, sharp.eps1);
+  EXPECT_EQ(box.eps2, sharp.eps1);
+  EXPECT_EQ(make("a rounded box with sharp corners").eps1, sharp.eps1);
+  for (const char* words : {"a cylinder with rounded edges", "a rounded cylinder", "a cylinder with sharp edges",
+                            "a cone with soft edges", "a box with sharp corners", "a disc with rounded edges",
+                            "a cylinder 6 long with sharp edges", "a cube with moderately rounded corners",
+                            "a ball with sharp edges"}) {
+    const LinguisticQuery q = parseLinguisticQuery(std::string("find ") + words, v());
+    EXPECT_NEAR(scoreDescriptors(q, describePart(make(words))).score, 1.0, 1e-9) << words;
+  }
+  // The words tell the rims apart: a plain cylinder has sharp edges and no rounded ones.
+  const auto score = [](const std::string& query, const std::string& part) {
+    return scoreDescriptors(parseLinguisticQuery(query, v()), describePart(make(part))).score;
+  };
+  EXPECT_NEAR(score("a cylinder with sharp edges", "a cylinder"), 1.0, 1e-9);
+  EXPECT_EQ(score("a cylinder with rounded edges", "a cylinder"), 0.0);
+  EXPECT_EQ(score("a cylinder with sharp edges", "a cylinder with rounded edges"), 0.0);
+}
+
 TEST(PartFromWords, Errors) {
   EXPECT_NE(errorOf("a slightly bnet cylinder").find("closest known words: bent"), std::string::npos);
   EXPECT_NE(errorOf("a slightly bnet cylinder").find("did you mean \"a slightly bent cylinder\"?"), std::string::npos);

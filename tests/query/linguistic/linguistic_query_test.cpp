@@ -10,6 +10,7 @@
 #include "geometry/core/error.h"
 #include "geometry/fuzzy/fuzzy_arithmetic.h"
 #include "query/json/fuzzy_json.h"
+#include "query/linguistic/degree_sets.h"
 #include "query/linguistic/descriptors.h"
 #include "query/linguistic/vocabulary.h"
 #include "tests/testing/grammar_examples.h"
@@ -89,33 +90,68 @@ TEST(LinguisticQuery, MeasuresAreConditionsOnTheExtents) {
   EXPECT_EQ(parse("find a sphere about 3 units above a box").root.kind, Kind::kRelation);
 }
 
-// Edges ("with rounded edges", "a rounded box"): the edge descriptor's condition, plain the
-// vocabulary's edge set (between square and round), with an intensity its set.
+// Edges ("with rounded edges", "a rounded box", "with sharp edges"): a condition on the edge
+// descriptor; plain the vocabulary's edge or sharp set, with an intensity its set (mirrored for
+// sharp edges); for a box, whose both exponents are edges, that set itself.
 TEST(LinguisticQuery, EdgeWordsSayTheShapeOfTheEdges) {
+  using Edges = QueryCondition::Edges;
   const auto edgeLeaf = [](const std::string& text) {
     for (const QueryCondition& leaf : leavesOf(parse(text).root))
-      if (leaf.edges) return leaf;
+      if (leaf.edges != Edges::kNone) return leaf;
     ADD_FAILURE() << "no edge condition in " << text;
     return QueryCondition{};
   };
   const Vocabulary& v = Vocabulary::builtin();
-  const FuzzyNumber& created = v.edgeSet();
   for (const char* text : {"a cube with round edges", "a cube with rounded corners", "a box with a rounded edge",
                            "a rounded box", "a filleted cube", "a radiused box", "a box with smooth edges",
                            "cube with round edge"}) {
     const QueryCondition c = edgeLeaf(text);
     EXPECT_EQ(c.descriptor, "roundness") << text;
-    EXPECT_EQ(c.set, created) << text;
+    EXPECT_EQ(c.set, v.edgeSet()) << text;
+    EXPECT_FALSE(c.edgeDegree) << text;  // turned for its noun
   }
+  EXPECT_EQ(edgeLeaf("a cube with round edges").edges, Edges::kNamed);
+  EXPECT_EQ(edgeLeaf("a rounded box").edges, Edges::kBeforeNoun);
   EXPECT_EQ(edgeLeaf("a cube with very rounded edges").set, *v.intensity("very"));
   EXPECT_EQ(edgeLeaf("a cube with round edges").text, "round edges");
+  // Sharp edges: "sharp" before a noun is a taper, before an edge word the sharp edge set.
+  for (const char* text : {"a box with sharp edges", "a cube with square corners", "a box with a sharp edge"}) {
+    const QueryCondition c = edgeLeaf(text);
+    EXPECT_EQ(c.descriptor, "roundness") << text;
+    EXPECT_EQ(c.set, v.sharpEdgeSet()) << text;
+  }
+  EXPECT_EQ(edgeLeaf("a box with very sharp edges").set, mirroredDegrees(*v.intensity("very")));
+  for (const QueryCondition& leaf : leavesOf(parse("a box with sharp edges").root))
+    EXPECT_NE(leaf.descriptor, "taperness");
   // Not edges: an adjective of a ball (no squareness to round), under "not", or with an intensity
   // before the noun (a degree of roundness of its own).
   for (const char* text : {"a rounded ball", "a box that is not rounded", "a very rounded box", "rounded"})
-    for (const QueryCondition& leaf : leavesOf(parse(text).root)) EXPECT_FALSE(leaf.edges) << text;
+    for (const QueryCondition& leaf : leavesOf(parse(text).root)) EXPECT_EQ(leaf.edges, Edges::kNone) << text;
   EXPECT_EQ(leavesOf(parse("a rounded ball").root).front().set, v.plainSet(*v.adjective("rounded")));
   // An edge word after an adjective of another descriptor is no edge phrase.
   EXPECT_THROW(parse("a cube with bent edges"), Error);
+}
+
+// A cylinder's edges are the rims of its ends (eps1); its round section (eps2 = 1) is no edge.
+// Its edge condition is the roundness a cylinder with those edges has, (d + 1) / 2: a plain
+// cylinder (eps1 0.1, roundness 0.55) has sharp edges and no rounded ones.
+TEST(LinguisticQuery, EdgesOfACylinderAreItsRims) {
+  const Vocabulary& v = Vocabulary::builtin();
+  const auto edgeSet = [](const std::string& text) {
+    for (const QueryCondition& leaf : leavesOf(parse(text).root))
+      if (leaf.edges != QueryCondition::Edges::kNone) return leaf.set;
+    ADD_FAILURE() << "no edge condition in " << text;
+    return FuzzyNumber{};
+  };
+  const auto half = [](const FuzzyNumber& d) { return add(scale(d, 0.5), FuzzyNumber::crisp(0.5)); };
+  EXPECT_EQ(edgeSet("a cylinder with rounded edges"), half(v.edgeSet()));
+  EXPECT_EQ(edgeSet("a rounded cylinder"), half(v.edgeSet()));
+  EXPECT_EQ(edgeSet("a cylinder with sharp edges"), half(v.sharpEdgeSet()));
+  EXPECT_EQ(edgeSet("a cone with soft edges"), half(v.edgeSet()));
+  EXPECT_GT(half(v.sharpEdgeSet()).membership(0.55), 0.99);
+  EXPECT_EQ(half(v.edgeSet()).membership(0.55), 0.0);
+  // A ball has no exponent below 1: both are taken as its edges.
+  EXPECT_EQ(edgeSet("a ball with sharp edges"), v.sharpEdgeSet());
 }
 
 // Nouns are defaults, not vetoes: the words replace a noun's condition they contradict.

@@ -290,8 +290,27 @@ TEST(Vocabulary, LoadErrorsNameThePath) {
 
   doc = builtinDocument();
   doc["edges"]["descriptor"] = "edginess";
-  EXPECT_NE(loadError(doc, &path).find("unknown descriptor 'edginess'"), std::string::npos);
+  EXPECT_NE(loadError(doc, &path).find("'edginess' is no descriptor of the exponents' shape"), std::string::npos);
   EXPECT_EQ(path, "edges.descriptor");
+
+  doc = builtinDocument();
+  doc["edges"]["descriptor"] = "bendness";  // a descriptor, but not of the exponents
+  EXPECT_NE(loadError(doc, &path).find("'bendness' is no descriptor of the exponents' shape"), std::string::npos);
+  EXPECT_EQ(path, "edges.descriptor");
+
+  doc = builtinDocument();
+  doc["edges"]["sharp"].push_back("crispy");
+  EXPECT_NE(loadError(doc, &path).find("'crispy' must be an adjective"), std::string::npos);
+  EXPECT_EQ(path, "edges.sharp[2]");
+
+  doc = builtinDocument();
+  doc["edges"].erase("sharp_set");
+  loadError(doc, &path);
+  EXPECT_EQ(path, "edges.sharp_set");
+
+  doc = builtinDocument();
+  doc["edges"].erase("sharp");
+  EXPECT_NE(loadError(doc, &path).find("sharp_set needs sharp words"), std::string::npos);
 
   doc = builtinDocument();
   doc["edges"]["before_nouns"].push_back("bent");
@@ -361,6 +380,8 @@ TEST(Vocabulary, SectionsAndHoles) {
   EXPECT_EQ(v().wholeShapeDescriptor("bendness"), nullptr);
   EXPECT_EQ(v().edgeWords().front(), "edges");
   EXPECT_EQ(v().edgeDescriptor(), "roundness");
+  EXPECT_EQ(v().sharpEdgeWords(), (std::vector<std::string>{"sharp", "square"}));
+  EXPECT_EQ(v().sharpEdgeSet().core().hi, 0.1);
   EXPECT_TRUE(v().saysEdgesBeforeNouns("rounded"));
   EXPECT_FALSE(v().saysEdgesBeforeNouns("round"));
   EXPECT_TRUE(v().knowsWord("corners"));
