@@ -169,6 +169,36 @@ class PhraseParser {
     return placeholder(leaves_.size() - 1);
   }
 
+  // hollow = "hollow" noun_phrase, after "hollow": the part minus a part of its own noun ("a
+  // hollow cylinder" is a tube, "a hollow ball" a shell), as a hole is a part of the noun its
+  // shape word names. The hollow leaf is the plain noun; the outer one keeps every word said.
+  nlohmann::json hollow(size_t* outerLeafOut) {
+    nlohmann::json outer = leaf();
+    const size_t outerLeaf = leaves_.size() - 1;
+    *outerLeafOut = outerLeaf;
+    const std::string noun = leaves_[outerLeaf].condition ? nounOf(leaves_[outerLeaf].condition->root) : "";
+    const Noun* n = noun.empty() ? nullptr : v_.noun(noun);
+    if (!n || n->params.is_null())
+      throw Error(errc::kInvalidParameter,
+                  "'hollow " + leaves_[outerLeaf].text + "' needs a noun with a shape, as in 'a hollow cylinder'", "text");
+    CsgQueryLeaf inner;
+    inner.text = "hollow";
+    inner.condition = parseNounPhraseAt("a " + noun, 0, std::string::npos, v_).query;
+    leaves_.push_back(std::move(inner));
+    nlohmann::json operands = nlohmann::json::array();
+    operands.push_back(std::move(outer));
+    operands.push_back(placeholder(leaves_.size() - 1));
+    return node("difference", std::move(operands));
+  }
+
+  // The noun a parsed noun phrase names (QueryCondition::noun), or "" when it names none.
+  static std::string nounOf(const QueryCondition& c) {
+    if (!c.noun.empty()) return c.noun;
+    for (const QueryCondition& child : c.children)
+      if (std::string noun = nounOf(child); !noun.empty()) return noun;
+    return "";
+  }
+
   // Words that say the operand before them is cut away: "cut out", "cut away", "removed",
   // "taken out", "subtracted", "carved out", "hollowed out". Accepts them.
   bool acceptCutOut() {
@@ -310,8 +340,12 @@ class PhraseParser {
   // placed against the cylinder; "a sphere to its right" is the sphere placed against the operand
   // before it (previousHead_). head_ is the subject leaf either way.
   nlohmann::json relatedLeaf() {
-    nlohmann::json subject = leaf();
-    const size_t subjectLeaf = leaves_.size() - 1;
+    // [ article ] "hollow" noun_phrase (hollow()): the hollowed part is the subject.
+    const bool hollowed = at("hollow") || (atAny(queryArticles()) && nextIsAny({"hollow"}));
+    if (hollowed) pos_ += at("hollow") ? 1 : 2;
+    size_t subjectLeaf = kNone;
+    nlohmann::json subject = hollowed ? hollow(&subjectLeaf) : leaf();
+    if (!hollowed) subjectLeaf = leaves_.size() - 1;
     const size_t before = previousHead_;
     std::optional<RelationWords> words = relationWords();
     head_ = subjectLeaf;
@@ -809,7 +843,7 @@ const std::vector<std::string>& csgPhraseWords() {
                        "that", "is", "are", "made", "composed", "built", "formed", "consisting", "from",
                        // counts of copies and their arrangement
                        "pair", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "together",
-                       "row", "line", "touching", "each", "other", "next", "stacked", "up",
+                       "row", "line", "touching", "each", "other", "next", "stacked", "up", "hollow",
                        // intersections in words
                        "common", "where", "overlap", "overlaps", "meet", "meets", "intersect", "intersects", "cross"});
     std::sort(w.begin(), w.end());

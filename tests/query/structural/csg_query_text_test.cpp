@@ -92,6 +92,20 @@ TEST(CsgQueryText, DesignersPhrasingsOfDifferencesAndIntersections) {
   EXPECT_EQ(holed.leaves[1].text, "a cylindrical hole");
   EXPECT_EQ(toJson(*holed.leaves[1].condition), toJson(*parse("a cylinder").leaves[0].condition));
   EXPECT_EQ(shape(parse("a box with a sphere-shaped hole")), "difference('a box', 'a sphere-shaped hole')");
+  // Hollow: the part minus a part of its own noun, whatever else the words say of the part.
+  EXPECT_EQ(shape(parse("a hollow cylinder")), "difference('cylinder', 'hollow')");
+  EXPECT_EQ(shape(parse("find a hollow box")), "difference('box', 'hollow')");
+  const CsgQuery tube = parse("a hollow slightly bent cylinder");
+  ASSERT_EQ(tube.leaves.size(), 2u);
+  EXPECT_EQ(tube.leaves[0].text, "slightly bent cylinder");
+  EXPECT_EQ(toJson(*tube.leaves[1].condition), toJson(*parse("a cylinder").leaves[0].condition));
+  // The hollowed part may be placed, and be the part another is placed against.
+  EXPECT_EQ(shape(parse("a hollow cylinder on top of a box")),
+            "union(difference('cylinder'<top 'a box'>, 'hollow'), 'a box')");
+  EXPECT_EQ(shape(parse("a box with a hollow ball on top")),
+            "union('a box', difference('ball'<top 'a box'>, 'hollow'))");
+  // A noun without a shape cannot be hollowed: a 422 that says so.
+  EXPECT_NE(errorOf("a hollow shape").find("needs a noun with a shape"), std::string::npos);
   // "with" alone joins a union; the cut applies to all before it.
   EXPECT_EQ(shape(parse("a cube with a sphere")), "union('a cube', 'a sphere')");
   EXPECT_EQ(shape(parse("a cube and a box with a cylinder cut out")),
