@@ -161,7 +161,7 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
   for (auto it = adjectives.begin(); it != adjectives.end(); ++it) {
     const std::string p = joinPath("adjectives", it.key());
     const auto& a = requireObject(it.value(), p);
-    rejectUnknownKeys(a, p, {"descriptor", "pole", "create", "outline"});
+    rejectUnknownKeys(a, p, {"descriptor", "pole", "create", "outline", "set"});
     Adjective adj;
     adj.word = it.key();
     adj.descriptor = checkedDescriptor(requireField(a, "descriptor", p), joinPath(p, "descriptor"));
@@ -172,6 +172,12 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
       adj.lowPole = pole == "low";
     }
     if (a.contains("create")) adj.create = parseDegreeSet(a["create"], joinPath(p, "create"));
+    // A middle of the descriptor ("truncated": a taper short of a point): the set the plain
+    // adjective asks for, as written, and by default the degree a part made from it takes.
+    if (a.contains("set")) {
+      adj.set = parseDegreeSet(a["set"], joinPath(p, "set"));
+      if (!adj.create) adj.create = adj.set;
+    }
     if (a.contains("outline")) {
       if (!a["outline"].is_boolean())
         throw Error(errc::kInvalidDocument, "outline must be true or false", joinPath(p, "outline"));
@@ -427,6 +433,7 @@ const Vocabulary& Vocabulary::builtin() {
 }
 
 FuzzyNumber Vocabulary::plainSet(const Adjective& adjective) const {
+  if (adjective.set) return *adjective.set;
   return adjective.lowPole ? mirroredDegrees(plain_) : plain_;
 }
 

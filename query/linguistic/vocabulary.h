@@ -13,10 +13,13 @@
 //                 "very bent" is the term `very` over bendness; plain "bent" searches with `plain`
 //                 (μ(d) = d: plainSet) and a part made from it takes `create` (createdSet).
 //   hedges        {"not": text}: `not X` scores 1 − score(X) (query/linguistic/linguistic_query.h).
-//   adjectives    {word: {descriptor, pole: "high"|"low", create: fuzzy number, outline: bool}}: a
-//                 low-pole adjective ("small", "narrow", "straight") mirrors its sets, d → 1 − d; an
-//                 outline adjective ("round", "square") describes a flat noun's outline, its traverse
-//                 section (descriptorOn), where the descriptor has a section descriptor.
+//   adjectives    {word: {descriptor, pole: "high"|"low", create: fuzzy number, outline: bool,
+//                 set: fuzzy number}}: a low-pole adjective ("small", "narrow", "straight") mirrors
+//                 its sets, d → 1 − d; an outline adjective ("round", "square") describes a flat
+//                 noun's outline, its traverse section (descriptorOn), where the descriptor has a
+//                 section descriptor; an adjective with a set names a middle of its descriptor
+//                 ("truncated", "blunt": a taper short of a point), which it asks for plain and a
+//                 part made from it takes.
 //   nouns         {word: {subject: "any"|"part", plural, conditions{descriptor: fuzzy set},
 //                 params{a part's params for parts from words}, pronoun: true for words such as
 //                 "something" that take their adjectives after them} or {same_as: word, plural}.
@@ -64,6 +67,9 @@ struct Adjective {
   bool lowPole = false;                // the adjective names the low end ("small", "narrow")
   std::optional<FuzzyNumber> create;   // the degree of a part made from the plain adjective
   bool outline = false;                // on a flat noun it says the outline: descriptorOn
+  // A middle of the descriptor, not a pole ("truncated": a taper short of a point): the set the
+  // plain adjective asks for (plainSet), as written; `create` is it unless given.
+  std::optional<FuzzyNumber> set;
 };
 
 struct NounCondition {
@@ -109,8 +115,9 @@ class Vocabulary {
 
   const FuzzyNumber& plain() const { return plain_; }
   const FuzzyNumber& plainCreate() const { return plainCreate_; }
-  // The degree set a plain adjective ("bent", no intensity) searches with: `plain`, mirrored for a
-  // low pole. (It ranks by degree: "bent" scores a crisp part its bendness. A part made from the
+  // The degree set a plain adjective ("bent", no intensity) searches with: its own `set` where it
+  // has one (a middle of the descriptor, which a part made from it takes too), else `plain`,
+  // mirrored for a low pole. (It ranks by degree: "bent" scores a crisp part its bendness. A part made from the
   // plain adjective takes createdSet instead, a narrower set, so the paper's similarity of the two
   // stays below 1: docs/design/linguistic-search.md, "Round trips".)
   FuzzyNumber plainSet(const Adjective& adjective) const;

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "geometry/core/error.h"
+#include "geometry/fuzzy/fuzzy_arithmetic.h"
 #include "geometry/fuzzy/fuzzy_similarity.h"
 #include "query/linguistic/descriptors.h"
 #include "query/linguistic/linguistic_query.h"
@@ -265,6 +266,20 @@ TEST(PartFromWords, EdgesAreTheNounsExponentsBelowOne) {
   EXPECT_NEAR(score("a cylinder with sharp edges", "a cylinder"), 1.0, 1e-9);
   EXPECT_EQ(score("a cylinder with rounded edges", "a cylinder"), 0.0);
   EXPECT_EQ(score("a cylinder with sharp edges", "a cylinder with rounded edges"), 0.0);
+}
+
+// An adjective with its own set ("truncated": a middle of taperness) makes the part its set says,
+// and the plain words find it at 1; a truncated cone keeps the cone's other conditions.
+TEST(PartFromWords, MiddleAdjectivesRoundTripPlain) {
+  const FuzzyPart truncated = make("a truncated cone");
+  EXPECT_EQ(truncated.kx, negate(*v().adjective("truncated")->set));  // kx = −d
+  EXPECT_EQ(truncated.eps2, make("a cone").eps2);
+  for (const char* words : {"a truncated cone", "a blunt pyramid", "a truncated cylinder", "a frustum"}) {
+    const LinguisticQuery q = parseLinguisticQuery(std::string("find ") + words, v());
+    EXPECT_NEAR(scoreDescriptors(q, describePart(make(words))).score, 1.0, 1e-9) << words;
+  }
+  // A sharp cone is no truncated one.
+  EXPECT_EQ(scoreDescriptors(parseLinguisticQuery("a truncated cone", v()), describePart(make("a cone"))).score, 0.0);
 }
 
 TEST(PartFromWords, Errors) {

@@ -119,6 +119,16 @@ TEST(Vocabulary, PlainAndCreatedSetsOfAnAdjective) {
   EXPECT_EQ(v().plainSet(flat), v().plain());
   EXPECT_EQ(v().createdSet(flat, nullptr), *flat.create);
   EXPECT_EQ(v().createdSet(straight, nullptr), FuzzyNumber::crisp(0));
+  // A middle of the descriptor ("truncated", "blunt": a taper short of a point): its own set,
+  // plain, as written, and the part made from it takes the same.
+  for (const char* word : {"truncated", "blunt"}) {
+    const Adjective& a = *v().adjective(word);
+    ASSERT_TRUE(a.set) << word;
+    EXPECT_EQ(v().plainSet(a), *a.set) << word;
+    EXPECT_EQ(v().createdSet(a, nullptr), *a.set) << word;
+    EXPECT_EQ(v().createdSet(a, v().intensity("very")), *v().intensity("very")) << word;
+    EXPECT_LT(a.set->support().hi, 1.0) << word;  // short of a point
+  }
   // Sizes to the huge end: huge, enormous and giant make the same set, above big's core.
   for (const char* word : {"huge", "enormous", "giant"}) {
     const Adjective& a = *v().adjective(word);
@@ -267,6 +277,11 @@ TEST(Vocabulary, LoadErrorsNameThePath) {
   doc["nouns"]["cube"]["conditions"]["squariness"] = {{"tri", {0.5, 0.9, 1.5}}};
   EXPECT_NE(loadError(doc, &path).find("[0, 1]"), std::string::npos);
   EXPECT_EQ(path, "nouns.cube.conditions.squariness");
+
+  doc = builtinDocument();
+  doc["adjectives"]["truncated"]["set"] = {{"tri", {0.5, 0.9, 1.5}}};
+  EXPECT_NE(loadError(doc, &path).find("[0, 1]"), std::string::npos);
+  EXPECT_EQ(path, "adjectives.truncated.set");
 
   doc = builtinDocument();
   doc["nouns"]["ball"]["same_as"] = "orb";
