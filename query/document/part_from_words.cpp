@@ -58,6 +58,13 @@ constexpr ExponentRule kExponentRules[] = {
     {"squariness", -1.0, 1.0}, {"roundness", 1.0, 0.0}, {"bevelness", 1.0, 1.0}, {"pinchness", 2.0, 2.0}};
 constexpr double kMinExponent = 0.05;
 
+// The rule of an exponent-shape descriptor, or nullptr for any other descriptor.
+const ExponentRule* exponentRule(const std::string& descriptor) {
+  for (const ExponentRule& rule : kExponentRules)
+    if (descriptor == rule.descriptor) return &rule;
+  return nullptr;
+}
+
 // The image of the degree d under ε = max(kMinExponent, slope·d + offset) by the extension
 // principle: the affine image with the part under kMinExponent gathered at it (a breakpoint put
 // where a segment crosses it, so the image is exact, not a chord over the kink).
@@ -98,12 +105,12 @@ FuzzyNumber exponentOf(const FuzzyNumber& d, double slope, double offset) {
 // The edge exponents of `noun` (edgeExponentsOf) at degree `d` of the vocabulary's edge
 // descriptor, through that descriptor's exponent rule; the others as they are.
 void realizeEdges(const FuzzyNumber& d, const Noun& noun, const Vocabulary& vocabulary, FuzzyPart* part) {
+  const ExponentRule* rule = exponentRule(vocabulary.edgeDescriptor());
+  if (!rule) return;  // the vocabulary checks that its edge descriptor is an exponent shape
   const EdgeExponents edges = edgeExponentsOf(&noun);
-  for (const ExponentRule& rule : kExponentRules)
-    if (vocabulary.edgeDescriptor() == rule.descriptor) {
-      if (edges.eps1) part->eps1 = exponentOf(d, rule.slope, rule.offset);
-      if (edges.eps2) part->eps2 = exponentOf(d, rule.slope, rule.offset);
-    }
+  const FuzzyNumber e = exponentOf(d, rule->slope, rule->offset);
+  if (edges.eps1) part->eps1 = e;
+  if (edges.eps2) part->eps2 = e;
 }
 
 // A section descriptor is found through the vocabulary's sections map (section-squariness is
@@ -111,11 +118,10 @@ void realizeEdges(const FuzzyNumber& d, const Noun& noun, const Vocabulary& voca
 void realize(const std::string& descriptor, const FuzzyNumber& d, const Vocabulary& vocabulary, FuzzyPart* part) {
   const std::string* whole = vocabulary.wholeShapeDescriptor(descriptor);
   const std::string& shape = whole ? *whole : descriptor;
-  for (const ExponentRule& rule : kExponentRules)
-    if (shape == rule.descriptor) {
-      part->eps2 = exponentOf(d, rule.slope, rule.offset);
-      if (!whole) part->eps1 = part->eps2;
-    }
+  if (const ExponentRule* rule = exponentRule(shape)) {
+    part->eps2 = exponentOf(d, rule->slope, rule->offset);
+    if (!whole) part->eps1 = part->eps2;
+  }
   if (descriptor == "elongation") {
     part->a2 = FuzzyNumber::crisp(1.0);
     part->a3 = mapIncreasing(d, [](double x) {

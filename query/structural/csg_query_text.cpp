@@ -161,33 +161,34 @@ class PhraseParser {
     // it" (word_routes.h reads "bored", "cut", "punched" as "drilled").
     const bool drilled = accept("drilled");
     if (acceptAny({"through", "in", "into"}) || drilled) accept("it");
+    head_ = plainNounLeaf(noun, text_.substr(from, end - from));
+    return placeholder(head_);
+  }
+
+  // A leaf of the plain noun ("a cylinder") with `text` as its words (a hole's, or "hollow"): the
+  // part a hole or a hollow cuts away. Returns its index.
+  size_t plainNounLeaf(const std::string& noun, std::string text) {
     CsgQueryLeaf out;
-    out.text = text_.substr(from, end - from);
+    out.text = std::move(text);
     out.condition = parseNounPhraseAt("a " + noun, 0, std::string::npos, v_).query;
     leaves_.push_back(std::move(out));
-    head_ = leaves_.size() - 1;
-    return placeholder(leaves_.size() - 1);
+    return leaves_.size() - 1;
   }
 
   // hollow = "hollow" noun_phrase, after "hollow": the part minus a part of its own noun ("a
   // hollow cylinder" is a tube, "a hollow ball" a shell), as a hole is a part of the noun its
   // shape word names. The hollow leaf is the plain noun; the outer one keeps every word said.
-  nlohmann::json hollow(size_t* outerLeafOut) {
+  nlohmann::json hollow() {
     nlohmann::json outer = leaf();
     const size_t outerLeaf = leaves_.size() - 1;
-    *outerLeafOut = outerLeaf;
     const std::string noun = leaves_[outerLeaf].condition ? nounOf(leaves_[outerLeaf].condition->root) : "";
     const Noun* n = noun.empty() ? nullptr : v_.noun(noun);
     if (!n || n->params.is_null())
       throw Error(errc::kInvalidParameter,
                   "'hollow " + leaves_[outerLeaf].text + "' needs a noun with a shape, as in 'a hollow cylinder'", "text");
-    CsgQueryLeaf inner;
-    inner.text = "hollow";
-    inner.condition = parseNounPhraseAt("a " + noun, 0, std::string::npos, v_).query;
-    leaves_.push_back(std::move(inner));
     nlohmann::json operands = nlohmann::json::array();
     operands.push_back(std::move(outer));
-    operands.push_back(placeholder(leaves_.size() - 1));
+    operands.push_back(placeholder(plainNounLeaf(noun, "hollow")));
     return node("difference", std::move(operands));
   }
 
@@ -343,9 +344,8 @@ class PhraseParser {
     // [ article ] "hollow" noun_phrase (hollow()): the hollowed part is the subject.
     const bool hollowed = at("hollow") || (atAny(queryArticles()) && nextIsAny({"hollow"}));
     if (hollowed) pos_ += at("hollow") ? 1 : 2;
-    size_t subjectLeaf = kNone;
-    nlohmann::json subject = hollowed ? hollow(&subjectLeaf) : leaf();
-    if (!hollowed) subjectLeaf = leaves_.size() - 1;
+    const size_t subjectLeaf = leaves_.size();  // the next leaf read, hollowed or not
+    nlohmann::json subject = hollowed ? hollow() : leaf();
     const size_t before = previousHead_;
     std::optional<RelationWords> words = relationWords();
     head_ = subjectLeaf;
