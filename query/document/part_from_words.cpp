@@ -35,10 +35,46 @@ FuzzyNumber affine(const FuzzyNumber& d, double slope, double offset) {
   return add(scale(d, slope), FuzzyNumber::crisp(offset));
 }
 
-// f increasing: the set's breakpoints mapped through f.
+// The degrees a part made from words takes for a descriptor whose degree 1 (or 0) is a size or a
+// ratio no part has (d = L / (1 + L) is 1 only for L infinite): the set restricted to
+// [kLeastDegree, 1 − kLeastDegree], cut, not squeezed. The extreme intensities' cores run to the
+// end of the degrees (extremely: trap(0.8, 0.95, 1, 1), area 0.125); cut at 0.99 a part keeps
+// 0.115 of it, so its words find it at 0.92 (the similarity is the share kept). A cut at 0.95, as
+// the clamps before it did, kept 0.075: 0.6. The price is an extreme part's size: an extremely
+// large part is up to 99 units across, an extremely long one up to 100 times its width.
+constexpr double kLeastDegree = 0.01;
+FuzzyNumber realizableDegrees(const FuzzyNumber& d) {
+  const Interval core = d.core();
+  // A set wholly beyond an end (a vocabulary's create set crisp at 1) is that end, crisp.
+  if (core.lo >= 1.0 - kLeastDegree) return FuzzyNumber::crisp(1.0 - kLeastDegree);
+  if (core.hi <= kLeastDegree) return FuzzyNumber::crisp(kLeastDegree);
+  return restrictedToDegrees(d, kLeastDegree, 1.0 - kLeastDegree);
+}
+
+// f increasing: the set's image under f, its pieces sampled at the levels describePart reads
+// (every 1/kDescriptorLevels) as well as at its breakpoints. f is not affine (a size is
+// d / (1 − d)), so the image of a piece is a curve; a number through the images of the
+// breakpoints alone has alpha-cuts that, read back through f's inverse, bow away from the set
+// (an extremely large part read 0.66 for its own words). Through these points the part's
+// descriptor is the set at every level it is read at.
 template <typename F>
 FuzzyNumber mapIncreasing(const FuzzyNumber& d, F f) {
-  std::vector<Breakpoint> points = d.breakpoints();
+  const std::vector<Breakpoint>& in = d.breakpoints();
+  std::vector<Breakpoint> points;
+  for (size_t i = 0; i < in.size(); ++i) {
+    if (i > 0 && in[i - 1].mu != in[i].mu && in[i - 1].x != in[i].x) {
+      const Breakpoint& a = in[i - 1];
+      const Breakpoint& b = in[i];
+      const bool rising = b.mu > a.mu;
+      for (int k = 1; k < kDescriptorLevels; ++k) {
+        const int level = rising ? k : kDescriptorLevels - k;
+        const double mu = static_cast<double>(level) / kDescriptorLevels;
+        if (mu <= std::min(a.mu, b.mu) || mu >= std::max(a.mu, b.mu)) continue;
+        points.push_back({a.x + (mu - a.mu) / (b.mu - a.mu) * (b.x - a.x), mu});
+      }
+    }
+    points.push_back(in[i]);
+  }
   for (Breakpoint& p : points) p.x = f(p.x);
   return FuzzyNumber::fromPoints(points);
 }
@@ -124,10 +160,7 @@ void realize(const std::string& descriptor, const FuzzyNumber& d, const Vocabula
   }
   if (descriptor == "elongation") {
     part->a2 = FuzzyNumber::crisp(1.0);
-    part->a3 = mapIncreasing(d, [](double x) {
-      x = std::min(0.98, std::max(0.02, x));
-      return x < 0.5 ? 2.0 * x : 1.0 / (2.0 - 2.0 * x);
-    });
+    part->a3 = mapIncreasing(realizableDegrees(d), [](double x) { return x < 0.5 ? 2.0 * x : 1.0 / (2.0 - 2.0 * x); });
   }
   // The proportions act on B and C (A = a1 is the unit they are measured in): flatness on the
   // shorter, slenderness on the longer (C on a tie, so "a flat sphere" is squashed along its z axis
@@ -144,10 +177,10 @@ void realize(const std::string& descriptor, const FuzzyNumber& d, const Vocabula
     const double longerCore = cLonger ? now.a3 : now.a2, shorterCore = cLonger ? now.a2 : now.a3;
     if (descriptor == "flatness") {
       const double middle = std::min(1.0, longerCore);  // of 1, the longer, and the shorter set below it
-      *shorter = mapIncreasing(negate(d), [middle](double x) { return middle * (1.0 + std::max(-0.96, std::min(0.0, x))); });
+      *shorter = mapIncreasing(negate(realizableDegrees(d)), [middle](double x) { return middle * (1.0 + x); });
     } else {
       const double middle = std::max(1.0, shorterCore);
-      *longer = mapIncreasing(d, [middle](double x) { return middle / (1.0 - std::min(0.96, std::max(0.0, x))); });
+      *longer = mapIncreasing(realizableDegrees(d), [middle](double x) { return middle / (1.0 - x); });
     }
   }
   const SuperquadricParams core = part->coreRepresentative().params;  // the size so far
@@ -156,10 +189,7 @@ void realize(const std::string& descriptor, const FuzzyNumber& d, const Vocabula
   if (descriptor == "twistness") part->t = scale(d, kPi);
   if (descriptor == "size") {
     const double l = core.a1 * std::cbrt(core.a2 * core.a3);
-    part->scale = mapIncreasing(d, [l](double x) {
-      x = std::min(0.95, std::max(0.05, x));
-      return x / (1.0 - x) / l;
-    });
+    part->scale = mapIncreasing(realizableDegrees(d), [l](double x) { return x / (1.0 - x) / l; });
   }
 }
 
@@ -287,10 +317,7 @@ FuzzyPart partFromWords(const std::string& text, const Vocabulary& vocabulary) {
                              std::find(kOrder.begin(), kOrder.end(), "bendness");
     if (deformation) setExtents();
     if (isExtent(descriptor)) {
-      extents[descriptor] = mapIncreasing(d, [](double x) {
-        x = std::min(0.98, std::max(0.02, x));
-        return x / (1.0 - x);
-      });
+      extents[descriptor] = mapIncreasing(realizableDegrees(d), [](double x) { return x / (1.0 - x); });
       continue;
     }
     realize(descriptor, d, vocabulary, &part);

@@ -7,17 +7,17 @@
 
 namespace fsdb {
 
-FuzzyNumber restrictedToDegrees(const FuzzyNumber& set) {
+FuzzyNumber restrictedToDegrees(const FuzzyNumber& set, double lo, double hi) {
   const std::vector<Breakpoint>& p = set.breakpoints();
   std::vector<Breakpoint> out;
   for (size_t i = 0; i < p.size(); ++i) {
     if (i > 0)
-      for (double cut : {0.0, 1.0})
+      for (double cut : {lo, hi})
         if ((p[i - 1].x < cut && p[i].x > cut) || (p[i - 1].x > cut && p[i].x < cut)) {
           const double t = (cut - p[i - 1].x) / (p[i].x - p[i - 1].x);
           out.push_back({cut, p[i - 1].mu + t * (p[i].mu - p[i - 1].mu)});
         }
-    if (p[i].x >= 0.0 && p[i].x <= 1.0) out.push_back(p[i]);
+    if (p[i].x >= lo && p[i].x <= hi) out.push_back(p[i]);
   }
   return FuzzyNumber::fromPoints(out);
 }

@@ -5,10 +5,11 @@
 
 namespace fsdb {
 
-// The set restricted to the degrees [0, 1]: pieces that cross 0 or 1 are cut there and the ends
-// become vertical sides (a number phrase such as "about 1" as a degree). The core must meet
-// [0, 1]; the caller checks it.
-FuzzyNumber restrictedToDegrees(const FuzzyNumber& set);
+// The set restricted to the degrees [lo, hi] (by default all of them, [0, 1]): pieces that cross
+// lo or hi are cut there and the ends become vertical sides (a number phrase such as "about 1" as
+// a degree; the degrees a part made from words can have). The set must be above 0 somewhere
+// inside (lo, hi); the caller checks it.
+FuzzyNumber restrictedToDegrees(const FuzzyNumber& set, double lo = 0.0, double hi = 1.0);
 
 // The set of a low-pole adjective ("flat", "small", "straight"): d → 1 − d.
 FuzzyNumber mirroredDegrees(const FuzzyNumber& set);

@@ -79,7 +79,7 @@ TEST(PartFromWords, AdjectivesSetTheirDescriptor) {
   EXPECT_GT(valueOf(make("a long box"), "elongation").core().lo, boxElongation + 0.1);
   EXPECT_LT(valueOf(make("a flat box"), "elongation").core().hi, boxElongation - 0.2);
   EXPECT_NEAR(valueOf(make("a very flat box"), "flatness").core().lo, 0.75, 1e-9);  // the core start of very
-  EXPECT_NEAR(valueOf(make("a very flat box"), "flatness").core().hi, 0.96, 1e-9);  // very's 1, clamped
+  EXPECT_NEAR(valueOf(make("a very flat box"), "flatness").core().hi, 0.99, 1e-9);  // very's 1, cut at 0.99
   // Both on one part, whichever axis the noun has longest: each is its own set.
   for (const char* words : {"a long flat box", "a flat long box", "a long flat board", "a long flat disc"}) {
     const FuzzyPart part = make(words);
@@ -280,6 +280,21 @@ TEST(PartFromWords, MiddleAdjectivesRoundTripPlain) {
   }
   // A sharp cone is no truncated one.
   EXPECT_EQ(scoreDescriptors(parseLinguisticQuery("a truncated cone", v()), describePart(make("a cone"))).score, 0.0);
+}
+
+// The extreme intensities reach the end of the degrees, a size or ratio no part has: the part takes
+// the set cut at 0.99 (or 0.01), which keeps enough of it that its words find it at 0.9 or more.
+TEST(PartFromWords, ExtremeIntensitiesAreFoundByTheirWords) {
+  for (const char* words : {"an extremely large ball", "an extremely small disc", "an extremely long rod",
+                            "an extremely flat box", "an extremely thin rod", "an extremely tiny plank",
+                            "an extremely elongated ellipsoid", "a slightly tiny ball", "a very enormous rod"}) {
+    const LinguisticQuery q = parseLinguisticQuery(words, v());
+    const FuzzyPart part = make(words);
+    const QueryScore s = scoreDescriptors(q, describePart(part));
+    std::string why;
+    for (const ConditionScore& c : s.explain) why += c.text + "=" + std::to_string(c.score) + " ";
+    EXPECT_GE(s.score, 0.9) << words << ": " << why;
+  }
 }
 
 TEST(PartFromWords, Errors) {

@@ -27,6 +27,26 @@ TEST(DegreeSets, RestrictionCutsAtZeroAndOne) {
   EXPECT_EQ(restrictedToDegrees(inside), inside);
 }
 
+TEST(DegreeSets, RestrictionToANarrowerRangeCutsAtItsEnds) {
+  // extremely: trap(0.8, 0.95, 1, 1) within [0.01, 0.99] keeps its rise and ends with a vertical
+  // side at 0.99; what is cut away is the core beyond it.
+  const FuzzyNumber extremely = FuzzyNumber::trapezoidal(0.8, 0.95, 1.0, 1.0);
+  const FuzzyNumber r = restrictedToDegrees(extremely, 0.01, 0.99);
+  EXPECT_DOUBLE_EQ(r.breakpoints().front().x, 0.8);
+  EXPECT_DOUBLE_EQ(r.breakpoints().back().x, 0.99);
+  EXPECT_DOUBLE_EQ(r.membership(0.99), 1.0);
+  EXPECT_DOUBLE_EQ(r.membership(0.9), extremely.membership(0.9));
+  // A sloping piece crossing an end is cut at its interpolated membership, not squeezed.
+  const FuzzyNumber slope = restrictedToDegrees(FuzzyNumber::trapezoidal(0.6, 0.75, 0.9, 1.0), 0.01, 0.95);
+  EXPECT_DOUBLE_EQ(slope.breakpoints().back().x, 0.95);
+  EXPECT_NEAR(slope.membership(0.95), 0.5, 1e-12);
+  EXPECT_NEAR(slope.membership(0.925), 0.75, 1e-12);
+  // The low end the same way.
+  const FuzzyNumber low = restrictedToDegrees(FuzzyNumber::trapezoidal(0.0, 0.0, 0.05, 0.2), 0.01, 0.99);
+  EXPECT_DOUBLE_EQ(low.breakpoints().front().x, 0.01);
+  EXPECT_DOUBLE_EQ(low.membership(0.01), 1.0);
+}
+
 TEST(DegreeSets, MirroringIsOneMinusTheDegree) {
   const FuzzyNumber set = FuzzyNumber::trapezoidal(0.0, 0.1, 0.25, 0.4);
   const FuzzyNumber m = mirroredDegrees(set);
