@@ -82,8 +82,10 @@ FuzzyNumber mapIncreasing(const FuzzyNumber& d, F f) {
 // The exponent descriptors: ε = max(kMinExponent, slope·d + offset), the inverse of the
 // descriptor's function (descriptors.h: squariness 1 − ε, roundness ε below 1, bevelness ε − 1,
 // pinchness (ε − 2)/2), so a part made "moderately round" is exactly as round as the words say,
-// except where ε would fall under the smallest exponent a part is made with (a box's edges, not
-// a cube's corners of zero radius). A whole-shape one sets ε1 and ε2; a section one sets ε2 alone,
+// except where ε would fall under the smallest exponent a part is made with, 0.01 (a box's
+// edges, not a cube's corners of zero radius). Squariness 1 is ε = 0, which no part has, as a
+// size's degree 1 is an infinite size (realizableDegrees): at 0.01 an extremely square part keeps
+// 0.115 of its words' set (area 0.125) and they find it at 0.92; at 0.05, as before, 0.6. A whole-shape one sets ε1 and ε2; a section one sets ε2 alone,
 // after the whole shape ("a round box with a square section"), by the rule of its whole-shape
 // descriptor (Vocabulary::wholeShapeDescriptor).
 struct ExponentRule {
@@ -92,7 +94,7 @@ struct ExponentRule {
 };
 constexpr ExponentRule kExponentRules[] = {
     {"squariness", -1.0, 1.0}, {"roundness", 1.0, 0.0}, {"bevelness", 1.0, 1.0}, {"pinchness", 2.0, 2.0}};
-constexpr double kMinExponent = 0.05;
+constexpr double kMinExponent = 0.01;
 
 // The rule of an exponent-shape descriptor, or nullptr for any other descriptor.
 const ExponentRule* exponentRule(const std::string& descriptor) {
@@ -117,7 +119,7 @@ FuzzyNumber exponentOf(const FuzzyNumber& d, double slope, double offset) {
         points.push_back({kMinExponent, a.mu + t * (b.mu - a.mu)});
       }
     }
-    // Within rounding of the smallest exponent is at it (1 − 0.95 is 0.05000000000000004).
+    // Within rounding of the smallest exponent is at it (1 − 0.99 is 0.010000000000000009).
     points.push_back({in[i].x < kMinExponent + 1e-12 ? kMinExponent : in[i].x, in[i].mu});
   }
   // Points gathered at kMinExponent keep the highest membership among them (the sup of the image).
@@ -233,13 +235,35 @@ void realizeExtents(const std::map<std::string, FuzzyNumber>& extents, FuzzyPart
     return group(j) == group(k) ||
            (target[j] && target[k] && *target[j] == *target[k] && std::fabs(half[j] - half[k]) <= 1e-9 * half[j]);
   };
-  if (target[0] && target[1] && target[2] && same(0, 1) && same(1, 2)) {
-    const FuzzyNumber& t = *target[group(0)];
+  // The whole part scaled so that the axes of group g take their target; the proportions stay.
+  const auto scaleWhole = [&](int g) {
+    const FuzzyNumber& t = *target[g];
     const double mid = (t.core().lo + t.core().hi) / 2.0;
-    const double factor = mid / half[group(0)];
+    const double factor = mid / half[g];
     part->a1 = FuzzyNumber::crisp(core.params.a1 * factor);
     part->scale = scale(scale(t, 1.0 / mid), s);
-    return;
+  };
+  if (target[0] && target[1] && target[2] && same(0, 1) && same(1, 2)) return scaleWhole(group(0));
+  // One group measured whose target would pass an axis it is not measured with ("an extremely
+  // thick disc": a thickness of 19 units or more, beside a diameter of 2): the axes would change
+  // their sorted roles, and the extent read back (descriptors.h: the shortest, middle and longest)
+  // would be another axis's, so the words would not find the part. The whole part is scaled
+  // instead, its proportions kept: a disc that thick is a large disc. Height names the z axis, not
+  // a role, and is never passed.
+  int measured = -1;
+  bool one = !extents.count("height");
+  for (int k = 0; k < 3; ++k)
+    if (target[k]) {
+      if (measured >= 0 && group(k) != group(measured) && !same(k, measured)) one = false;
+      if (measured < 0) measured = k;
+    }
+  if (one && measured >= 0) {
+    const Interval support = target[measured]->support();
+    bool passes = false;
+    for (int j = 0; j < 3; ++j)
+      if (!target[j])
+        passes = passes || (half[j] >= half[measured] ? support.hi > half[j] : support.lo < half[j]);
+    if (passes) return scaleWhole(measured);
   }
   // B and C scale with a1, and the part's values are independent fuzzy numbers: a fuzzy a1 would
   // spread every other axis by its cut. So A keeps a spread only when its group (A and the axes
@@ -255,8 +279,16 @@ void realizeExtents(const std::map<std::string, FuzzyNumber>& extents, FuzzyPart
   const FuzzyNumber a1 = target[0] ? *target[0] : part->a1;
   const double a1Core = (a1.core().lo + a1.core().hi) / 2.0;
   const double was = core.params.a1;
-  part->a2 = target[1] ? scale(*target[1], 1.0 / a1Core) : scale(part->a2, was / a1Core);
-  part->a3 = target[2] ? scale(*target[2], 1.0 / a1Core) : scale(part->a3, was / a1Core);
+  // An axis of A's group while A keeps a spread is as long as A: its ratio is 1, crisp. Its target
+  // over a1's core (as for the others) would be a second spread on top of a1's: B = a1·a2 of two
+  // independent numbers, twice as wide as the words ("a moderately narrow puck" read 0.71).
+  const auto ratio = [&](int k, const FuzzyNumber& was_k) {
+    if (!target[k]) return scale(was_k, was / a1Core);
+    if (!a1.isCrisp() && group(k) == group(0)) return FuzzyNumber::crisp(1.0);
+    return scale(*target[k], 1.0 / a1Core);
+  };
+  part->a2 = ratio(1, part->a2);
+  part->a3 = ratio(2, part->a3);
   part->a1 = a1;
 }
 

@@ -193,7 +193,7 @@ TEST(PartFromWords, AdjectivesActInATableOrder) {
 }
 
 // The exponent words invert their descriptor exactly (ε = d for roundness, 1 − d for squariness)
-// down to the smallest exponent, 0.05, where the image gathers what lies below it (the extension
+// down to the smallest exponent, 0.01, where the image gathers what lies below it (the extension
 // principle: its membership is the highest of those degrees).
 TEST(PartFromWords, ExponentWordsInvertTheirDescriptorExactly) {
   EXPECT_EQ(make("a moderately round ball").eps1, FuzzyNumber::trapezoidal(0.3, 0.45, 0.6, 0.75));
@@ -206,9 +206,9 @@ TEST(PartFromWords, ExponentWordsInvertTheirDescriptorExactly) {
     }
   };
   // (A set starts at membership 0: a jump is two points at one x.)
-  expectPoints(make("an extremely square box").eps1, {{0.05, 0}, {0.05, 1}, {0.2, 0}});
-  // slightly: trap(0, 0.1, 0.25, 0.4); the degrees under 0.05 (membership up to 0.5) gather at it.
-  expectPoints(make("a slightly round box").eps1, {{0.05, 0}, {0.05, 0.5}, {0.1, 1}, {0.25, 1}, {0.4, 0}});
+  expectPoints(make("an extremely square box").eps1, {{0.01, 0}, {0.01, 1}, {0.05, 1}, {0.2, 0}});
+  // slightly: trap(0, 0.1, 0.25, 0.4); the degrees under 0.01 (membership up to 0.1) gather at it.
+  expectPoints(make("a slightly round box").eps1, {{0.01, 0}, {0.01, 0.1}, {0.1, 1}, {0.25, 1}, {0.4, 0}});
   const LinguisticQuery q = parseLinguisticQuery("find a moderately round shape", v());
   EXPECT_NEAR(scoreDescriptors(q, describePart(make("a moderately round ball"))).score, 1.0, 1e-9);
 }
@@ -282,12 +282,14 @@ TEST(PartFromWords, MiddleAdjectivesRoundTripPlain) {
   EXPECT_EQ(scoreDescriptors(parseLinguisticQuery("a truncated cone", v()), describePart(make("a cone"))).score, 0.0);
 }
 
-// The extreme intensities reach the end of the degrees, a size or ratio no part has: the part takes
-// the set cut at 0.99 (or 0.01), which keeps enough of it that its words find it at 0.9 or more.
+// The extreme intensities reach the end of the degrees, a size, ratio or exponent no part has: the
+// part takes the set cut at 0.99 (or 0.01; an exponent at 0.01), which keeps enough of it that its
+// words find it at 0.9 or more.
 TEST(PartFromWords, ExtremeIntensitiesAreFoundByTheirWords) {
   for (const char* words : {"an extremely large ball", "an extremely small disc", "an extremely long rod",
                             "an extremely flat box", "an extremely thin rod", "an extremely tiny plank",
-                            "an extremely elongated ellipsoid", "a slightly tiny ball", "a very enormous rod"}) {
+                            "an extremely elongated ellipsoid", "a slightly tiny ball", "a very enormous rod",
+                            "an extremely square box", "a very boxy pillar", "a cube with very sharp edges"}) {
     const LinguisticQuery q = parseLinguisticQuery(words, v());
     const FuzzyPart part = make(words);
     const QueryScore s = scoreDescriptors(q, describePart(part));
