@@ -154,6 +154,27 @@ TEST(PartFromWords, MeasuresSetTheExtents) {
   EXPECT_GT(thin.score, 0.8);
 }
 
+// An extent word keeps the axes in their roles (shortest, middle, longest), so the extent read back
+// is the one the words set.
+TEST(PartFromWords, ExtentWordsKeepTheAxesInTheirRoles) {
+  // A thickness past the diameter scales the whole disc: its proportions are a disc's.
+  const FuzzyPart thick = make("an extremely thick disc");
+  EXPECT_EQ(valueOf(thick, "flatness"), valueOf(make("a disc"), "flatness"));
+  EXPECT_TRUE(thick.a1.isCrisp() && thick.a2.isCrisp() && thick.a3.isCrisp());
+  EXPECT_FALSE(thick.scale.isCrisp());
+  // A width below a puck's thickness the same way; one above it keeps the thickness.
+  EXPECT_EQ(valueOf(make("an extremely narrow puck"), "flatness"), valueOf(make("a puck"), "flatness"));
+  // The round face's second axis follows a1's spread with ratio 1, not a spread of its own.
+  const FuzzyPart narrow = make("a moderately narrow puck");
+  EXPECT_EQ(narrow.a2, FuzzyNumber::crisp(1.0));
+  for (const char* words : {"an extremely thick disc", "an extremely narrow puck", "a moderately narrow puck",
+                            "an extremely broad pipe", "a very short plate", "a somewhat wide pyramid",
+                            "a very thick double pyramid"}) {
+    const LinguisticQuery q = parseLinguisticQuery(words, v());
+    EXPECT_GE(scoreDescriptors(q, describePart(make(words))).score, 0.9) << words;
+  }
+}
+
 // Words on the traverse section set eps2 alone ("a cylindrical box" keeps the box's eps1, so its
 // ends stay flat), after the whole shape's words. They set nothing before: the part was the box.
 TEST(PartFromWords, SectionWordsSetTheSectionAlone) {
