@@ -164,8 +164,8 @@ TEST(LinguisticQuery, NounsAreDefaultsTheWordsOverride) {
     return out;
   };
   // A plate stays flat when it is round; a disc stays flat when square.
-  EXPECT_EQ(descriptorsOfNoun("a round plate"), std::vector<std::string>{"elongation"});
-  EXPECT_EQ(descriptorsOfNoun("a square disc"), std::vector<std::string>{"elongation"});
+  EXPECT_EQ(descriptorsOfNoun("a round plate"), (std::vector<std::string>{"taperness", "elongation"}));
+  EXPECT_EQ(descriptorsOfNoun("a square disc"), (std::vector<std::string>{"taperness", "elongation"}));
   // And "round" and "square" say a flat noun's outline, its traverse section, before or after it
   // and under "not"; on a ball, a box or no noun they say the whole shape.
   const auto leafDescriptors = [](const std::string& text) {
@@ -195,23 +195,23 @@ TEST(LinguisticQuery, NounsAreDefaultsTheWordsOverride) {
   EXPECT_EQ(descriptorsOfNoun("a moderately tapered pyramid"), (std::vector<std::string>{"squariness"}));
   EXPECT_EQ(descriptorsOfNoun("a tapered pyramid"), (std::vector<std::string>{"squariness", "taperness"}));
   // A dimension adjective with an intensity sets the proportions; a plain one does not.
-  EXPECT_EQ(descriptorsOfNoun("a very thin stick"), std::vector<std::string>{"roundness"});
-  EXPECT_EQ(descriptorsOfNoun("a thin stick"), (std::vector<std::string>{"roundness", "elongation"}));
+  EXPECT_EQ(descriptorsOfNoun("a very thin stick"), (std::vector<std::string>{"roundness", "taperness"}));
+  EXPECT_EQ(descriptorsOfNoun("a thin stick"), (std::vector<std::string>{"roundness", "taperness", "elongation"}));
   // Words on the proportions themselves (long, flat) replace the noun's elongation, plain or not:
   // "a long plate" is a plank, long and flat, not a square plate.
-  EXPECT_EQ(descriptorsOfNoun("a moderately long stick"), std::vector<std::string>{"roundness"});
-  EXPECT_EQ(descriptorsOfNoun("a long stick"), std::vector<std::string>{"roundness"});
-  EXPECT_EQ(descriptorsOfNoun("a long plate"), std::vector<std::string>{"squariness"});
+  EXPECT_EQ(descriptorsOfNoun("a moderately long stick"), (std::vector<std::string>{"roundness", "taperness"}));
+  EXPECT_EQ(descriptorsOfNoun("a long stick"), (std::vector<std::string>{"roundness", "taperness"}));
+  EXPECT_EQ(descriptorsOfNoun("a long plate"), (std::vector<std::string>{"squariness", "taperness"}));
   EXPECT_EQ(descriptorsOfNoun("a flat sphere"), std::vector<std::string>{"roundness"});
   // A board is its own noun: square-edged, flat and long; "a long board" agrees with it.
-  EXPECT_EQ(descriptorsOfNoun("a bent plank"), (std::vector<std::string>{"squariness", "flatness", "slenderness"}));
-  EXPECT_EQ(descriptorsOfNoun("a long board"), (std::vector<std::string>{"squariness", "flatness", "slenderness"}));
+  EXPECT_EQ(descriptorsOfNoun("a bent plank"), (std::vector<std::string>{"squariness", "taperness", "flatness", "slenderness"}));
+  EXPECT_EQ(descriptorsOfNoun("a long board"), (std::vector<std::string>{"squariness", "taperness", "flatness", "slenderness"}));
   // Words on two extents set the proportions; one does not.
-  EXPECT_EQ(descriptorsOfNoun("a plate 8 long and 1 wide"), std::vector<std::string>{"squariness"});
+  EXPECT_EQ(descriptorsOfNoun("a plate 8 long and 1 wide"), (std::vector<std::string>{"squariness", "taperness"}));
   EXPECT_EQ(descriptorsOfNoun("a sphere 2 across"), (std::vector<std::string>{"roundness", "elongation"}));
   // Words on a part's edges say the shape of its exponents: they replace a box's squareness
   // whatever else the box keeps; "rounded" before a noun that is square says its edges too.
-  EXPECT_EQ(descriptorsOfNoun("a cube with round edges"), std::vector<std::string>{"elongation"});
+  EXPECT_EQ(descriptorsOfNoun("a cube with round edges"), (std::vector<std::string>{"taperness", "elongation"}));
   EXPECT_EQ(descriptorsOfNoun("a box with softened corners"), std::vector<std::string>{});
   EXPECT_EQ(descriptorsOfNoun("a rounded box"), std::vector<std::string>{});
   EXPECT_EQ(descriptorsOfNoun("a box that is rounded"), std::vector<std::string>{});
@@ -228,8 +228,9 @@ TEST(LinguisticQuery, ConditionsAfterTheNoun) {
   EXPECT_EQ(meaning("cylinder very long and slightly bent"), meaning("a cylinder that is very long and slightly bent"));
   EXPECT_EQ(meaning("cone not sharp"), meaning("a cone that is not sharp"));
   // With measures before them and a "with" clause after them, all hold; they replace the rod's
-  // own conditions (two extents its elongation, the round section its roundness).
-  EXPECT_EQ(leavesOf(parse("rod 6 long thin with a round cross-section").root).size(), 3u);
+  // own conditions (two extents its elongation, the round section its roundness) and keep its
+  // "hardly tapered".
+  EXPECT_EQ(leavesOf(parse("rod 6 long thin with a round cross-section").root).size(), 4u);
   // Not a relation's words: "a sphere above a box" is still a relation.
   EXPECT_EQ(parse("a sphere small above a box").root.kind, Kind::kRelation);
 }
