@@ -638,10 +638,19 @@ class Parser {
     // Adjectives after the noun, as many speakers put them ("ball small", "cylinder very long
     // thin", "box long and flat"): read as a clause, "a ball that is small".
     if (startsCondition()) clause.push_back(condition());
+    const size_t beforeRelative = pos_;
     if (acceptWord("that") || acceptWord("which")) {
-      if (!acceptAny({"is", "are", "has", "have"})) fail({"'is'", "'are'", "'has'", "'have'"});
-      if (!startsCondition()) fail(conditionStarts());
-      clause.push_back(condition());
+      const bool verb = acceptAny({"is", "are", "has", "have"});
+      if (verb && startsCondition()) {
+        clause.push_back(condition());
+      } else if (prefix_) {
+        // Read as a prefix (a CSG operand), a relative clause that states no condition ends the
+        // phrase: the caller reads it ("three balls which are glued in line").
+        pos_ = beforeRelative;
+      } else {
+        if (!verb) fail({"'is'", "'are'", "'has'", "'have'"});
+        fail(conditionStarts());
+      }
     } else if (at("with") && !(pos_ + 1 < tokens_.size() && tokens_[pos_ + 1].text == "score")) {
       ++pos_;
       if (!startsCondition()) {

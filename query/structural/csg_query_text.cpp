@@ -273,8 +273,11 @@ class PhraseParser {
     acceptAny(queryArticles());
     if (const size_t n = numeral()) {
       // numeral noun_phrase [ arrangement ]: that many copies of the part, united ("two balls",
-      // "three spheres in a row", "a pair of cylinders"). Their arrangement is read and adds
-      // nothing: the structural search matches the parts and operations, not where they stand.
+      // "three spheres in a row", "a pair of cylinders"). An arrangement that says where they
+      // stand places each copy against the one before it, as "a sphere beside a sphere" would:
+      // beside it for a row ("in a row", "side by side"), on top of it for a stack ("stacked"),
+      // so that three balls in a row are not a snowman. "together" and "touching" say nothing
+      // of a direction.
       nlohmann::json first = leaf();
       const size_t one = leaves_.size() - 1;
       nlohmann::json operands = nlohmann::json::array();
@@ -283,7 +286,13 @@ class PhraseParser {
         leaves_.push_back(leaves_[one]);
         operands.push_back(placeholder(leaves_.size() - 1));
       }
-      acceptArrangement();
+      const size_t from = offset();
+      if (const char* direction = acceptArrangement()) {
+        std::string words = text_.substr(from, offset() - from);
+        while (!words.empty() && std::isspace(static_cast<unsigned char>(words.back()))) words.pop_back();
+        for (size_t k = 1; k < n; ++k)
+          leaves_[one + k].relation = CsgRelation{one + k - 1, *v_.direction(direction), std::nullopt, words};
+      }
       return node("union", std::move(operands));
     }
     if ((at("common") && nextIsAny({"part"})) || at("where") || (at("part") && nextIsAny({"where"}))) {
@@ -612,26 +621,39 @@ class PhraseParser {
     return n;
   }
 
-  // The words of an arrangement after counted copies, read and ignored: "together", "joined
-  // together", "in a row", "in a line", "side by side", "touching [each other]", "next to each
-  // other", "stacked [up]".
-  void acceptArrangement() {
-    if (acceptPair("joined", "together") || accept("together")) return;
+  // The words of an arrangement after counted copies: "together", "joined together", "in a row",
+  // "in a line", "lined up", "side by side", "touching [each other]", "next to each other",
+  // "stacked [up]", after an optional "which are" and "joined".
+  // Returns the vocabulary direction of each copy from the one before it ("side" for a row, "top"
+  // for a stack), or nullptr where the words name none.
+  const char* acceptArrangement() {
+    const size_t start = pos_;
+    // A lead-in: "which are", "that are", and a joining participle ("three balls which are
+    // glued in line": glued is routed to joined before the parse).
+    if (atAny({"which", "that"}) && nextIsAny({"are", "is"})) pos_ += 2;
+    const bool joined = accept("joined");
+    if (accept("together")) return nullptr;
     const size_t save = pos_;
+    if (acceptPair("lined", "up")) return "side";
     if (accept("in")) {
       accept("a");
-      if (accept("row") || accept("line")) return;
+      if (accept("row") || accept("line")) return "side";
       pos_ = save;
     }
-    if (acceptPair("side", "by") && accept("side")) return;
+    if (acceptPair("side", "by") && accept("side")) return "side";
     pos_ = save;
     if (accept("touching")) {
       acceptPair("each", "other");
-      return;
+      return nullptr;
     }
-    if (acceptPair("next", "to") && acceptPair("each", "other")) return;
+    if (acceptPair("next", "to") && acceptPair("each", "other")) return "side";
     pos_ = save;
-    if (accept("stacked")) accept("up");
+    if (accept("stacked")) {
+      accept("up");
+      return "top";
+    }
+    if (!joined) pos_ = start;  // a lead-in with no arrangement after it is not read
+    return nullptr;
   }
 
   bool acceptPair(const char* first, const char* second) {
@@ -843,7 +865,7 @@ const std::vector<std::string>& csgPhraseWords() {
                        "that", "is", "are", "made", "composed", "built", "formed", "consisting", "from",
                        // counts of copies and their arrangement
                        "pair", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "together",
-                       "row", "line", "touching", "each", "other", "next", "stacked", "up", "hollow",
+                       "row", "line", "lined", "touching", "each", "other", "next", "stacked", "up", "hollow",
                        // intersections in words
                        "common", "where", "overlap", "overlaps", "meet", "meets", "intersect", "intersects", "cross"});
     std::sort(w.begin(), w.end());

@@ -39,14 +39,32 @@ TEST(CsgQueryText, PhraseOperations) {
   EXPECT_EQ(shape(parse("find a sphere plus a box plus a cone")), "union('a sphere', 'a box', 'a cone')");
 }
 
-// Counts: that many copies of the noun phrase, united; the words of their arrangement add nothing.
+// Counts: that many copies of the noun phrase, united; an arrangement that names a direction
+// places each copy against the one before it (a row: beside it; a stack: on top of it).
 TEST(CsgQueryText, CountsAreCopiesUnited) {
   EXPECT_EQ(shape(parse("two balls")), "union('balls', 'balls')");
   EXPECT_EQ(shape(parse("three slightly bent rods joined together")),
             "union('slightly bent rods', 'slightly bent rods', 'slightly bent rods')");
-  EXPECT_EQ(shape(parse("3 spheres in a row")), "union('spheres', 'spheres', 'spheres')");
-  EXPECT_EQ(shape(parse("a pair of cylinders side by side")), "union('cylinders', 'cylinders')");
+  EXPECT_EQ(shape(parse("3 spheres in a row")),
+            "union('spheres', 'spheres'<side 'spheres'>, 'spheres'<side 'spheres'>)");
+  EXPECT_EQ(shape(parse("three balls in line")), "union('balls', 'balls'<side 'balls'>, 'balls'<side 'balls'>)");
+  EXPECT_EQ(shape(parse("a pair of cylinders side by side")), "union('cylinders', 'cylinders'<side 'cylinders'>)");
+  EXPECT_EQ(shape(parse("two cubes next to each other")), "union('cubes', 'cubes'<side 'cubes'>)");
+  EXPECT_EQ(shape(parse("three balls stacked up")), "union('balls', 'balls'<top 'balls'>, 'balls'<top 'balls'>)");
   EXPECT_EQ(shape(parse("two balls touching each other")), "union('balls', 'balls')");
+  EXPECT_EQ(shape(parse("three balls which are joined in line")),
+            "union('balls', 'balls'<side 'balls'>, 'balls'<side 'balls'>)");
+  EXPECT_EQ(shape(parse("four cubes lined up")), "union('cubes', 'cubes'<side 'cubes'>, 'cubes'<side 'cubes'>, 'cubes'<side 'cubes'>)");
+  // The relation names the copy before it and the words that placed it.
+  const CsgQuery row = parse("3 spheres in a row");
+  ASSERT_EQ(row.leaves.size(), 3u);
+  EXPECT_FALSE(row.leaves[0].relation);
+  for (size_t k = 1; k < 3; ++k) {
+    ASSERT_TRUE(row.leaves[k].relation) << k;
+    EXPECT_EQ(row.leaves[k].relation->text, "in a row");
+    EXPECT_EQ(row.leaves[k].relation->direction.word, "side");
+  }
+  EXPECT_NE(row.leaves[1].relation->to, row.leaves[2].relation->to);
   EXPECT_EQ(shape(parse("a cube minus two spheres")), "difference('a cube', union('spheres', 'spheres'))");
   // A number before units or sides is no count.
   EXPECT_THROW(parse("2 units"), Error);
