@@ -41,6 +41,10 @@ const std::pair<const char*, const char*> kCutOutPhrases[] = {
     {"cut", "out"},   {"cut", "away"},      {"taken", "out"}, {"carved", "out"},
     {"hollowed", "out"}, {"removed", ""}, {"subtracted", ""}};
 
+// Words that make the part after them hollow (PhraseParser::hollow): "a hollow cylinder" (a tube),
+// "an annular disc" (ring-shaped: a disc with a hole through it, a washer).
+const std::vector<std::string> kHollowWords = {"hollow", "annular"};
+
 bool contains(const std::vector<std::string>& list, const std::string& w) {
   return std::find(list.begin(), list.end(), w) != list.end();
 }
@@ -175,20 +179,23 @@ class PhraseParser {
     return leaves_.size() - 1;
   }
 
-  // hollow = "hollow" noun_phrase, after "hollow": the part minus a part of its own noun ("a
-  // hollow cylinder" is a tube, "a hollow ball" a shell), as a hole is a part of the noun its
-  // shape word names. The hollow leaf is the plain noun; the outer one keeps every word said.
-  nlohmann::json hollow() {
+  // hollow = ( "hollow" | "annular" ) noun_phrase, after that `word`: the part minus a part of its
+  // own noun ("a hollow cylinder" is a tube, "a hollow ball" a shell, "an annular disc" a washer),
+  // as a hole is a part of the noun its shape word names. The hollow leaf is the plain noun; the
+  // outer one keeps every word said.
+  nlohmann::json hollow(const std::string& word) {
     nlohmann::json outer = leaf();
     const size_t outerLeaf = leaves_.size() - 1;
     const std::string noun = leaves_[outerLeaf].condition ? nounOf(leaves_[outerLeaf].condition->root) : "";
     const Noun* n = noun.empty() ? nullptr : v_.noun(noun);
     if (!n || n->params.is_null())
       throw Error(errc::kInvalidParameter,
-                  "'hollow " + leaves_[outerLeaf].text + "' needs a noun with a shape, as in 'a hollow cylinder'", "text");
+                  "'" + word + " " + leaves_[outerLeaf].text + "' needs a noun with a shape, as in 'a " + word +
+                      " cylinder'",
+                  "text");
     nlohmann::json operands = nlohmann::json::array();
     operands.push_back(std::move(outer));
-    operands.push_back(placeholder(plainNounLeaf(noun, "hollow")));
+    operands.push_back(placeholder(plainNounLeaf(noun, word)));
     return node("difference", std::move(operands));
   }
 
@@ -351,10 +358,14 @@ class PhraseParser {
   // before it (previousHead_). head_ is the subject leaf either way.
   nlohmann::json relatedLeaf() {
     // [ article ] "hollow" noun_phrase (hollow()): the hollowed part is the subject.
-    const bool hollowed = at("hollow") || (atAny(queryArticles()) && nextIsAny({"hollow"}));
-    if (hollowed) pos_ += at("hollow") ? 1 : 2;
+    const bool hollowed = atAny(kHollowWords) || (atAny(queryArticles()) && nextIsAny(kHollowWords));
+    std::string how;
+    if (hollowed) {
+      if (!atAny(kHollowWords)) ++pos_;
+      how = words_[pos_++].text;
+    }
     const size_t subjectLeaf = leaves_.size();  // the next leaf read, hollowed or not
-    nlohmann::json subject = hollowed ? hollow() : leaf();
+    nlohmann::json subject = hollowed ? hollow(how) : leaf();
     const size_t before = previousHead_;
     std::optional<RelationWords> words = relationWords();
     head_ = subjectLeaf;
@@ -865,7 +876,7 @@ const std::vector<std::string>& csgPhraseWords() {
                        "that", "is", "are", "made", "composed", "built", "formed", "consisting", "from",
                        // counts of copies and their arrangement
                        "pair", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "together",
-                       "row", "line", "lined", "touching", "each", "other", "next", "stacked", "up", "hollow",
+                       "row", "line", "lined", "touching", "each", "other", "next", "stacked", "up", "hollow", "annular",
                        // intersections in words
                        "common", "where", "overlap", "overlaps", "meet", "meets", "intersect", "intersects", "cross"});
     std::sort(w.begin(), w.end());

@@ -113,6 +113,9 @@ TEST(CsgQueryText, DesignersPhrasingsOfDifferencesAndIntersections) {
   // Hollow: the part minus a part of its own noun, whatever else the words say of the part.
   EXPECT_EQ(shape(parse("a hollow cylinder")), "difference('cylinder', 'hollow')");
   EXPECT_EQ(shape(parse("find a hollow box")), "difference('box', 'hollow')");
+  // Annular (ring-shaped): a disc with a hole through it, a washer.
+  EXPECT_EQ(shape(parse("an annular disc")), "difference('disc', 'annular')");
+  EXPECT_NE(errorOf("an annular shape").find("'annular shape' needs a noun with a shape"), std::string::npos);
   const CsgQuery tube = parse("a hollow slightly bent cylinder");
   ASSERT_EQ(tube.leaves.size(), 2u);
   EXPECT_EQ(tube.leaves[0].text, "slightly bent cylinder");
