@@ -85,9 +85,10 @@ FuzzyNumber mapIncreasing(const FuzzyNumber& d, F f) {
 // except where ε would fall under the smallest exponent a part is made with, 0.01 (a box's
 // edges, not a cube's corners of zero radius). Squariness 1 is ε = 0, which no part has, as a
 // size's degree 1 is an infinite size (realizableDegrees): at 0.01 an extremely square part keeps
-// 0.115 of its words' set (area 0.125) and they find it at 0.92; at 0.05, as before, 0.6. A whole-shape one sets ε1 and ε2; a section one sets ε2 alone,
-// after the whole shape ("a round box with a square section"), by the rule of its whole-shape
-// descriptor (Vocabulary::wholeShapeDescriptor).
+// 0.115 of its words' set (area 0.125) and they find it at 0.92; at 0.05, as before, 0.6. A
+// whole-shape one sets ε1 and ε2; a section one sets ε2 alone, after the whole shape ("a round
+// box with a square section"), by the rule of its whole-shape descriptor
+// (Vocabulary::wholeShapeDescriptor).
 struct ExponentRule {
   const char* descriptor;
   double slope, offset;
@@ -254,7 +255,7 @@ void realizeExtents(const std::map<std::string, FuzzyNumber>& extents, FuzzyPart
   bool one = !extents.count("height");
   for (int k = 0; k < 3; ++k)
     if (target[k]) {
-      if (measured >= 0 && group(k) != group(measured) && !same(k, measured)) one = false;
+      if (measured >= 0 && !same(k, measured)) one = false;
       if (measured < 0) measured = k;
     }
   if (one && measured >= 0) {

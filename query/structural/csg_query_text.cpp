@@ -295,8 +295,8 @@ class PhraseParser {
       }
       const size_t from = offset();
       if (const char* direction = acceptArrangement()) {
-        std::string words = text_.substr(from, offset() - from);
-        while (!words.empty() && std::isspace(static_cast<unsigned char>(words.back()))) words.pop_back();
+        const size_t end = words_[pos_ - 1].offset + words_[pos_ - 1].text.size();  // as relationWords ends
+        const std::string words = text_.substr(from, end - from);
         for (size_t k = 1; k < n; ++k)
           leaves_[one + k].relation = CsgRelation{one + k - 1, *v_.direction(direction), std::nullopt, words};
       }
