@@ -129,9 +129,43 @@ void StoredGraphCache::insert(const std::shared_ptr<StoredGraph>& built) {
   if (entries_.size() >= maxEntries_) {
     entries_.clear();
     parts_.clear();
+    internedParts_ = 0;
   }
   for (const CsgGraphLeaf& leaf : built->shape.leaves) built->leafParts.push_back(intern(leaf.part));
-  entries_[built->id] = built;
+  std::shared_ptr<const StoredGraph>& entry = entries_[built->id];
+  // Interned first, released after: a part the old and the new graph share keeps its id.
+  if (entry) release(*entry);
+  entry = built;
+}
+
+void StoredGraphCache::release(const StoredGraph& graph) {
+  for (size_t i = 0; i < graph.leafParts.size(); ++i) {
+    const auto bucket = parts_.find(partKey(graph.shape.leaves[i].part));
+    if (bucket == parts_.end()) continue;  // cleared since
+    std::vector<InternedPart>& known = bucket->second;
+    for (size_t k = 0; k < known.size(); ++k) {
+      if (known[k].id != graph.leafParts[i]) continue;
+      if (--known[k].uses == 0) {
+        known.erase(known.begin() + static_cast<std::ptrdiff_t>(k));
+        --internedParts_;
+      }
+      break;
+    }
+    if (known.empty()) parts_.erase(bucket);
+  }
+}
+
+void StoredGraphCache::dropDeleted(const StoreVersions& versions) {
+  if (versions.seq == sweptSeq_) return;
+  sweptSeq_ = versions.seq;
+  for (auto it = entries_.begin(); it != entries_.end();) {
+    if (versions.latest.count(it->first)) {
+      ++it;
+      continue;
+    }
+    release(*it->second);
+    it = entries_.erase(it);
+  }
 }
 
 std::vector<std::shared_ptr<const StoredGraph>> StoredGraphCache::graphs(const Store& store,
@@ -144,6 +178,7 @@ std::vector<std::shared_ptr<const StoredGraph>> StoredGraphCache::graphs(const S
   const auto lookUp = [&]() {
     std::vector<size_t> missing;
     std::lock_guard<std::mutex> lock(mutex_);
+    dropDeleted(versions);
     for (size_t i = 0; i < shapes.size(); ++i) {
       if (out[i]) continue;
       const auto it = entries_.find(shapes[i].id);
@@ -194,11 +229,21 @@ std::vector<std::shared_ptr<const StoredGraph>> StoredGraphCache::graphs(const S
 }
 
 int64_t StoredGraphCache::intern(const FuzzyPart& part) {
-  std::vector<std::pair<FuzzyPart, int64_t>>& bucket = parts_[partKey(part)];
-  for (const auto& [known, id] : bucket)
-    if (samePart(known, part)) return id;
-  bucket.emplace_back(part, nextPart_);
+  std::vector<InternedPart>& bucket = parts_[partKey(part)];
+  for (InternedPart& known : bucket) {
+    if (samePart(known.part, part)) {
+      ++known.uses;
+      return known.id;
+    }
+  }
+  bucket.push_back(InternedPart{part, nextPart_, 1});
+  ++internedParts_;
   return nextPart_++;
+}
+
+size_t StoredGraphCache::internedParts() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return internedParts_;
 }
 
 size_t StoredGraphCache::size() const {

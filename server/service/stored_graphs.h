@@ -10,8 +10,10 @@
 //   its tree reached (the parts and shapes the resolver returned). graph() returns the entry only
 //   when all of them still have those versions in `versions` (versions(): the change log read once
 //   per search), else builds it again: a PUT of a part changes the graphs of every tree using it,
-//   even through other shapes, and so does a write by another server on the same database. Deleted shapes are never
-//   asked for; their entries go when the cache is cleared (when it holds more than maxEntries).
+//   even through other shapes, and so does a write by another server on the same database.
+// - Memory follows the live catalogue, not the history of writes: a search whose versions moved on
+//   drops the entries of deleted shapes, and an interned part is forgotten once no entry uses it
+//   (rebuilt or dropped entries release theirs). Past maxEntries entries the cache is cleared.
 // - Thread-safe; a graph is built outside the lock (two threads may build the same one; either
 //   result is the same).
 // - graphs() builds every missing or stale entry of a search at once, in parallel (tbb), and interns
@@ -86,14 +88,26 @@ class StoredGraphCache {
   std::shared_ptr<const StoreVersions> versions(const Store& store);
   size_t size() const;
   size_t builds() const;  // graphs built since construction (tests and bench see hits and misses)
+  size_t internedParts() const;  // distinct parts the entries use (tests see that memory follows them)
 
  private:
+  struct InternedPart {
+    FuzzyPart part;
+    int64_t id;
+    int uses;  // leaves of entries_ with this id
+  };
   int64_t intern(const FuzzyPart& part);  // under mutex_; ids are never reused, even after a clear
-  // Under mutex_: counts the build, interns its parts and keeps it.
+  // Under mutex_: the uses of `graph`'s leaf parts end; a part left unused is forgotten.
+  void release(const StoredGraph& graph);
+  // Under mutex_: counts the build, interns its parts and keeps it (releasing the entry it replaces).
   void insert(const std::shared_ptr<StoredGraph>& built);
+  // Under mutex_: drops the entries of shapes `versions` no longer has (deleted), once per seq.
+  void dropDeleted(const StoreVersions& versions);
 
-  std::unordered_map<uint64_t, std::vector<std::pair<FuzzyPart, int64_t>>> parts_;  // partKey -> (part, id)
+  std::unordered_map<uint64_t, std::vector<InternedPart>> parts_;  // by partKey
   int64_t nextPart_ = 0;
+  int64_t sweptSeq_ = -1;  // the versions seq dropDeleted last ran for
+  size_t internedParts_ = 0;
   mutable std::mutex mutex_;
   std::unordered_map<int64_t, std::shared_ptr<const StoredGraph>> entries_;
   size_t builds_ = 0;

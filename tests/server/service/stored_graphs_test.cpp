@@ -1,11 +1,13 @@
 // The stored-graph cache (server/service/stored_graphs.h): partKey and samePart, one id for equal leaf parts
 // across trees, entries served while the versions hold and rebuilt after a write they depend on;
 // graphs() (the parallel build) gives the entries of serial graph() calls, builds each graph once
-// when two threads ask at the same time, and skips deleted shapes.
+// when two threads ask at the same time, and skips deleted shapes; its memory follows the live
+// catalogue (interned parts no entry uses and entries of deleted shapes are dropped).
 #include "server/service/stored_graphs.h"
 
 #include <gtest/gtest.h>
 
+#include <set>
 #include <thread>
 
 #include "server/service/documents.h"
@@ -158,6 +160,38 @@ TEST(StoredGraphs, GraphsSkipDeletedShapesAndStopOnCheck) {
   EXPECT_THROW(stopped.graphs(*store, StoreVersions::read(*store), 1000, []() { throw std::runtime_error("stop"); }),
                std::runtime_error);
   EXPECT_EQ(stopped.builds(), 0u);
+}
+
+// The soak (bench/soak.sh) grew the server's memory without end: every PUT of a part left its old
+// version interned, and deleted shapes kept their entries. Many rewrites of one part and a deleted
+// shape now leave what the live trees use.
+TEST(StoredGraphs, MemoryFollowsTheLiveCatalogueNotTheWrites) {
+  TempDir dir;
+  auto store = catalogue(dir, 10);
+  StoredGraphCache cache;
+  cache.graphs(*store, StoreVersions::read(*store), 1000);
+  const size_t parts = cache.internedParts();
+  EXPECT_EQ(parts, 5u);  // rod, plate and three parts from words
+  int64_t rod = INT64_MAX;  // the first object catalogue() creates
+  for (const auto& [id, version] : StoreVersions::read(*store).latest) rod = std::min(rod, id);
+  ASSERT_EQ(store->get("part", rod).name, "rod");
+  for (int k = 0; k < 20; ++k) {
+    store->put(rod, prepareDocument({{"name", "rod"}, {"params", {{"a1", 1 + 0.01 * (k + 1)}, {"a3", 3}}}}, "part",
+                                    *store, DocumentLimits{}, ""));
+    const auto graphs = cache.graphs(*store, StoreVersions::read(*store), 1000);
+    EXPECT_EQ(cache.internedParts(), parts) << "after write " << k;
+    ASSERT_TRUE(graphs[0]);
+  }
+  const StoreVersions before = StoreVersions::read(*store);
+  store->remove("shape", before.shapes[0].id, false);
+  store->remove("shape", before.shapes[5].id, false);
+  const auto after = cache.graphs(*store, StoreVersions::read(*store), 1000);
+  EXPECT_EQ(after.size(), 8u);
+  EXPECT_EQ(cache.size(), 8u);  // the deleted shapes' entries are gone
+  std::set<int64_t> used;        // the parts the live entries use
+  for (const auto& g : after)
+    for (int64_t id : g->leafParts) used.insert(id);
+  EXPECT_EQ(cache.internedParts(), used.size());
 }
 
 }  // namespace
