@@ -110,6 +110,10 @@ Connection::Connection(const std::string& path, const ConnectionOptions& options
     // Savepoints (one per bulk-import line) journal every page they first touch; in a file,
     // that was a pwrite per page and a third of an import's time (docs/performance.md).
     exec("PRAGMA temp_store = MEMORY");
+    exec("PRAGMA journal_size_limit = " + std::to_string(kWalSizeLimitBytes));
+    busyTimeoutMs_ = options.busyTimeoutMs;
+    // Replaces SQLite's automatic checkpoint (a WAL hook of its own) with onWalCommit.
+    sqlite3_wal_hook(db_, &Connection::onWalCommit, this);
   } catch (...) {
     sqlite3_close(db_);
     throw;
@@ -119,6 +123,31 @@ Connection::Connection(const std::string& path, const ConnectionOptions& options
 Connection::~Connection() {
   statements_.clear();  // finalize before close, else sqlite3_close refuses
   sqlite3_close(db_);
+}
+
+// Why RESTART: a PASSIVE checkpoint copies only the frames older than every reader's snapshot, and
+// the WAL starts over only when no reader uses it. Under a steady stream of reads some reader
+// always does, so with SQLite's automatic checkpoint alone the WAL grew without bound (200-445
+// MiB in the 80 s soak, bench/soak.sh), and every read searched a longer WAL index. RESTART waits
+// for the readers of older snapshots (they finish in milliseconds); readers that start once every
+// frame is copied read the database file, so the next commit writes the WAL from its start. The
+// wait is short and tried once per 1000 frames: a long read (an export's snapshot) costs a commit
+// at most kWalRestartWaitMs, and the WAL only grows until that read ends.
+int Connection::onWalCommit(void* self, sqlite3* db, const char* name, int frames) {
+  auto* connection = static_cast<Connection*>(self);
+  if (frames < kWalRestartFrames) connection->lastRestartAttempt_ = 0;  // the WAL started over
+  if (frames < 1000) return SQLITE_OK;
+  if (frames < kWalRestartFrames || frames / 1000 == connection->lastRestartAttempt_) {
+    sqlite3_wal_checkpoint_v2(db, name, SQLITE_CHECKPOINT_PASSIVE, nullptr, nullptr);
+    return SQLITE_OK;
+  }
+  connection->lastRestartAttempt_ = frames / 1000;
+  sqlite3_busy_timeout(db, kWalRestartWaitMs);
+  sqlite3_wal_checkpoint_v2(db, name, SQLITE_CHECKPOINT_RESTART, nullptr, nullptr);
+  sqlite3_busy_timeout(db, connection->busyTimeoutMs_);
+  // The commit has happened whatever the checkpoint answered (SQLITE_BUSY when a reader stayed);
+  // an error here would only be reported as the commit's.
+  return SQLITE_OK;
 }
 
 void Connection::exec(const std::string& sql) {

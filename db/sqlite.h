@@ -9,6 +9,11 @@
 // - A borrowed cached statement is reset when the borrow ends: a statement left mid-result would
 //   keep a read transaction open, pinning an old WAL snapshot and blocking checkpoints.
 // - The schema version is PRAGMA user_version.
+// - The WAL stays bounded under reads that never stop: SQLite's own checkpoint every 1000 frames
+//   (PASSIVE) runs as before, and once the WAL holds kWalRestartFrames frames a commit also
+//   checkpoints in RESTART mode (waiting at most kWalRestartWaitMs for the readers of older
+//   snapshots), so that the next commit writes the WAL from its start; a WAL file left larger
+//   than kWalSizeLimitBytes is cut back to it when the WAL starts over (journal_size_limit).
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -56,6 +61,13 @@ class Statement final : public sql::Statement {
   std::string sql_;  // for error messages
 };
 
+// Frames (pages) in the WAL from which a commit checkpoints in RESTART mode: 16 MiB of 4 KiB pages.
+constexpr int kWalRestartFrames = 4096;
+// How long that commit waits for the readers of older snapshots before it gives up until the WAL
+// has grown by another 1000 frames.
+constexpr int kWalRestartWaitMs = 100;
+constexpr int64_t kWalSizeLimitBytes = int64_t{64} << 20;
+
 struct ConnectionOptions {
   int busyTimeoutMs = 5000;
   bool synchronousFull = false;  // PRAGMA synchronous = FULL instead of NORMAL
@@ -85,6 +97,9 @@ class Connection final : public sql::Connection {
 
  private:
   sqlite3* db_ = nullptr;
+  int busyTimeoutMs_ = 0;
+  int lastRestartAttempt_ = 0;  // WAL frames at this connection's last RESTART checkpoint, in thousands
+  static int onWalCommit(void* connection, sqlite3* db, const char* name, int frames);
   std::unordered_map<std::string, std::unique_ptr<Statement>> statements_;
 };
 
