@@ -129,7 +129,6 @@ void StoredGraphCache::insert(const std::shared_ptr<StoredGraph>& built) {
   if (entries_.size() >= maxEntries_) {
     entries_.clear();
     parts_.clear();
-    internedParts_ = 0;
   }
   for (const CsgGraphLeaf& leaf : built->shape.leaves) built->leafParts.push_back(intern(leaf.part));
   std::shared_ptr<const StoredGraph>& entry = entries_[built->id];
@@ -145,10 +144,7 @@ void StoredGraphCache::release(const StoredGraph& graph) {
     std::vector<InternedPart>& known = bucket->second;
     for (size_t k = 0; k < known.size(); ++k) {
       if (known[k].id != graph.leafParts[i]) continue;
-      if (--known[k].uses == 0) {
-        known.erase(known.begin() + static_cast<std::ptrdiff_t>(k));
-        --internedParts_;
-      }
+      if (--known[k].uses == 0) known.erase(known.begin() + static_cast<std::ptrdiff_t>(k));
       break;
     }
     if (known.empty()) parts_.erase(bucket);
@@ -237,13 +233,14 @@ int64_t StoredGraphCache::intern(const FuzzyPart& part) {
     }
   }
   bucket.push_back(InternedPart{part, nextPart_, 1});
-  ++internedParts_;
   return nextPart_++;
 }
 
 size_t StoredGraphCache::internedParts() const {
   std::lock_guard<std::mutex> lock(mutex_);
-  return internedParts_;
+  size_t n = 0;
+  for (const auto& [key, bucket] : parts_) n += bucket.size();
+  return n;
 }
 
 size_t StoredGraphCache::size() const {

@@ -107,7 +107,6 @@ class StoredGraphCache {
   std::unordered_map<uint64_t, std::vector<InternedPart>> parts_;  // by partKey
   int64_t nextPart_ = 0;
   int64_t sweptSeq_ = -1;  // the versions seq dropDeleted last ran for
-  size_t internedParts_ = 0;
   mutable std::mutex mutex_;
   std::unordered_map<int64_t, std::shared_ptr<const StoredGraph>> entries_;
   size_t builds_ = 0;
