@@ -20,6 +20,7 @@
 #include "server/http/api.h"
 #include "server/service/bulk_import.h"
 #include "server/service/descriptor_rows.h"
+#include "server/cli/allocator.h"
 #include "server/cli/eval_command.h"
 #include "server/cli/log_sink.h"
 #include "server/cli/file_io.h"
@@ -93,6 +94,8 @@ int runServe(const fsdb::ServerOptions& options, const std::string& dbPath, cons
   blockShutdownSignals(&signals);  // before any thread exists, so all inherit the mask
   // A client that hangs up while its answer is written must cost that request, not the server.
   std::signal(SIGPIPE, SIG_IGN);
+  // Before the worker threads exist: their arenas follow it (server/cli/allocator.h).
+  spdlog::info("allocator: {}", fsdb::tuneAllocatorForServing(std::thread::hardware_concurrency()).description);
 
   std::unique_ptr<fsdb::Store> store;
   try {
