@@ -103,12 +103,21 @@ struct QueryCondition {
   // A measure ("about 10 long", "a radius of 1"): the extent it asks for in world units (a
   // radius already doubled) and `set` its image over the descriptor's degrees (extentDegreeSet).
   std::optional<FuzzyNumber> measure;
+  // A closest-match query (query/linguistic/closest_match.h): `asked` is the set the words asked
+  // where `set` is it widened (a kDescriptor scores on `set` and explains its score on `asked`);
+  // `placementIgnored` makes a kRelation score its two noun phrases only, wherever they stand
+  // (explain still gives the placement's own score).
+  std::optional<FuzzyNumber> asked;
+  bool placementIgnored = false;
 };
 struct LinguisticQuery {
   std::string subject = "any";   // "part", "shape" or "any" (from the noun: "shape" = any)
   QueryCondition root;
   double atLeast = 0.0;          // "at least 0.7": results below are dropped
   std::string aggregation = "min";  // how kAnd combines scores (documented choices)
+  // Made by closestMatchQuery (query/linguistic/closest_match.h): every explain entry gives its
+  // score as the words asked and its closeness, the relaxed score that ranks.
+  bool closestMatch = false;
 };
 // The server passes activeVocabulary() (query/linguistic/vocabulary.h), so `fsdb serve --vocabulary FILE`
 // extends the language.
@@ -207,6 +216,9 @@ struct ConditionScore {
   std::string text;
   double score;
   std::string component;  // scoreShape: the component path(s) it was scored on ("a, b" for relations)
+  // A closest-match query (LinguisticQuery::closestMatch): `score` is what the words asked,
+  // `closeness` what the relaxed condition scored (and ranked by).
+  std::optional<double> closeness = std::nullopt;
 };
 struct QueryScore { double score = 0.0; std::vector<ConditionScore> explain; };
 // Score of one part's descriptor values (docs/api.md §5; kRelation conditions score 0 for a lone
@@ -248,8 +260,8 @@ double relationMembership(const Direction& direction, const std::optional<FuzzyN
 // direction, distance}}.
 nlohmann::json toJson(const LinguisticQuery& query);
 
-// A score's explain as JSON: [{"text","score","component"}] ("component" only when set), for the
-// "explain" member of a result.
+// A score's explain as JSON: [{"text","score","component","closeness"}] ("component" and
+// "closeness" only when set), for the "explain" member of a result.
 nlohmann::json explainJson(const QueryScore& score);
 
 }  // namespace fsdb

@@ -49,19 +49,34 @@ const Direction* directionOf(const QueryCondition& c) {
 
 Vec3 coreCentre(const FuzzyPart& p) { return p.coreRepresentative().placement.translate; }
 
-double score(const QueryCondition& c, Context& ctx);
+// A condition's score, and its score as the words asked (they differ only in a closest-match
+// query, query/linguistic/closest_match.h: `score` ranks, `asked` is explained).
+struct Scores {
+  double score = 0.0;
+  double asked = 0.0;
+};
+
+Scores score(const QueryCondition& c, Context& ctx);
+
+// Writes a condition's scores into its explain entry.
+void explainAt(size_t slot, const Scores& s, const Context& ctx) {
+  ConditionScore& e = (*ctx.explain)[slot];
+  e.score = s.asked;
+  if (ctx.query->closestMatch) e.closeness = s.score;
+}
 
 // The best ordered pair of distinct components for a relation. Each noun phrase is scored once
 // per component; a pair's direction and distance are computed only when its two scores could
 // still beat the best pair so far.
-double relationScore(const QueryCondition& c, Context& ctx) {
+Scores relationScore(const QueryCondition& c, Context& ctx) {
   const size_t slot = ctx.explain->size();
   ctx.explain->push_back({c.text, 0.0, ""});
-  if (!ctx.components || c.children.size() != 2) return 0.0;
+  if (ctx.query->closestMatch) (*ctx.explain)[slot].closeness = 0.0;
+  if (!ctx.components || c.children.size() != 2) return {};
   const Direction* direction = directionOf(c);
   const auto& comps = *ctx.components;
   struct Scored {
-    double score;
+    Scores scores;
     std::vector<ConditionScore> explain;
   };
   std::vector<Scored> subject, other;
@@ -69,7 +84,7 @@ double relationScore(const QueryCondition& c, Context& ctx) {
     for (size_t side = 0; side < 2; ++side) {
       Scored s;
       Context one{ctx.query, ctx.components, &comp.descriptors, comp.path, &s.explain};
-      s.score = score(c.children[side], one);
+      s.scores = score(c.children[side], one);
       (side == 0 ? subject : other).push_back(std::move(s));
     }
   }
@@ -79,9 +94,10 @@ double relationScore(const QueryCondition& c, Context& ctx) {
   for (size_t i = 0; i < comps.size(); ++i) {
     for (size_t j = 0; j < comps.size(); ++j) {
       if (i == j) continue;
-      double s = std::min(subject[i].score, other[j].score);
+      double s = std::min(subject[i].scores.score, other[j].scores.score);
       if (found && s <= best) continue;  // cannot win: the first best pair stays (stable ties)
-      s = std::min(s, relationMembership(*direction, c.distance, comps[i].part, comps[j].part));
+      if (!c.placementIgnored)
+        s = std::min(s, relationMembership(*direction, c.distance, comps[i].part, comps[j].part));
       if (!found || s > best) {
         best = s;
         bestI = i;
@@ -90,11 +106,19 @@ double relationScore(const QueryCondition& c, Context& ctx) {
       }
     }
   }
-  if (!found) return 0.0;  // fewer than two components
-  (*ctx.explain)[slot] = {c.text, best, comps[bestI].path + ", " + comps[bestJ].path};
+  if (!found) return {};  // fewer than two components
+  Scores total{best, best};
+  if (c.placementIgnored || ctx.query->closestMatch) {
+    // Ranked by the noun phrases (and their relaxed conditions); the words as asked, placement
+    // included, are explained for the pair that gave the total.
+    total.asked = std::min({subject[bestI].scores.asked, other[bestJ].scores.asked,
+                            relationMembership(*direction, c.distance, comps[bestI].part, comps[bestJ].part)});
+  }
+  (*ctx.explain)[slot].component = comps[bestI].path + ", " + comps[bestJ].path;
+  explainAt(slot, total, ctx);
   for (const auto* e : {&subject[bestI].explain, &other[bestJ].explain})
     ctx.explain->insert(ctx.explain->end(), e->begin(), e->end());
-  return best;
+  return total;
 }
 
 // Two descriptor conditions that score alike on any part: same descriptor, set and words.
@@ -103,20 +127,24 @@ bool sameDescriptorCondition(const QueryCondition& a, const QueryCondition& b) {
          a.text == b.text && a.set == b.set;
 }
 
-double score(const QueryCondition& c, Context& ctx) {
+Scores score(const QueryCondition& c, Context& ctx) {
   if (c.kind == Kind::kRelation) return relationScore(c, ctx);
   const size_t slot = ctx.explain->size();
   if (!c.text.empty()) ctx.explain->push_back({c.text, 0.0, ctx.component});
-  double s = 0.0;
+  Scores s;
   switch (c.kind) {
     case Kind::kDescriptor:
       if (ctx.values)
         for (const DescriptorValue& v : *ctx.values)
-          if (v.descriptor == c.descriptor) s = similarity(v.value, c.set);
+          if (v.descriptor == c.descriptor) {
+            s.score = similarity(v.value, c.set);
+            s.asked = c.asked ? similarity(v.value, *c.asked) : s.score;
+          }
       break;
     case Kind::kAnd: {
-      std::vector<double> scores;
+      std::vector<double> scores, asked;
       scores.reserve(c.children.size());
+      asked.reserve(c.children.size());
       const QueryCondition* previous = nullptr;  // the last descriptor child scored
       for (const QueryCondition& child : c.children) {
         // A descriptor condition said again right after itself ("a large large ... ball") scores
@@ -124,26 +152,40 @@ double score(const QueryCondition& c, Context& ctx) {
         // the answer is the same under every aggregation; only the similarity is not recomputed
         // (a 10,000-word text of one repeated word computed it 10,000 times per candidate).
         if (previous && sameDescriptorCondition(*previous, child)) {
-          if (!child.text.empty()) ctx.explain->push_back({child.text, scores.back(), ctx.component});
+          if (!child.text.empty()) {
+            ctx.explain->push_back({child.text, 0.0, ctx.component});
+            explainAt(ctx.explain->size() - 1, {scores.back(), asked.back()}, ctx);
+          }
           scores.push_back(scores.back());
+          asked.push_back(asked.back());
           continue;
         }
-        scores.push_back(score(child, ctx));
+        const Scores one = score(child, ctx);
+        scores.push_back(one.score);
+        asked.push_back(one.asked);
         previous = child.kind == Kind::kDescriptor ? &child : nullptr;
       }
-      s = aggregate(ctx.query->aggregation, scores);
+      s = {aggregate(ctx.query->aggregation, scores), aggregate(ctx.query->aggregation, asked)};
       break;
     }
     case Kind::kOr:
-      for (const QueryCondition& child : c.children) s = std::max(s, score(child, ctx));
+      for (const QueryCondition& child : c.children) {
+        const Scores one = score(child, ctx);
+        s = {std::max(s.score, one.score), std::max(s.asked, one.asked)};
+      }
       break;
     case Kind::kNot:
-      s = c.children.empty() ? 0.0 : 1.0 - score(c.children[0], ctx);
+      if (!c.children.empty()) {
+        const Scores one = score(c.children[0], ctx);
+        s = {1.0 - one.score, 1.0 - one.asked};
+      } else {
+        s = {0.0, 0.0};
+      }
       break;
     case Kind::kRelation:
       break;
   }
-  if (!c.text.empty()) (*ctx.explain)[slot].score = s;
+  if (!c.text.empty()) explainAt(slot, s, ctx);
   return s;
 }
 
@@ -178,7 +220,7 @@ void collectComponents(const CsgTree& node, const std::string& path, std::vector
 QueryScore scoreDescriptors(const LinguisticQuery& query, const std::vector<DescriptorValue>& values) {
   QueryScore result;
   Context ctx{&query, nullptr, &values, "", &result.explain};
-  result.score = score(query.root, ctx);
+  result.score = score(query.root, ctx).score;
   return result;
 }
 
@@ -186,14 +228,14 @@ QueryScore scoreShape(const LinguisticQuery& query, const std::vector<ShapeCompo
   QueryScore best;
   if (!readsComponent(query.root) || components.empty()) {
     Context ctx{&query, &components, nullptr, "", &best.explain};
-    best.score = score(query.root, ctx);
+    best.score = score(query.root, ctx).score;
     return best;
   }
   bool first = true;
   for (const ShapeComponent& component : components) {
     QueryScore candidate;
     Context ctx{&query, &components, &component.descriptors, component.path, &candidate.explain};
-    candidate.score = score(query.root, ctx);
+    candidate.score = score(query.root, ctx).score;
     if (first || candidate.score > best.score) best = std::move(candidate);  // first wins ties
     first = false;
   }
@@ -205,6 +247,7 @@ nlohmann::json explainJson(const QueryScore& score) {
   for (const ConditionScore& c : score.explain) {
     nlohmann::json e = {{"text", c.text}, {"score", c.score}};
     if (!c.component.empty()) e["component"] = c.component;
+    if (c.closeness) e["closeness"] = *c.closeness;
     out.push_back(std::move(e));
   }
   return out;

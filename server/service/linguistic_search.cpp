@@ -14,6 +14,7 @@
 #include "geometry/core/error.h"
 #include "query/document/part_json.h"
 #include "query/json/json_body.h"
+#include "query/linguistic/closest_match.h"
 #include "query/linguistic/descriptor_prefilter.h"
 #include "query/linguistic/query_print.h"
 #include "query/linguistic/vocabulary.h"
@@ -459,7 +460,7 @@ std::vector<std::string> searchKinds(const LinguisticQuery& query, const std::st
 }
 
 nlohmann::json linguisticQueryResponse(const Store& store, const nlohmann::json& request,
-                                       const LinguisticRequestLimits& limits, const std::string& aggregation) {
+                                       const LinguisticRequestLimits& limits, const QueryRelaxation& relaxed) {
   const auto start = Clock::now();
   requireObject(request, "");
   rejectUnknownKeys(request, "", {"text", "limit", "threshold", "kind", "scan"});
@@ -477,7 +478,8 @@ nlohmann::json linguisticQueryResponse(const Store& store, const nlohmann::json&
   }
   options.scan = optionalBoolean(request, "", "scan", false);
   LinguisticQuery query = parseLinguisticQuery(text, activeVocabulary());
-  if (!aggregation.empty()) query.aggregation = aggregation;
+  if (!relaxed.aggregation.empty()) query.aggregation = relaxed.aggregation;
+  if (relaxed.widenBy) query = closestMatchQuery(query, *relaxed.widenBy);
   options.kinds = searchKinds(query, kind);
   const LinguisticSearchResult found = searchLinguistic(store, query, options);
   nlohmann::json results = nlohmann::json::array();

@@ -33,6 +33,7 @@
 //   search's answer; an object deleted meanwhile is skipped too.
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -82,9 +83,13 @@ struct LinguisticRequestLimits {
 // "candidates","scored","scan","millis"}: validation (invalid_parameter / invalid_document naming the
 // field), parsing with the active vocabulary (query/linguistic/vocabulary.h), search; "parsed" is
 // toJson(query) of query/linguistic/linguistic_query.h. Shared by POST /query/linguistic and
-// `fsdb query --db`. `aggregation`, when not empty, replaces the text's (POST /query's partial
-// matches search by "mean" the text that found nothing under "min").
+// `fsdb query --db`. `relaxed`: how POST /query's partial matches rewrite the text's query
+// when it found nothing (server/service/query_search.h).
+struct QueryRelaxation {
+  std::string aggregation;        // not empty: replaces the text's ("mean")
+  std::optional<double> widenBy;  // set: closestMatchQuery(query, *widenBy) (query/linguistic/closest_match.h)
+};
 nlohmann::json linguisticQueryResponse(const Store& store, const nlohmann::json& request,
-                                       const LinguisticRequestLimits& limits, const std::string& aggregation = "");
+                                       const LinguisticRequestLimits& limits, const QueryRelaxation& relaxed = {});
 
 }  // namespace fsdb

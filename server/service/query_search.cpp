@@ -452,6 +452,12 @@ void putWordMatches(nlohmann::json* answer, const nlohmann::json& named, const n
   (*answer)["results"] = std::move(results);
 }
 
+// The closest matches' steps (degrees each descriptor condition is widened by) and the factor on
+// their scores (docs/design/linguistic-search.md, "No dead ends"). 1 reaches every degree from
+// any core in [0, 1].
+constexpr double kClosestWidening[] = {0.0, 0.125, 0.25, 0.5, 1.0};
+constexpr double kClosestDiscount = 0.5;
+
 nlohmann::json searchText(const Store& store, const nlohmann::json& request, const std::string& text,
                           const LinguisticRequestLimits& linguisticLimits, const CsgRequestLimits& csgLimits,
                           StoredGraphCache& graphs) {
@@ -464,13 +470,36 @@ nlohmann::json searchText(const Store& store, const nlohmann::json& request, con
   // Not for relations: their mean reads every pair of components of every shape (seconds on the
   // soak's catalogue), where the min's bounds prune.
   const nlohmann::json& parsed = answer.value("parsed", nlohmann::json::object());
-  if (!csg && answer["results"].empty() && parsed.value("aggregation", "") == "min" &&
-      parsed.value("condition", nlohmann::json::object()).value("kind", "") != "relation" &&
-      parsed.value("at_least", 0.0) == 0.0 && !request.contains("threshold")) {
-    nlohmann::json closest = linguisticQueryResponse(store, request, linguisticLimits, "mean");
-    for (nlohmann::json& r : closest["results"]) r["partial"] = true;
+  if (csg || !answer["results"].empty() || parsed.value("at_least", 0.0) != 0.0 || request.contains("threshold"))
+    return answer;
+  const bool relation = parsed.value("condition", nlohmann::json::object()).value("kind", "") == "relation";
+  if (parsed.value("aggregation", "") == "min" && !relation) {
+    nlohmann::json closest = linguisticQueryResponse(store, request, linguisticLimits, {"mean", std::nullopt});
+    if (!closest["results"].empty()) {
+      for (nlohmann::json& r : closest["results"]) r["partial"] = true;
+      answer["results"] = std::move(closest["results"]);
+      answer["partial"] = true;
+      return answer;
+    }
+  }
+  // Still nothing (one condition, or every condition failing on every object, or a relation no
+  // shape has): the closest matches (query/linguistic/closest_match.h), the conditions widened
+  // step by step until some object scores, each relation's placement ignored. Their scores are
+  // halved: a closest match is no answer to the words, and explain shows each condition's score
+  // as asked beside its closeness.
+  const bool placed = holdsRelation(parsed);
+  for (const double widenBy : kClosestWidening) {
+    if (widenBy == 0.0 && !placed) continue;  // the text's own query, searched above
+    nlohmann::json closest = linguisticQueryResponse(store, request, linguisticLimits, {"", widenBy});
+    if (closest["results"].empty()) continue;
+    for (nlohmann::json& r : closest["results"]) {
+      r["score"] = kClosestDiscount * r.value("score", 0.0);
+      r["partial"] = true;
+    }
     answer["results"] = std::move(closest["results"]);
     answer["partial"] = true;
+    answer["closest"] = {{"widened_by", widenBy}, {"placement_ignored", placed}};
+    break;
   }
   return answer;
 }

@@ -17,7 +17,10 @@
 // name among more words comes first of the results with its score (docs/api.md).
 // Partial matches: a linguistic text without a relation that no object meets at all (every score
 // 0 under min, no threshold) is searched again by the mean of its conditions (the text's own
-// "using ..." too gives way); the answer and its results carry "partial": true.
+// "using ..." too gives way); the answer and its results carry "partial": true. When that finds
+// nothing either, or the text has a relation, its closest matches (query/linguistic/closest_match.h:
+// conditions widened step by step, placements ignored; scores halved; explain with "closeness")
+// are the answer, marked partial, with "closest": {"widened_by", "placement_ignored"}.
 // Errors: a body without a string "text" is refused as the linguistic search refuses it (422 at
 // "text"); everything else is the chosen search's. A text that does not read even without its
 // unknown words (or has nothing else) gets the first refusal: the linguistic parser's 422 with the

@@ -632,6 +632,73 @@ TEST(DesignersQueries, NoMatchGivesTheClosestPartialMatches) {
   EXPECT_FALSE(thresholded.json.contains("partial")) << thresholded.body;
 }
 
+// Nothing near the words at all: a measure no object has ("about 10 long": the demo's parts are
+// shorter) and a relation no shape has ("a cone resting on a box") answer their closest
+// matches, not an empty list: the conditions widened, the placement ignored, scores halved, and
+// explain giving each condition's score as asked beside its closeness.
+TEST(DesignersQueries, NothingNearGivesTheClosestMatches) {
+  ServerProcess server({"--demo", kDemo});
+  auto strict = server.post("/query/linguistic", json{{"text", "about 10 long"}});
+  ASSERT_EQ(strict.status, 200) << strict.body;
+  ASSERT_TRUE(strict.json["results"].empty()) << strict.body;
+  auto r = server.post("/query", json{{"text", "about 10 long"}});
+  ASSERT_EQ(r.status, 200) << r.body;
+  EXPECT_EQ(r.json["partial"], true);
+  ASSERT_TRUE(r.json.contains("closest")) << r.body;
+  EXPECT_GT(r.json["closest"]["widened_by"].get<double>(), 0.0);
+  EXPECT_EQ(r.json["closest"]["placement_ignored"], false);
+  ASSERT_FALSE(r.json["results"].empty()) << r.body;
+  // Longest first: the lengths of the results (the length descriptor's value) do not increase.
+  double previous = 2.0;
+  for (const json& result : r.json["results"]) {
+    EXPECT_EQ(result["partial"], true);
+    EXPECT_GT(result["score"].get<double>(), 0.0);
+    EXPECT_LE(result["score"].get<double>(), 0.5);
+    ASSERT_EQ(result["explain"].size(), 1u) << result;
+    EXPECT_EQ(result["explain"][0]["score"], 0.0) << result;
+    EXPECT_DOUBLE_EQ(result["explain"][0]["closeness"].get<double>(), 2 * result["score"].get<double>());
+    EXPECT_LE(result["score"].get<double>(), previous);
+    previous = result["score"].get<double>();
+  }
+  // A relation the other way round: ball-on-box has a box under a ball, none a box on a ball.
+  // Its noun phrases, wherever they stand, find it without widening.
+  auto under = server.post("/query", json{{"text", "a box under a sphere"}});
+  ASSERT_EQ(under.status, 200) << under.body;
+  ASSERT_FALSE(under.json["results"].empty()) << under.body;
+  EXPECT_EQ(under.json["results"][0]["name"], "ball-on-box");
+  EXPECT_FALSE(under.json.contains("partial"));
+  auto on = server.post("/query", json{{"text", "a box on a sphere"}});
+  ASSERT_EQ(on.status, 200) << on.body;
+  EXPECT_EQ(on.json["partial"], true);
+  EXPECT_EQ(on.json["closest"]["widened_by"], 0.0);
+  EXPECT_EQ(on.json["closest"]["placement_ignored"], true);
+  bool ballOnBox = false;
+  for (const json& result : on.json["results"]) {
+    EXPECT_DOUBLE_EQ(result["score"].get<double>(), 0.5) << result;  // both noun phrases, halved
+    ballOnBox = ballOnBox || result["name"] == "ball-on-box";
+  }
+  EXPECT_TRUE(ballOnBox) << on.body;
+  // No shape of the demo has a cone and a box: the noun phrases are widened too.
+  auto placed = server.post("/query/linguistic", json{{"text", "a cone on a box"}});
+  ASSERT_EQ(placed.status, 200) << placed.body;
+  ASSERT_TRUE(placed.json["results"].empty()) << placed.body;
+  auto c = server.post("/query", json{{"text", "a cone resting on a box"}});
+  ASSERT_EQ(c.status, 200) << c.body;
+  EXPECT_EQ(c.json["partial"], true);
+  EXPECT_EQ(c.json["closest"]["placement_ignored"], true);
+  ASSERT_FALSE(c.json["results"].empty()) << c.body;
+  for (const json& result : c.json["results"]) {
+    EXPECT_EQ(result["kind"], "shape");
+    EXPECT_EQ(result["explain"][0]["score"], 0.0) << result;  // the placement as asked
+    EXPECT_GT(result["explain"][0]["closeness"].get<double>(), 0.0) << result;
+  }
+  // A threshold keeps the answer strict here too.
+  auto thresholded = server.post("/query", json{{"text", "about 10 long"}, {"threshold", 0.1}});
+  ASSERT_EQ(thresholded.status, 200);
+  EXPECT_TRUE(thresholded.json["results"].empty());
+  EXPECT_FALSE(thresholded.json.contains("partial"));
+}
+
 // The corpus (designers_corpus.txt) on the catalogue built for it: every phrasing runs the same
 // search as the grammar's own and ranks the same ids with the same scores, and the object the
 // line names ranks first.
