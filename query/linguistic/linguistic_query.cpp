@@ -676,10 +676,7 @@ class Parser {
       for (const QueryCondition& c : parts) collectLeaves(c, &said);
       for (const QueryCondition& c : clause) collectLeaves(c, &said);
       std::vector<QueryCondition> leaves;
-      // A plain adjective's set is the vocabulary's plain one (mirrored for a low pole).
-      const auto graded = [&](const QueryCondition& c) {
-        return !(c.set == v_.plain() || c.set == mirroredDegrees(v_.plain()));
-      };
+      const auto graded = [&](const QueryCondition& c) { return !c.plainRamp; };
       for (const NounCondition& c : noun.conditions)
         if (!overriddenByWords(c, noun, said, graded))
           leaves.push_back(descriptorCondition(c.descriptor, c.set, nounText + ": " + c.descriptor));
@@ -823,6 +820,7 @@ class Parser {
       pos_ += k;
     }
     QueryCondition c = descriptorCondition(descriptor, set, span(start, pos_));
+    c.plainRamp = !intensity && !adjective.set;
     c.outline = adjective.outline && sectionWord.empty();
     // A plain edges.before_nouns adjective may say the edges of a square noun ("a rounded box").
     if (!intensity && sectionWord.empty() && v_.saysEdgesBeforeNouns(word)) c.edgeDegree = v_.edgeSet();

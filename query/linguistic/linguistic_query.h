@@ -103,6 +103,9 @@ struct QueryCondition {
   // A measure ("about 10 long", "a radius of 1"): the extent it asks for in world units (a
   // radius already doubled) and `set` its image over the descriptor's degrees (extentDegreeSet).
   std::optional<FuzzyNumber> measure;
+  // A plain adjective's set (Vocabulary::plainSet of an adjective without a `set` of its own): it
+  // ranks by degree and states no degree of its own, so a noun's condition it agrees with stays.
+  bool plainRamp = false;
   // A closest-match query (query/linguistic/closest_match.h): `asked` is the set the words asked
   // where `set` is it widened (a kDescriptor scores on `set` and explains its score on `asked`);
   // `placementIgnored` makes a kRelation score its two noun phrases only, wherever they stand

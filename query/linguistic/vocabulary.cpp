@@ -432,15 +432,50 @@ const Vocabulary& Vocabulary::builtin() {
   return v;
 }
 
+namespace {
+
+// The degrees a part made from the plain adjective may have: its own `create` as written, else the
+// vocabulary's, mirrored for a low pole.
+FuzzyNumber plainCreatedRange(const Adjective& adjective, const FuzzyNumber& plainCreate) {
+  if (adjective.create) return *adjective.create;
+  return adjective.lowPole ? mirroredDegrees(plainCreate) : plainCreate;
+}
+
+}  // namespace
+
 FuzzyNumber Vocabulary::plainSet(const Adjective& adjective) const {
   if (adjective.set) return *adjective.set;
-  return adjective.lowPole ? mirroredDegrees(plain_) : plain_;
+  // Two readings of a plain "bent", either of which satisfies it: the degree itself (`plain`, the
+  // ramp that ranks by degree) and "at least as bent as a part made from the word" (its created
+  // range, 1 from its core on towards the pole). Their union (pointwise max) keeps the ramp's
+  // ranking below the range and scores a made part, one degree in the core, at 1.
+  const FuzzyNumber range = plainCreatedRange(adjective, plainCreate_);
+  const std::vector<Breakpoint>& r = range.breakpoints();
+  std::vector<Breakpoint> closure;
+  if (!adjective.lowPole) {
+    for (const Breakpoint& b : r) {
+      closure.push_back(b);
+      if (b.mu >= 1.0) break;  // the core's low end
+    }
+    closure.push_back({1.0, 1.0});
+  } else {
+    closure.push_back({0.0, 1.0});
+    size_t last = 0;
+    for (size_t i = 0; i < r.size(); ++i)
+      if (r[i].mu >= 1.0) last = i;  // the core's high end
+    closure.insert(closure.end(), r.begin() + static_cast<std::ptrdiff_t>(last), r.end());
+  }
+  const FuzzyNumber ramp = adjective.lowPole ? mirroredDegrees(plain_) : plain_;
+  return FuzzyNumber::fromPoints(pointwiseMax(ramp.breakpoints(), FuzzyNumber::fromPoints(closure).breakpoints()));
 }
 
 FuzzyNumber Vocabulary::createdSet(const Adjective& adjective, const FuzzyNumber* intensity) const {
-  if (!intensity && adjective.create) return *adjective.create;
-  const FuzzyNumber& d = intensity ? *intensity : plainCreate_;
-  return adjective.lowPole ? mirroredDegrees(d) : d;
+  if (intensity) return adjective.lowPole ? mirroredDegrees(*intensity) : *intensity;
+  if (adjective.set) return adjective.create ? *adjective.create : *adjective.set;
+  // One degree, the middle of the created range's core: inside plainSet's core, so the words
+  // find the part at 1 (docs/design/linguistic-search.md, "Round trips").
+  const Interval core = plainCreatedRange(adjective, plainCreate_).core();
+  return FuzzyNumber::crisp(0.5 * (core.lo + core.hi));
 }
 
 const FuzzyNumber* Vocabulary::intensity(const std::string& word) const {

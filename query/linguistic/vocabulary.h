@@ -11,7 +11,8 @@
 //                 first kDescriptorsBeforeSections (files written before the section descriptors).
 //   intensities   {order, plain, create, terms{word: fuzzy set over the degree}, synonyms{word: word}}
 //                 "very bent" is the term `very` over bendness; plain "bent" searches with `plain`
-//                 (μ(d) = d: plainSet) and a part made from it takes `create` (createdSet).
+//                 (`plain` rising to the core of `create`: plainSet) and a part made from it
+//                 takes one degree in that core (createdSet).
 //   hedges        {"not": text}: `not X` scores 1 − score(X) (query/linguistic/linguistic_query.h).
 //   adjectives    {word: {descriptor, pole: "high"|"low", create: fuzzy number, outline: bool,
 //                 set: fuzzy number}}: a low-pole adjective ("small", "narrow", "straight") mirrors
@@ -116,14 +117,17 @@ class Vocabulary {
   const FuzzyNumber& plain() const { return plain_; }
   const FuzzyNumber& plainCreate() const { return plainCreate_; }
   // The degree set a plain adjective ("bent", no intensity) searches with: its own `set` where it
-  // has one (a middle of the descriptor, which a part made from it takes too), else `plain`,
-  // mirrored for a low pole. (It ranks by degree: "bent" scores a crisp part its bendness. A part made from the
-  // plain adjective takes createdSet instead, a narrower set, so the paper's similarity of the two
-  // stays below 1: docs/design/linguistic-search.md, "Round trips".)
+  // has one (a middle of the descriptor, which a part made from it takes too), else `plain`
+  // squeezed to rise to 1 where the core of the adjective's created range begins (its own
+  // `create`, else `create`, mirrored for a low pole) and 1 beyond. It ranks by degree up to that
+  // knee ("bent" scores a slightly bent part below a moderately bent one), and a part made from
+  // the plain adjective, one degree inside the core, scores 1 (docs/design/linguistic-search.md,
+  // "Round trips").
   FuzzyNumber plainSet(const Adjective& adjective) const;
   // The degree a part made from words takes for the adjective with `intensity` (null: plain): the
-  // intensity's set, else the adjective's own `create` as written, else `create`; mirrored for a
-  // low pole except an own create.
+  // intensity's set (mirrored for a low pole); plain, a middle's own create or set, else one
+  // degree, the middle of the core of the adjective's own `create` as written, else of `create`
+  // mirrored for a low pole.
   FuzzyNumber createdSet(const Adjective& adjective, const FuzzyNumber* intensity) const;
   const std::vector<std::string>& intensityOrder() const { return intensityOrder_; }
   bool isAggregation(const std::string& name) const;

@@ -56,16 +56,24 @@ TEST(PartFromWords, AdjectivesSetTheirDescriptor) {
   EXPECT_NEAR(similarity(valueOf(make("a very twisted box"), "twistness"), *v().intensity("very")), 1.0, 1e-9);
   EXPECT_NEAR(similarity(valueOf(make("an extremely tapered rod"), "taperness"), *v().intensity("extremely")), 1.0, 1e-9);
   EXPECT_NEAR(similarity(valueOf(make("a very bevelled cube"), "bevelness"), *v().intensity("very")), 1.0, 1e-9);
-  // Plain adjectives take the vocabulary's create set, or their own.
-  EXPECT_NEAR(similarity(valueOf(make("a bent rod"), "bendness"), v().plainCreate()), 1.0, 1e-9);
+  // Plain adjectives take one degree, the middle of the core of the vocabulary's create set (or
+  // their own), which their plain set holds fully.
+  const FuzzyNumber bendOfBent = valueOf(make("a bent rod"), "bendness");
+  EXPECT_NEAR(bendOfBent.core().lo, 0.5 * (v().plainCreate().core().lo + v().plainCreate().core().hi), 1e-9);
+  EXPECT_NEAR(bendOfBent.support().hi - bendOfBent.support().lo, 0.0, 1e-9);
+  EXPECT_NEAR(similarity(bendOfBent, v().plainSet(*v().adjective("bent"))), 1.0, 1e-9);
   EXPECT_EQ(make("a straight rod").kv, FuzzyNumber::crisp(0));
-  // Proportions and size: long and flat set slenderness and flatness to their create sets or
-  // intensities (and move elongation the right way); small and large move size.
+  // Proportions and size: long and flat set slenderness and flatness to one degree in their
+  // create sets' cores, or to their intensities (and move elongation the right way); small and
+  // large move size.
   const double sphereSize = valueOf(make("a sphere"), "size").core().lo;
   EXPECT_GT(valueOf(make("a large sphere"), "size").core().lo, sphereSize);
   EXPECT_LT(valueOf(make("a small sphere"), "size").core().hi, sphereSize);
-  const FuzzyNumber longSet = *v().adjective("long")->create, flatSet = *v().adjective("flat")->create;
-  // The degree is the create set's at its core and support (exact at the breakpoints; between
+  const FuzzyNumber longSet = v().createdSet(*v().adjective("long"), nullptr),
+                    flatSet = v().createdSet(*v().adjective("flat"), nullptr);
+  EXPECT_TRUE(longSet.isCrisp());
+  EXPECT_NEAR(longSet.core().lo, 0.65, 1e-12);  // the middle of long's create core [0.6, 0.7]
+  // The degree is the created one at its core and support (exact at the breakpoints; between
   // them the ratio of linearly interpolated axes is not linear in alpha).
   const auto expectSet = [](const FuzzyNumber& value, const FuzzyNumber& set, const char* words) {
     for (double alpha : {0.0, 1.0}) {
@@ -98,7 +106,7 @@ TEST(PartFromWords, FoundByItsOwnWords) {
                             "an extremely tapered cone", "a long, slightly twisted rod", "a very round sphere",
                             "a flat disc", "a moderately bent and very twisted plate"}) {
     const LinguisticQuery q = parseLinguisticQuery(std::string("find ") + words, v());
-    EXPECT_GT(scoreDescriptors(q, describePart(make(words))).score, 0.15) << words;
+    EXPECT_GE(scoreDescriptors(q, describePart(make(words))).score, 0.9) << words;
   }
   // And ranks above the other words' parts.
   const LinguisticQuery very = parseLinguisticQuery("find a very bent cylinder", v());
@@ -203,7 +211,10 @@ TEST(PartFromWords, OutlineWordsOnAFlatNounSetItsSection) {
   EXPECT_EQ(make("a square disc").eps1, make("a disc").eps1);
   // A ball's "round" is still the whole shape's.
   EXPECT_EQ(make("a round ball").eps1, make("a round ball").eps2);
-  EXPECT_NE(make("a round ball").eps1, make("a ball").eps1);
+  EXPECT_EQ(make("a round ball").eps1, FuzzyNumber::crisp(1.0));  // round makes round: ε = 1
+  const FuzzyPart squareBall = make("a square ball");
+  EXPECT_EQ(squareBall.eps1, squareBall.eps2);
+  EXPECT_NE(squareBall.eps1, make("a ball").eps1);
 }
 
 TEST(PartFromWords, AdjectivesActInATableOrder) {

@@ -351,15 +351,24 @@ TEST(LinguisticQuery, NounConditions) {
   EXPECT_TRUE(any.root.children.empty());
 }
 
+// A plain adjective searches with Vocabulary::plainSet (the degree itself, or at least what a
+// part made from it has; mirrored for a low pole), marked as a plain ramp; an intensity with its
+// set, mirrored for a low pole.
 TEST(LinguisticQuery, PlainAndLowPoleAdjectives) {
-  expectLeaf(parse("find a bent shape").root, "bendness", v().plain(), "bent");
-  const FuzzyNumber mirroredPlain = add(negate(v().plain()), FuzzyNumber::crisp(1));
-  expectLeaf(parse("find a narrow shape").root, "width", mirroredPlain, "narrow");
-  expectLeaf(parse("find a flat shape").root, "flatness", v().plain(), "flat");
-  expectLeaf(parse("find a long shape").root, "slenderness", v().plain(), "long");
+  const auto plainOf = [](const char* word) { return v().plainSet(*v().adjective(word)); };
+  expectLeaf(parse("find a bent shape").root, "bendness", plainOf("bent"), "bent");
+  EXPECT_TRUE(parse("find a bent shape").root.plainRamp);
+  expectLeaf(parse("find a narrow shape").root, "width", plainOf("narrow"), "narrow");
+  EXPECT_NEAR(plainOf("narrow").membership(0.9), 0.1, 1e-12);  // mirrored: 1 − d far from the range
+  EXPECT_DOUBLE_EQ(plainOf("narrow").membership(0.0), 1.0);
+  expectLeaf(parse("find a flat shape").root, "flatness", plainOf("flat"), "flat");
+  expectLeaf(parse("find a long shape").root, "slenderness", plainOf("long"), "long");
   const FuzzyNumber mirroredVery = add(negate(*v().intensity("very")), FuzzyNumber::crisp(1));
   expectLeaf(parse("find a very small part").root, "size", mirroredVery, "very small");
+  EXPECT_FALSE(parse("find a very small part").root.plainRamp);
   EXPECT_EQ(mirroredVery.membership(0.1), 1.0);
+  // A middle of its descriptor ("truncated") states its own set: no ramp.
+  EXPECT_FALSE(parse("find a truncated shape").root.plainRamp);
 }
 
 TEST(LinguisticQuery, NotAndOrPrecedence) {
@@ -458,7 +467,8 @@ TEST(LinguisticQuery, TraverseSections) {
   ASSERT_EQ(q.root.kind, Kind::kAnd);
   ASSERT_EQ(q.root.children.size(), 2u);
   expectLeaf(q.root.children[0], "taperness", *v().intensity("very"), "very sharp");
-  expectLeaf(q.root.children[1], "section-squariness", v().plain(), "squarish traverse section");
+  expectLeaf(q.root.children[1], "section-squariness", v().plainSet(*v().adjective("squarish")),
+             "squarish traverse section");
   // Section words and articles: the same condition.
   const nlohmann::json square = meaning("find shapes with squarish traverse section");
   for (const char* text : {"find shapes with a squarish cross-section", "find shapes with squarish cross section",
@@ -467,21 +477,21 @@ TEST(LinguisticQuery, TraverseSections) {
     EXPECT_EQ(meaning(text), square) << text;
   expectLeaf(parse("a rod with a very round cross-section").root.children[1], "section-roundness",
              *v().intensity("very"), "a very round cross-section");
-  expectLeaf(parse("a shape with a circular cross-section").root, "section-roundness", v().plain(),
-             "a circular cross-section");
+  expectLeaf(parse("a shape with a circular cross-section").root, "section-roundness",
+             v().plainSet(*v().adjective("circular")), "a circular cross-section");
   // The seed's own words for Figure 1, a bare description with a "with" clause.
   EXPECT_EQ(meaning("very sharp with squarish traverse section"),
             meaning("find a very sharp shape with squarish traverse section"));
   EXPECT_EQ(meaning("show me something very sharp with a square cross-section"),
             meaning("find a very sharp shape with squarish traverse section"));
   // Without a section word the adjective means the whole shape, as before.
-  expectLeaf(parse("a squarish shape").root, "squariness", v().plain(), "squarish");
+  expectLeaf(parse("a squarish shape").root, "squariness", v().plainSet(*v().adjective("squarish")), "squarish");
   // Designers' shape adjectives: cylindrical and tubular say the section, the others the whole.
   for (const auto& [word, descriptor] : std::vector<std::pair<const char*, const char*>>{
            {"cylindrical", "section-roundness"}, {"tubular", "section-roundness"}, {"spherical", "roundness"},
            {"conical", "taperness"}, {"pyramidal", "taperness"}, {"cubic", "squariness"},
            {"rectangular", "squariness"}, {"filleted", "roundness"}, {"radiused", "roundness"}})
-    expectLeaf(parse(std::string("a ") + word + " shape").root, descriptor, v().plain(), word);
+    expectLeaf(parse(std::string("a ") + word + " shape").root, descriptor, v().plainSet(*v().adjective(word)), word);
   // An adjective that says nothing of a section is an error naming the words and the ones that do.
   const std::string e = errorOf("a shape with a bent cross-section");
   EXPECT_NE(e.find("'a bent cross-section' at character 13"), std::string::npos) << e;
@@ -504,7 +514,7 @@ TEST(LinguisticQuery, ParsedJson) {
   EXPECT_EQ(j["condition"]["kind"], "relation");
   EXPECT_EQ(j["condition"]["direction"], "top");
   EXPECT_EQ(j["condition"]["distance"], nlohmann::json({{"tri", {2.7, 3, 3.3}}}));
-  EXPECT_EQ(j["condition"]["children"][1]["children"][0]["set"], toJson(v().plain()));
+  EXPECT_EQ(j["condition"]["children"][1]["children"][0]["set"], toJson(v().plainSet(*v().adjective("bent"))));
 }
 
 TEST(LinguisticQuery, UnknownWordsNameTheClosest) {

@@ -51,10 +51,14 @@ std::vector<Item> bentCatalogue() {
           {"moderately bent", withBend(0.5)}};
 }
 
+// A plain "bent" ranks by degree up to what a part made "bent" has (the created range's core,
+// moderately: 0.45), and scores everything bent at least that much 1 (Vocabulary::plainSet).
 TEST(LinguisticScore, BentRanksByDegree) {
   const auto ranked = rank("find a bent shape", bentCatalogue());
   EXPECT_EQ(names(ranked), (std::vector<std::string>{"very bent", "moderately bent", "slightly bent", "straight"}));
-  EXPECT_NEAR(ranked[0].second, 0.85, 1e-12);  // crisp: S = μ(d) = d for the plain adjective
+  EXPECT_DOUBLE_EQ(ranked[0].second, 1.0);  // 0.85: past the core's start
+  EXPECT_DOUBLE_EQ(ranked[1].second, 1.0);  // 0.5: in the core (a tie, kept in catalogue order)
+  EXPECT_NEAR(ranked[2].second, 0.15, 1e-12);  // crisp: S = μ(d) = d below the created range
   EXPECT_DOUBLE_EQ(ranked[3].second, 0.0);
   EXPECT_EQ(rank("find a very bent shape", bentCatalogue())[0].first, "very bent");
   EXPECT_EQ(rank("find a slightly bent shape", bentCatalogue())[0].first, "slightly bent");
@@ -63,8 +67,13 @@ TEST(LinguisticScore, BentRanksByDegree) {
   // Straight (the low pole) reverses the order; "not bent" too.
   EXPECT_EQ(names(rank("find a straight shape", bentCatalogue())),
             (std::vector<std::string>{"straight", "slightly bent", "moderately bent", "very bent"}));
-  EXPECT_EQ(names(rank("find shapes that are not bent", bentCatalogue())),
-            (std::vector<std::string>{"straight", "slightly bent", "moderately bent", "very bent"}));
+  // "not bent": 1 − the plain score; the moderately and very bent parts both score 0 (a tie, in
+  // catalogue order).
+  const auto notBent = rank("find shapes that are not bent", bentCatalogue());
+  EXPECT_EQ(names(notBent), (std::vector<std::string>{"straight", "slightly bent", "very bent", "moderately bent"}));
+  EXPECT_NEAR(notBent[1].second, 0.85, 1e-12);
+  EXPECT_DOUBLE_EQ(notBent[2].second, 0.0);
+  EXPECT_DOUBLE_EQ(notBent[3].second, 0.0);
   // Nothing satisfies it: every score 0, no error.
   for (const auto& r : rank("find an extremely bent shape at least 0.5", {bentCatalogue()[0]})) EXPECT_EQ(r.second, 0.0);
 }
@@ -100,9 +109,15 @@ TEST(LinguisticScore, ExtremelyTwistedPicksTheMostTwisted) {
   const auto ranked = rank("find an extremely twisted shape", catalogue);
   EXPECT_EQ(ranked[0].first, "t " + std::to_string(3.0));
   EXPECT_GT(ranked[0].second, ranked[1].second);
-  EXPECT_EQ(names(rank("find a twisted shape", catalogue)),
-            (std::vector<std::string>{"t " + std::to_string(3.0), "t " + std::to_string(2.5), "t " + std::to_string(1.5),
+  // Plain "twisted": twistness |t|/π ranks by degree below the created range's core (0.45) and
+  // scores 1 from there on: t = 1.5, 2.5 and 3 tie (in catalogue order) above 0.5 and 0.
+  const auto twisted = rank("find a twisted shape", catalogue);
+  EXPECT_EQ(names(twisted),
+            (std::vector<std::string>{"t " + std::to_string(3.0), "t " + std::to_string(1.5), "t " + std::to_string(2.5),
                                       "t " + std::to_string(0.5), "t " + std::to_string(0.0)}));
+  EXPECT_DOUBLE_EQ(twisted[2].second, 1.0);
+  EXPECT_NEAR(twisted[3].second, 0.5 / kPi, 1e-12);
+  EXPECT_EQ(rank("find a very twisted shape", catalogue)[0].first, "t " + std::to_string(3.0));
 }
 
 // Fuzzy parameters give fuzzy descriptor values, scored by S (docs/api.md §5).

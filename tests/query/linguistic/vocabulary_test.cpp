@@ -101,24 +101,50 @@ TEST(Vocabulary, IntensitiesAreMonotone) {
   EXPECT_EQ(v().intensity("bogus"), nullptr);
 }
 
-// The sets of an adjective: searched (plain: the degree itself, mirrored for a low pole) and made
-// (the intensity's, else the adjective's own create as written, else the intensities' create).
+// The sets of an adjective: searched (plain: the union of `plain`, the degree itself, and "at
+// least what a part made from it has", its created range up to its core and 1 beyond; mirrored for
+// a low pole) and made (the intensity's set, else one degree:
+// the middle of the core of the adjective's own create, else of the intensities' create).
 TEST(Vocabulary, PlainAndCreatedSetsOfAnAdjective) {
   const Adjective& bent = *v().adjective("bent");
   const Adjective& narrow = *v().adjective("narrow");
   const Adjective& flat = *v().adjective("flat");
   const Adjective& straight = *v().adjective("straight");
-  EXPECT_EQ(v().plainSet(bent), v().plain());
-  EXPECT_DOUBLE_EQ(v().plainSet(narrow).membership(0.2), 0.8);  // 1 − d
-  EXPECT_EQ(v().createdSet(bent, nullptr), v().plainCreate());
+  const Interval create = v().plainCreate().core();  // moderately: 0.45-0.6
+  const FuzzyNumber bentSet = v().plainSet(bent);
+  EXPECT_DOUBLE_EQ(bentSet.membership(0.0), 0.0);
+  EXPECT_DOUBLE_EQ(bentSet.membership(0.25), 0.25);  // the ramp, below the created range
+  EXPECT_DOUBLE_EQ(bentSet.membership(0.375), 0.5);  // the created range's rising side, above the ramp
+  EXPECT_DOUBLE_EQ(bentSet.membership(create.lo), 1.0);
+  EXPECT_DOUBLE_EQ(bentSet.membership(1.0), 1.0);
+  // Ranking by degree below the knee: a slightly bent part scores less than a moderately bent one.
+  EXPECT_LT(bentSet.membership(0.2), bentSet.membership(0.4));
+  // narrow: a low pole with its own create trap(0.1, 0.2, 0.3, 0.4): 1 up to 0.3, then 1 − d.
+  EXPECT_DOUBLE_EQ(v().plainSet(narrow).membership(0.2), 1.0);
+  EXPECT_DOUBLE_EQ(v().plainSet(narrow).membership(0.3), 1.0);
+  EXPECT_DOUBLE_EQ(v().plainSet(narrow).membership(0.35), 0.65);  // 1 − d above the range's side (0.5)
+  EXPECT_DOUBLE_EQ(v().plainSet(narrow).membership(0.65), 0.35);  // 1 − d
+  EXPECT_DOUBLE_EQ(v().plainSet(narrow).membership(1.0), 0.0);
+  EXPECT_EQ(v().createdSet(bent, nullptr), FuzzyNumber::crisp(0.5 * (create.lo + create.hi)));
+  EXPECT_DOUBLE_EQ(bentSet.membership(v().createdSet(bent, nullptr).core().lo), 1.0);
   EXPECT_EQ(v().createdSet(bent, v().intensity("very")), *v().intensity("very"));
-  EXPECT_EQ(v().createdSet(narrow, nullptr), *narrow.create);     // its own, not mirrored
+  EXPECT_EQ(v().createdSet(narrow, nullptr), FuzzyNumber::crisp(0.25));  // its own create, not mirrored
   EXPECT_DOUBLE_EQ(v().createdSet(narrow, v().intensity("very")).membership(0.1), 1.0);  // very, mirrored
   // "flat" is the high end of flatness: its sets are not mirrored.
   EXPECT_EQ(flat.descriptor, "flatness");
-  EXPECT_EQ(v().plainSet(flat), v().plain());
-  EXPECT_EQ(v().createdSet(flat, nullptr), *flat.create);
+  EXPECT_DOUBLE_EQ(v().plainSet(flat).membership(flat.create->core().lo), 1.0);
+  EXPECT_DOUBLE_EQ(v().plainSet(flat).membership(0.4), 0.4);
+  EXPECT_EQ(v().createdSet(flat, nullptr), FuzzyNumber::crisp(0.5 * (flat.create->core().lo + flat.create->core().hi)));
+  // straight: create crisp 0, a low pole: the plain set is 1 − d, as the ramp mirrored.
   EXPECT_EQ(v().createdSet(straight, nullptr), FuzzyNumber::crisp(0));
+  EXPECT_DOUBLE_EQ(v().plainSet(straight).membership(0.25), 0.75);
+  // Every plain adjective finds the part made from it at 1: the made degree is in the plain core.
+  for (const std::string& word : v().adjectiveWords()) {
+    const Adjective& a = *v().adjective(word);
+    const FuzzyNumber made = v().createdSet(a, nullptr);
+    if (!made.isCrisp()) continue;  // a middle's own set: the same set both ways (below)
+    EXPECT_DOUBLE_EQ(v().plainSet(a).membership(made.core().lo), 1.0) << word;
+  }
   // A middle of the descriptor ("truncated", "blunt": a taper short of a point): its own set,
   // plain, as written, and the part made from it takes the same.
   for (const char* word : {"truncated", "blunt"}) {
