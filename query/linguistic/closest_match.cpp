@@ -20,9 +20,7 @@ void relax(QueryCondition* c, double widenBy) {
         c->set = add(*c->asked, FuzzyNumber::triangular(-widenBy, 0.0, widenBy));
       }
       return;
-    case Kind::kRelation:
-      c->placementIgnored = true;
-      break;
+    case Kind::kRelation:  // its placement: LinguisticQuery::closestMatch
     case Kind::kAnd:
     case Kind::kOr:
       break;

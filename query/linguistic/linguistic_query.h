@@ -107,19 +107,17 @@ struct QueryCondition {
   // ranks by degree and states no degree of its own, so a noun's condition it agrees with stays.
   bool plainRamp = false;
   // A closest-match query (query/linguistic/closest_match.h): `asked` is the set the words asked
-  // where `set` is it widened (a kDescriptor scores on `set` and explains its score on `asked`);
-  // `placementIgnored` makes a kRelation score its two noun phrases only, wherever they stand
-  // (explain still gives the placement's own score).
+  // where `set` is it widened (a kDescriptor scores on `set` and explains its score on `asked`).
   std::optional<FuzzyNumber> asked;
-  bool placementIgnored = false;
 };
 struct LinguisticQuery {
   std::string subject = "any";   // "part", "shape" or "any" (from the noun: "shape" = any)
   QueryCondition root;
   double atLeast = 0.0;          // "at least 0.7": results below are dropped
   std::string aggregation = "min";  // how kAnd combines scores (documented choices)
-  // Made by closestMatchQuery (query/linguistic/closest_match.h): every explain entry gives its
-  // score as the words asked and its closeness, the relaxed score that ranks.
+  // Made by closestMatchQuery (query/linguistic/closest_match.h): every relation scores its two
+  // noun phrases only, wherever they stand, and every explain entry gives its score as the words
+  // asked (placements included) and its closeness, the relaxed score that ranks.
   bool closestMatch = false;
 };
 // The server passes activeVocabulary() (query/linguistic/vocabulary.h), so `fsdb serve --vocabulary FILE`

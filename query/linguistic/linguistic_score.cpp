@@ -96,7 +96,7 @@ Scores relationScore(const QueryCondition& c, Context& ctx) {
       if (i == j) continue;
       double s = std::min(subject[i].scores.score, other[j].scores.score);
       if (found && s <= best) continue;  // cannot win: the first best pair stays (stable ties)
-      if (!c.placementIgnored)
+      if (!ctx.query->closestMatch)
         s = std::min(s, relationMembership(*direction, c.distance, comps[i].part, comps[j].part));
       if (!found || s > best) {
         best = s;
@@ -108,7 +108,7 @@ Scores relationScore(const QueryCondition& c, Context& ctx) {
   }
   if (!found) return {};  // fewer than two components
   Scores total{best, best};
-  if (c.placementIgnored || ctx.query->closestMatch) {
+  if (ctx.query->closestMatch) {
     // Ranked by the noun phrases (and their relaxed conditions); the words as asked, placement
     // included, are explained for the pair that gave the total.
     total.asked = std::min({subject[bestI].scores.asked, other[bestJ].scores.asked,

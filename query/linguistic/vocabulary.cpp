@@ -449,24 +449,18 @@ FuzzyNumber Vocabulary::plainSet(const Adjective& adjective) const {
   // ramp that ranks by degree) and "at least as bent as a part made from the word" (its created
   // range, 1 from its core on towards the pole). Their union (pointwise max) keeps the ramp's
   // ranking below the range and scores a made part, one degree in the core, at 1.
+  // Built for a high pole; a low pole's is the mirror of its mirrored range's.
   const FuzzyNumber range = plainCreatedRange(adjective, plainCreate_);
-  const std::vector<Breakpoint>& r = range.breakpoints();
+  const FuzzyNumber towardsPole = adjective.lowPole ? mirroredDegrees(range) : range;
   std::vector<Breakpoint> closure;
-  if (!adjective.lowPole) {
-    for (const Breakpoint& b : r) {
-      closure.push_back(b);
-      if (b.mu >= 1.0) break;  // the core's low end
-    }
-    closure.push_back({1.0, 1.0});
-  } else {
-    closure.push_back({0.0, 1.0});
-    size_t last = 0;
-    for (size_t i = 0; i < r.size(); ++i)
-      if (r[i].mu >= 1.0) last = i;  // the core's high end
-    closure.insert(closure.end(), r.begin() + static_cast<std::ptrdiff_t>(last), r.end());
+  for (const Breakpoint& b : towardsPole.breakpoints()) {
+    closure.push_back(b);
+    if (b.mu >= 1.0) break;  // the core's low end
   }
-  const FuzzyNumber ramp = adjective.lowPole ? mirroredDegrees(plain_) : plain_;
-  return FuzzyNumber::fromPoints(pointwiseMax(ramp.breakpoints(), FuzzyNumber::fromPoints(closure).breakpoints()));
+  closure.push_back({1.0, 1.0});
+  const FuzzyNumber rising =
+      FuzzyNumber::fromPoints(pointwiseMax(plain_.breakpoints(), FuzzyNumber::fromPoints(closure).breakpoints()));
+  return adjective.lowPole ? mirroredDegrees(rising) : rising;
 }
 
 FuzzyNumber Vocabulary::createdSet(const Adjective& adjective, const FuzzyNumber* intensity) const {
