@@ -224,7 +224,14 @@ KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& voca
       }
     }
   }
-  if (reads && choice != leftOut) reading.corrected = textWith(choice);
+  if (reads && choice != leftOut) {
+    reading.corrected = textWith(choice);
+    for (size_t i = 0; i < tokens.size(); ++i)
+      if (unknown[i] && !routed[i] && !choice[i].empty())
+        reading.corrections.push_back(
+            {{tokens[i].text, choice[i], "spelling", tokens[i].text + " -> " + choice[i], kSpellingDiscount},
+             tokens[i].offset});
+  }
   addWindow();
   return reading;
 }

@@ -51,6 +51,9 @@ struct KnownWordsReading {
   // that the text still reads as a query (words with no such correction are left out); nullopt
   // when no word could be corrected.
   std::optional<std::string> corrected;
+  // The words `corrected` replaces, in text order, each as a route of kind "spelling" to its
+  // correction (discount kSpellingDiscount); empty when `corrected` is nullopt.
+  std::vector<RoutedWord> corrections;
   // Where neither `text` nor `corrected` reads (a word order or a construction no grammar has: "a
   // square pyramid, base 2 x 2, height 2.4"): the run of consecutive words, unknown ones left out
   // and routed ones replaced, that reads and says the most (its nouns count twice, numbers and
@@ -58,6 +61,10 @@ struct KnownWordsReading {
   // for texts over 1000 characters or 24 words.
   std::optional<ReadableRun> window;
 };
+
+// How surely a corrected typo says what was meant: about as surely as a word of the same
+// WordNet synset (word_routes.h); a non-word two edits from a vocabulary word may mean another.
+constexpr double kSpellingDiscount = 0.95;
 
 // The reading of `text`. Corrections are looked for among the first 16 unknown words only (each
 // costs up to three parses of the text), and no corrected text for texts over 1000 characters.

@@ -540,11 +540,13 @@ nlohmann::json readAroundUnknownWords(const Store& store, const nlohmann::json& 
                                       const CsgRequestLimits& csgLimits, StoredGraphCache& graphs) {
   if (!known || (known->unknown.empty() && known->routed.empty() && !known->window)) throw refused;
   const KnownWordsReading& reading = *known;
-  // The text without them first; when that does not read, their corrections chosen together; then
-  // the longest run of its words that reads.
+  // The text with its typos corrected first (words WordNet does not know, each replaced by a near
+  // word of the vocabulary, chosen together so that the text reads): dropping a mistyped "sqare"
+  // would lose what the designer said. Then the text without its unknown words; then the longest
+  // run of its words that reads.
   std::vector<std::string> tries;
-  if (!reading.text.empty()) tries.push_back(reading.text);
   if (reading.corrected) tries.push_back(*reading.corrected);
+  if (!reading.text.empty()) tries.push_back(reading.text);
   if (reading.window) tries.push_back(reading.window->text);
   nlohmann::json answer;
   std::string searched;
@@ -575,12 +577,16 @@ nlohmann::json readAroundUnknownWords(const Store& store, const nlohmann::json& 
                 "text");
   }
   if (searched.empty()) throw refused;
+  const bool corrected = reading.corrected && searched == *reading.corrected;
+  const auto wasCorrected = [&](const UnknownWord& u) {
+    return corrected && std::any_of(reading.corrections.begin(), reading.corrections.end(),
+                                    [&](const RoutedWord& c) { return c.at == u.at; });
+  };
   nlohmann::json ignored = nlohmann::json::array();
   for (const UnknownWord& u : reading.unknown)
-    ignored.push_back({{"word", quotedWord(u.word)}, {"at", u.at}, {"did_you_mean", u.closest}});
+    if (!wasCorrected(u)) ignored.push_back({{"word", quotedWord(u.word)}, {"at", u.at}, {"did_you_mean", u.closest}});
   // Read by a run of its words: the known words outside the run are left out too, in text order.
-  const bool byRun = reading.window && searched == reading.window->text && searched != reading.text &&
-                     (!reading.corrected || searched != *reading.corrected);
+  const bool byRun = reading.window && searched == reading.window->text && searched != reading.text && !corrected;
   if (byRun) {
     for (const UnknownWord& u : reading.window->outside)
       ignored.push_back({{"word", quotedWord(u.word)}, {"at", u.at}, {"did_you_mean", u.closest}});
@@ -588,11 +594,16 @@ nlohmann::json readAroundUnknownWords(const Store& store, const nlohmann::json& 
                      [](const nlohmann::json& a, const nlohmann::json& b) { return a["at"] < b["at"]; });
   }
   answer["ignored"] = std::move(ignored);
-  // Routed words (query/linguistic/word_routes.h): what each became and why; the text is read
-  // less surely through them, so every score is multiplied by their discounts.
+  // Routed words (query/linguistic/word_routes.h) and corrected typos: what each became and why;
+  // the text is read less surely through them, so every score is multiplied by their discounts.
+  std::vector<RoutedWord> routes = reading.routed;
+  if (corrected) {
+    routes.insert(routes.end(), reading.corrections.begin(), reading.corrections.end());
+    std::stable_sort(routes.begin(), routes.end(), [](const RoutedWord& a, const RoutedWord& b) { return a.at < b.at; });
+  }
   nlohmann::json routed = nlohmann::json::array();
   double discount = 1.0;
-  for (const RoutedWord& r : reading.routed) {
+  for (const RoutedWord& r : routes) {
     routed.push_back({{"word", quotedWord(r.route.word)}, {"at", r.at}, {"became", r.route.became},
                       {"why", r.route.why}, {"via", r.route.via}, {"discount", r.route.discount}});
     discount *= r.route.discount;

@@ -275,9 +275,9 @@ class Client:
     def query(self, text: str, limit: int = 10, **members: Any) -> Json:
         """POST /query: the search the text calls for (answer["search"]: "linguistic" or "csg").
 
-        Words neither grammar knows are read around: answer["ignored"] lists them with their
-        closest words, answer["read_text"] is what was searched, answer.get("did_you_mean") the
-        whole text corrected when the search ran without the corrections. A text that no grammar
+        Words neither grammar knows are read around: typos (no WordNet word) are corrected and
+        listed in answer["routed"] (why "spelling"), other words are left out and listed in
+        answer["ignored"] with their closest words; answer["read_text"] is what was searched. A text that no grammar
         reads even so is searched by the run of its words that reads (answer["run_discount"]
         multiplies its scores); names the text nearly holds come first (named: true)."""
         return self._http.json("POST", "/query", {"text": text, "limit": limit, **members})

@@ -48,6 +48,15 @@ TEST(UnknownWords, UnknownWordsGoWithTheirPositions) {
   ASSERT_TRUE(r.corrected);
   EXPECT_EQ(*r.corrected, "find a slightly bent cylinder please");
   EXPECT_TRUE(isLinguisticQuery(*r.corrected, v()));
+  // Each replaced word, where it is and what it became.
+  ASSERT_EQ(r.corrections.size(), 2u);
+  EXPECT_EQ(r.corrections[0].route.word, "bnet");
+  EXPECT_EQ(r.corrections[0].route.became, "bent");
+  EXPECT_EQ(r.corrections[0].route.why, "spelling");
+  EXPECT_EQ(r.corrections[0].route.discount, kSpellingDiscount);
+  EXPECT_EQ(r.corrections[0].at, 16u);
+  EXPECT_EQ(r.corrections[1].route.became, "cylinder");
+  EXPECT_EQ(r.corrections[1].at, 21u);
 }
 
 TEST(UnknownWords, JoiningWordsLeftWithNothingToJoinGoToo) {
@@ -97,6 +106,7 @@ TEST(UnknownWords, DictionaryWordsAreOfferedButNotCorrected) {
   ASSERT_FALSE(pillow.unknown[0].closest.empty());
   EXPECT_EQ(pillow.unknown[0].closest[0], "pillar");
   EXPECT_FALSE(pillow.corrected);
+  EXPECT_TRUE(pillow.corrections.empty());
   const KnownWordsReading typo = readKnownWords("a pilllar", v());
   ASSERT_EQ(typo.unknown.size(), 1u);
   ASSERT_TRUE(typo.corrected);

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "query/structural/unknown_words.h"
 #include "tests/server/server_process.h"
 
 using fsdb::test::ServerProcess;
@@ -58,6 +59,12 @@ std::vector<std::pair<int64_t, double>> withoutDescribed(std::vector<std::pair<i
 std::vector<std::pair<int64_t, double>> withoutNamed(std::vector<std::pair<int64_t, double>> ranking, const Answer& box) {
   ranking.erase(std::remove_if(ranking.begin(), ranking.end(), [&](const auto& r) { return holds(box.named, r.first); }),
                 ranking.end());
+  return ranking;
+}
+
+// A ranking with every score multiplied by `discount` (a text read through routed or corrected words).
+std::vector<std::pair<int64_t, double>> discounted(std::vector<std::pair<int64_t, double>> ranking, double discount) {
+  for (auto& r : ranking) r.second *= discount;
   return ranking;
 }
 
@@ -249,30 +256,42 @@ TEST(DesignersQueries, OneSearchBoxRunsTheSearchTheTextCallsFor) {
   EXPECT_EQ(unknown.status, 422);
   EXPECT_NE(unknown.json["error"]["message"].get<std::string>().find("unknown word 'bnet'"), std::string::npos)
       << unknown.body;
-  // ... the search box reads around it: without it when that reads ("a cylinder"), offering the
-  // correction; corrected when only that reads ("a slightly shape" does not).
+  // ... the search box reads around it: a word no dictionary knows is a typo, corrected (with the
+  // spelling discount on every score) so that what the designer said is searched ...
   auto around = server.post("/query", json{{"text", "a bnet cylinder"}});
   ASSERT_EQ(around.status, 200) << around.body;
-  EXPECT_EQ(around.json["read_text"], "a cylinder");
-  EXPECT_EQ(around.json["did_you_mean"], "a bent cylinder");
-  ASSERT_EQ(around.json["ignored"].size(), 1u) << around.body;
-  EXPECT_EQ(around.json["ignored"][0]["word"], "bnet");
-  EXPECT_EQ(around.json["ignored"][0]["at"], 2);
-  EXPECT_EQ(around.json["ignored"][0]["did_you_mean"][0], "bent");
+  EXPECT_EQ(around.json["read_text"], "a bent cylinder");
+  EXPECT_FALSE(around.json.contains("did_you_mean")) << around.body;
+  EXPECT_TRUE(around.json["ignored"].empty()) << around.body;
+  ASSERT_EQ(around.json["routed"].size(), 1u) << around.body;
+  EXPECT_EQ(around.json["routed"][0]["word"], "bnet");
+  EXPECT_EQ(around.json["routed"][0]["at"], 2);
+  EXPECT_EQ(around.json["routed"][0]["became"], "bent");
+  EXPECT_EQ(around.json["routed"][0]["why"], "spelling");
+  EXPECT_EQ(around.json["routed"][0]["discount"], fsdb::kSpellingDiscount);
   const Answer bnet = ask(server, "/query", "a bnet cylinder");
-  EXPECT_EQ(bnet.named.size(), 1u) << bnet.body;  // the part named cylinder, first of equals
-  EXPECT_EQ(bnet.ranking, withoutNamed(ranking(server, "/query/linguistic", "a cylinder"), bnet));
+  ASSERT_FALSE(bnet.ranking.empty()) << bnet.body;
+  EXPECT_EQ(bnet.ranking,
+            discounted(withoutNamed(ranking(server, "/query/linguistic", "a bent cylinder"), bnet), fsdb::kSpellingDiscount));
+  // ... and a word the dictionary knows is no typo: left out, its near words offered.
+  auto pillow = server.post("/query", json{{"text", "a pillow cylinder"}});
+  ASSERT_EQ(pillow.status, 200) << pillow.body;
+  EXPECT_EQ(pillow.json["read_text"], "a cylinder");
+  ASSERT_EQ(pillow.json["ignored"].size(), 1u) << pillow.body;
+  EXPECT_EQ(pillow.json["ignored"][0]["word"], "pillow");
+  EXPECT_EQ(pillow.json["ignored"][0]["did_you_mean"][0], "pillar");
   auto corrected = server.post("/query", json{{"text", "find a slightly bnet shape"}});
   ASSERT_EQ(corrected.status, 200) << corrected.body;
   EXPECT_EQ(corrected.json["read_text"], "find a slightly bent shape");
   EXPECT_FALSE(corrected.json.contains("did_you_mean")) << corrected.body;
   EXPECT_EQ(ask(server, "/query", "find a slightly bnet shape").ranking,
-            ranking(server, "/query/linguistic", "find a slightly bent shape"));
+            discounted(ranking(server, "/query/linguistic", "find a slightly bent shape"), fsdb::kSpellingDiscount));
   // Both words of a text corrected in one answer, and a CSG text read around its unknown word.
   auto both = server.post("/query", json{{"text", "a slighly bnet cylinder"}});
   ASSERT_EQ(both.status, 200) << both.body;
-  EXPECT_EQ(both.json["ignored"].size(), 2u) << both.body;
-  EXPECT_EQ(both.json.value("did_you_mean", both.json.value("read_text", "")), "a slightly bent cylinder") << both.body;
+  EXPECT_TRUE(both.json["ignored"].empty()) << both.body;
+  EXPECT_EQ(both.json["routed"].size(), 2u) << both.body;
+  EXPECT_EQ(both.json["read_text"], "a slightly bent cylinder") << both.body;
   auto csg = server.post("/query", json{{"text", "the union of a cube and a gleaming sphere"}});
   ASSERT_EQ(csg.status, 200) << csg.body;
   EXPECT_EQ(csg.json["search"], "csg");
