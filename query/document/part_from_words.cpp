@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 
 #include "geometry/core/error.h"
 #include "geometry/fuzzy/fuzzy_arithmetic.h"
+#include "geometry/numeric/piecewise_linear.h"
 #include "query/linguistic/degree_sets.h"
 #include "query/linguistic/descriptors.h"
 #include "query/linguistic/edges.h"
@@ -202,8 +204,10 @@ void realize(const std::string& descriptor, const FuzzyNumber& d, const Vocabula
 // An axis as long as a measured one (a round section, a square plate) takes the same extent
 // unless it is measured itself. A = a1 and B, C = a1·a2, a1·a3: a1 takes A's extent and a2, a3
 // are B's and C's divided by a1's core, so they are exact when a1 is crisp; A keeps its spread only
-// when no other axis is measured (below).
-void realizeExtents(const std::map<std::string, FuzzyNumber>& extents, FuzzyPart* part) {
+// when no other axis is measured (below). `keepProportions`: the words keep the noun's condition
+// on its proportions (PartDescription::keepsProportions), so one extent asked for scales the whole
+// part ("a wide rod" is a thicker rod, still a rod; widening its section alone made it a stub).
+void realizeExtents(const std::map<std::string, FuzzyNumber>& extents, bool keepProportions, FuzzyPart* part) {
   if (extents.empty()) return;
   const PlacedSuperquadric core = part->coreRepresentative();
   const double s = core.placement.scale;
@@ -245,6 +249,16 @@ void realizeExtents(const std::map<std::string, FuzzyNumber>& extents, FuzzyPart
     part->scale = scale(scale(t, 1.0 / mid), s);
   };
   if (target[0] && target[1] && target[2] && same(0, 1) && same(1, 2)) return scaleWhole(group(0));
+  if (keepProportions) {
+    int first = -1;
+    bool single = true;  // every axis asked for is in one group
+    for (int k = 0; k < 3; ++k)
+      if (target[k]) {
+        if (first >= 0 && !same(k, first)) single = false;
+        if (first < 0) first = k;
+      }
+    if (first >= 0 && single) return scaleWhole(group(first));
+  }
   // One group measured whose target would pass an axis it is not measured with ("an extremely
   // thick disc": a thickness of 19 units or more, beside a diameter of 2): the axes would change
   // their sorted roles, and the extent read back (descriptors.h: the shortest, middle and longest)
@@ -312,6 +326,23 @@ PartDescription describedPart(const std::string& text, const Vocabulary& vocabul
   }
 }
 
+// A plain adjective beside a noun condition on its descriptor that the words keep: the query asks
+// for both (min), so the part takes one degree, the middle of where both are highest. That is 1
+// where their cores meet ("a flat board"); "a tapered cylinder" asks for more taper than the
+// cylinder's "hardly tapered" holds, and its part is as tapered as the two allow together.
+FuzzyNumber degreeForNoun(const Adjective& adjective, const FuzzyNumber& nounSet, const Vocabulary& vocabulary) {
+  const std::vector<Breakpoint> both =
+      pointwiseMin(nounSet.breakpoints(), vocabulary.plainSet(adjective).breakpoints());
+  const double top = height(both);
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const Breakpoint& b : both)
+    if (b.mu == top) {
+      lo = std::min(lo, b.x);
+      hi = std::max(hi, b.x);
+    }
+  return FuzzyNumber::crisp(0.5 * (lo + hi));
+}
+
 }  // namespace
 
 FuzzyPart partFromWords(const std::string& text, const Vocabulary& vocabulary) {
@@ -340,12 +371,12 @@ FuzzyPart partFromWords(const std::string& text, const Vocabulary& vocabulary) {
     if (extentsSet) return;
     extentsSet = true;
     for (const MeasureUse& m : words.measures) extents[m.descriptor] = m.extent;
-    realizeExtents(extents, &part);
+    realizeExtents(extents, words.keepsProportions, &part);
   };
   for (const AdjectiveUse& use : uses) {
     const Adjective& a = *use.adjective;
     const std::string& descriptor = descriptorOf(use);
-    const FuzzyNumber d = vocabulary.createdSet(a, use.intensity);
+    const FuzzyNumber d = use.nounSet ? degreeForNoun(a, *use.nounSet, vocabulary) : vocabulary.createdSet(a, use.intensity);
     const bool deformation = std::find(kOrder.begin(), kOrder.end(), descriptor) >=
                              std::find(kOrder.begin(), kOrder.end(), "bendness");
     if (deformation) setExtents();

@@ -329,6 +329,35 @@ class Parser {
         }
     if (pos_ < tokens_.size())
       fail({"the end of the description (a part is adjectives, one noun and its measures: 'a pole about 10 long')"});
+    // The noun's conditions that the words keep, as the same words read as a query keep them: a
+    // plain adjective on one of their descriptors takes a degree where both are highest.
+    std::vector<QueryCondition> said;
+    for (const AdjectiveUse& use : d.adjectives) {
+      QueryCondition c = descriptorCondition(v_.descriptorOn(*use.adjective, d.noun),
+                                             use.intensity ? *use.intensity : v_.plainSet(*use.adjective), use.text);
+      c.plainRamp = !use.intensity && !use.adjective->set;
+      said.push_back(std::move(c));
+    }
+    for (const MeasureUse& m : d.measures) {
+      QueryCondition c = descriptorCondition(m.descriptor, m.extent, m.text);
+      c.measure = m.extent;
+      said.push_back(std::move(c));
+    }
+    if (d.edges) {
+      QueryCondition c = descriptorCondition("squariness", d.edges->degree, d.edges->text);
+      c.edges = QueryCondition::Edges::kNamed;
+      said.push_back(std::move(c));
+    }
+    std::vector<const QueryCondition*> saidLeaves;
+    for (const QueryCondition& c : said) saidLeaves.push_back(&c);
+    const auto graded = [](const QueryCondition& c) { return !c.plainRamp; };
+    for (const NounCondition& n : d.noun->conditions) {
+      if (overriddenByWords(n, *d.noun, saidLeaves, graded)) continue;
+      d.keepsProportions = d.keepsProportions || isProportion(n.descriptor);
+      for (size_t i = 0; i < d.adjectives.size(); ++i)
+        if (said[i].plainRamp && said[i].descriptor == n.descriptor && !d.adjectives[i].nounSet)
+          d.adjectives[i].nounSet = n.set;
+    }
     return d;
   }
 

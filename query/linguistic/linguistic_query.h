@@ -191,6 +191,10 @@ struct AdjectiveUse {
   const Adjective* adjective;
   const FuzzyNumber* intensity;  // null: the plain adjective
   std::string text;              // "slightly bent"
+  // A plain adjective on a descriptor of which the noun keeps its own condition (as the same
+  // words read as a query keep it): that condition's set. The query asks for both, so the part
+  // takes a degree where both are highest ("a tapered cylinder": as tapered as a cylinder is).
+  std::optional<FuzzyNumber> nounSet = std::nullopt;
 };
 // The edges of a part described by words ("a box with rounded edges", "a rounded box", "a
 // cylinder with sharp edges"): the degree of its edge exponents (query/linguistic/edges.h).
@@ -210,6 +214,9 @@ struct PartDescription {
   std::vector<AdjectiveUse> adjectives;
   std::vector<MeasureUse> measures;  // after the noun: [ "," ] measure { ( "," | "and" ) measure }
   std::optional<EdgeUse> edges;      // after the measures: "with" edge phrase; or a plain before_nouns adjective
+  // The noun has a condition on its proportions (elongation, flatness, slenderness) that the
+  // words keep, as the same words read as a query keep it: one extent asked for scales the part.
+  bool keepsProportions = false;
 };
 PartDescription parsePartDescription(const std::string& text, const Vocabulary& vocabulary);
 

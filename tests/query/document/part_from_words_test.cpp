@@ -89,11 +89,18 @@ TEST(PartFromWords, AdjectivesSetTheirDescriptor) {
   EXPECT_NEAR(valueOf(make("a very flat box"), "flatness").core().lo, 0.75, 1e-9);  // the core start of very
   EXPECT_NEAR(valueOf(make("a very flat box"), "flatness").core().hi, 0.99, 1e-9);  // very's 1, cut at 0.99
   // Both on one part, whichever axis the noun has longest: each is its own set.
-  for (const char* words : {"a long flat box", "a flat long box", "a long flat board", "a long flat disc"}) {
+  for (const char* words : {"a long flat box", "a flat long box", "a long flat disc"}) {
     const FuzzyPart part = make(words);
     expectSet(valueOf(part, "slenderness"), longSet, words);
     expectSet(valueOf(part, "flatness"), flatSet, words);
   }
+  // A board keeps its own long and flat conditions: the words take a degree inside both (the
+  // created degrees 0.65 are short of a board's slenderness and flatness cores).
+  const FuzzyPart board = make("a long flat board");
+  const LinguisticQuery asked = parseLinguisticQuery("find a long flat board", v());
+  EXPECT_EQ(scoreDescriptors(asked, describePart(board)).score, 1.0);
+  EXPECT_GT(valueOf(board, "slenderness").core().lo, longSet.core().hi);
+  EXPECT_GT(valueOf(board, "flatness").core().lo, flatSet.core().hi);
   // A board is long and flat without the words; "a flat board" keeps its length.
   EXPECT_GT(valueOf(make("a board"), "slenderness").core().lo, 0.6);
   EXPECT_GT(valueOf(make("a board"), "flatness").core().lo, 0.6);
@@ -104,7 +111,11 @@ TEST(PartFromWords, AdjectivesSetTheirDescriptor) {
 TEST(PartFromWords, FoundByItsOwnWords) {
   for (const char* words : {"a slightly bent cylinder", "a very bent cylinder", "a very twisted box",
                             "an extremely tapered cone", "a long, slightly twisted rod", "a very round sphere",
-                            "a flat disc", "a moderately bent and very twisted plate"}) {
+                            "a flat disc", "a moderately bent and very twisted plate",
+                            // a plain adjective beside a noun condition it meets at 1
+                            "a flat board", "a pointed cone", "a long board",
+                            // one extent beside the noun's proportions
+                            "a wide rod", "a tall plate", "a thin stick"}) {
     const LinguisticQuery q = parseLinguisticQuery(std::string("find ") + words, v());
     EXPECT_GE(scoreDescriptors(q, describePart(make(words))).score, 0.9) << words;
   }
@@ -112,6 +123,33 @@ TEST(PartFromWords, FoundByItsOwnWords) {
   const LinguisticQuery very = parseLinguisticQuery("find a very bent cylinder", v());
   EXPECT_GT(scoreDescriptors(very, describePart(make("a very bent cylinder"))).score,
             scoreDescriptors(very, describePart(make("a slightly bent cylinder"))).score);
+}
+
+// A plain adjective beside a noun condition the words keep: the part takes a degree where both
+// conditions are highest; one extent beside the noun's proportions scales the whole part.
+TEST(PartFromWords, PlainAdjectivesTakeADegreeTheirNounAllows) {
+  // "a tapered cylinder": the cylinder's taper trap(0, 0, 0.2, 0.4) falls as "tapered" rises; the
+  // part sits where they cross, and its words score it there (the most the two give together).
+  const FuzzyNumber taper = valueOf(make("a tapered cylinder"), "taperness");
+  ASSERT_TRUE(taper.isCrisp());
+  const double t = taper.core().lo;
+  EXPECT_GT(t, 0.3);
+  EXPECT_LT(t, 0.4);
+  const FuzzyNumber tapered = v().plainSet(*v().adjective("tapered"));
+  const FuzzyNumber cylinderTaper = FuzzyNumber::trapezoidal(0, 0, 0.2, 0.4);
+  EXPECT_NEAR(tapered.membership(t), cylinderTaper.membership(t), 1e-9);
+  const LinguisticQuery q = parseLinguisticQuery("find a tapered cylinder", v());
+  const double own = scoreDescriptors(q, describePart(make("a tapered cylinder"))).score;
+  EXPECT_NEAR(own, tapered.membership(t), 1e-6);
+  for (double other : {0.1, 0.2, 0.25, 0.35, 0.45})
+    EXPECT_GE(own, std::min(tapered.membership(other), cylinderTaper.membership(other))) << other;
+  // Where the two cores meet, the middle of where both are 1: "a long board" is as long as a board.
+  const FuzzyNumber slender = valueOf(make("a long board"), "slenderness");
+  EXPECT_NEAR(v().plainSet(*v().adjective("long")).membership(slender.core().lo), 1.0, 1e-9);
+  // "a wide rod" is a thicker rod, its proportions those of "a rod".
+  for (const char* d : {"elongation", "flatness", "slenderness"})
+    EXPECT_NEAR(valueOf(make("a wide rod"), d).core().lo, valueOf(make("a rod"), d).core().lo, 1e-9) << d;
+  EXPECT_GT(valueOf(make("a wide rod"), "width").core().lo, valueOf(make("a rod"), "width").core().lo);
 }
 
 // Measures set the extents they name: "a pole about 10 long" has a fuzzy length of about 10.
