@@ -23,4 +23,11 @@ double heightOfIntersection(const FuzzyNumber& a, const FuzzyNumber& b);
 
 double similarity(const FuzzyNumber& a, const FuzzyNumber& b);
 
+// How much of B the datum A spans: |A ∩ B| / |B|, the second ratio of S. A crisp A has no area and
+// covers nothing (0); against a crisp B (area 0) it is the height of A ∩ B, as S is. In [0, 1],
+// 1 when A = B, and >= S wherever A has area (S is the smaller ratio). The linguistic search
+// breaks ties of S with it: of two objects that satisfy the words equally, the one described as
+// vaguely as the words comes first (docs/design/linguistic-search.md, "Ties").
+double coverage(const FuzzyNumber& a, const FuzzyNumber& b);
+
 }  // namespace fsdb

@@ -26,8 +26,12 @@ PrefilterPlan combine(Kind kind, std::vector<PrefilterPlan> children) {
   // the index once per word). Only leaves are compared: they are most of any long text.
   const auto add = [&plan](PrefilterPlan&& c) {
     if (c.kind == Kind::kOverlap)
-      for (const PrefilterPlan& seen : plan.children)
-        if (seen.kind == Kind::kOverlap && seen.test.descriptor == c.test.descriptor && seen.set == c.set) return;
+      for (PrefilterPlan& seen : plan.children)
+        if (seen.kind == Kind::kOverlap && seen.test.descriptor == c.test.descriptor && seen.set == c.set) {
+          // Said once, said: its coverage bound stays valid for both (the same test fails both).
+          seen.said = seen.said || c.said;
+          return;
+        }
     plan.children.push_back(std::move(c));
   };
   for (PrefilterPlan& child : children) {
@@ -44,18 +48,22 @@ PrefilterPlan combine(Kind kind, std::vector<PrefilterPlan> children) {
   return plan;
 }
 
-PrefilterPlan planOf(const QueryCondition& condition, bool andNeedsAll, bool forParts) {
+// said: no noun's node above (QueryScore::coverage reads the leaves below).
+PrefilterPlan planOf(const QueryCondition& condition, bool andNeedsAll, bool forParts, bool said) {
+  said = said && condition.noun.empty();
   switch (condition.kind) {
     case QueryCondition::Kind::kDescriptor: {
       PrefilterPlan plan = leaf(Kind::kOverlap);
       plan.test = supportTest(condition.descriptor, condition.set);
       plan.set = condition.set;
+      plan.said = said;
       return plan;
     }
     case QueryCondition::Kind::kAnd:
     case QueryCondition::Kind::kOr: {
       std::vector<PrefilterPlan> children;
-      for (const QueryCondition& child : condition.children) children.push_back(planOf(child, andNeedsAll, forParts));
+      for (const QueryCondition& child : condition.children)
+        children.push_back(planOf(child, andNeedsAll, forParts, said));
       const bool all = condition.kind == QueryCondition::Kind::kAnd && andNeedsAll;
       return combine(all ? Kind::kAnd : Kind::kOr, std::move(children));
     }
@@ -72,19 +80,22 @@ constexpr double kSlack = 1e-9;  // bounds are raised by this against rounding
 double raised(double bound) { return std::min(1.0, bound + kSlack); }
 
 // Children (by id) combined: the intersection with the min of the bounds, or the union with the
-// bounded sum.
-std::vector<Candidate> combineCandidates(const std::vector<Candidate>& a, const std::vector<Candidate>& b, bool all) {
+// bounded sum; coverage bounds the min or the max (absentA, absentB: absentCoverage of the
+// children the candidates came from, for an object one of them lacks).
+std::vector<Candidate> combineCandidates(const std::vector<Candidate>& a, const std::vector<Candidate>& b, bool all,
+                                         double absentA, double absentB) {
   std::vector<Candidate> out;
   size_t i = 0, j = 0;
   while (i < a.size() || j < b.size()) {
     if (j == b.size() || (i < a.size() && a[i].id < b[j].id)) {
-      if (!all) out.push_back(a[i]);
+      if (!all) out.push_back({a[i].id, a[i].bound, std::max(a[i].tie, absentB)});
       ++i;
     } else if (i == a.size() || b[j].id < a[i].id) {
-      if (!all) out.push_back(b[j]);
+      if (!all) out.push_back({b[j].id, b[j].bound, std::max(b[j].tie, absentA)});
       ++j;
     } else {
-      out.push_back({a[i].id, all ? std::min(a[i].bound, b[j].bound) : std::min(1.0, a[i].bound + b[j].bound)});
+      out.push_back({a[i].id, all ? std::min(a[i].bound, b[j].bound) : std::min(1.0, a[i].bound + b[j].bound),
+                     all ? std::min(a[i].tie, b[j].tie) : std::max(a[i].tie, b[j].tie)});
       ++i;
       ++j;
     }
@@ -134,6 +145,21 @@ double scoreBound(const PrefilterPlan& leaf, double supportLo, double supportHi,
   const double setArea = leaf.set.cardinality();
   if (!(setArea > 0)) return 1;
   return raised(membershipIntegral(leaf.set, supportLo, supportHi) / setArea * (1 + kSlack));
+}
+
+double coverageBound(const PrefilterPlan& leaf, double supportLo, double supportHi, bool pending) {
+  if (pending || !leaf.said) return 1;
+  if (supportLo == supportHi) return leaf.set.cardinality() > 0 ? 0 : 1;
+  return scoreBound(leaf, supportLo, supportHi, false);
+}
+
+double absentCoverage(const PrefilterPlan& plan) {
+  if (plan.kind == Kind::kOverlap) return plan.said ? 0 : 1;
+  if (plan.kind == Kind::kNone) return 0;
+  if (plan.kind == Kind::kAll) return 1;
+  double most = 0;
+  for (const PrefilterPlan& child : plan.children) most = std::max(most, absentCoverage(child));
+  return most;
 }
 
 namespace {
@@ -213,7 +239,7 @@ bool aggregationNeedsAll(const std::string& aggregation) {
 }
 
 PrefilterPlan prefilterPlan(const LinguisticQuery& query, const std::string& kind) {
-  return planOf(query.root, aggregationNeedsAll(query.aggregation), kind == "part");
+  return planOf(query.root, aggregationNeedsAll(query.aggregation), kind == "part", true);
 }
 
 std::vector<Candidate> runPrefilter(const PrefilterPlan& plan, const OverlapSource& overlap, const AllSource& all,
@@ -221,7 +247,7 @@ std::vector<Candidate> runPrefilter(const PrefilterPlan& plan, const OverlapSour
   switch (plan.kind) {
     case Kind::kAll: {
       std::vector<Candidate> out;
-      for (int64_t id : all()) out.push_back({id, 1.0});
+      for (int64_t id : all()) out.push_back({id, 1.0, 1.0});
       return out;
     }
     case Kind::kNone:
@@ -229,20 +255,29 @@ std::vector<Candidate> runPrefilter(const PrefilterPlan& plan, const OverlapSour
     case Kind::kOverlap: {
       std::vector<Candidate> rows = overlap(plan);
       if (oneRowPerObject) return rows;
-      // By id, one candidate per object: the largest bound of its rows (a shape's best component).
-      std::sort(rows.begin(), rows.end(), [](const Candidate& a, const Candidate& b) {
-        return a.id != b.id ? a.id < b.id : a.bound > b.bound;
-      });
-      rows.erase(std::unique(rows.begin(), rows.end(), [](const Candidate& a, const Candidate& b) { return a.id == b.id; }),
-                 rows.end());
-      return rows;
+      // By id, one candidate per object: the largest bounds of its rows (a shape's best component).
+      std::sort(rows.begin(), rows.end(), [](const Candidate& a, const Candidate& b) { return a.id < b.id; });
+      std::vector<Candidate> merged;
+      for (const Candidate& row : rows) {
+        if (!merged.empty() && merged.back().id == row.id) {
+          merged.back().bound = std::max(merged.back().bound, row.bound);
+          merged.back().tie = std::max(merged.back().tie, row.tie);
+        } else {
+          merged.push_back(row);
+        }
+      }
+      return merged;
     }
     case Kind::kAnd:
     case Kind::kOr: {
       const bool intersect = plan.kind == Kind::kAnd;
       std::vector<Candidate> out = runPrefilter(plan.children.front(), overlap, all);
-      for (size_t i = 1; i < plan.children.size() && !(intersect && out.empty()); ++i)
-        out = combineCandidates(out, runPrefilter(plan.children[i], overlap, all), intersect);
+      double absent = absentCoverage(plan.children.front());  // of the children combined so far
+      for (size_t i = 1; i < plan.children.size() && !(intersect && out.empty()); ++i) {
+        const double absentChild = absentCoverage(plan.children[i]);
+        out = combineCandidates(out, runPrefilter(plan.children[i], overlap, all), intersect, absent, absentChild);
+        absent = std::max(absent, absentChild);
+      }
       return out;
     }
   }

@@ -57,14 +57,27 @@ struct PrefilterPlan {
   Kind kind = Kind::kAll;
   SupportTest test;                     // kOverlap
   FuzzyNumber set;                      // kOverlap: the condition's set (for score bounds)
+  // kOverlap: the words say it of the part itself, so QueryScore::coverage reads it (not a noun's
+  // default: saysVagueness, query/linguistic/linguistic_query.h).
+  bool said = false;
   std::vector<PrefilterPlan> children;  // kAnd, kOr: two or more
 };
 
-// A candidate and a bound >= its score.
+// A candidate, a bound >= its score and a bound >= its coverage (QueryScore::coverage, which
+// breaks ties of score). Coverage bounds: a said kOverlap leaf's is 0 for a crisp row against a
+// set of area > 0 (a point spans nothing of it), scoreBound for a wide row (which bounds
+// |A∩B|/|B|), 1 for a pending object and for a leaf that is not said. A kAnd takes the
+// children's least, a kOr their largest, where an object missing from a child takes absentCoverage
+// of it; a shape the largest of its components; kAll 1.
 struct Candidate {
   int64_t id = 0;
   double bound = 1;
+  double tie = 1;
 };
+double coverageBound(const PrefilterPlan& leaf, double supportLo, double supportHi, bool pending);
+// The coverage bound of an object that fails the support tests of `plan`: 0 when every leaf under
+// it is said (the failing leaf scores 0, so spans nothing of its set: coverage 0), else 1.
+double absentCoverage(const PrefilterPlan& plan);
 
 // The bound of one kOverlap leaf for a component row with support [supportLo, supportHi] found
 // by the index, or for a pending object (see above).

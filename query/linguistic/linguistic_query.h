@@ -228,7 +228,20 @@ struct ConditionScore {
   // `closeness` what the relaxed condition scored (and ranked by).
   std::optional<double> closeness = std::nullopt;
 };
-struct QueryScore { double score = 0.0; std::vector<ConditionScore> explain; };
+// coverage breaks ties of score: the least, over the descriptor conditions the words say of the
+// part itself (not a noun's defaults, nothing under "not" or in a relation), of how much of the
+// condition's set the value spans (geometry/fuzzy/fuzzy_similarity.h: |A∩B| / |B|, 0 for a crisp
+// value); "or" takes the largest. 0 when the words say no such condition (saysVagueness). So of
+// two parts that both score 1 for "a slightly bent cylinder", the one whose bend is "slightly
+// bent" itself comes before a crisp one that happens to be bent so.
+struct QueryScore {
+  double score = 0.0;
+  std::vector<ConditionScore> explain;
+  double coverage = 0.0;
+};
+// Whether `c` says a descriptor condition of the part itself, one that coverage reads: outside
+// every noun's defaults, "not" and relation.
+bool saysVagueness(const QueryCondition& c);
 // Score of one part's descriptor values (docs/api.md §5; kRelation conditions score 0 for a lone
 // part).
 QueryScore scoreDescriptors(const LinguisticQuery& query, const std::vector<DescriptorValue>& values);

@@ -50,10 +50,12 @@ const Direction* directionOf(const QueryCondition& c) {
 Vec3 coreCentre(const FuzzyPart& p) { return p.coreRepresentative().placement.translate; }
 
 // A condition's score, and its score as the words asked (they differ only in a closest-match
-// query, query/linguistic/closest_match.h: `score` ranks, `asked` is explained).
+// query, query/linguistic/closest_match.h: `score` ranks, `asked` is explained); `coverage` breaks
+// ties of score (QueryScore::coverage): 1 where the condition says nothing of vagueness.
 struct Scores {
   double score = 0.0;
   double asked = 0.0;
+  double coverage = 1.0;
 };
 
 Scores score(const QueryCondition& c, Context& ctx);
@@ -72,7 +74,7 @@ Scores relationScore(const QueryCondition& c, Context& ctx) {
   const size_t slot = ctx.explain->size();
   ctx.explain->push_back({c.text, 0.0, ""});
   if (ctx.query->closestMatch) (*ctx.explain)[slot].closeness = 0.0;
-  if (!ctx.components || c.children.size() != 2) return {};
+  if (!ctx.components || c.children.size() != 2) return {0.0, 0.0, 0.0};  // scores 0: covers nothing
   const Direction* direction = directionOf(c);
   const auto& comps = *ctx.components;
   struct Scored {
@@ -106,8 +108,8 @@ Scores relationScore(const QueryCondition& c, Context& ctx) {
       }
     }
   }
-  if (!found) return {};  // fewer than two components
-  Scores total{best, best};
+  if (!found) return {0.0, 0.0, 0.0};  // fewer than two components
+  Scores total{best, best, 1.0};
   if (ctx.query->closestMatch) {
     // Ranked by the noun phrases (and their relaxed conditions); the words as asked, placement
     // included, are explained for the pair that gave the total.
@@ -134,17 +136,20 @@ Scores score(const QueryCondition& c, Context& ctx) {
   Scores s;
   switch (c.kind) {
     case Kind::kDescriptor:
+      s.coverage = 0.0;  // no value of the descriptor covers nothing
       if (ctx.values)
         for (const DescriptorValue& v : *ctx.values)
           if (v.descriptor == c.descriptor) {
             s.score = similarity(v.value, c.set);
             s.asked = c.asked ? similarity(v.value, *c.asked) : s.score;
+            s.coverage = coverage(v.value, c.set);
           }
       break;
     case Kind::kAnd: {
       std::vector<double> scores, asked;
       scores.reserve(c.children.size());
       asked.reserve(c.children.size());
+      s.coverage = 1.0;  // the least of the children's
       const QueryCondition* previous = nullptr;  // the last descriptor child scored
       for (const QueryCondition& child : c.children) {
         // A descriptor condition said again right after itself ("a large large ... ball") scores
@@ -158,33 +163,40 @@ Scores score(const QueryCondition& c, Context& ctx) {
           }
           scores.push_back(scores.back());
           asked.push_back(asked.back());
-          continue;
+          continue;  // its coverage is in s.coverage already
         }
         const Scores one = score(child, ctx);
         scores.push_back(one.score);
         asked.push_back(one.asked);
+        s.coverage = std::min(s.coverage, one.coverage);
         previous = child.kind == Kind::kDescriptor ? &child : nullptr;
       }
-      s = {aggregate(ctx.query->aggregation, scores), aggregate(ctx.query->aggregation, asked)};
+      s.score = aggregate(ctx.query->aggregation, scores);
+      s.asked = aggregate(ctx.query->aggregation, asked);
       break;
     }
     case Kind::kOr:
+      s.coverage = 0.0;  // the largest of the children's
       for (const QueryCondition& child : c.children) {
         const Scores one = score(child, ctx);
-        s = {std::max(s.score, one.score), std::max(s.asked, one.asked)};
+        s = {std::max(s.score, one.score), std::max(s.asked, one.asked), std::max(s.coverage, one.coverage)};
       }
       break;
     case Kind::kNot:
+      // "not bent" asks for no degree that a value could span: no tie-break (coverage 1).
       if (!c.children.empty()) {
         const Scores one = score(c.children[0], ctx);
-        s = {1.0 - one.score, 1.0 - one.asked};
+        s = {1.0 - one.score, 1.0 - one.asked, 1.0};
       } else {
-        s = {0.0, 0.0};
+        s = {0.0, 0.0, 1.0};
       }
       break;
     case Kind::kRelation:
       break;
   }
+  // A noun's conditions are its defaults, not what the user said of the part ("a slightly bent
+  // cylinder" says its bend, not its roundness): they break no ties.
+  if (!c.noun.empty()) s.coverage = 1.0;
   if (!c.text.empty()) explainAt(slot, s, ctx);
   return s;
 }
@@ -217,10 +229,20 @@ void collectComponents(const CsgTree& node, const std::string& path, std::vector
 
 }  // namespace
 
+bool saysVagueness(const QueryCondition& c) {
+  if (!c.noun.empty() || c.kind == Kind::kNot || c.kind == Kind::kRelation) return false;
+  if (c.kind == Kind::kDescriptor) return true;
+  for (const QueryCondition& child : c.children)
+    if (saysVagueness(child)) return true;
+  return false;
+}
+
 QueryScore scoreDescriptors(const LinguisticQuery& query, const std::vector<DescriptorValue>& values) {
   QueryScore result;
   Context ctx{&query, nullptr, &values, "", &result.explain};
-  result.score = score(query.root, ctx).score;
+  const Scores s = score(query.root, ctx);
+  result.score = s.score;
+  result.coverage = saysVagueness(query.root) ? s.coverage : 0.0;
   return result;
 }
 
@@ -228,15 +250,23 @@ QueryScore scoreShape(const LinguisticQuery& query, const std::vector<ShapeCompo
   QueryScore best;
   if (!readsComponent(query.root) || components.empty()) {
     Context ctx{&query, &components, nullptr, "", &best.explain};
-    best.score = score(query.root, ctx).score;
+    const Scores s = score(query.root, ctx);
+    best.score = s.score;
+    best.coverage = saysVagueness(query.root) ? s.coverage : 0.0;
     return best;
   }
   bool first = true;
+  const bool vague = saysVagueness(query.root);
   for (const ShapeComponent& component : components) {
     QueryScore candidate;
     Context ctx{&query, &components, &component.descriptors, component.path, &candidate.explain};
-    candidate.score = score(query.root, ctx).score;
-    if (first || candidate.score > best.score) best = std::move(candidate);  // first wins ties
+    const Scores s = score(query.root, ctx);
+    candidate.score = s.score;
+    candidate.coverage = vague ? s.coverage : 0.0;
+    // The best component, and of equal ones the one that covers most (as objects rank); the first
+    // of those.
+    if (first || candidate.score > best.score || (candidate.score == best.score && candidate.coverage > best.coverage))
+      best = std::move(candidate);
     first = false;
   }
   return best;

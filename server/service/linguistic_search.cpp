@@ -33,19 +33,27 @@ double millisSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// Best first, ties by id.
+// Best first; equal scores by coverage (QueryScore::coverage: the object described as vaguely as
+// the words first), then by id.
 bool better(const LinguisticHit& a, const LinguisticHit& b) {
   if (a.score.score != b.score.score) return a.score.score > b.score.score;
+  if (a.score.coverage != b.score.coverage) return a.score.coverage > b.score.coverage;
   return a.id < b.id;
 }
 
-// The same order for candidates: highest bound first, ties by id (the order hits take).
-bool boundFirst(const Candidate& a, const Candidate& b) { return a.bound != b.bound ? a.bound > b.bound : a.id < b.id; }
+// The same order for candidates: highest bound first, then highest coverage bound, then by id
+// (the order hits take).
+bool boundFirst(const Candidate& a, const Candidate& b) {
+  if (a.bound != b.bound) return a.bound > b.bound;
+  if (a.tie != b.tie) return a.tie > b.tie;
+  return a.id < b.id;
+}
 
 // One piece of the level scan (Scorer::scoreLevels) and how much of it has been read.
 struct LevelRead {
   DescriptorRange range;  // what is left to read (a read by value narrows it)
   double bound = 1;       // >= the bound of every row left
+  double tie = 1;         // >= the coverage bound of every row
   LevelOrder order = LevelOrder::kAny;
   bool done = false;
   // kFlat: the walk in id order has read every id <= walkedThrough; wholeRest: it gave up, and
@@ -62,7 +70,7 @@ struct LevelRead {
   // Comes before every row not yet read, in candidate order (boundFirst).
   Candidate frontier() const {
     const bool walking = order == LevelOrder::kFlat && !wholeRest;
-    return {walking ? walkedThrough + 1 : std::numeric_limits<int64_t>::min(), bound};
+    return {walking ? walkedThrough + 1 : std::numeric_limits<int64_t>::min(), bound, tie};
   }
 
   // Reads some rows of the piece into `add` and moves the frontier (or marks the piece done).
@@ -143,11 +151,12 @@ class Scorer {
  public:
   Scorer(const Store& store, const LinguisticQuery& query, const LinguisticSearchOptions& options)
       : store_(store), query_(query), options_(options), limit_(static_cast<size_t>(std::max(1, options.limit))),
-        cut_(std::max(options.threshold, query.atLeast)), start_(Clock::now()) {}
+        cut_(std::max(options.threshold, query.atLeast)), vague_(saysVagueness(query.root)), start_(Clock::now()) {}
 
   // Scores `candidates` of `kind`; bounded: best bound first, stopping where no bound can win.
   void score(const std::string& kind, std::vector<Candidate> candidates, bool bounded) {
     candidates_ += candidates.size();
+    for (Candidate& c : candidates) c.tie = tie(c.tie);
     const size_t chunkSize = bounded ? kBoundedChunk : kChunk;
     std::vector<int64_t> chunk;
     bool stop = false;
@@ -197,6 +206,9 @@ class Scorer {
         LevelRead piece;
         piece.range = {r.descriptor, r.widthClass, p.fromLo, p.toLo, r.leastHi};
         piece.bound = p.bound;
+        // A said driver's crisp rows span nothing of its set (of area > 0); a wide row's coverage
+        // is at most what bounds its score (coverageBound).
+        piece.tie = tie(!driver.said ? 1.0 : r.widthClass != kCrispWidthClass ? p.bound : driver.set.cardinality() > 0 ? 0.0 : 1.0);
         piece.order = p.order;
         piece.firstRead = std::max<int64_t>(1, options_.firstLevelRead);
         piece.need = static_cast<int64_t>(limit_);
@@ -216,7 +228,7 @@ class Scorer {
     std::vector<Entry> pool;
     const std::vector<int64_t> pendingIds = store.pendingDescriptorIds(kind);
     const std::unordered_set<int64_t> pending(pendingIds.begin(), pendingIds.end());
-    for (int64_t id : pendingIds) pool.push_back({{id, 1.0}, true});
+    for (int64_t id : pendingIds) pool.push_back({{id, 1.0, tie(1.0)}, true});
     std::make_heap(pool.begin(), pool.end(), worse);
     candidates_ += pool.size();
     const auto push = [&](const Candidate& c, bool refined) {
@@ -226,7 +238,9 @@ class Scorer {
     const auto add = [&](const std::vector<DescriptorCandidate>& rows, bool refineNow) {
       std::vector<Candidate> found;
       for (const DescriptorCandidate& row : rows)
-        if (pending.count(row.id) == 0) found.push_back({row.id, scoreBound(driver, row.supportLo, row.supportHi, false)});
+        if (pending.count(row.id) == 0)
+          found.push_back({row.id, scoreBound(driver, row.supportLo, row.supportHi, false),
+                           tie(coverageBound(driver, row.supportLo, row.supportHi, false))});
       candidates_ += found.size();
       const bool refined = others.empty() || refineNow;
       if (refineNow && !others.empty()) found = refine(store, others, std::move(found));
@@ -308,17 +322,20 @@ class Scorer {
     std::vector<int64_t> ids;
     for (const Candidate& c : candidates) ids.push_back(c.id);
     for (const PrefilterPlan* child : others) {
-      std::unordered_map<int64_t, double> best;  // the object's best component (a part has one)
+      // The object's best component (a part has one): its bounds of score and coverage.
+      std::unordered_map<int64_t, std::pair<double, double>> best;
       for (const DescriptorCandidate& row : store.descriptorSupports(child->test.descriptor, ids)) {
-        const double b = admits(child->test, row.supportLo, row.supportHi)
-                             ? scoreBound(*child, row.supportLo, row.supportHi, false)
-                             : 0.0;
-        auto [it, fresh] = best.try_emplace(row.id, b);
-        if (!fresh) it->second = std::max(it->second, b);
+        const bool admitted = admits(child->test, row.supportLo, row.supportHi);
+        const double b = admitted ? scoreBound(*child, row.supportLo, row.supportHi, false) : 0.0;
+        const double t = admitted ? coverageBound(*child, row.supportLo, row.supportHi, false) : absentCoverage(*child);
+        auto [it, fresh] = best.try_emplace(row.id, b, t);
+        if (!fresh) it->second = {std::max(it->second.first, b), std::max(it->second.second, t)};
       }
       for (Candidate& c : candidates) {
         auto it = best.find(c.id);
-        if (it != best.end()) c.bound = std::min(c.bound, it->second);  // no row (deleted): as it was
+        if (it == best.end()) continue;  // no row (deleted): as it was
+        c.bound = std::min(c.bound, it->second.first);
+        c.tie = std::min(c.tie, it->second.second);  // the kAnd's coverage is the least (or 0: never raised)
       }
     }
     candidates.erase(
@@ -339,13 +356,20 @@ class Scorer {
     return end;
   }
 
-  // Whether a candidate with this bound could still be among the results.
+  // Whether a candidate with these bounds could still be among the results.
   bool canEnter(const Candidate& c) const {
     if (c.bound < cut_ || !(c.bound > 0)) return false;
     if (hits_.size() < limit_) return true;
     const LinguisticHit& kth = hits_.back();
-    return c.bound > kth.score.score || (c.bound == kth.score.score && c.id < kth.id);
+    if (c.bound != kth.score.score) return c.bound > kth.score.score;
+    if (c.tie != kth.score.coverage) return c.tie > kth.score.coverage;
+    return c.id < kth.id;
   }
+
+  // A coverage bound as the search compares it: where the words say no condition coverage reads,
+  // every object's coverage is 0 (QueryScore::coverage), and so is every bound, so that ties go
+  // by id alone and no candidate is read for a coverage it cannot have.
+  double tie(double bound) const { return vague_ ? bound : 0.0; }
 
   // Keeps the best `limit` hits, sorted.
   void trim() {
@@ -388,6 +412,7 @@ class Scorer {
   const LinguisticSearchOptions& options_;
   const size_t limit_;
   const double cut_;
+  const bool vague_;  // saysVagueness(query root): coverage can break ties
   const Clock::time_point start_;
   std::vector<LinguisticHit> hits_;
   size_t candidates_ = 0, scored_ = 0;
@@ -395,19 +420,31 @@ class Scorer {
 };
 
 nlohmann::json hitJson(const LinguisticHit& hit) {
-  return {{"id", hit.id}, {"kind", hit.kind}, {"name", hit.name}, {"version", hit.version}, {"score", hit.score.score},
+  return {{"id", hit.id},
+          {"kind", hit.kind},
+          {"name", hit.name},
+          {"version", hit.version},
+          {"score", hit.score.score},
+          {"coverage", hit.score.coverage},
           {"explain", explainJson(hit.score)}};
 }
 
 // The leaf that drives a level scan of `plan` (Scorer::scoreLevels): the plan itself when it is
-// one kOverlap, the first kOverlap child of a kAnd (a t-norm: prefilterPlan makes kAnd only
-// then), else none (kOr, kAll: today's path).
+// one kOverlap, else the first kOverlap child of a kAnd (a t-norm: prefilterPlan makes kAnd only
+// then) that the words say of the part itself, or the first kOverlap child when none is said,
+// else none (kOr, kAll: today's path). A said driver bounds a crisp row's coverage by 0, so a
+// tie at the limit-th score stops the walk of its crisp rows as before; a noun's driver would
+// bound every row's coverage by 1 and read every row that ties.
 const PrefilterPlan* levelDriver(const PrefilterPlan& plan) {
   if (plan.kind == PrefilterPlan::Kind::kOverlap) return &plan;
   if (plan.kind != PrefilterPlan::Kind::kAnd) return nullptr;
+  const PrefilterPlan* first = nullptr;
   for (const PrefilterPlan& child : plan.children)
-    if (child.kind == PrefilterPlan::Kind::kOverlap) return &child;
-  return nullptr;
+    if (child.kind == PrefilterPlan::Kind::kOverlap) {
+      if (child.said) return &child;
+      if (!first) first = &child;
+    }
+  return first;
 }
 
 // The search itself; searchLinguistic runs it in one snapshot.
@@ -417,7 +454,7 @@ LinguisticSearchResult searchInSnapshot(const Store& store, const LinguisticQuer
   for (const std::string& kind : options.kinds) {
     if (options.scan) {
       std::vector<Candidate> everything;
-      for (int64_t id : store.objectIds(kind)) everything.push_back({id, 1.0});
+      for (int64_t id : store.objectIds(kind)) everything.push_back({id, 1.0, 1.0});
       scorer.score(kind, std::move(everything), false);
       continue;
     }
@@ -427,7 +464,8 @@ LinguisticSearchResult searchInSnapshot(const Store& store, const LinguisticQuer
       std::vector<Candidate> rows;
       for (const DescriptorCandidate& c : store.descriptorCandidates(
                kind, {t.descriptor, t.lo, t.hi, t.loIncluded, t.hiIncluded, t.wideStrict}))
-        rows.push_back({c.id, scoreBound(leaf, c.supportLo, c.supportHi, c.pending)});
+        rows.push_back({c.id, scoreBound(leaf, c.supportLo, c.supportHi, c.pending),
+                        coverageBound(leaf, c.supportLo, c.supportHi, c.pending)});
       return rows;
     };
     const PrefilterPlan plan = prefilterPlan(query, kind);

@@ -6,14 +6,16 @@
 // - Scores are V's: a part by scoreDescriptors on its descriptor values, a shape by scoreShape
 //   on its components (the leaves of its resolved tree, references expanded). A result has a
 //   score > 0, >= the request's threshold and >= the query's "at least"; results are in
-//   descending score, ties by ascending id; at most `limit`.
+//   descending score, equal scores by descending coverage (QueryScore::coverage: how much of
+//   the sets the words say of the part its values span), then by ascending id; at most `limit`.
 // - Indexed path (default): the candidates of the prefilter plan (query/linguistic/descriptor_prefilter.h)
 //   run in the store's descriptor index, each with a bound >= its score from the supports the
-//   index returns, are scored best bound first (ties by id), and scoring stops at the first
-//   candidate whose bound cannot beat the `limit`-th best score so far (nor reach the cut), so a
+//   index returns, and a bound >= its coverage (a said condition's crisp row: 0), are scored
+//   best bounds first (ties by id), and scoring stops at the first candidate whose bounds cannot
+//   beat the `limit`-th best score and coverage so far (nor reach the cut), so a
 //   selective or top-heavy query reads the values of a few objects only. Level scan (parts,
 //   when the plan is one descriptor condition or an "and" under a t-norm, driven by its first
-//   descriptor child): the index rows are not all read first; the driver's ranges are cut into
+//   descriptor child the words say of the part, else its first): the index rows are not all read first; the driver's ranges are cut into
 //   pieces at the ends of its set's alpha-cuts (levelPieces, query/linguistic/descriptor_prefilter.h), read
 //   best piece bound first, and a candidate is scored only once its bound beats every unread
 //   piece's, so a broad query ("big": every part) reads the rows of its first levels only.
@@ -23,7 +25,7 @@
 //   `limit` objects without reading the rest.
 //   Scan path (`scan`):
 //   every object of the kinds is scored. Both give the same results exactly (same ids,
-//   scores, order): the plan only drops objects that score 0, and both score the same values
+//   scores, coverages, order): the plan only drops objects that score 0, and both score the same values
 //   (a part's row holds describePart's exact values; pending objects are described from their
 //   documents on both paths).
 // - maxMillis > 0: a search still scoring after that long stops with limit_exceeded (413)

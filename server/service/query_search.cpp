@@ -312,8 +312,8 @@ bool holdsRelation(const nlohmann::json& node) {
 // object whose name is the text's content words in another order (objectsNamedByWords) is the
 // text's name: score 1. A name of which every word is among the text's words (nameWordsAmong)
 // changes no score, since the meaning scores the rest of the text ("a tiny little cube" wants a
-// small cube more than the object named cube), but of results with equal scores the named one
-// comes first, and of two, the name of more words: the meaning of "wedge" fits every wedge-like
+// small cube more than the object named cube), but of results with equal scores and coverage the
+// named one comes first, and of two, the name of more words: the meaning of "wedge" fits every wedge-like
 // object alike, the object named wedge best. An object named by one word of the text that the
 // first `limit` results leave out is looked for in the first kNamedTieDepth (`deeper`, when
 // given, answers the same request with that limit): it comes in where it ties with the last.
@@ -398,9 +398,13 @@ void rankNamesAmongWords(const Store& store, const nlohmann::json& request, cons
   }
   std::vector<size_t> order(results.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  // Of equal scores, coverage first (what the descriptors say: the object described as vaguely
+  // as the words, QueryScore::coverage), then the name.
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
     const double sa = results[a].value("score", 0.0), sb = results[b].value("score", 0.0);
-    return sa != sb ? sa > sb : nameWords[a] > nameWords[b];
+    if (sa != sb) return sa > sb;
+    const double ca = results[a].value("coverage", 0.0), cb = results[b].value("coverage", 0.0);
+    return ca != cb ? ca > cb : nameWords[a] > nameWords[b];
   });
   nlohmann::json ranked = nlohmann::json::array();
   for (size_t i = 0; i < order.size() && i < limit; ++i) ranked.push_back(std::move(results[order[i]]));

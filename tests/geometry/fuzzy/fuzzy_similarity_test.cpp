@@ -59,6 +59,33 @@ TEST(FuzzySimilarity, CrispValueAgainstAConditionIsItsMembership) {
   EXPECT_EQ(similarity(FuzzyNumber::crisp(1), FuzzyNumber::trapezoidal(1, 1, 2, 2)), 1);
 }
 
+TEST(FuzzySimilarity, CoverageIsTheShareOfTheConditionTheValueSpans) {
+  // The second ratio of S: |A ∩ B| / |B|.
+  const FuzzyNumber wide = FuzzyNumber::triangular(0, 2, 4), narrow = FuzzyNumber::triangular(1, 2, 3);
+  EXPECT_DOUBLE_EQ(coverage(wide, narrow), 1.0);  // 1 / 1: the wide value spans the whole condition
+  EXPECT_DOUBLE_EQ(coverage(narrow, wide), 0.5);  // 1 / 2
+  EXPECT_DOUBLE_EQ(coverage(FuzzyNumber::triangular(0, 1, 2), FuzzyNumber::triangular(1, 2, 3)), 0.25);
+  EXPECT_EQ(coverage(narrow, narrow), 1);
+  // A crisp value spans nothing of a condition with area, even at its core, where S is 1.
+  EXPECT_EQ(similarity(FuzzyNumber::crisp(2), narrow), 1);
+  EXPECT_EQ(coverage(FuzzyNumber::crisp(2), narrow), 0);
+  // Against a crisp condition: the height of A ∩ B, as S.
+  EXPECT_DOUBLE_EQ(coverage(narrow, FuzzyNumber::crisp(1.5)), 0.5);
+  EXPECT_EQ(coverage(FuzzyNumber::crisp(1.5), FuzzyNumber::crisp(1.5)), 1);
+  EXPECT_EQ(coverage(FuzzyNumber::crisp(1.5), FuzzyNumber::crisp(2)), 0);
+  // In [0, 1] and never below S wherever the value has area (S is the smaller of the two ratios).
+  std::mt19937 rng(7);
+  for (int i = 0; i < 400; ++i) {
+    const FuzzyNumber a = randomAny(rng, i), b = randomAny(rng, i / 4);
+    const double c = coverage(a, b);
+    EXPECT_GE(c, 0);
+    EXPECT_LE(c, 1);
+    if (a.cardinality() > 0) {
+      EXPECT_GE(c, similarity(a, b) - 1e-12) << i;
+    }
+  }
+}
+
 TEST(FuzzySimilarity, DisjointOrTouchingSupportsGiveZero) {
   EXPECT_EQ(similarity(FuzzyNumber::triangular(0, 1, 2), FuzzyNumber::triangular(3, 4, 5)), 0);
   EXPECT_EQ(similarity(FuzzyNumber::triangular(0, 1, 2), FuzzyNumber::triangular(2, 3, 4)), 0);

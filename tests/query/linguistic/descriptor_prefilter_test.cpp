@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <random>
 
 #include "geometry/fuzzy/fuzzy_similarity.h"
@@ -136,23 +137,31 @@ std::vector<int64_t> idsOf(const std::vector<Candidate>& candidates) {
   return ids;
 }
 
+// Index rows of one descriptor: an object's support [lo, hi], or pending.
+struct IndexRow {
+  int64_t id;
+  double lo, hi;
+  bool pending;
+};
+
+// An overlap source over fixed rows per descriptor, bounded as the search bounds them.
+OverlapSource overlapOf(const std::map<std::string, std::vector<IndexRow>>& rowsByDescriptor) {
+  return [rowsByDescriptor](const PrefilterPlan& leaf) {
+    std::vector<Candidate> out;
+    const auto it = rowsByDescriptor.find(leaf.test.descriptor);
+    if (it != rowsByDescriptor.end())
+      for (const IndexRow& r : it->second)
+        out.push_back({r.id, scoreBound(leaf, r.lo, r.hi, r.pending), coverageBound(leaf, r.lo, r.hi, r.pending)});
+    return out;
+  };
+}
+
 TEST(DescriptorPrefilter, RunIntersectsAndUnites) {
   // bendness rows: crisp values (id 1: 0.5, id 3: 0.25 twice for two components, id 5: 1, id 7:
   // pending); size rows: wide [0, 1] for 3, 4, 5.
-  struct Row {
-    int64_t id;
-    double lo, hi;
-    bool pending;
-  };
-  const OverlapSource overlap = [](const PrefilterPlan& leaf) {
-    std::vector<Row> rows;
-    if (leaf.test.descriptor == "bendness")
-      rows = {{1, 0.5, 0.5, false}, {3, 0.25, 0.25, false}, {3, 0.75, 0.75, false}, {5, 1, 1, false}, {7, 0, 0, true}};
-    if (leaf.test.descriptor == "size") rows = {{3, 0, 1, false}, {4, 0, 1, false}, {5, 0, 0.5, false}};
-    std::vector<Candidate> out;
-    for (const Row& r : rows) out.push_back({r.id, scoreBound(leaf, r.lo, r.hi, r.pending)});
-    return out;
-  };
+  const OverlapSource overlap = overlapOf(
+      {{"bendness", {{1, 0.5, 0.5, false}, {3, 0.25, 0.25, false}, {3, 0.75, 0.75, false}, {5, 1, 1, false}, {7, 0, 0, true}}},
+       {"size", {{3, 0, 1, false}, {4, 0, 1, false}, {5, 0, 0.5, false}}}});
   int allCalls = 0;
   const AllSource all = [&allCalls] {
     ++allCalls;
@@ -180,6 +189,40 @@ TEST(DescriptorPrefilter, RunIntersectsAndUnites) {
   EXPECT_TRUE(runPrefilter(prefilterPlan(query(node(K::kAnd, {bent, descriptor("twistness", 0, 0, 1)})), "part"),
                            overlap, all)
                   .empty());
+}
+
+// Coverage bounds through the plan: a said leaf's crisp rows 0, wide rows their score bound, a
+// pending object 1; "and" the least, "or" the largest, an object missing from a said child 0 there.
+TEST(DescriptorPrefilter, CoverageBoundsFollowThePlan) {
+  const OverlapSource overlap =
+      overlapOf({{"bendness", {{1, 0.5, 0.5, false}, {3, 0.25, 0.75, false}, {7, 0, 0, true}}},
+                 {"size", {{1, 0, 1, false}, {3, 0.5, 0.5, false}, {4, 0.25, 0.75, false}}}});
+  const AllSource all = [] { return std::vector<int64_t>{1, 2, 3, 4, 5, 6, 7}; };
+  const QueryCondition bent = descriptor("bendness", 0, 0.5, 1), big = descriptor("size", 0, 0.5, 1);
+  const PrefilterPlan plan = prefilterPlan(query(bent), "part");
+  ASSERT_TRUE(plan.said);
+  const std::vector<Candidate> one = runPrefilter(plan, overlap, all);
+  ASSERT_EQ(idsOf(one), (std::vector<int64_t>{1, 3, 7}));
+  EXPECT_EQ(one[0].tie, 0);                   // crisp 0.5: in the core, spans nothing
+  EXPECT_EQ(one[1].tie, one[1].bound);        // wide: its score bound
+  EXPECT_EQ(one[2].tie, 1);                   // pending
+  const std::vector<Candidate> both = runPrefilter(prefilterPlan(query(node(K::kAnd, {bent, big})), "part"), overlap, all);
+  ASSERT_EQ(idsOf(both), (std::vector<int64_t>{1, 3}));
+  EXPECT_EQ(both[0].tie, 0);                  // min(crisp bend 0, wide size)
+  EXPECT_EQ(both[1].tie, 0);                  // min(wide bend, crisp size 0)
+  const std::vector<Candidate> either = runPrefilter(prefilterPlan(query(node(K::kOr, {bent, big})), "part"), overlap, all);
+  ASSERT_EQ(idsOf(either), (std::vector<int64_t>{1, 3, 4, 7}));
+  EXPECT_NEAR(either[0].tie, 1, 1e-8);        // max(0, wide size over the whole set)
+  EXPECT_GT(either[2].tie, 0);                // 4: wide size; missing from bendness (0 there)
+  EXPECT_EQ(either[2].tie, coverageBound(prefilterPlan(query(big), "part"), 0.25, 0.75, false));
+  // A noun's conditions are not said: bound 1, and an object missing from one may still cover 1.
+  QueryCondition cylinder = big;
+  cylinder.noun = "cylinder";
+  const PrefilterPlan nounPlan = prefilterPlan(query(node(K::kOr, {bent, cylinder})), "part");
+  EXPECT_EQ(absentCoverage(nounPlan), 1);
+  EXPECT_EQ(absentCoverage(prefilterPlan(query(node(K::kOr, {bent, big})), "part")), 0);
+  const std::vector<Candidate> withNoun = runPrefilter(nounPlan, overlap, all);
+  for (const Candidate& c : withNoun) EXPECT_EQ(c.tie, 1) << c.id;
 }
 
 TEST(DescriptorPrefilter, MembershipIntegral) {
@@ -210,6 +253,14 @@ TEST(DescriptorPrefilter, BoundsAreAtLeastTheScores) {
     const double bound = scoreBound(plan, s.lo, s.hi, false);
     const double score = similarity(value, set);
     EXPECT_GE(bound, score) << "value [" << s.lo << ", " << s.hi << "]";
+    // The coverage bound of a said leaf bounds |A∩B| / |B|; a leaf that is not said bounds nothing.
+    plan.said = true;
+    EXPECT_GE(coverageBound(plan, s.lo, s.hi, false), coverage(value, set)) << "value [" << s.lo << ", " << s.hi << "]";
+    if (value.isCrisp() && set.cardinality() > 0) {
+      EXPECT_EQ(coverageBound(plan, s.lo, s.hi, false), 0);
+    }
+    plan.said = false;
+    EXPECT_EQ(coverageBound(plan, s.lo, s.hi, false), 1);
     if (score > 0 && bound < 1) ++tight;
   }
   EXPECT_GT(tight, 1000);

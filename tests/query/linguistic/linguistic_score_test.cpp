@@ -8,6 +8,7 @@
 
 #include "geometry/core/error.h"
 #include "geometry/fuzzy/fuzzy_similarity.h"
+#include "query/document/part_from_words.h"
 #include "query/document/part_json.h"
 #include "query/document/shape_json.h"
 #include "query/linguistic/linguistic_query.h"
@@ -134,6 +135,59 @@ TEST(LinguisticScore, FuzzyPartsScoreBySimilarity) {
   EXPECT_GT(s, 0.0);
   EXPECT_LT(s, 1.0);  // the area rule: a narrow datum inside a wide condition
   EXPECT_DOUBLE_EQ(scoreDescriptors(parseLinguisticQuery("find a very bent shape", Vocabulary::builtin()), values).score, 0.0);
+}
+
+// Coverage breaks ties of the score: of two parts that satisfy the words fully, the one whose
+// value is the words' set itself spans all of it (1), a crisp one nothing (0). Only what the
+// words say of the part counts: not a noun's defaults, nothing under "not".
+TEST(LinguisticScore, CoverageIsHowMuchOfTheSaidSetsTheValuesSpan) {
+  const Vocabulary& v = Vocabulary::builtin();
+  const LinguisticQuery q = parseLinguisticQuery("a slightly bent cylinder", v);
+  ASSERT_TRUE(saysVagueness(q.root));
+  const FuzzyPart made = partFromWords("a slightly bent cylinder", v);
+  ASSERT_FALSE(made.kv.isCrisp());
+  // A crisp cylinder bent at the middle of the set's core: also a full match.
+  const FuzzyNumber& asked = [&]() -> const FuzzyNumber& {
+    for (const QueryCondition& c : q.root.children)
+      if (c.descriptor == "bendness") return c.set;
+    return q.root.set;
+  }();
+  ASSERT_GT(asked.cardinality(), 0);
+  FuzzyPart crisp = made;
+  const double middle = 0.5 * (asked.core().lo + asked.core().hi);
+  crisp.kv = FuzzyNumber::crisp(middle * kPi / (2 * crisp.a1.core().lo * crisp.a3.core().lo));  // bendness = kv·2C/π, C = a1·a3
+  const QueryScore fuzzy = scoreDescriptors(q, describePart(made)), sharp = scoreDescriptors(q, describePart(crisp));
+  EXPECT_GE(fuzzy.score, 0.999);
+  EXPECT_EQ(sharp.score, 1);
+  EXPECT_GE(fuzzy.coverage, 0.999);  // the part's bend is the words' set (sampled every 1/16)
+  EXPECT_EQ(sharp.coverage, 0);
+  // The cylinder's own conditions (round, straight sides) are crisp in both and count for neither;
+  // the bend alone decides: the made part's coverage is its bend's.
+  const auto values = describePart(made);
+  EXPECT_DOUBLE_EQ(fuzzy.coverage, coverage(values[descriptorIndex("bendness")].value, asked));
+  // A noun alone, or only "not": nothing said of the part's degrees, coverage 0 for every part.
+  for (const char* text : {"a cylinder", "a cylinder that is not bent", "find a shape that is not twisted"}) {
+    const LinguisticQuery nothing = parseLinguisticQuery(text, v);
+    EXPECT_FALSE(saysVagueness(nothing.root)) << text;
+    EXPECT_EQ(scoreDescriptors(nothing, values).coverage, 0) << text;
+  }
+  // "or" takes the larger coverage, "and" the smaller.
+  const auto cov = [&](const char* text) { return scoreDescriptors(parseLinguisticQuery(text, v), values).coverage; };
+  EXPECT_GE(cov("find a shape that is slightly bent or very twisted"), 0.999);
+  EXPECT_EQ(cov("find a shape that is slightly bent and very twisted"), 0);
+}
+
+// A part made from words takes the words' set through its parameters; its descriptor value comes
+// back with other breakpoints, equal but for rounding. It scores exactly 1, as a crisp value in
+// the set's core does, so the two tie and coverage decides (it scored 0.9999999999999998, and the
+// crisp part came first).
+TEST(LinguisticScore, APartMadeFromWordsScoresExactlyOneForThem) {
+  const Vocabulary& v = Vocabulary::builtin();
+  for (const char* text : {"a moderately huge bar", "a slightly bent cylinder", "a very twisted box"}) {
+    const QueryScore s = scoreDescriptors(parseLinguisticQuery(text, v), describePart(partFromWords(text, v)));
+    EXPECT_EQ(s.score, 1.0) << text;
+    EXPECT_EQ(s.coverage, 1.0) << text;
+  }
 }
 
 TEST(LinguisticScore, AndOrNotAggregationAndExplain) {

@@ -13,6 +13,7 @@
 #include "db/sqlite.h"
 #include "db/store.h"
 #include "geometry/core/error.h"
+#include "query/document/part_from_words.h"
 #include "query/document/part_json.h"
 #include "query/linguistic/descriptor_prefilter.h"
 #include "query/linguistic/descriptors.h"
@@ -192,6 +193,7 @@ void expectSameAnswers(const Store& store, const LinguisticQuery& query, double 
     EXPECT_EQ(a.kind, b.kind);
     EXPECT_EQ(a.name, b.name);
     EXPECT_EQ(a.score.score, b.score.score) << what << " id " << a.id;
+    EXPECT_EQ(a.score.coverage, b.score.coverage) << what << " id " << a.id;
     ASSERT_EQ(a.score.explain.size(), b.score.explain.size());
     for (size_t k = 0; k < a.score.explain.size(); ++k) {
       EXPECT_EQ(a.score.explain[k].text, b.score.explain[k].text);
@@ -201,7 +203,11 @@ void expectSameAnswers(const Store& store, const LinguisticQuery& query, double 
     EXPECT_GE(a.score.score, std::max(threshold, query.atLeast));
     if (i > 0) {
       const LinguisticHit& prev = indexed.hits[i - 1];
-      EXPECT_TRUE(prev.score.score > a.score.score || (prev.score.score == a.score.score && prev.id < a.id));
+      // Best score first; equal scores by coverage, then by id.
+      const QueryScore &p = prev.score, &q = a.score;
+      EXPECT_TRUE(p.score > q.score || (p.score == q.score && p.coverage > q.coverage) ||
+                  (p.score == q.score && p.coverage == q.coverage && prev.id < a.id))
+          << what << " rank " << i;
     }
   }
 }
@@ -358,6 +364,56 @@ TEST(LinguisticIndexProperty, LevelScanWalksAFlatPieceInIdOrder) {
       expectSameAnswers(store, query, 0.0, 10, text, &pruned, firstRead);
     }
   }
+}
+
+// Ties at the limit-th score go to coverage (QueryScore::coverage) before ids: the part made from
+// "a slightly bent cylinder", stored after 300 crisp cylinders bent at the middle of the words'
+// core (all scoring 1), comes first; the walk of the crisp rows still stops early (their
+// coverage is 0, the made part's 1), and the answer is the full scan's. Without a degree said
+// ("a cylinder") every coverage is 0 and ties go by id as before.
+TEST(LinguisticIndexProperty, TiesGoToThePartDescribedAsVaguelyAsTheWords) {
+  Catalogue catalogue(11);
+  Store& store = catalogue.store();
+  const Vocabulary& v = Vocabulary::builtin();
+  const FuzzyPart made = partFromWords("a slightly bent cylinder", v);
+  const LinguisticQuery query = parseLinguisticQuery("a slightly bent cylinder", v);
+  FuzzyNumber asked;
+  for (const QueryCondition& c : query.root.children)
+    if (c.descriptor == "bendness") asked = c.set;
+  ASSERT_GT(asked.cardinality(), 0);
+  FuzzyPart crisp = made;
+  // bendness = |kv|·2C/π with C = a1·a3 (query/linguistic/descriptors.h)
+  crisp.kv = FuzzyNumber::crisp(0.5 * (asked.core().lo + asked.core().hi) * 3.14159265358979323846 /
+                                (2 * made.a1.core().lo * made.a3.core().lo));
+  for (int i = 0; i < 300; ++i)
+    store.create(prepareDocument(partDocument(crisp, "bent" + std::to_string(i), true), "part", store, DocumentLimits{}, ""));
+  catalogue.build(200, 0);
+  const int64_t madeId =
+      store.create(prepareDocument(partDocument(made, "made", true), "part", store, DocumentLimits{}, "")).id;
+  LinguisticSearchOptions options;
+  options.limit = 10;
+  options.kinds = {"part"};
+  options.firstLevelRead = 8;
+  const LinguisticSearchResult indexed = searchLinguistic(store, query, options);
+  ASSERT_EQ(indexed.hits.size(), 10u);
+  EXPECT_EQ(indexed.hits[0].id, madeId);
+  EXPECT_GE(indexed.hits[0].score.score, 0.999);
+  EXPECT_GE(indexed.hits[0].score.coverage, 0.999);
+  for (size_t i = 1; i < indexed.hits.size(); ++i) {
+    EXPECT_EQ(indexed.hits[i].score.score, 1.0);
+    EXPECT_EQ(indexed.hits[i].score.coverage, 0.0);
+  }
+  EXPECT_LT(indexed.scored, 100u) << "scored " << indexed.scored << " of 501";
+  size_t pruned = 0;
+  expectSameAnswers(store, query, 0.0, 10, "slightly bent cylinder", &pruned, 8);
+  expectSameAnswers(store, query, 0.0, 1, "slightly bent cylinder", &pruned, 8);
+  EXPECT_EQ(pruned, 2u);
+  const LinguisticQuery plain = parseLinguisticQuery("a cylinder", v);
+  const LinguisticSearchResult byId = searchLinguistic(store, plain, options);
+  ASSERT_FALSE(byId.hits.empty());
+  EXPECT_NE(byId.hits[0].id, madeId);
+  EXPECT_EQ(byId.hits[0].score.coverage, 0.0);
+  expectSameAnswers(store, plain, 0.0, 10, "cylinder", &pruned, 8);
 }
 
 TEST(LinguisticIndexProperty, RefreshedRowsAreTheRowsOfTheCurrentDocuments) {
