@@ -267,33 +267,14 @@ class Parser {
     return out;
   }
 
-  // part_description = [ article ] { [ intensity ] adjective [ "," | "and" ] } noun { measure } [ "with" edge ]
+  // part_description = [ article ] adjectives noun { measure } [ [ "," ] adjectives ] [ "with" edge ]
   PartDescription partDescription() {
     entry_ = Entry::kPartDescription;
     PartDescription d;
     if (tokens_.empty()) fail({"words such as 'a slightly bent cylinder'"});
     acceptAny(queryArticles());
     std::string word;
-    while (true) {
-      const size_t start = pos_;
-      const FuzzyNumber* intensity = nullptr;
-      if (size_t n = matchPhrase(intensityWords_, &word)) {
-        intensity = v_.intensity(word);
-        pos_ += n;
-      }
-      const size_t n = matchPhrase(adjectiveWords_, &word);
-      if (n == 0) {
-        if (intensity) fail({"an adjective (" + joinList(adjectiveWords_) + ")"});
-        break;
-      }
-      pos_ += n;
-      d.adjectives.push_back({v_.adjective(word), intensity, span(start, pos_)});
-      if (acceptWord(",") || acceptWord("and")) {
-        std::string next;
-        if (!matchPhrase(intensityWords_, &next) && !matchPhrase(adjectiveWords_, &next))
-          fail({"an intensity (" + joinList(intensityWords_) + ")", "an adjective (" + joinList(adjectiveWords_) + ")"});
-      }
-    }
+    adjectiveUses(&d);
     const size_t n = matchPhrase(nounWords_, &word);
     if (n == 0) {
       std::vector<std::string> expected = {"a noun (" + joinList(nounWords_) + ")"};
@@ -310,6 +291,13 @@ class Parser {
       if (m.kind == Kind::kDescriptor) leaves.push_back(std::move(m));
       else leaves = std::move(m.children);
       for (const QueryCondition& leaf : leaves) d.measures.push_back({leaf.descriptor, *leaf.measure, leaf.text});
+    }
+    // Adjectives after the noun, as a query reads them ("a cylinder slightly bent", "a box, very
+    // twisted"): the same as before it.
+    {
+      const size_t beforeComma = pos_;
+      const bool comma = acceptWord(",");
+      if (adjectiveUses(&d) == 0 && comma) pos_ = beforeComma;
     }
     // [ "with" edge ] ("a cube with rounded edges", "a cylinder with sharp edges"); or a plain
     // edges.before_nouns adjective of a noun with a squariness condition says its edges ("a
@@ -665,9 +653,24 @@ class Parser {
     const size_t clauseStart = pos_;
     std::vector<QueryCondition> clause = measuresAfterNoun();
     // Adjectives after the noun, as many speakers put them ("ball small", "cylinder very long
-    // thin", "box long and flat"): read as a clause, "a ball that is small".
-    if (startsCondition()) clause.push_back(condition());
+    // thin", "box long and flat"), or after a comma ("a box, very twisted"): read as a clause, "a
+    // ball that is small".
+    if (startsCondition()) {
+      clause.push_back(condition());
+    } else if (at(",") && !prefix_) {
+      // Not in a list of operands, where a comma is the caller's ("the union of a cube, (a
+      // sphere ...)", "..., a round cross-section cone"); not before "(" or an article either.
+      ++pos_;
+      if (startsCondition() && !at("(") && !startsArticleSection())
+        clause.push_back(condition());
+      else
+        --pos_;
+    }
     const size_t beforeRelative = pos_;
+    // A comma may set the relative clause off: "a cylinder, slightly bent, with a round cross-section".
+    const auto wordAfter = [&](size_t k) { return pos_ + k < tokens_.size() ? tokens_[pos_ + k].text : std::string(); };
+    if (at(",") && (wordAfter(1) == "that" || wordAfter(1) == "which" || (wordAfter(1) == "with" && wordAfter(2) != "score")))
+      ++pos_;
     if (acceptWord("that") || acceptWord("which")) {
       const bool verb = acceptAny({"is", "are", "has", "have"});
       if (verb && startsCondition()) {
@@ -686,7 +689,7 @@ class Parser {
         // Read as a prefix (a CSG operand), "with" before no condition ends the phrase: it joins
         // the caller's next operand ("a cube with a sphere", "a cube with a cylindrical hole").
         if (!prefix_) fail(conditionStarts());
-        --pos_;
+        pos_ = beforeRelative;
       } else {
         clause.push_back(condition());
       }
@@ -746,7 +749,13 @@ class Parser {
     const size_t start = pos_;
     std::vector<QueryCondition> all{negation()};
     while (true) {
-      if (continues("and") || continues(",")) {
+      if (at(",")) {
+        ++pos_;
+        if (!startsCondition()) {
+          --pos_;  // the comma is the noun phrase's ("a cylinder, slightly bent, with ...") or the caller's
+          break;
+        }
+      } else if (continues("and")) {
         if (!startsCondition()) fail(conditionStarts());
       } else if (!startsCondition()) {
         break;
@@ -832,8 +841,6 @@ class Parser {
     if (n == 0) fail({"an adjective (" + joinList(adjectiveWords_) + ")"});
     pos_ += n;
     const Adjective& adjective = *v_.adjective(word);
-    const FuzzyNumber set =
-        intensity ? (adjective.lowPole ? mirroredDegrees(*intensity) : *intensity) : v_.plainSet(adjective);
     std::string descriptor = adjective.descriptor;
     // section = a section word of the vocabulary: the adjective describes the traverse section alone.
     std::string sectionWord;
@@ -848,12 +855,60 @@ class Parser {
       descriptor = *section;
       pos_ += k;
     }
+    if (!intensity && sectionWord.empty()) intensity = intensityAfterAdjective();
+    const FuzzyNumber set =
+        intensity ? (adjective.lowPole ? mirroredDegrees(*intensity) : *intensity) : v_.plainSet(adjective);
     QueryCondition c = descriptorCondition(descriptor, set, span(start, pos_));
     c.plainRamp = !intensity && !adjective.set;
     c.outline = adjective.outline && sectionWord.empty();
     // A plain edges.before_nouns adjective may say the edges of a square noun ("a rounded box").
     if (!intensity && sectionWord.empty() && v_.saysEdgesBeforeNouns(word)) c.edgeDegree = v_.edgeSet();
     return c;
+  }
+
+  // adjectives = { [ intensity ] adjective [ intensity_after ] [ "," | "and" ] } of a part
+  // description, into d->adjectives; returns how many it read.
+  size_t adjectiveUses(PartDescription* d) {
+    size_t count = 0;
+    std::string word;
+    while (true) {
+      const size_t start = pos_;
+      const FuzzyNumber* intensity = nullptr;
+      if (size_t n = matchPhrase(intensityWords_, &word)) {
+        intensity = v_.intensity(word);
+        pos_ += n;
+      }
+      const size_t n = matchPhrase(adjectiveWords_, &word);
+      if (n == 0) {
+        if (intensity) fail({"an adjective (" + joinList(adjectiveWords_) + ")"});
+        return count;
+      }
+      pos_ += n;
+      if (!intensity) intensity = intensityAfterAdjective();
+      d->adjectives.push_back({v_.adjective(word), intensity, span(start, pos_)});
+      ++count;
+      const size_t beforeJoin = pos_;
+      if (acceptWord(",") || acceptWord("and")) {
+        std::string next;
+        if (!matchPhrase(intensityWords_, &next) && !matchPhrase(adjectiveWords_, &next)) {
+          // A comma before "with" ends the list ("a cylinder, slightly bent, with sharp edges").
+          if (tokens_[beforeJoin].text == "," && at("with")) continue;
+          fail({"an intensity (" + joinList(intensityWords_) + ")", "an adjective (" + joinList(adjectiveWords_) + ")"});
+        }
+      }
+    }
+  }
+
+  // An intensity after its adjective, as people put it ("bent slightly", "twisted a little", "bent
+  // a lot": Vocabulary::intensityAfter), or null. Not one that opens the next adjective: "bent
+  // slightly tapered" is plain bent and slightly tapered, as the words before an adjective go.
+  const FuzzyNumber* intensityAfterAdjective() {
+    std::string words, next;
+    const size_t n = matchPhrase(v_.intensityAfterWords(), &words);
+    if (n == 0 || matchPhrase(adjectiveWords_, &next, n) > 0 || matchPhrase(intensityWords_, &next, n) > 0)
+      return nullptr;
+    pos_ += n;
+    return v_.intensityAfter(words);
   }
 
   // edge = [ "a" | "an" ] [ intensity ] adjective edge-word, the adjective one of the edge

@@ -8,13 +8,14 @@
 //   query       = [ request ] phrase [ threshold ] [ "using" ("min"|"product"|"mean") ]
 //   request     = a request phrase of the vocabulary ("show me", "I am looking for") | verb [ "for" ]
 //   phrase      = noun_phrase [ [ distance ] direction_phrase noun_phrase ]
-//   noun_phrase = [ article ] [ condition ] noun
-//                 [ ("that"|"which") ("is"|"are"|"has"|"have") condition | "with" condition ]
+//   noun_phrase = [ article ] [ condition ] noun [ measures ] [ [ "," ] condition ]
+//                 [ [ "," ] ("that"|"which") ("is"|"are"|"has"|"have") condition | [ "," ] "with" condition ]
 //               | [ article ] pronoun [ condition ] [ relative clause ]     ("something twisted")
 //               | condition [ "with" condition ]  (a bare description: first phrase, no article)
 // The vocabulary's fillers ("please") are skipped wherever they stand.
 //   condition   = conjunct { "or" conjunct };  conjunct = negation { ["and"|","] negation }
 //   negation    = "not" negation | "(" condition ")" | descriptor degree | [ intensity ] adjective
+//               | adjective intensity_after   ("bent slightly", "twisted a little": Vocabulary::intensityAfter)
 //   degree      = [ "is" ] ( number_phrase | "at least" number | "at most" number )
 //   threshold   = [ "with" "score" ] "at least" number
 // Words are case-insensitive; nouns, adjectives, intensities, directions and distance words come
@@ -184,8 +185,11 @@ class NounPhraseReader {
 };
 
 // The words of a part described by words ("a slightly bent cylinder", "a long, very twisted
-// box"): [ article ] { [ intensity ] adjective [ "," | "and" ] } noun. The pointers point into
-// `vocabulary`. Measures may follow the noun ("a pole about 10 long"). Errors as
+// box"): [ article ] adjectives noun { measure } [ [ "," ] adjectives ] [ "with" edge ], adjectives
+// = { [ intensity ] adjective [ intensity after it ] [ "," | "and" ] }: adjectives after the noun
+// and an intensity after its adjective as a query reads them ("a cylinder, slightly bent", "a box
+// twisted a little"). The pointers point into `vocabulary`. Measures may follow the noun ("a pole
+// about 10 long"). Errors as
 // parseLinguisticQuery (path "text"). query/document/part_from_words.h turns it into parameters.
 struct AdjectiveUse {
   const Adjective* adjective;

@@ -107,8 +107,10 @@ class Printer {
       const auto matches = [&](const FuzzyNumber& set) { return (a.lowPole ? mirroredDegrees(set) : set) == c.set; };
       std::vector<std::string> intensities;
       if (v_.plainSet(a) == c.set) intensities.push_back("");
-      for (const std::string& intensity : v_.intensityWords())
-        if (matches(*v_.intensity(intensity))) intensities.push_back(intensity + " ");
+      // The terms before their synonyms: "bent a lot" reads back as very bent, not highly bent.
+      for (const std::vector<std::string>* words : {&v_.intensityOrder(), &v_.intensityWords()})
+        for (const std::string& intensity : *words)
+          if (matches(*v_.intensity(intensity))) intensities.push_back(intensity + " ");
       for (const std::string& intensity : intensities) {
         const std::string words = intensity + word;
         if (!ofSection) {

@@ -156,6 +156,14 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
       v.intensitySynonyms_[it.key()] = target;
     }
   }
+  if (in.contains("after")) {
+    for (auto it = requireObject(in["after"], "intensities.after").begin(); it != in["after"].end(); ++it) {
+      const std::string p = joinPath("intensities.after", it.key());
+      const std::string& target = requireString(it.value(), p);
+      if (!v.intensities_.count(target)) throw Error(errc::kInvalidDocument, "no intensity term '" + target + "'", p);
+      v.intensitiesAfter_[it.key()] = target;
+    }
+  }
 
   const auto& adjectives = section(doc, "adjectives");
   for (auto it = adjectives.begin(); it != adjectives.end(); ++it) {
@@ -390,6 +398,11 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
   }
 
   v.intensityWords_ = sortedKeys(v.intensities_, v.intensitySynonyms_);
+  // Not among the known words: "little" is WordNet's route to small, "bit" a typo of big, until a
+  // phrase of them follows an adjective, where the parser reads it whole.
+  v.intensityAfterWords_ = v.intensityWords_;
+  for (const auto& [phrase, term] : v.intensitiesAfter_) v.intensityAfterWords_.push_back(phrase);
+  std::sort(v.intensityAfterWords_.begin(), v.intensityAfterWords_.end());
   v.adjectiveWords_ = keysOf(v.adjectives_);
   v.nounWords_ = sortedKeys(v.nouns_, v.plurals_);
   v.directionWords_ = keysOf(v.directions_);
@@ -476,6 +489,11 @@ const FuzzyNumber* Vocabulary::intensity(const std::string& word) const {
   auto syn = intensitySynonyms_.find(word);
   auto it = intensities_.find(syn == intensitySynonyms_.end() ? word : syn->second);
   return it == intensities_.end() ? nullptr : &it->second;
+}
+
+const FuzzyNumber* Vocabulary::intensityAfter(const std::string& words) const {
+  auto it = intensitiesAfter_.find(words);
+  return it != intensitiesAfter_.end() ? intensity(it->second) : intensity(words);
 }
 
 const Adjective* Vocabulary::adjective(const std::string& word) const {

@@ -109,6 +109,9 @@ class Vocabulary {
 
   // Lookups by (lower-case) word; null when unknown. Synonyms and plurals resolve.
   const FuzzyNumber* intensity(const std::string& word) const;
+  // An intensity after its adjective ("bent slightly", "twisted a little"): an intensity word or a
+  // phrase of intensities.after, which is read only there.
+  const FuzzyNumber* intensityAfter(const std::string& words) const;
   const Adjective* adjective(const std::string& word) const;
   const Noun* noun(const std::string& word) const;               // singular or plural
   const Direction* direction(const std::string& word) const;     // a direction word or phrase
@@ -135,6 +138,8 @@ class Vocabulary {
   // Every word and multi-word phrase of each kind, sorted (for messages, tests and the parser);
   // listed once, when the vocabulary is loaded.
   const std::vector<std::string>& intensityWords() const { return intensityWords_; }
+  // The intensity words and the phrases of intensities.after: what may follow an adjective.
+  const std::vector<std::string>& intensityAfterWords() const { return intensityAfterWords_; }
   const std::vector<std::string>& adjectiveWords() const { return adjectiveWords_; }
   const std::vector<std::string>& nounWords() const { return nounWords_; }  // singular and plural
   const std::vector<std::string>& directionWords() const { return directionWords_; }
@@ -197,6 +202,7 @@ class Vocabulary {
   std::vector<std::string> intensityOrder_;
   std::map<std::string, FuzzyNumber> intensities_;
   std::map<std::string, std::string> intensitySynonyms_;
+  std::map<std::string, std::string> intensitiesAfter_;  // intensities.after: phrase -> term
   std::map<std::string, Adjective> adjectives_;
   std::map<std::string, Noun> nouns_;              // singular
   std::map<std::string, std::string> plurals_;     // plural -> singular
@@ -215,6 +221,7 @@ class Vocabulary {
   std::set<std::string> edgesBeforeNouns_;
   std::vector<std::string> sharpEdgeWords_;
   FuzzyNumber sharpEdgeSet_;
+  std::vector<std::string> intensityAfterWords_;
   std::vector<std::string> intensityWords_, adjectiveWords_, nounWords_, directionWords_, distanceWords_;
   std::set<std::string> words_;
 };

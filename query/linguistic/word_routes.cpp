@@ -317,6 +317,15 @@ std::optional<WordRoute> routeWord(const std::string& word, const std::string& n
   return WordRoute{word, best.became, best.why, best.via, best.discount};
 }
 
+std::optional<WordRoute> routeStativeVerb(const std::string& word, const Vocabulary& vocabulary, const WordNet& wordnet) {
+  const Participles participles = participleAdjectives(vocabulary, wordnet);
+  for (const std::string& verb : wordnet.baseForms(word, Pos::kVerb))
+    for (const auto& [base, adjective] : participles)
+      if (base == verb && adjective != word)
+        return WordRoute{word, "is " + adjective, "stative verb", word + " -> " + verb + " -> " + adjective, 1.0};
+  return std::nullopt;
+}
+
 std::vector<TokenRoute> routeTokens(const std::vector<query_tokens::Token>& tokens,
                                     const std::function<bool(size_t)>& unknown, const Vocabulary& vocabulary,
                                     const WordNet* wordnet, const std::function<bool(const std::string&)>& known) {
@@ -324,6 +333,12 @@ std::vector<TokenRoute> routeTokens(const std::vector<query_tokens::Token>& toke
   if (!wordnet) return out;
   for (size_t i = 0; i < tokens.size(); ++i) {
     if (!unknown(i)) continue;
+    // Right after "that" or "which" a shape verb says what the part is: "a rod that tapers".
+    if (i > 0 && (tokens[i - 1].text == "that" || tokens[i - 1].text == "which"))
+      if (std::optional<WordRoute> r = routeStativeVerb(tokens[i].text, vocabulary, *wordnet)) {
+        out.push_back({i, std::move(*r)});
+        continue;
+      }
     const std::string next = i + 1 < tokens.size() ? tokens[i + 1].text : "";
     std::optional<WordRoute> r = routeWord(tokens[i].text, next, vocabulary, wordnet, known);
     if (r) out.push_back({i, std::move(*r)});

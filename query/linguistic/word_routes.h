@@ -10,6 +10,10 @@
 //   cutting verb 1.0   a verb of making a hole (bore, cut, carve, punch, ...) -> "drilled"
 //   support verb 1.0   a verb of resting (rest, sit, lie, stand, ...) -> left out before a relation
 //                      word ("a cone resting on a box" reads "a cone on a box")
+//   stative verb 1.0   right after "that" or "which" (routeTokens), a form of a verb whose
+//                      participle is a known adjective -> "is" and that adjective ("a rod that
+//                      tapers": a rod that is tapered; "boxes which twist"); elsewhere a verb's
+//                      present forms say what a part does, not what it is ("a spinning top")
 //   synonym      0.95  a word of the same synset ("enormous" and "tremendous"); for a verb's past
 //                      participle, the participle of a synonym of the verb that is a known
 //                      adjective ("flexed" -> flex = bend -> bent, "crushed" -> squashed)
@@ -43,7 +47,7 @@ namespace fsdb {
 struct WordRoute {
   std::string word;     // as typed (lower case)
   std::string became;   // the known word it reads as; "" when it is left out (a support verb)
-  std::string why;      // the kind: "lemma", "joining verb", "cutting verb", "support verb",
+  std::string why;      // the kind: "lemma", "joining verb", "cutting verb", "support verb", "stative verb",
                         // "WordNet synonym", "WordNet similar-to", "WordNet hypernym",
                         // "WordNet also-see", "WordNet antonym", "derivation"
   std::string via;      // the WordNet words on the way ("skinny -> thin -> ..."), for `routed`
@@ -63,6 +67,9 @@ struct TokenRoute {
   size_t token = 0;
   WordRoute route;
 };
+// The stative verb route of `word`, which routeTokens takes right after "that" or "which" (see above).
+std::optional<WordRoute> routeStativeVerb(const std::string& word, const Vocabulary& vocabulary, const WordNet& wordnet);
+
 std::vector<TokenRoute> routeTokens(const std::vector<query_tokens::Token>& tokens,
                                     const std::function<bool(size_t)>& unknown, const Vocabulary& vocabulary,
                                     const WordNet* wordnet, const std::function<bool(const std::string&)>& known);

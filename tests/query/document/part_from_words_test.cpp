@@ -262,6 +262,23 @@ TEST(PartFromWords, AdjectivesActInATableOrder) {
   EXPECT_EQ(a.a3, b.a3);
 }
 
+// Adjectives after the noun, an intensity after its adjective and a comma before them read as a
+// query reads them: the same part as the words in the usual order.
+TEST(PartFromWords, AdjectivesAfterTheNounAndIntensitiesAfterTheirAdjective) {
+  const auto same = [](const std::string& a, const std::string& b) {
+    EXPECT_EQ(partToJson(make(a)), partToJson(make(b))) << a << " / " << b;
+  };
+  same("a rod bent slightly", "a slightly bent rod");
+  same("a cylinder slightly bent", "a slightly bent cylinder");
+  same("a box, very twisted", "a very twisted box");
+  same("a box twisted a little", "a slightly twisted box");
+  same("a bar bent a lot and twisted slightly", "a very bent, slightly twisted bar");
+  same("a pole about 10 long, slightly bent", "a slightly bent pole about 10 long");
+  same("a cylinder, slightly bent, with sharp edges", "a slightly bent cylinder with sharp edges");
+  // The words still end with the description: a second noun is no part.
+  EXPECT_NE(errorOf("a cylinder slightly bent box").find("the end of the description"), std::string::npos);
+}
+
 // The exponent words invert their descriptor exactly (ε = d for roundness, 1 − d for squariness)
 // down to the smallest exponent, 0.01, where the image gathers what lies below it (the extension
 // principle: its membership is the highest of those degrees).

@@ -235,6 +235,29 @@ TEST(LinguisticQuery, ConditionsAfterTheNoun) {
   EXPECT_EQ(parse("a sphere small above a box").root.kind, Kind::kRelation);
 }
 
+// An intensity may follow its adjective, as people say it: a word of the intensities or a phrase
+// of intensities.after ("a little", "a lot"), read only there. One that opens the next adjective
+// is that adjective's. A condition may follow the noun after a comma.
+TEST(LinguisticQuery, IntensitiesAfterTheirAdjective) {
+  EXPECT_EQ(meaning("a rod bent slightly"), meaning("a rod that is slightly bent"));
+  EXPECT_EQ(meaning("a rod which is bent slightly"), meaning("a rod that is slightly bent"));
+  EXPECT_EQ(meaning("a box twisted a little"), meaning("a box that is slightly twisted"));
+  EXPECT_EQ(meaning("a box that is twisted a bit"), meaning("a box that is slightly twisted"));
+  EXPECT_EQ(meaning("a bar bent a lot"), meaning("a bar that is very bent"));
+  EXPECT_EQ(meaning("a cylinder twisted very much"), meaning("a cylinder that is very twisted"));
+  EXPECT_EQ(meaning("a rod bent slightly and twisted extremely"), meaning("a rod that is slightly bent and extremely twisted"));
+  EXPECT_EQ(meaning("a rod bent slightly tapered"), meaning("a rod that is bent and slightly tapered"));
+  EXPECT_EQ(meaning("a box, very twisted"), meaning("a box that is very twisted"));
+  EXPECT_EQ(meaning("a cylinder, slightly bent, with a round cross-section"),
+            meaning("a cylinder slightly bent with a round cross-section"));
+  // The words as said are what explain shows.
+  EXPECT_EQ(leavesOf(parse("a rod bent a lot").root).back().text, "bent a lot");
+  // Before an adjective "a little" is no intensity: the phrases are read after one only.
+  EXPECT_THROW(parse("a little twisted box"), Error);
+  // A list of operands keeps its commas.
+  EXPECT_EQ(parse("a sphere, small above a box").root.kind, Kind::kRelation);
+}
+
 TEST(LinguisticQuery, MeasureErrorsSayWhatIsWrong) {
   EXPECT_NE(errorOf("a box 4 x 2").find("the three sides of a box"), std::string::npos) << errorOf("a box 4 x 2");
   EXPECT_NE(errorOf("a rod -2 long").find("a measure is a positive extent"), std::string::npos);

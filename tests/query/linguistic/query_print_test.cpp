@@ -20,6 +20,9 @@ TEST(QueryPrint, CanonicalPhrasing) {
   EXPECT_EQ(printed("slightly bent"), "find a shape that is slightly bent");
   EXPECT_EQ(printed("show me something twisted, please"), "find a shape that is twisted");
   EXPECT_EQ(printed("I need a very round part"), "find a part that is very round");
+  // An intensity said after its adjective reads back before it, as its term, not a synonym.
+  EXPECT_EQ(printed("a box twisted a lot"), "find a box that is very twisted");
+  EXPECT_EQ(printed("a rod bent slightly"), "find a rod that is slightly bent");
   EXPECT_EQ(printed("retrieve the tapered cylinders"), "find a tapered cylinder");
   EXPECT_EQ(printed("a very bent cylinder"), "find a very bent cylinder");
   EXPECT_EQ(printed("a cylinder which is bent and twisted"), "find a cylinder that is bent and twisted");

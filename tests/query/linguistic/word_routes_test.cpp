@@ -158,6 +158,30 @@ TEST(WordRoutes, RouteTokensRoutesTheMarkedTokensWithTheirNextWords) {
   EXPECT_TRUE(routeTokens(tokens, [](size_t) { return true; }, Vocabulary::builtin(), nullptr, knownLinguistic).empty());
 }
 
+// Right after "that" or "which", a form of a verb whose participle is a known adjective says what
+// the part is: "a rod that tapers" is a rod that is tapered. Elsewhere, and for verbs without
+// such a participle ("spins"), no such route.
+TEST(WordRoutes, AShapeVerbAfterThatSaysWhatThePartIs) {
+  const Vocabulary& v = Vocabulary::builtin();
+  const WordNet* wn = systemWordNet();
+  ASSERT_NE(wn, nullptr);
+  const auto stative = routeStativeVerb("tapers", v, *wn);
+  ASSERT_TRUE(stative.has_value());
+  EXPECT_EQ(stative->became, "is tapered");
+  EXPECT_EQ(stative->why, "stative verb");
+  EXPECT_EQ(stative->via, "tapers -> taper -> tapered");
+  EXPECT_DOUBLE_EQ(stative->discount, 1.0);
+  EXPECT_EQ(routeStativeVerb("twist", v, *wn)->became, "is twisted");
+  EXPECT_EQ(routeStativeVerb("bends", v, *wn)->became, "is bent");
+  EXPECT_FALSE(routeStativeVerb("spins", v, *wn).has_value());
+  const auto routed = routeUnknownWords("rods which taper and a box that twists", v, wn, knownLinguistic);
+  ASSERT_TRUE(routed.has_value());
+  EXPECT_EQ(routed->text, "rods which is tapered and a box that is twisted");
+  // Not after another word: "tapers" there is no stative verb.
+  const auto elsewhere = routeUnknownWords("a rod tapers", v, wn, knownLinguistic);
+  EXPECT_TRUE(!elsewhere || elsewhere->routes.empty() || elsewhere->routes[0].why != "stative verb");
+}
+
 // The text with each routed word replaced, a left-out word with the blank before it.
 TEST(WordRoutes, RouteUnknownWordsRewritesTheText) {
   const auto routed = routeUnknownWords("a skinny ball sitting on a box", Vocabulary::builtin(), systemWordNet(),
