@@ -310,8 +310,12 @@ class Parser {
     }
     if (isSquareNoun(*d.noun))
       for (auto use = d.adjectives.begin(); use != d.adjectives.end(); ++use)
-        if (!use->intensity && v_.saysEdgesBeforeNouns(use->adjective->word)) {
-          if (!d.edges) d.edges = EdgeUse{v_.edgeSet(), use->text};  // the words after the noun win
+        if (v_.saysEdgesBeforeNouns(use->adjective->word)) {
+          // With an intensity, its set as the edges' degree, as a query reads it (negation()).
+          const FuzzyNumber degree = !use->intensity           ? v_.edgeSet()
+                                     : use->adjective->lowPole ? mirroredDegrees(*use->intensity)
+                                                               : *use->intensity;
+          if (!d.edges) d.edges = EdgeUse{degree, use->text};  // the words after the noun win
           d.adjectives.erase(use);
           break;
         }
@@ -457,7 +461,7 @@ class Parser {
   }
 
   bool startsCondition() const {
-    if (at("not") || at("(") || startsArticleSection() || startsMeasure()) return true;
+    if (at("not") || at("(") || startsArticleSection() || startsMeasure() || taperPhraseLength(nullptr) > 0) return true;
     if (pos_ < tokens_.size() && descriptorIndex(tokens_[pos_].text) >= 0) return true;
     std::string m;
     return matchPhrase(intensityWords_, &m) > 0 || matchPhrase(adjectiveWords_, &m) > 0;
@@ -673,7 +677,7 @@ class Parser {
       ++pos_;
     if (acceptWord("that") || acceptWord("which")) {
       const bool verb = acceptAny({"is", "are", "has", "have"});
-      if (verb && startsCondition()) {
+      if ((verb || taperPhraseLength(nullptr) > 0) && startsCondition()) {  // "that gets thinner at the top"
         clause.push_back(condition());
       } else if (prefix_) {
         // Read as a prefix (a CSG operand), a relative clause that states no condition ends the
@@ -816,6 +820,7 @@ class Parser {
       return inner;
     }
     if (startsMeasure()) return measure();
+    if (std::optional<QueryCondition> taper = taperPhrase()) return std::move(*taper);
     if (pos_ < tokens_.size() && descriptorIndex(tokens_[pos_].text) >= 0) {
       const std::string descriptor = tokens_[pos_++].text;
       FuzzyNumber set = degree();
@@ -856,13 +861,18 @@ class Parser {
       pos_ += k;
     }
     if (!intensity && sectionWord.empty()) intensity = intensityAfterAdjective();
+    // Where a taper goes says no more than the taper: "tapering to a point", "narrowing towards
+    // the top".
+    if (descriptor == "taperness" && sectionWord.empty()) pos_ += endTailLength(0);
     const FuzzyNumber set =
         intensity ? (adjective.lowPole ? mirroredDegrees(*intensity) : *intensity) : v_.plainSet(adjective);
     QueryCondition c = descriptorCondition(descriptor, set, span(start, pos_));
     c.plainRamp = !intensity && !adjective.set;
     c.outline = adjective.outline && sectionWord.empty();
-    // A plain edges.before_nouns adjective may say the edges of a square noun ("a rounded box").
-    if (!intensity && sectionWord.empty() && v_.saysEdgesBeforeNouns(word)) c.edgeDegree = v_.edgeSet();
+    // An edges.before_nouns adjective may say the edges of a square noun ("a rounded box").
+    // With an intensity too: "a slightly rounded box" is a box with slightly rounded edges, as
+    // "with slightly rounded edges" says (edgePhrase), not a slightly round shape that no box is.
+    if (sectionWord.empty() && v_.saysEdgesBeforeNouns(word)) c.edgeDegree = intensity ? set : v_.edgeSet();
     return c;
   }
 
@@ -897,6 +907,81 @@ class Parser {
         }
       }
     }
+  }
+
+  // A width compared along the part is its taper: "gets thinner towards the top", "narrower at
+  // one end", "much wider at the base", "slightly smaller to the tip".
+  //   taper_phrase = [ taper_verb ] [ intensity_after ] comparative end_tail
+  //   end_tail     = ( "to" | "towards" | "toward" | "at" ) [ "the" | "its" | "one" | "each" | "a" | "an" ] end_word
+  // The comparatives are those of the vocabulary's adjectives of width, thickness and size
+  // (thinner, narrower, wider, bigger, ...); the condition is taperness with the set of the
+  // vocabulary's "tapered" (plain), or of the intensity before the comparative ("much": very).
+  // Returns the phrase's length in tokens from the current one (0: none) and its intensity.
+  size_t taperPhraseLength(const FuzzyNumber** intensity) const {
+    if (!v_.adjective("tapered")) return 0;
+    static const std::vector<std::string> verbs = {"get",    "gets",  "getting", "become", "becomes",
+                                                   "becoming", "grow", "grows",   "growing"};
+    size_t k = 0;
+    const auto word = [&](size_t i) { return pos_ + i < tokens_.size() ? tokens_[pos_ + i].text : std::string(); };
+    if (std::find(verbs.begin(), verbs.end(), word(k)) != verbs.end()) ++k;
+    std::string said;
+    const FuzzyNumber* graded = nullptr;
+    if (const size_t n = matchPhrase(v_.intensityAfterWords(), &said, k)) {
+      graded = v_.intensityAfter(said);
+      k += n;
+    }
+    if (!isWidthComparative(word(k))) return 0;
+    const size_t tail = endTailLength(k + 1);
+    if (tail == 0) return 0;
+    if (intensity) *intensity = graded;
+    return k + 1 + tail;
+  }
+
+  std::optional<QueryCondition> taperPhrase() {
+    const FuzzyNumber* intensity = nullptr;
+    const size_t n = taperPhraseLength(&intensity);
+    if (n == 0) return std::nullopt;
+    const size_t start = pos_;
+    pos_ += n;
+    QueryCondition c = descriptorCondition("taperness", intensity ? *intensity : v_.plainSet(*v_.adjective("tapered")),
+                                           span(start, pos_));
+    c.plainRamp = !intensity && !v_.adjective("tapered")->set;
+    return c;
+  }
+
+  // end_tail from k tokens ahead of the current one: its length, or 0.
+  size_t endTailLength(size_t k) const {
+    static const std::vector<std::string> to = {"to", "towards", "toward", "at"};
+    static const std::vector<std::string> which = {"the", "its", "one", "each", "a", "an"};
+    static const std::vector<std::string> ends = {"top", "bottom", "end", "ends", "tip", "base", "point"};
+    const auto word = [&](size_t i) { return pos_ + i < tokens_.size() ? tokens_[pos_ + i].text : std::string(); };
+    if (std::find(to.begin(), to.end(), word(k)) == to.end()) return 0;
+    size_t n = 1;
+    if (std::find(which.begin(), which.end(), word(k + n)) != which.end()) ++n;
+    if (std::find(ends.begin(), ends.end(), word(k + n)) == ends.end()) return 0;
+    // Not a direction phrase: "tapered to the top of a box", "spiky to the top right of a sphere".
+    std::string direction;
+    const size_t d = matchPhrase(directionWords_, &direction, k + n);
+    if (d > 1 || word(k + n + std::max<size_t>(d, 1)) == "of") return 0;
+    return n + 1;
+  }
+
+  // Whether `w` is the comparative of an adjective of width, thickness or size ("thinner",
+  // "wider", "bigger", "tinier"), by the regular rules: -er, -r after e, -ier for y, and a doubled
+  // last consonant after one vowel (thin, slim, big).
+  bool isWidthComparative(const std::string& w) const {
+    if (w.size() < 4 || w.compare(w.size() - 1, 1, "r") != 0) return false;
+    for (const std::string& a : adjectiveWords_) {
+      const std::string& d = v_.adjective(a)->descriptor;
+      if (d != "width" && d != "thickness" && d != "size") continue;
+      const char last = a.back();
+      if (w == a + "er" || (last == 'e' && w == a + "r") || (last == 'y' && w == a.substr(0, a.size() - 1) + "ier"))
+        return true;
+      const bool vowelBefore = a.size() >= 2 && std::string("aeiou").find(a[a.size() - 2]) != std::string::npos &&
+                               (a.size() < 3 || std::string("aeiou").find(a[a.size() - 3]) == std::string::npos);
+      if (vowelBefore && std::string("aeiouwxy").find(last) == std::string::npos && w == a + last + "er") return true;
+    }
+    return false;
   }
 
   // An intensity after its adjective, as people put it ("bent slightly", "twisted a little", "bent

@@ -98,6 +98,7 @@ class Printer {
     // which its noun phrase turns the same way again).
     if (c.edges != QueryCondition::Edges::kNone) return text.rfind("a ", 0) == 0 ? text.substr(2) : text.rfind("an ", 0) == 0 ? text.substr(3) : text;
     std::string first;
+    bool firstIsMiddle = false;
     for (const std::string& word : v_.adjectiveWords()) {
       const Adjective& a = *v_.adjective(word);
       const std::string* section = v_.sectionDescriptor(a.descriptor);
@@ -115,7 +116,12 @@ class Printer {
         const std::string words = intensity + word;
         if (!ofSection) {
           if (words == text) return words;
-          if (first.empty()) first = words;
+          // A pole's adjective before a middle's ("very tapered" read back as "very narrowing",
+          // not "very blunt", whose own set is a middle of taperness).
+          if (first.empty() || (firstIsMiddle && !a.set)) {
+            first = words;
+            firstIsMiddle = a.set.has_value();
+          }
           continue;
         }
         for (const std::string& section : v_.sectionWords())

@@ -312,8 +312,11 @@ TEST(PartFromWords, EdgeWordsRoundTheEdges) {
   EXPECT_NE(make("a rounded ball").eps1, with.eps1);  // a ball has no edges: plain "rounded"
   EXPECT_EQ(make("a cube with very soft corners").eps1, make("a very soft cube").eps1);
   EXPECT_EQ(make("a cube with a rounded edge").eps1, make("a rounded cube").eps1);
+  // With an intensity the same: "a somewhat softened box" (it scored 0.43 when the intensity made
+  // it a degree of the whole shape's roundness, against the box's squareness).
+  EXPECT_EQ(make("a somewhat softened box").eps1, make("a box with somewhat softened edges").eps1);
   for (const char* words : {"a box with rounded edges", "a rounded box", "a cube with softened corners",
-                            "a filleted cube"}) {
+                            "a filleted cube", "a somewhat softened box", "a very rounded cube"}) {
     const LinguisticQuery q = parseLinguisticQuery(std::string("find ") + words, v());
     EXPECT_NEAR(scoreDescriptors(q, describePart(make(words))).score, 1.0, 1e-9) << words;
   }

@@ -123,9 +123,13 @@ TEST(LinguisticQuery, EdgeWordsSayTheShapeOfTheEdges) {
   EXPECT_EQ(edgeLeaf("a box with very sharp edges").set, mirroredDegrees(*v.intensity("very")));
   for (const QueryCondition& leaf : leavesOf(parse("a box with sharp edges").root))
     EXPECT_NE(leaf.descriptor, "taperness");
-  // Not edges: an adjective of a ball (no squareness to round), under "not", or with an intensity
-  // before the noun (a degree of roundness of its own).
-  for (const char* text : {"a rounded ball", "a box that is not rounded", "a very rounded box", "rounded"})
+  // With an intensity too: "a very rounded box" is a box with very rounded edges (it was a degree
+  // of roundness of its own, which the box's squareness vetoed: its own part scored 0.43).
+  EXPECT_EQ(edgeLeaf("a very rounded box").edges, Edges::kBeforeNoun);
+  EXPECT_EQ(edgeLeaf("a very rounded box").set, edgeLeaf("a box with very rounded edges").set);
+  EXPECT_EQ(edgeLeaf("a slightly softened cube").set, edgeLeaf("a cube with slightly softened edges").set);
+  // Not edges: an adjective of a ball (no squareness to round), under "not", or without a noun.
+  for (const char* text : {"a rounded ball", "a very rounded ball", "a box that is not rounded", "rounded"})
     for (const QueryCondition& leaf : leavesOf(parse(text).root)) EXPECT_EQ(leaf.edges, Edges::kNone) << text;
   EXPECT_EQ(leavesOf(parse("a rounded ball").root).front().set, v.plainSet(*v.adjective("rounded")));
   // An edge word after an adjective of another descriptor is no edge phrase.
@@ -256,6 +260,25 @@ TEST(LinguisticQuery, IntensitiesAfterTheirAdjective) {
   EXPECT_THROW(parse("a little twisted box"), Error);
   // A list of operands keeps its commas.
   EXPECT_EQ(parse("a sphere, small above a box").root.kind, Kind::kRelation);
+}
+
+// A width compared along the part is its taper, as "tapered" says it; an intensity before the
+// comparative grades it. Where a taper goes adds nothing ("tapering to a point").
+TEST(LinguisticQuery, AWidthComparedAlongThePartIsItsTaper) {
+  EXPECT_EQ(meaning("a cylinder that gets thinner towards the top"), meaning("a cylinder that is tapered"));
+  EXPECT_EQ(meaning("cylinder which get thinner to top"), meaning("a cylinder that is tapered"));
+  EXPECT_EQ(meaning("a column getting narrower toward the top"), meaning("a column that is tapered"));
+  EXPECT_EQ(meaning("a post wider at the base"), meaning("a post that is tapered"));
+  EXPECT_EQ(meaning("a rod much thinner at one end"), meaning("a rod that is very tapered"));
+  EXPECT_EQ(meaning("a rod that becomes slightly smaller to its tip"), meaning("a rod that is slightly tapered"));
+  EXPECT_EQ(meaning("a cone tapering to a point"), meaning("a cone tapering"));
+  EXPECT_EQ(meaning("a pillar narrowing towards the top"), meaning("a pillar narrowing"));
+  // A direction phrase is no end of a taper: these stay relations.
+  EXPECT_EQ(parse("a cylinder that is tapered to the top of a box").root.kind, Kind::kRelation);
+  EXPECT_EQ(parse("a sphere to the top of a cube").root.kind, Kind::kRelation);
+  EXPECT_EQ(parse("a box that is spiky to the top right of a sphere").root.kind, Kind::kRelation);
+  // A comparative without an end is not read so.
+  EXPECT_THROW(parse("a cylinder that gets thinner"), Error);
 }
 
 TEST(LinguisticQuery, MeasureErrorsSayWhatIsWrong) {
