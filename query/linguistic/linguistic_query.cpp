@@ -299,9 +299,9 @@ class Parser {
       const bool comma = acceptWord(",");
       if (adjectiveUses(&d) == 0 && comma) pos_ = beforeComma;
     }
-    // [ "with" edge ] ("a cube with rounded edges", "a cylinder with sharp edges"); or a plain
-    // edges.before_nouns adjective of a noun with a squariness condition says its edges ("a
-    // rounded box"), as in a query.
+    // [ "with" edge ] ("a cube with rounded edges", "a cylinder with sharp edges"); or an
+    // edges.before_nouns adjective of a noun with a squariness condition, plain or with an
+    // intensity, says its edges ("a rounded box", "a somewhat softened box"), as in a query.
     if (at("with")) {
       const size_t start = ++pos_;
       std::optional<FuzzyNumber> degree = edgePhrase();

@@ -217,7 +217,8 @@ struct PartDescription {
   const Noun* noun = nullptr;
   std::vector<AdjectiveUse> adjectives;
   std::vector<MeasureUse> measures;  // after the noun: [ "," ] measure { ( "," | "and" ) measure }
-  std::optional<EdgeUse> edges;      // after the measures: "with" edge phrase; or a plain before_nouns adjective
+  // After the measures: a "with" edge phrase; or a before_nouns adjective, plain or with an intensity.
+  std::optional<EdgeUse> edges;
   // The noun has a condition on its proportions (elongation, flatness, slenderness) that the
   // words keep, as the same words read as a query keep it: one extent asked for scales the part.
   bool keepsProportions = false;
