@@ -37,40 +37,47 @@ FuzzyNumber affine(const FuzzyNumber& d, double slope, double offset) {
   return add(scale(d, slope), FuzzyNumber::crisp(offset));
 }
 
-// The degrees a part made from words takes for a descriptor whose degree 1 (or 0) is a size or a
-// ratio no part has (d = L / (1 + L) is 1 only for L infinite): the set restricted to
-// [kLeastDegree, 1 − kLeastDegree], cut, not squeezed. The extreme intensities' cores run to the
-// end of the degrees (extremely: trap(0.8, 0.95, 1, 1), area 0.125); cut at 0.99 a part keeps
-// 0.115 of it, so its words find it at 0.92 (the similarity is the share kept). A cut at 0.95, as
-// the clamps before it did, kept 0.075: 0.6. The price is an extreme part's size: an extremely
-// large part is up to 99 units across, an extremely long one up to 100 times its width.
-constexpr double kLeastDegree = 0.01;
-FuzzyNumber realizableDegrees(const FuzzyNumber& d) {
+// The degrees a part made from words takes for a descriptor whose end is a size or a ratio no
+// part has (d = L / (1 + L) is 1 only for L infinite): the set read over the descriptor's domain
+// (degreeDomain, descriptors.h: within kLeastDegree of such an end), cut, not squeezed
+// (withinDegrees, as the search reads the words), and a set whose core lies wholly beyond an end
+// that end, crisp. The search reads the words' sets over the same domain, so the part satisfies
+// its words fully. The price is an extreme part's size: an extremely large part is up to 99 units
+// across, an extremely long one up to 100 times its width.
+FuzzyNumber realizableDegrees(const std::string& descriptor, const FuzzyNumber& d) {
+  const Interval domain = degreeDomain(descriptorIndex(descriptor));
   const Interval core = d.core();
   // A set wholly beyond an end (a vocabulary's create set crisp at 1) is that end, crisp.
-  if (core.lo >= 1.0 - kLeastDegree) return FuzzyNumber::crisp(1.0 - kLeastDegree);
-  if (core.hi <= kLeastDegree) return FuzzyNumber::crisp(kLeastDegree);
-  return restrictedToDegrees(d, kLeastDegree, 1.0 - kLeastDegree);
+  if (core.lo >= domain.hi) return FuzzyNumber::crisp(domain.hi);
+  if (core.hi <= domain.lo) return FuzzyNumber::crisp(domain.lo);
+  return withinDegrees(d, domain.lo, domain.hi);
 }
 
 // f increasing: the set's image under f, its pieces sampled at the levels describePart reads
-// (every 1/kDescriptorLevels) as well as at its breakpoints. f is not affine (a size is
-// d / (1 − d)), so the image of a piece is a curve; a number through the images of the
-// breakpoints alone has alpha-cuts that, read back through f's inverse, bow away from the set
-// (an extremely large part read 0.66 for its own words). Through these points the part's
-// descriptor is the set at every level it is read at.
+// (every 1/kDescriptorLevels, and the part's breakpoint levels, which are the set's own: every
+// piece is sampled at the levels of every breakpoint) as well as at its breakpoints. f is not
+// affine (a size is d / (1 − d)), so the image of a piece is a curve; a number through the images
+// of the breakpoints alone has alpha-cuts that, read back through f's inverse, bow away from the
+// set (an extremely large part read 0.66 for its own words). Through these points the part's
+// descriptor is the set at every level it is read at. (Without the breakpoint levels, "a slightly
+// big ball", whose set is cut at size 0.01 where its membership is 0.1, read 0.999996 for its own
+// words: the falling side was read at level 0.1 between two samples.)
 template <typename F>
 FuzzyNumber mapIncreasing(const FuzzyNumber& d, F f) {
   const std::vector<Breakpoint>& in = d.breakpoints();
+  std::vector<double> levels;
+  for (int k = 1; k < kDescriptorLevels; ++k) levels.push_back(static_cast<double>(k) / kDescriptorLevels);
+  for (const Breakpoint& b : in) levels.push_back(b.mu);
+  std::sort(levels.begin(), levels.end());
+  levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
   std::vector<Breakpoint> points;
   for (size_t i = 0; i < in.size(); ++i) {
     if (i > 0 && in[i - 1].mu != in[i].mu && in[i - 1].x != in[i].x) {
       const Breakpoint& a = in[i - 1];
       const Breakpoint& b = in[i];
       const bool rising = b.mu > a.mu;
-      for (int k = 1; k < kDescriptorLevels; ++k) {
-        const int level = rising ? k : kDescriptorLevels - k;
-        const double mu = static_cast<double>(level) / kDescriptorLevels;
+      for (size_t k = 0; k < levels.size(); ++k) {
+        const double mu = rising ? levels[k] : levels[levels.size() - 1 - k];
         if (mu <= std::min(a.mu, b.mu) || mu >= std::max(a.mu, b.mu)) continue;
         points.push_back({a.x + (mu - a.mu) / (b.mu - a.mu) * (b.x - a.x), mu});
       }
@@ -86,8 +93,9 @@ FuzzyNumber mapIncreasing(const FuzzyNumber& d, F f) {
 // pinchness (ε − 2)/2), so a part made "moderately round" is exactly as round as the words say,
 // except where ε would fall under the smallest exponent a part is made with, 0.01 (a box's
 // edges, not a cube's corners of zero radius). Squariness 1 is ε = 0, which no part has, as a
-// size's degree 1 is an infinite size (realizableDegrees): at 0.01 an extremely square part keeps
-// 0.115 of its words' set (area 0.125) and they find it at 0.92; at 0.05, as before, 0.6. A
+// size's degree 1 is an infinite size (realizableDegrees): squariness is read up to 0.99 and
+// roundness from 0.01 (degreeDomain), the degrees ε >= 0.01 gives, so an extremely square part
+// satisfies its words fully. A
 // whole-shape one sets ε1 and ε2; a section one sets ε2 alone, after the whole shape ("a round
 // box with a square section"), by the rule of its whole-shape descriptor
 // (Vocabulary::wholeShapeDescriptor).
@@ -97,7 +105,7 @@ struct ExponentRule {
 };
 constexpr ExponentRule kExponentRules[] = {
     {"squariness", -1.0, 1.0}, {"roundness", 1.0, 0.0}, {"bevelness", 1.0, 1.0}, {"pinchness", 2.0, 2.0}};
-constexpr double kMinExponent = 0.01;
+constexpr double kMinExponent = kLeastDegree;  // squariness <= 0.99, roundness >= 0.01
 
 // The rule of an exponent-shape descriptor, or nullptr for any other descriptor.
 const ExponentRule* exponentRule(const std::string& descriptor) {
@@ -165,7 +173,7 @@ void realize(const std::string& descriptor, const FuzzyNumber& d, const Vocabula
   }
   if (descriptor == "elongation") {
     part->a2 = FuzzyNumber::crisp(1.0);
-    part->a3 = mapIncreasing(realizableDegrees(d), [](double x) { return x < 0.5 ? 2.0 * x : 1.0 / (2.0 - 2.0 * x); });
+    part->a3 = mapIncreasing(realizableDegrees(descriptor, d), [](double x) { return x < 0.5 ? 2.0 * x : 1.0 / (2.0 - 2.0 * x); });
   }
   // The proportions act on B and C (A = a1 is the unit they are measured in): flatness on the
   // shorter, slenderness on the longer (C on a tie, so "a flat sphere" is squashed along its z axis
@@ -182,10 +190,10 @@ void realize(const std::string& descriptor, const FuzzyNumber& d, const Vocabula
     const double longerCore = cLonger ? now.a3 : now.a2, shorterCore = cLonger ? now.a2 : now.a3;
     if (descriptor == "flatness") {
       const double middle = std::min(1.0, longerCore);  // of 1, the longer, and the shorter set below it
-      *shorter = mapIncreasing(negate(realizableDegrees(d)), [middle](double x) { return middle * (1.0 + x); });
+      *shorter = mapIncreasing(negate(realizableDegrees(descriptor, d)), [middle](double x) { return middle * (1.0 + x); });
     } else {
       const double middle = std::max(1.0, shorterCore);
-      *longer = mapIncreasing(realizableDegrees(d), [middle](double x) { return middle / (1.0 - x); });
+      *longer = mapIncreasing(realizableDegrees(descriptor, d), [middle](double x) { return middle / (1.0 - x); });
     }
   }
   const SuperquadricParams core = part->coreRepresentative().params;  // the size so far
@@ -194,7 +202,7 @@ void realize(const std::string& descriptor, const FuzzyNumber& d, const Vocabula
   if (descriptor == "twistness") part->t = scale(d, kPi);
   if (descriptor == "size") {
     const double l = core.a1 * std::cbrt(core.a2 * core.a3);
-    part->scale = mapIncreasing(realizableDegrees(d), [l](double x) { return x / (1.0 - x) / l; });
+    part->scale = mapIncreasing(realizableDegrees(descriptor, d), [l](double x) { return x / (1.0 - x) / l; });
   }
 }
 
@@ -381,7 +389,7 @@ FuzzyPart partFromWords(const std::string& text, const Vocabulary& vocabulary) {
                              std::find(kOrder.begin(), kOrder.end(), "bendness");
     if (deformation) setExtents();
     if (isExtent(descriptor)) {
-      extents[descriptor] = mapIncreasing(realizableDegrees(d), [](double x) { return x / (1.0 - x); });
+      extents[descriptor] = mapIncreasing(realizableDegrees(descriptor, d), [](double x) { return x / (1.0 - x); });
       continue;
     }
     realize(descriptor, d, vocabulary, &part);

@@ -48,7 +48,7 @@ std::array<double, 3> sortedProportions(const Values& v) {
   return s;
 }
 
-double degree(int index, const Values& v) {
+double unclampedDegree(int index, const Values& v) {
   switch (index) {
     case 0: return (sq(v[kEps1]) + sq(v[kEps2])) / 2.0;
     case 1: return (ro(v[kEps1]) + ro(v[kEps2])) / 2.0;
@@ -72,6 +72,13 @@ double degree(int index, const Values& v) {
     case 16: return 1.0 - sortedProportions(v)[1] / sortedProportions(v)[2];  // slenderness: 1 − s2/s3
     default: return 0.0;
   }
+}
+
+// The degree clamped into the descriptor's domain (monotone, so the extremes over a box stay on
+// the candidates descriptorRange tries).
+double degree(int index, const Values& v) {
+  const Interval domain = degreeDomain(index);
+  return std::min(domain.hi, std::max(domain.lo, unclampedDegree(index, v)));
 }
 
 // The parameters each descriptor reads and the values where it stops being monotone in them.
@@ -126,6 +133,19 @@ int descriptorIndex(const std::string& name) {
   const auto& names = descriptorNames();
   auto it = std::find(names.begin(), names.end(), name);
   return it == names.end() ? -1 : static_cast<int>(it - names.begin());
+}
+
+Interval degreeDomain(int index) {
+  switch (index) {
+    case 0: case 9: case 15: case 16:  // squariness, section-squariness, flatness, slenderness
+      return {0.0, 1.0 - kLeastDegree};
+    case 1: case 10:  // roundness, section-roundness: ε = d on the side parts are made from
+      return {kLeastDegree, 1.0};
+    case 7: case 8: case 11: case 12: case 13: case 14:  // size, elongation, the four measures
+      return {kLeastDegree, 1.0 - kLeastDegree};
+    default:
+      return {0.0, 1.0};
+  }
 }
 
 double descriptorDegree(int index, const PlacedSuperquadric& part) { return degree(index, toValues(part)); }

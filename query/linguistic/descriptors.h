@@ -46,6 +46,17 @@
 //                between a plate and a rod: "long" and "flat" are words on these two.
 // Every function is continuous and piecewise monotone in each parameter.
 //
+// Degree domains (degreeDomain): where a descriptor's end is a limit no part reaches (squariness 1
+// is ε = 0, size 1 an infinite part, flatness 1 a sheet of no thickness), parts are made to within
+// kLeastDegree = 0.01 of it (query/document/part_from_words.h), and every degree is read clamped
+// into [0.01, 0.99] at that end: a part with ε = 0.005 reads squariness 0.99, as square as any
+// part is made. The search reads the words' sets over the same domain (withinDegreeDomains,
+// linguistic_query.h), so the part that "a very square box" makes satisfies those words fully
+// (S = 1), as a crisp very square box does, instead of losing the sliver above 0.99 that no part
+// can have. Domains: squariness, section-squariness, flatness, slenderness [0, 0.99]; roundness,
+// section-roundness [0.01, 1] (a part made round to a degree d has ε = d, at least 0.01); size,
+// elongation, length, width, thickness, height [0.01, 0.99]; the others [0, 1].
+//
 // A fuzzy part's descriptor values are fuzzy numbers by the extension principle (Zhang, Pham &
 // Chen, §3.2): the alpha-cut of a value is the image of the parameter box P(α) (FuzzyPart::boxAt).
 // The image is computed exactly at each level: every function above is monotone in each parameter
@@ -96,6 +107,12 @@ double exponentDegree(int index, double e);
 
 // Index of a name in descriptorNames(), or -1.
 int descriptorIndex(const std::string& name);
+
+// How far from an end no part reaches its degrees are made and read (see "Degree domains" above).
+inline constexpr double kLeastDegree = 0.01;
+// The degrees parts have of descriptor `index` (see "Degree domains" above): every degree below is
+// clamped into it. [0, 1] for an index out of range.
+Interval degreeDomain(int index);
 
 struct DescriptorValue {
   std::string descriptor;  // one of descriptorNames()

@@ -1172,6 +1172,23 @@ class Parser {
 
 }  // namespace
 
+namespace {
+void readOverDegreeDomains(QueryCondition* c) {
+  if (c->kind == QueryCondition::Kind::kDescriptor) {
+    const Interval domain = degreeDomain(descriptorIndex(c->descriptor));
+    c->set = withinDegrees(c->set, domain.lo, domain.hi);
+    if (c->asked) *c->asked = withinDegrees(*c->asked, domain.lo, domain.hi);
+  }
+  for (QueryCondition& child : c->children) readOverDegreeDomains(&child);
+}
+}  // namespace
+
+LinguisticQuery withinDegreeDomains(const LinguisticQuery& query) {
+  LinguisticQuery read = query;
+  readOverDegreeDomains(&read.root);
+  return read;
+}
+
 LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary) {
   return Parser(text, vocabulary).parse();
 }

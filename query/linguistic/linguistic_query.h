@@ -127,6 +127,12 @@ struct LinguisticQuery {
 // position and the expected words; unknown words name the closest known ones. Conditions nested
 // deeper than 64 levels (parentheses, "not") are errc::kLimitExceeded, path "text".
 LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& vocabulary);
+// The query with every descriptor condition's set (and `asked`) read over its descriptor's
+// degree domain (descriptors.h: degreeDomain, degree_sets.h: withinDegrees): what the searches
+// score and plan with, since every stored degree is clamped into the same domain. Where a domain
+// is [0, 1] the set is kept as it is (a widened closest-match set reaching below 0 too); the
+// `parsed` answers keep the words' sets.
+LinguisticQuery withinDegreeDomains(const LinguisticQuery& query);
 // Whether the text is a linguistic query: parseLinguisticQuery would not throw. Cheaper on texts
 // that are not (no "did you mean" is looked for), for routing texts between the two searches.
 bool isLinguisticQuery(const std::string& text, const Vocabulary& vocabulary);

@@ -42,7 +42,13 @@ class Search {
  public:
   Search(const CsgQuery& query, const CsgSearchOptions& options)
       : query_(query), options_(options), signature_(csgSignature(query.graph)),
-        limit_(static_cast<size_t>(std::max(1, options.limit))), start_(Clock::now()) {}
+        limit_(static_cast<size_t>(std::max(1, options.limit))), start_(Clock::now()) {
+    // Described leaves score as the linguistic search does: over the descriptors' degree domains
+    // (stored degrees are clamped into them).
+    for (const CsgQueryLeaf& ql : query_.leaves)
+      leafConditions_.push_back(ql.condition ? std::optional<LinguisticQuery>(withinDegreeDomains(*ql.condition))
+                                             : std::nullopt);
+  }
 
   CsgSearchResult run(const Store& store, StoredGraphCache& cache) {
     const std::shared_ptr<const StoreVersions> current = cache.versions(store);
@@ -120,10 +126,12 @@ class Search {
     const auto found = memo_.find(stored.leafParts[size_t(s)]);
     if (found != memo_.end()) return found->second;
     LeafColumn c;
-    for (const CsgQueryLeaf& ql : query_.leaves) {
-      c.leaf.push_back(ql.condition ? scoreDescriptors(*ql.condition, stored.leafDescriptors[size_t(s)]).score
-                                    : partSimilarity(ql.part, sp));
-      c.transform.push_back(ql.condition ? 1.0 : transformSimilarity(ql.part, sp));
+    for (size_t q = 0; q < query_.leaves.size(); ++q) {
+      const CsgQueryLeaf& ql = query_.leaves[q];
+      const std::optional<LinguisticQuery>& condition = leafConditions_[q];
+      c.leaf.push_back(condition ? scoreDescriptors(*condition, stored.leafDescriptors[size_t(s)]).score
+                                 : partSimilarity(ql.part, sp));
+      c.transform.push_back(condition ? 1.0 : transformSimilarity(ql.part, sp));
     }
     return memo_.emplace(stored.leafParts[size_t(s)], std::move(c)).first->second;
   }
@@ -147,6 +155,7 @@ class Search {
   }
 
   const CsgQuery& query_;
+  std::vector<std::optional<LinguisticQuery>> leafConditions_;  // the leaves' conditions, withinDegreeDomains
   const CsgSearchOptions& options_;
   const CsgSignature signature_;
   const size_t limit_;

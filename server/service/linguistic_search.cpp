@@ -485,7 +485,9 @@ LinguisticSearchResult searchLinguistic(const Store& store, const LinguisticQuer
   // Its reads (ten to fifty store calls) see one state of the catalogue, and pay one read
   // transaction and one pool loan instead of one each.
   LinguisticSearchResult result;
-  store.readSnapshot([&] { result = searchInSnapshot(store, query, options); });
+  // Stored degrees are clamped into their descriptors' domains: score the words' sets over them.
+  const LinguisticQuery read = withinDegreeDomains(query);
+  store.readSnapshot([&] { result = searchInSnapshot(store, read, options); });
   return result;
 }
 

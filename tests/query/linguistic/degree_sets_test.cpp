@@ -47,6 +47,36 @@ TEST(DegreeSets, RestrictionToANarrowerRangeCutsAtItsEnds) {
   EXPECT_DOUBLE_EQ(low.membership(0.01), 1.0);
 }
 
+// withinDegrees: a set is cut at an end of a descriptor's domain inside the scale where it
+// reaches beyond it and its core reaches inside; otherwise it is kept.
+TEST(DegreeSets, WithinDegreesCutsAtTheDomainsInnerEnds) {
+  const FuzzyNumber very = FuzzyNumber::trapezoidal(0.55, 0.75, 1.0, 1.0);
+  const FuzzyNumber cut = withinDegrees(very, 0.0, 0.99);
+  EXPECT_EQ(cut, restrictedToDegrees(very, 0.55, 0.99));
+  EXPECT_DOUBLE_EQ(cut.support().hi, 0.99);
+  EXPECT_DOUBLE_EQ(cut.membership(0.99), 1.0);
+  EXPECT_DOUBLE_EQ(cut.core().lo, 0.75);
+  // At the low end: slightly = trap(0, 0.1, 0.25, 0.4) starts at 0.01 with its membership there.
+  const FuzzyNumber slightly = FuzzyNumber::trapezoidal(0.0, 0.1, 0.25, 0.4);
+  const FuzzyNumber low = withinDegrees(slightly, 0.01, 0.99);
+  EXPECT_DOUBLE_EQ(low.support().lo, 0.01);
+  EXPECT_NEAR(low.membership(0.01), 0.1, 1e-12);
+  EXPECT_DOUBLE_EQ(low.support().hi, 0.4);
+  // The whole scale cuts nothing, and a set within the domain is unchanged.
+  EXPECT_EQ(withinDegrees(very, 0.0, 1.0), very);
+  EXPECT_EQ(withinDegrees(slightly, 0.0, 1.0), slightly);
+  EXPECT_EQ(withinDegrees(FuzzyNumber::trapezoidal(0.2, 0.3, 0.4, 0.5), 0.01, 0.99),
+            FuzzyNumber::trapezoidal(0.2, 0.3, 0.4, 0.5));
+  // An end at 0 or 1 keeps what lies beyond it (a closest-match set widened below 0).
+  const FuzzyNumber widened = FuzzyNumber::trapezoidal(-0.3, 0.0, 0.2, 0.5);
+  EXPECT_EQ(withinDegrees(widened, 0.0, 0.99), widened);
+  // A core wholly beyond the end (the plain ramp of "square", 1 only at 1) is kept: cut, it
+  // would have no core.
+  const FuzzyNumber ramp = FuzzyNumber::triangular(0.0, 1.0, 1.0);
+  EXPECT_EQ(withinDegrees(ramp, 0.0, 0.99), ramp);
+  EXPECT_EQ(withinDegrees(FuzzyNumber::crisp(1.0), 0.0, 0.99), FuzzyNumber::crisp(1.0));
+}
+
 TEST(DegreeSets, MirroringIsOneMinusTheDegree) {
   const FuzzyNumber set = FuzzyNumber::trapezoidal(0.0, 0.1, 0.25, 0.4);
   const FuzzyNumber m = mirroredDegrees(set);

@@ -44,11 +44,53 @@ TEST(Descriptors, ShapeWordsFromTheExponents) {
   EXPECT_DOUBLE_EQ(degreeOf("squariness", cube), 0.9);
   EXPECT_DOUBLE_EQ(degreeOf("roundness", cube), 0.1);
   EXPECT_DOUBLE_EQ(degreeOf("bevelness", octahedron), 1.0);
-  EXPECT_DOUBLE_EQ(degreeOf("roundness", octahedron), 0.0);
+  // 0 by the function, read from 0.01 (roundness's degree domain: parts are made round to a degree
+  // d with ε = d >= 0.01).
+  EXPECT_DOUBLE_EQ(degreeOf("roundness", octahedron), 0.01);
   EXPECT_DOUBLE_EQ(degreeOf("pinchness", star), 1.0);
   EXPECT_DOUBLE_EQ(degreeOf("pinchness", octahedron), 0.0);
   EXPECT_DOUBLE_EQ(degreeOf("squariness", cylinder), 0.45);
   EXPECT_DOUBLE_EQ(degreeOf("roundness", cylinder), 0.55);
+}
+
+// Degree domains: within kLeastDegree of an end no part reaches, every degree reads as the end of
+// the domain; inside, as the function gives it. Fuzzy values are clamped cut by cut.
+TEST(Descriptors, DegreesAreClampedIntoTheirDomains) {
+  const auto domain = [](const char* name) { return degreeDomain(descriptorIndex(name)); };
+  EXPECT_EQ(domain("squariness").lo, 0.0);
+  EXPECT_EQ(domain("squariness").hi, 1.0 - kLeastDegree);
+  EXPECT_EQ(domain("section-squariness").hi, 1.0 - kLeastDegree);
+  EXPECT_EQ(domain("roundness").lo, kLeastDegree);
+  EXPECT_EQ(domain("roundness").hi, 1.0);
+  for (const char* name : {"size", "elongation", "length", "width", "thickness", "height"}) {
+    EXPECT_EQ(domain(name).lo, kLeastDegree) << name;
+    EXPECT_EQ(domain(name).hi, 1.0 - kLeastDegree) << name;
+  }
+  for (const char* name : {"flatness", "slenderness"}) {
+    EXPECT_EQ(domain(name).lo, 0.0) << name;
+    EXPECT_EQ(domain(name).hi, 1.0 - kLeastDegree) << name;
+  }
+  for (const char* name : {"bevelness", "pinchness", "bendness", "taperness", "twistness"}) {
+    EXPECT_EQ(domain(name).lo, 0.0) << name;
+    EXPECT_EQ(domain(name).hi, 1.0) << name;
+  }
+  // ε = 0.005 is squariness 0.995 by the function: as square as any part is made.
+  EXPECT_DOUBLE_EQ(degreeOf("squariness", crispPart(0.005, 0.005)), 0.99);
+  EXPECT_DOUBLE_EQ(degreeOf("squariness", crispPart(0.02, 0.02)), 0.98);
+  EXPECT_DOUBLE_EQ(degreeOf("roundness", crispPart(0.005, 0.005)), 0.01);
+  EXPECT_DOUBLE_EQ(degreeOf("roundness", crispPart(0.5, 0.5)), 0.5);
+  // A part 0.002 across (size 0.001 / 1.001) and one 2000 across.
+  EXPECT_DOUBLE_EQ(degreeOf("size", crispPart(1, 1, 0.001)), 0.01);
+  EXPECT_DOUBLE_EQ(degreeOf("length", crispPart(1, 1, 1000)), 0.99);
+  EXPECT_DOUBLE_EQ(degreeOf("bendness", crispPart(1, 1)), 0.0);  // a [0, 1] domain: 0 stays 0
+  // A fuzzy exponent reaching past ε = 0.01: its squariness cuts end at 0.99.
+  FuzzyPart part;
+  part.eps1 = part.eps2 = FuzzyNumber::triangular(0.002, 0.005, 0.05);
+  part.validate();
+  const FuzzyNumber square = describePart(part)[size_t(descriptorIndex("squariness"))].value;
+  EXPECT_DOUBLE_EQ(square.support().lo, 0.95);
+  EXPECT_DOUBLE_EQ(square.support().hi, 0.99);
+  EXPECT_DOUBLE_EQ(square.core().lo, 0.99);
 }
 
 TEST(Descriptors, DeformationsSizeAndElongation) {
@@ -126,7 +168,7 @@ TEST(Descriptors, SectionDescriptorsReadTheTraverseSectionAlone) {
   EXPECT_DOUBLE_EQ(degreeOf("section-roundness", sphere), 1.0);
   // The profile (eps1) does not move them.
   EXPECT_DOUBLE_EQ(degreeOf("section-squariness", squareBarrel), degreeOf("section-squariness", box));
-  EXPECT_DOUBLE_EQ(degreeOf("section-roundness", octahedron), 0.0);
+  EXPECT_DOUBLE_EQ(degreeOf("section-roundness", octahedron), 0.01);  // its degree domain's end
   // Fuzzy eps2 across the peak of ro at 1: the exact image, core 1.
   FuzzyPart part;
   part.eps2 = FuzzyNumber::triangular(0.5, 1.0, 1.5);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "geometry/core/error.h"
@@ -614,6 +615,57 @@ TEST(LinguisticQuery, ParseErrorsGivePositionAndExpectedWords) {
   EXPECT_NE(e.find("ends too early"), std::string::npos) << e;
   e = errorOf("find a sphere about above a box");
   EXPECT_NE(e.find("expected a number"), std::string::npos) << e;
+}
+
+// The searches read every descriptor condition over its descriptor's degree domain
+// (withinDegreeDomains): under "and", "or" and "not" alike, `asked` too; a [0, 1] domain and a set
+// whose core lies beyond the end are kept.
+TEST(LinguisticQuery, WithinDegreeDomainsReadsEveryConditionOverItsDomain) {
+  const LinguisticQuery q = parse("find shapes that are (very square or not extremely large) and slightly bent");
+  LinguisticQuery asked = q;
+  const LinguisticQuery read = withinDegreeDomains(q);
+  int seen = 0;
+  const std::function<void(const QueryCondition&, const QueryCondition&)> walk =
+      [&](const QueryCondition& before, const QueryCondition& after) {
+        ASSERT_EQ(before.kind, after.kind);
+        ASSERT_EQ(before.children.size(), after.children.size());
+        if (before.kind == Kind::kDescriptor) {
+          ++seen;
+          const Interval d = degreeDomain(descriptorIndex(before.descriptor));
+          EXPECT_EQ(after.set, withinDegrees(before.set, d.lo, d.hi)) << before.text;
+          EXPECT_GE(after.set.support().lo, before.descriptor == "bendness" ? 0.0 : d.lo) << before.text;
+          EXPECT_LE(after.set.support().hi, d.hi) << before.text;
+          EXPECT_EQ(after.text, before.text);
+        }
+        for (size_t i = 0; i < before.children.size(); ++i) walk(before.children[i], after.children[i]);
+      };
+  walk(q.root, read.root);
+  EXPECT_EQ(seen, 3);
+  // very square: trap(0.55, 0.75, 1, 1) cut at 0.99; slightly bent as it is.
+  const std::function<const QueryCondition*(const QueryCondition&, const std::string&)> find =
+      [&](const QueryCondition& c, const std::string& descriptor) -> const QueryCondition* {
+    if (c.kind == Kind::kDescriptor && c.descriptor == descriptor) return &c;
+    for (const QueryCondition& child : c.children)
+      if (const QueryCondition* f = find(child, descriptor)) return f;
+    return nullptr;
+  };
+  ASSERT_NE(find(read.root, "squariness"), nullptr);
+  EXPECT_DOUBLE_EQ(find(read.root, "squariness")->set.support().hi, 0.99);
+  EXPECT_DOUBLE_EQ(find(read.root, "squariness")->set.membership(0.99), 1.0);
+  EXPECT_EQ(find(read.root, "bendness")->set, find(q.root, "bendness")->set);
+  // `asked` (a closest-match query keeps the words' set there) is read over the domain too.
+  std::function<void(QueryCondition*)> setAsked = [&](QueryCondition* c) {
+    if (c->kind == Kind::kDescriptor) c->asked = c->set;
+    for (QueryCondition& child : c->children) setAsked(&child);
+  };
+  setAsked(&asked.root);
+  const LinguisticQuery askedRead = withinDegreeDomains(asked);
+  ASSERT_TRUE(find(askedRead.root, "squariness")->asked.has_value());
+  EXPECT_DOUBLE_EQ(find(askedRead.root, "squariness")->asked->support().hi, 0.99);
+  // The plain ramp of "squarish" (1 only at 1) stays the ramp.
+  const LinguisticQuery ramp = parse("find parts with a squarish cross-section");
+  EXPECT_EQ(find(withinDegreeDomains(ramp).root, "section-squariness")->set,
+            find(ramp.root, "section-squariness")->set);
 }
 
 // Deep nesting is a limit, not a stack overflow.

@@ -58,6 +58,10 @@ TEST(Vocabulary, DescriptorsDocumentTheCode) {
     EXPECT_EQ(docs[i]["name"], descriptorNames()[i]);
     EXPECT_FALSE(docs[i]["function"].get<std::string>().empty());
     EXPECT_FALSE(docs[i]["create"].get<std::string>().empty());
+    // The domain it documents is the code's (descriptors.h: degreeDomain).
+    ASSERT_TRUE(docs[i].contains("domain")) << descriptorNames()[i];
+    EXPECT_EQ(docs[i]["domain"][0].get<double>(), degreeDomain(static_cast<int>(i)).lo) << descriptorNames()[i];
+    EXPECT_EQ(docs[i]["domain"][1].get<double>(), degreeDomain(static_cast<int>(i)).hi) << descriptorNames()[i];
   }
 }
 

@@ -371,6 +371,11 @@ TEST(LinguisticIndexProperty, LevelScanWalksAFlatPieceInIdOrder) {
 // core (all scoring 1), comes first; the walk of the crisp rows still stops early (their
 // coverage is 0, the made part's 1), and the answer is the full scan's. Without a degree said
 // ("a cylinder") every coverage is 0 and ties go by id as before.
+// Stores a part document made from `part` under `name`; its id.
+int64_t storePart(Store& store, const FuzzyPart& part, const std::string& name) {
+  return store.create(prepareDocument(partDocument(part, name, true), "part", store, DocumentLimits{}, "")).id;
+}
+
 TEST(LinguisticIndexProperty, TiesGoToThePartDescribedAsVaguelyAsTheWords) {
   Catalogue catalogue(11);
   Store& store = catalogue.store();
@@ -386,10 +391,9 @@ TEST(LinguisticIndexProperty, TiesGoToThePartDescribedAsVaguelyAsTheWords) {
   crisp.kv = FuzzyNumber::crisp(0.5 * (asked.core().lo + asked.core().hi) * 3.14159265358979323846 /
                                 (2 * made.a1.core().lo * made.a3.core().lo));
   for (int i = 0; i < 300; ++i)
-    store.create(prepareDocument(partDocument(crisp, "bent" + std::to_string(i), true), "part", store, DocumentLimits{}, ""));
+    storePart(store, crisp, "bent" + std::to_string(i));
   catalogue.build(200, 0);
-  const int64_t madeId =
-      store.create(prepareDocument(partDocument(made, "made", true), "part", store, DocumentLimits{}, "")).id;
+  const int64_t madeId = storePart(store, made, "made");
   LinguisticSearchOptions options;
   options.limit = 10;
   options.kinds = {"part"};
@@ -414,6 +418,45 @@ TEST(LinguisticIndexProperty, TiesGoToThePartDescribedAsVaguelyAsTheWords) {
   EXPECT_NE(byId.hits[0].id, madeId);
   EXPECT_EQ(byId.hits[0].score.coverage, 0.0);
   expectSameAnswers(store, plain, 0.0, 10, "cylinder", &pruned, 8);
+}
+
+// A part made to a pole of the scale ("extremely square": squariness up to 1, which only ε = 0
+// has) is cut at its descriptor's degree domain (0.99), and the search reads the words over the
+// same domain: it scores 1, as the crisp boxes in the words' core do, and comes first by coverage.
+// A crisp box beyond the domain (ε = 0.004, squariness 0.996) reads 0.99 and still scores 1. The
+// level scan gives what the full scan gives.
+TEST(LinguisticIndexProperty, APartMadeToAPoleOfTheScaleIsFoundFirstByItsWords) {
+  Catalogue catalogue(12);
+  Store& store = catalogue.store();
+  const Vocabulary& v = Vocabulary::builtin();
+  const std::string words = "an extremely square box";
+  const FuzzyPart made = partFromWords(words, v);
+  const LinguisticQuery query = parseLinguisticQuery(words, v);
+  FuzzyPart crisp = made;
+  crisp.eps1 = crisp.eps2 = FuzzyNumber::crisp(0.03);  // squariness 0.97, in the core
+  for (int i = 0; i < 100; ++i)
+    storePart(store, crisp, "square" + std::to_string(i));
+  crisp.eps1 = crisp.eps2 = FuzzyNumber::crisp(0.004);
+  const int64_t beyondId = storePart(store, crisp, "beyond");
+  catalogue.build(100, 0);
+  const int64_t madeId = storePart(store, made, "made");
+  LinguisticSearchOptions options;
+  options.limit = 200;
+  options.kinds = {"part"};
+  const LinguisticSearchResult found = searchLinguistic(store, query, options);
+  ASSERT_GE(found.hits.size(), 102u);
+  EXPECT_EQ(found.hits[0].id, madeId);
+  EXPECT_EQ(found.hits[0].score.score, 1.0);
+  EXPECT_EQ(found.hits[0].score.coverage, 1.0);
+  bool beyond = false;
+  for (size_t i = 1; i < 102; ++i) {
+    EXPECT_EQ(found.hits[i].score.score, 1.0);
+    beyond = beyond || found.hits[i].id == beyondId;
+  }
+  EXPECT_TRUE(beyond);
+  size_t pruned = 0;
+  expectSameAnswers(store, query, 0.0, 10, words, &pruned, 8);
+  expectSameAnswers(store, query, 0.0, 1, words, &pruned, 8);
 }
 
 TEST(LinguisticIndexProperty, RefreshedRowsAreTheRowsOfTheCurrentDocuments) {
