@@ -2,6 +2,7 @@
 #include "query/linguistic/edges.h"
 
 #include "geometry/fuzzy/fuzzy_arithmetic.h"
+#include "query/linguistic/degree_sets.h"
 #include "query/linguistic/descriptors.h"
 
 namespace fsdb {
@@ -31,7 +32,12 @@ FuzzyNumber edgeDescriptorSet(const FuzzyNumber& d, const Noun* noun, const Voca
   if (!edges.eps1) others += exponentDegree(index, nounExponent(noun, "eps1"));
   if (!edges.eps2) others += exponentDegree(index, nounExponent(noun, "eps2"));
   if (k == 2) return d;  // exactly the words' set (no rounding through the arithmetic)
-  return add(scale(d, k / 2.0), FuzzyNumber::crisp(others / 2.0));
+  // One edge exponent: its degree is read over the descriptor's domain (descriptors.h:
+  // degreeDomain; a part made from the words has ε >= 0.01 there) before the mean moves it off
+  // the domain's end, as the search reads a whole set over it (withinDegreeDomains). Without it
+  // "a slightly smooth cylinder" found its own part at 0.998, below every crisp cylinder.
+  const Interval domain = degreeDomain(index);
+  return add(scale(withinDegrees(d, domain.lo, domain.hi), k / 2.0), FuzzyNumber::crisp(others / 2.0));
 }
 
 }  // namespace fsdb

@@ -13,7 +13,8 @@
 // or an intensity's. The part's own descriptor is then the mean over eps1 and eps2 (descriptors.h):
 //   D = (k·d + Σ_other f(ε_o)) / 2,
 // with k the number of edge exponents and f the descriptor's function of one exponent
-// (exponentDegree). That image is what a query asks of the part (edgeDescriptorSet), and a part
+// (exponentDegree), d read over the descriptor's degree domain (descriptors.h) where k = 1. That
+// image is what a query asks of the part (edgeDescriptorSet), and a part
 // made from the words sets its edge exponents to the inverse of d (part_from_words.h), so the
 // words find it.
 #include "geometry/fuzzy/fuzzy_number.h"

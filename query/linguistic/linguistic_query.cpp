@@ -149,9 +149,12 @@ bool contradicts(const FuzzyNumber& a, const FuzzyNumber& b) { return heightOfIn
 //    or that states a degree of its own (an intensity, a number, a measure: "a moderately tapered
 //    pyramid" is as tapered as it says, which a part made from those words is);
 //  * for the shape of the exponents, a condition on any of them when the noun keeps another
-//    condition to be itself ("a round plate" stays flat, "a square disc" too; a box or a sphere is
-//    its exponents' shape, so "a round box" and "a very round box" keep the box's and find the
-//    roundest boxes);
+//    condition to be itself ("a round plate" stays flat, "a square disc" too), or one with a
+//    degree of its own on a noun that is not square ("a very boxy ellipsoid" is as boxy as it
+//    says, which a part made from those words is). A square noun is its squareness, so "a round
+//    box" and "a very round box" keep the box's and find the roundest boxes (the paper's "a very
+//    round box in a cylinder" is a rounded box); so does a sphere for a plain word ("a boxy
+//    ball" finds the boxiest balls);
 //  * for the shape of the exponents, words on the part's edges ("a box with rounded edges", "a
 //    rounded box": QueryCondition::edges), which say that shape themselves;
 //  * for the noun's proportions (elongation, flatness, slenderness), words on two or more extents
@@ -167,11 +170,13 @@ bool overriddenByWords(const NounCondition& condition, const Noun& noun, const s
   const std::string& descriptor = condition.descriptor;
   bool keepsAnother = false;
   for (const NounCondition& c : noun.conditions) keepsAnother = keepsAnother || !isExponentShape(c.descriptor);
+  const bool square = isSquareNoun(noun);
   std::set<std::string> extents;
   for (const QueryCondition* c : said) {
     if (c->descriptor == descriptor && (graded(*c) || contradicts(c->set, condition.set))) return true;
     if (isExponentShape(descriptor) && c->edges != QueryCondition::Edges::kNone) return true;  // "a box with rounded edges" is no longer square
-    if (isExponentShape(descriptor) && isExponentShape(c->descriptor) && keepsAnother) return true;
+    if (isExponentShape(descriptor) && isExponentShape(c->descriptor) && (keepsAnother || (graded(*c) && !square)))
+      return true;
     if (descriptor == "elongation" && (c->descriptor == "flatness" || c->descriptor == "slenderness")) return true;
     if (c->descriptor == "length" || c->descriptor == "width" || c->descriptor == "thickness" || c->descriptor == "height") {
       extents.insert(c->descriptor);

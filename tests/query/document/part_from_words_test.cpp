@@ -392,8 +392,12 @@ TEST(PartFromWords, ExtremeIntensitiesAreFoundByTheirWords) {
     EXPECT_EQ(read.coverage, 1.0) << words;
   }
   // The other end: "slightly" starts at 0, where no size is.
+  // A cylinder's edges are its eps1 alone: their degree is read over the domain before the mean
+  // with the round section (edges.h). A graded exponent word replaces a round noun's shape.
   for (const char* words : {"a slightly big ball", "a slightly tall wafer", "a slightly long rod",
-                            "a very short rod", "a slightly smooth box", "a very cubical barrel"}) {
+                            "a very short rod", "a slightly smooth box", "a very cubical barrel",
+                            "a slightly smooth cylinder", "a slightly filleted disk", "a very boxy ellipsoid",
+                            "a slightly cubic spheroid", "a somewhat smoothed double pyramid"}) {
     const QueryScore read =
         scoreDescriptors(withinDegreeDomains(parseLinguisticQuery(words, v())), describePart(make(words)));
     EXPECT_EQ(read.score, 1.0) << words;

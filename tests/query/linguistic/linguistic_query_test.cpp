@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -190,8 +191,20 @@ TEST(LinguisticQuery, NounsAreDefaultsTheWordsOverride) {
   EXPECT_EQ(leafDescriptors("round"), std::vector<std::string>{"roundness"});
   EXPECT_EQ(leafDescriptors("a filleted plate"), std::vector<std::string>{"roundness"});
   EXPECT_EQ(leafDescriptors("a plate with a round cross-section"), std::vector<std::string>{"section-roundness"});
-  // A box is its exponents' shape: "a round box" keeps it.
+  // A box is its exponents' shape: "a round box" keeps it, and so does "a very round box" (a
+  // square noun keeps its squareness: "the part of a very round box in a cylinder" is the paper's
+  // rounded box).
   EXPECT_EQ(descriptorsOfNoun("a round box"), std::vector<std::string>{"squariness"});
+  EXPECT_EQ(descriptorsOfNoun("a very round box"), std::vector<std::string>{"squariness"});
+  // Any other noun's exponent shape is a default that an exponent-shape word with a degree of its
+  // own replaces: "a very boxy ellipsoid" is very boxy (a part made from those words is), while
+  // "a boxy ellipsoid" keeps the ellipsoid's roundness.
+  const std::vector<std::string> ellipsoid = descriptorsOfNoun("a big ellipsoid");
+  ASSERT_NE(std::find(ellipsoid.begin(), ellipsoid.end(), "roundness"), ellipsoid.end());
+  const std::vector<std::string> veryBoxy = descriptorsOfNoun("a very boxy ellipsoid");
+  EXPECT_EQ(std::find(veryBoxy.begin(), veryBoxy.end(), "roundness"), veryBoxy.end());
+  const std::vector<std::string> boxy = descriptorsOfNoun("a boxy ellipsoid");
+  EXPECT_NE(std::find(boxy.begin(), boxy.end(), "roundness"), boxy.end());
   // The same descriptor: replaced only where the words contradict the noun.
   EXPECT_EQ(descriptorsOfNoun("a slightly tapered cone"), (std::vector<std::string>{"squariness", "roundness"}));
   EXPECT_EQ(descriptorsOfNoun("a tapered cylinder"), (std::vector<std::string>{"squariness", "roundness", "taperness"}));
