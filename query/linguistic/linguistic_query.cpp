@@ -972,21 +972,10 @@ class Parser {
   }
 
   // Whether `w` is the comparative of an adjective of width, thickness or size ("thinner",
-  // "wider", "bigger", "tinier"), by the regular rules: -er, -r after e, -ier for y, and a doubled
-  // last consonant after one vowel (thin, slim, big).
+  // "wider", "bigger", "tinier": Vocabulary::widthComparatives, listed when it is loaded).
   bool isWidthComparative(const std::string& w) const {
-    if (w.size() < 4 || w.compare(w.size() - 1, 1, "r") != 0) return false;
-    for (const std::string& a : adjectiveWords_) {
-      const std::string& d = v_.adjective(a)->descriptor;
-      if (d != "width" && d != "thickness" && d != "size") continue;
-      const char last = a.back();
-      if (w == a + "er" || (last == 'e' && w == a + "r") || (last == 'y' && w == a.substr(0, a.size() - 1) + "ier"))
-        return true;
-      const bool vowelBefore = a.size() >= 2 && std::string("aeiou").find(a[a.size() - 2]) != std::string::npos &&
-                               (a.size() < 3 || std::string("aeiou").find(a[a.size() - 3]) == std::string::npos);
-      if (vowelBefore && std::string("aeiouwxy").find(last) == std::string::npos && w == a + last + "er") return true;
-    }
-    return false;
+    const std::vector<std::string>& c = v_.widthComparatives();
+    return std::binary_search(c.begin(), c.end(), w);
   }
 
   // An intensity after its adjective, as people put it ("bent slightly", "twisted a little", "bent

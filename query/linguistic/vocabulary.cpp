@@ -404,6 +404,21 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
   for (const auto& [phrase, term] : v.intensitiesAfter_) v.intensityAfterWords_.push_back(phrase);
   std::sort(v.intensityAfterWords_.begin(), v.intensityAfterWords_.end());
   v.adjectiveWords_ = keysOf(v.adjectives_);
+  for (const std::string& a : v.adjectiveWords_) {
+    const std::string& d = v.adjectives_.at(a).descriptor;
+    if ((d != "width" && d != "thickness" && d != "size") || a.size() < 2) continue;
+    const char last = a.back();
+    v.widthComparatives_.push_back(last == 'e' ? a + "r" : last == 'y' ? a.substr(0, a.size() - 1) + "ier" : a + "er");
+    // One vowel before a last consonant doubles it: thin -> thinner, big -> bigger (not "wider",
+    // "broader", "lower").
+    const std::string vowels = "aeiou";
+    const bool oneVowel = vowels.find(a[a.size() - 2]) != std::string::npos &&
+                          (a.size() < 3 || vowels.find(a[a.size() - 3]) == std::string::npos);
+    if (oneVowel && std::string("aeiouwxy").find(last) == std::string::npos) v.widthComparatives_.push_back(a + last + "er");
+  }
+  std::sort(v.widthComparatives_.begin(), v.widthComparatives_.end());
+  v.widthComparatives_.erase(std::unique(v.widthComparatives_.begin(), v.widthComparatives_.end()),
+                             v.widthComparatives_.end());
   v.nounWords_ = sortedKeys(v.nouns_, v.plurals_);
   v.directionWords_ = keysOf(v.directions_);
   v.distanceWords_ = keysOf(v.distances_);

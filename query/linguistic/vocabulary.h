@@ -141,6 +141,11 @@ class Vocabulary {
   // The intensity words and the phrases of intensities.after: what may follow an adjective.
   const std::vector<std::string>& intensityAfterWords() const { return intensityAfterWords_; }
   const std::vector<std::string>& adjectiveWords() const { return adjectiveWords_; }
+  // The comparatives of the adjectives of width, thickness and size ("thinner", "wider",
+  // "bigger", "tinier"), by the regular rules: -er, -r after e, -ier for y, and a doubled last
+  // consonant after one vowel (thin, slim, big). Sorted; what the parser's taper phrase compares
+  // along a part ("gets thinner towards the top").
+  const std::vector<std::string>& widthComparatives() const { return widthComparatives_; }
   const std::vector<std::string>& nounWords() const { return nounWords_; }  // singular and plural
   const std::vector<std::string>& directionWords() const { return directionWords_; }
   const std::vector<std::string>& distanceWords() const { return distanceWords_; }
@@ -223,6 +228,7 @@ class Vocabulary {
   FuzzyNumber sharpEdgeSet_;
   std::vector<std::string> intensityAfterWords_;
   std::vector<std::string> intensityWords_, adjectiveWords_, nounWords_, directionWords_, distanceWords_;
+  std::vector<std::string> widthComparatives_;
   std::set<std::string> words_;
 };
 

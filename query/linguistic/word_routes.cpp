@@ -271,10 +271,33 @@ Candidate abbreviated(const Vocabulary& v, const WordNet& wn, const std::string&
   return {};
 }
 
-}  // namespace
+// participleAdjectives, listed on first use and then kept: routeTokens routes every unknown word
+// of a text with one list (a 10,000-word text of unknown words listed it once per word).
+class ParticipleList {
+ public:
+  ParticipleList(const Vocabulary& v, const WordNet& wn) : v_(v), wn_(wn) {}
+  const Participles& get() {
+    if (!list_) list_ = participleAdjectives(v_, wn_);
+    return *list_;
+  }
 
-std::optional<WordRoute> routeWord(const std::string& word, const std::string& next, const Vocabulary& vocabulary,
-                                   const WordNet* wordnet, const std::function<bool(const std::string&)>& known) {
+ private:
+  const Vocabulary& v_;
+  const WordNet& wn_;
+  std::optional<Participles> list_;
+};
+
+std::optional<WordRoute> stativeVerb(const std::string& word, const WordNet& wordnet, ParticipleList& participles) {
+  for (const std::string& verb : wordnet.baseForms(word, Pos::kVerb))
+    for (const auto& [base, adjective] : participles.get())
+      if (base == verb && adjective != word)
+        return WordRoute{word, "is " + adjective, "stative verb", word + " -> " + verb + " -> " + adjective, 1.0};
+  return std::nullopt;
+}
+
+std::optional<WordRoute> routeWordWith(const std::string& word, const std::string& next, const Vocabulary& vocabulary,
+                                       const WordNet* wordnet, const std::function<bool(const std::string&)>& known,
+                                       ParticipleList& participleList) {
   if (!wordnet || word.size() < 2 || !std::all_of(word.begin(), word.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '-' || c == '\''; }))
     return std::nullopt;
   const Pos order[] = {Pos::kAdjective, Pos::kNoun, Pos::kAdverb, Pos::kVerb};
@@ -298,7 +321,7 @@ std::optional<WordRoute> routeWord(const std::string& word, const std::string& n
       if (best.became != before.became || best.via != before.via) best.noun = pos == Pos::kNoun && base != word;
     }
   // After WordNet's own links, which win a tie ("curvy" is similar to curved in WordNet too).
-  const Participles participles = participleAdjectives(vocabulary, *wordnet);
+  const Participles& participles = participleList.get();
   {
     Candidate before = best;
     consider(&best, derivedAdjective(vocabulary, *wordnet, word, participles));
@@ -317,13 +340,18 @@ std::optional<WordRoute> routeWord(const std::string& word, const std::string& n
   return WordRoute{word, best.became, best.why, best.via, best.discount};
 }
 
+}  // namespace
+
+std::optional<WordRoute> routeWord(const std::string& word, const std::string& next, const Vocabulary& vocabulary,
+                                   const WordNet* wordnet, const std::function<bool(const std::string&)>& known) {
+  if (!wordnet) return std::nullopt;
+  ParticipleList participles(vocabulary, *wordnet);
+  return routeWordWith(word, next, vocabulary, wordnet, known, participles);
+}
+
 std::optional<WordRoute> routeStativeVerb(const std::string& word, const Vocabulary& vocabulary, const WordNet& wordnet) {
-  const Participles participles = participleAdjectives(vocabulary, wordnet);
-  for (const std::string& verb : wordnet.baseForms(word, Pos::kVerb))
-    for (const auto& [base, adjective] : participles)
-      if (base == verb && adjective != word)
-        return WordRoute{word, "is " + adjective, "stative verb", word + " -> " + verb + " -> " + adjective, 1.0};
-  return std::nullopt;
+  ParticipleList participles(vocabulary, wordnet);
+  return stativeVerb(word, wordnet, participles);
 }
 
 std::vector<TokenRoute> routeTokens(const std::vector<query_tokens::Token>& tokens,
@@ -331,16 +359,17 @@ std::vector<TokenRoute> routeTokens(const std::vector<query_tokens::Token>& toke
                                     const WordNet* wordnet, const std::function<bool(const std::string&)>& known) {
   std::vector<TokenRoute> out;
   if (!wordnet) return out;
+  ParticipleList participles(vocabulary, *wordnet);
   for (size_t i = 0; i < tokens.size(); ++i) {
     if (!unknown(i)) continue;
     // Right after "that" or "which" a shape verb says what the part is: "a rod that tapers".
     if (i > 0 && (tokens[i - 1].text == "that" || tokens[i - 1].text == "which"))
-      if (std::optional<WordRoute> r = routeStativeVerb(tokens[i].text, vocabulary, *wordnet)) {
+      if (std::optional<WordRoute> r = stativeVerb(tokens[i].text, *wordnet, participles)) {
         out.push_back({i, std::move(*r)});
         continue;
       }
     const std::string next = i + 1 < tokens.size() ? tokens[i + 1].text : "";
-    std::optional<WordRoute> r = routeWord(tokens[i].text, next, vocabulary, wordnet, known);
+    std::optional<WordRoute> r = routeWordWith(tokens[i].text, next, vocabulary, wordnet, known, participles);
     if (r) out.push_back({i, std::move(*r)});
   }
   return out;

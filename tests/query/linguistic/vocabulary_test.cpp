@@ -65,6 +65,19 @@ TEST(Vocabulary, DescriptorsDocumentTheCode) {
   }
 }
 
+// The comparatives of the width, thickness and size adjectives, by the regular rules, listed at
+// load: what the taper phrase compares along a part ("gets thinner towards the top").
+TEST(Vocabulary, WidthComparativesFollowTheRegularRules) {
+  const std::vector<std::string>& c = v().widthComparatives();
+  EXPECT_TRUE(std::is_sorted(c.begin(), c.end()));
+  for (const char* w : {"thinner", "wider", "bigger", "tinier", "narrower", "thicker", "larger", "smaller"})
+    EXPECT_TRUE(std::binary_search(c.begin(), c.end(), w)) << w;
+  // The plain -er form is kept beside the doubled one, as people misspell it ("thiner").
+  EXPECT_TRUE(std::binary_search(c.begin(), c.end(), "thiner"));
+  for (const char* w : {"wideer", "tinyer", "bender", "longer", "widest"})
+    EXPECT_FALSE(std::binary_search(c.begin(), c.end(), w)) << w;
+}
+
 // Every set over a degree is a membership in [0, 1] on [0, 1].
 TEST(Vocabulary, MembershipsInTheUnitInterval) {
   auto check = [](const FuzzyNumber& set, const std::string& what) {
