@@ -159,5 +159,33 @@ TEST(CsgSearchProperty, CacheRebuildsWhatAWriteChanged) {
   EXPECT_FALSE(first.hits.empty());
 }
 
+// A described leaf scores as the linguistic search does, over the descriptors' degree domains: a
+// shape whose box was made from "an extremely square box" (squariness cut at 0.99, where every
+// degree is read) scores as a shape of the same tree whose box is crisp in the words' core. Read
+// as written, the made box's leaf scored 0.971 and its shape came second.
+TEST(CsgSearchProperty, DescribedLeavesAreReadOverTheDegreeDomains) {
+  Catalogue c(4);
+  const auto shape = [&](const std::string& name, const json& box) {
+    const json doc = {{"kind", "shape"},
+                      {"name", name},
+                      {"tree", {{"op", "union"}, {"children", {{{"part", box}}, {{"part", {{"name", "s"}, {"text", "a sphere"}}}}}}}}};
+    return c.store().create(prepareDocument(doc, "shape", c.store(), DocumentLimits{}, "")).id;
+  };
+  const int64_t crisp = shape("crisp", {{"name", "b"}, {"text", "a box"}, {"params", {{"eps1", 0.03}, {"eps2", 0.03}}}});
+  const int64_t made = shape("made", {{"name", "b"}, {"text", "an extremely square box"}});
+  StoredGraphCache cache;
+  const CsgQuery query = parseCsgQuery("the union of an extremely square box and a sphere", Vocabulary::builtin(), {}, 100);
+  CsgSearchOptions options;
+  options.limit = 10;
+  const CsgSearchResult found = searchCsg(c.store(), query, options, cache);
+  double crispScore = -1, madeScore = -1;
+  for (const CsgHit& h : found.hits) {
+    if (h.id == crisp) crispScore = h.score.score;
+    if (h.id == made) madeScore = h.score.score;
+  }
+  ASSERT_GT(crispScore, 0.0);
+  EXPECT_EQ(madeScore, crispScore);
+}
+
 }  // namespace
 }  // namespace fsdb
