@@ -213,7 +213,11 @@ async function main({ browser, url }) {
   // goal, under 1 s, is a speed: docs/performance.md quotes it from a quiet run).
   started = Date.now();
   await page.reload({ waitUntil: 'load' });
-  await page.waitForFunction(() => [...document.querySelectorAll('#results img')].every((i) => i.complete && i.naturalWidth > 0));
+  // The cards first: `every` holds on an empty list, and a slow server (the sanitizer build) had
+  // not listed them yet when the filter below ran ("the filter shows 0 cards").
+  await page.waitForSelector('#results > li img', { timeout: 60000 * slowdown });
+  await page.waitForFunction(() => [...document.querySelectorAll('#results img')].every((i) => i.complete && i.naturalWidth > 0),
+    null, { timeout: 60000 * slowdown });
   const loadMillis = Date.now() - started;
   // Browsing: the name filter, and a stored part's parameters in the structure of a shape.
   await page.fill('#filter', 'snowman');
