@@ -160,29 +160,34 @@ AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
     if (f.hi <= 1.0) return {1.0f, 0.0f};  // in lower(0) ⊆ lower(α) ⊆ upper(α)
     if (f.lo > 1.0) return {0.0f, kNeverInside};
   }
-  const Search up = maxMin(p, true);
   AlphaLevels out;
-  if (up.exhausted) {
-    // Conservative: an upper bound of u (upper grows); l is not sought below u = 1.
-    out.upper = floatUp(std::min(1.0, std::max(up.incumbent, up.pruned)));
-    // u = 1 says p ∈ upper(1). The open bound reaches 1 wherever a box around the core stayed
-    // open, so ask P(1) itself (one θ for triangular numbers): where no θ of it puts p inside
-    // (proven: decide answers true when its own budget runs out), u_true < 1 and the largest
-    // float below 1 is still an upper bound of it.
-    if (out.upper == 1.0f && !decide(p, core_, Question::kPossibly))
-      out.upper = std::nextafter(1.0f, 0.0f);
-    if (out.upper < 1.0f) return out;
-  } else {
-    if (up.incumbent < 0.0) return out;  // no θ of P(0) puts p inside: u = 0, l = never
-    // Round down, keeping the witness: p ∈ upper(u) is shown by θ ∈ P(u).
-    float u = roundedUpper(up.incumbent, up.witness);
-    // Within τ of 1 the search may stop at a witness below the core although one in P(1) exists
-    // (its bound, 1, did not beat the incumbent by τ). upper(1) must hold every point of the
-    // true upper(1), so ask P(1) itself, as the l search below does for lower(1): a witness
-    // there, or a decision that ran out of budget (conservative), makes u = 1.
-    if (u < 1.0f && u + tau >= 1.0 - kMargin && decide(p, core_, Question::kPossibly)) u = 1.0f;
-    out.upper = u;
-    if (u < 1.0f) return out;  // l <= 1 needs p ∈ lower(1) ⊆ upper(1)
+  // F monotone over the cut near the answer (levelsAboveCut): u, and often l, with no search.
+  const int above = levelsAboveCut(p, &out);
+  if (above == 2) return out;
+  if (above == 0) {
+    const Search up = maxMin(p, true);
+    if (up.exhausted) {
+      // Conservative: an upper bound of u (upper grows); l is not sought below u = 1.
+      out.upper = floatUp(std::min(1.0, std::max(up.incumbent, up.pruned)));
+      // u = 1 says p ∈ upper(1). The open bound reaches 1 wherever a box around the core stayed
+      // open, so ask P(1) itself (one θ for triangular numbers): where no θ of it puts p inside
+      // (proven: decide answers true when its own budget runs out), u_true < 1 and the largest
+      // float below 1 is still an upper bound of it.
+      if (out.upper == 1.0f && !decide(p, core_, Question::kPossibly))
+        out.upper = std::nextafter(1.0f, 0.0f);
+      if (out.upper < 1.0f) return out;
+    } else {
+      if (up.incumbent < 0.0) return out;  // no θ of P(0) puts p inside: u = 0, l = never
+      // Round down, keeping the witness: p ∈ upper(u) is shown by θ ∈ P(u).
+      float u = roundedUpper(up.incumbent, up.witness);
+      // Within τ of 1 the search may stop at a witness below the core although one in P(1) exists
+      // (its bound, 1, did not beat the incumbent by τ). upper(1) must hold every point of the
+      // true upper(1), so ask P(1) itself, as the l search below does for lower(1): a witness
+      // there, or a decision that ran out of budget (conservative), makes u = 1.
+      if (u < 1.0f && u + tau >= 1.0 - kMargin && decide(p, core_, Question::kPossibly)) u = 1.0f;
+      out.upper = u;
+      if (u < 1.0f) return out;  // l <= 1 needs p ∈ lower(1) ⊆ upper(1)
+    }
   }
   // l(p) = sup{m(θ) : F(p; θ) > 1} (0 when no θ of P(0) puts p outside, proven).
   const Search down = maxMin(p, false);

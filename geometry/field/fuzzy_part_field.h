@@ -112,6 +112,13 @@ class FuzzyPartField : public AlphaFieldSource {
   // fuzzy value i over the point box [lo, hi] × P(0) (0 for crisp values); false unless every
   // fuzzy value has a sign.
   bool monotoneSigns(const Vec3& lo, const Vec3& hi, signed char* sign) const;
+  // The same over the point box × `box` (a cut P(α) instead of P(0)).
+  bool monotoneSignsOver(const PartBox& box, const Vec3& lo, const Vec3& hi,
+                         signed char* sign) const;
+  // The monotone shortcut above a level (fuzzy_part_monotone.cpp): the corner path with the core's
+  // signs, its brackets proven by the signs over the cut at their upper ends. 0: u not answered;
+  // 1: u = 1 answered in *out, l not; 2: both answered.
+  int levelsAboveCut(const Vec3& p, AlphaLevels* out) const;
   // levelsAt where monotoneSigns holds over a box that contains p; inCore: p is known to be
   // inside S(θ) for every θ of P(1) (then u = 1 needs no evaluation).
   AlphaLevels cornerLevels(const Vec3& p, const signed char* sign, bool inCore = false) const;

@@ -59,9 +59,14 @@ void narrowBracket(const Value& value, bool inside, double tau, double* lo, doub
 }  // namespace
 
 bool FuzzyPartField::monotoneSigns(const Vec3& lo, const Vec3& hi, signed char* sign) const {
+  return monotoneSignsOver(support_, lo, hi, sign);
+}
+
+bool FuzzyPartField::monotoneSignsOver(const PartBox& box, const Vec3& lo, const Vec3& hi,
+                                       signed char* sign) const {
   Interval d[kSlots];
   if (fuzzyCount_ == 0 ||
-      !insideOutsideSlopes(support_, {lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}, fuzzySlots_,
+      !insideOutsideSlopes(box, {lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}, fuzzySlots_,
                            fuzzyCount_, d))
     return false;
   for (int i = 0; i < kSlots; ++i) sign[i] = 0;
@@ -134,6 +139,68 @@ AlphaLevels FuzzyPartField::cornerLevels(const Vec3& p, const signed char* sign,
   narrowBracket(largest, false, tau, &lo, &hi, h0, h1);
   out.lower = floatUp(hi);
   return out;
+}
+
+// The monotone shortcut above a level. Where F is not monotone over all of P(0) at p, it often is
+// over the smaller cut P(α) near the answer: a bend through 0 or a twist over a wide range swings
+// F both ways at low levels only. The signs at the core guess the corners; the corner path then
+// brackets the level as cornerLevels does, and the bracket needs only two facts to hold:
+//  * its lower end is shown by a crisp θ (the corner of P(lo), F <= 1 for u, F > 1 for l), so
+//    u_true >= lo and l_true >= lo whatever F does;
+//  * its upper end hi is proven when F is monotone over P(hi) with the same signs (slopes over
+//    P(hi) at p): then the corner is F's least (u) or largest (l) value over all of P(hi), so
+//    g(hi) > 1 (no θ of P(hi) puts p inside: u_true < hi) or h(hi) <= 1 (every θ does:
+//    l_true <= hi).
+// So the answers carry cornerLevels' guarantees. Returns 0 when it cannot answer u, 1 when it
+// answered u = 1 and not l (the caller searches l), 2 when *out holds both levels.
+int FuzzyPartField::levelsAboveCut(const Vec3& p, AlphaLevels* out) const {
+  const double tau = options_.tolerance;
+  signed char sign[kSlots];
+  // The guess: the signs of the slopes at the core's midpoint (a guess only: the bracket's ends
+  // are shown and proven below whatever it is).
+  {
+    Interval d[kSlots];
+    const PartBox mid = crispPartBox(midpointPart(core_));
+    if (fuzzyCount_ == 0 || !insideOutsideSlopes(mid, {p.x, p.x}, {p.y, p.y}, {p.z, p.z},
+                                                 fuzzySlots_, fuzzyCount_, d))
+      return 0;
+    for (int i = 0; i < kSlots; ++i) sign[i] = 0;
+    for (int j = 0; j < fuzzyCount_; ++j) sign[fuzzySlots_[j]] = d[j].lo + d[j].hi >= 0.0 ? 1 : -1;
+  }
+  // Do the slopes over P(alpha) at p keep the core's signs?
+  const auto provenAt = [&](double alpha) {
+    signed char s[kSlots];
+    if (!monotoneSignsOver(levelBox(alpha), p, p, s)) return false;
+    for (int j = 0; j < fuzzyCount_; ++j)
+      if (s[fuzzySlots_[j]] != sign[fuzzySlots_[j]]) return false;
+    return true;
+  };
+  const auto least = [&](double a) { return valueAt(cornerAt(a, sign, true), p); };
+  const double g1 = least(1.0);
+  if (g1 > 1.0) {
+    const double g0 = least(0.0);
+    if (!(g0 <= 1.0)) return 0;  // no witness in P(0) on this path: the search decides
+    double lo = 0.0, hi = 1.0;
+    narrowBracket(least, true, tau, &lo, &hi, g0, g1);
+    if (!provenAt(hi)) return 0;
+    *out = {roundedUpper(lo, cornerAt(lo, sign, true)), kNeverInside};
+    return 2;  // l <= 1 needs p ∈ lower(1) ⊆ upper(1)
+  }
+  // u = 1: the least corner of P(1) is a witness.
+  out->upper = 1.0f;
+  const auto largest = [&](double a) { return valueAt(cornerAt(a, sign, false), p); };
+  const double h1 = largest(1.0);
+  if (h1 > 1.0) {  // a θ of P(1) puts p outside: never in lower(1)
+    out->lower = kNeverInside;
+    return 2;
+  }
+  const double h0 = largest(0.0);
+  if (!(h0 > 1.0)) return 1;  // l = 0 needs a proof over all of P(0): the search's
+  double lo = 0.0, hi = 1.0;
+  narrowBracket(largest, false, tau, &lo, &hi, h0, h1);
+  if (!provenAt(hi)) return 1;
+  out->lower = floatUp(hi);
+  return 2;
 }
 
 // One fuzzy size v (a1, which scales A, B and C together, or the placement scale) and no
