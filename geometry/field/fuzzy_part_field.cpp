@@ -10,6 +10,7 @@
 #include "geometry/core/number_format.h"
 #include "geometry/field/fuzzy_part_field_detail.h"
 #include "geometry/superquadric/deformation.h"
+#include "geometry/superquadric/superquadric_extent.h"
 #include "geometry/superquadric/superquadric.h"
 #include "geometry/superquadric/transform.h"
 
@@ -383,15 +384,22 @@ void FuzzyPartField::looseBoundingBox(Vec3* lo, Vec3* hi) const {
 
 // The loose box (deformation and placement bounds over the support box) can be much larger than
 // upper(0): a bend's bound takes the largest deflection at every height, and the rotation pad the
-// box's whole diagonal. Cells of the loose box that boundsOver proves outside upper(0) are cut
-// away, down to cells of 1/kTightCells of its sides: the result is the hull of the cells that
-// could not be excluded (so it holds upper(0) whenever the loose box does). Cells already inside
-// the hull found so far are skipped, and children nearer the box's centre go first, so the hull
-// grows from the inside and most cells are never tested. (Splitting P(0) as well for the cells
-// boundsOver keeps, 48 enclosures each, cost 100x the time for a few percent:
-// docs/design/fuzzy-part-field.md.)
+// box's whole diagonal. The forward maps' box is tight to about a canonical cell's image. Then
+// cells of the box that boundsOver proves outside upper(0) are cut away, down to cells of
+// 1/kTightCells of its sides: the result is the hull of the cells that could not be excluded (so
+// it holds upper(0) whenever the box before does). Cells already inside the hull found so far
+// are skipped, and children nearer the box's centre go first, so the hull grows from the inside
+// and most cells are never tested. (docs/design/fuzzy-part-field.md, "The bounding box".)
 void FuzzyPartField::tightenBoundingBox() const {
   looseBoundingBox(&boxLo_, &boxHi_);
+  {
+    // The forward maps' box (superquadric_extent.h) is tight where the loose one is not; both
+    // hold upper(0), so their intersection does.
+    Vec3 lo, hi;
+    partExtent(support_, &lo, &hi);
+    const Vec3 a = componentMax(boxLo_, lo), b = componentMin(boxHi_, hi);
+    if (a.x <= b.x && a.y <= b.y && a.z <= b.z) boxLo_ = a, boxHi_ = b;
+  }
   constexpr int kTightCells = 96;  // finest cell: 1/96 of the loose box's side per axis
   const Vec3 lo = boxLo_, hi = boxHi_;
   const Vec3 centre = (lo + hi) * 0.5;

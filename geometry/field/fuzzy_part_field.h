@@ -11,7 +11,8 @@
 //    conservative one (upper can only grow, lower only shrink) and budgetExhaustions() counts it.
 //  * boundsOver(lo, hi) bounds the levels of every point of the box; levelsAt answers lie within
 //    them unless a point query ran out of budget. boundingBox() is a sound box around upper(0),
-//    cut down on first use to the cells boundsOver cannot exclude (a few ms).
+//    computed on first use: the forward maps' box (superquadric_extent.h), cut down to the cells
+//    boundsOver cannot exclude (a few ms).
 //  * u = 1 exactly where P(1) was shown to put p inside, or where that decision ran out of
 //    budget (counted, conservative): within τ of 1, or on an exhausted search, P(1) is asked.
 //  * possiblyInside / necessarilyInside decide one level by branch and bound (same budget).
@@ -131,7 +132,8 @@ class FuzzyPartField : public AlphaFieldSource {
   float roundedUpper(double u, const PlacedSuperquadric& witness) const;
   // The box of deformation and placement bounds over the support box (sound, often loose).
   void looseBoundingBox(Vec3* lo, Vec3* hi) const;
-  // boxLo_, boxHi_: the loose box with the cells boundsOver proves outside upper(0) cut away.
+  // boxLo_, boxHi_: the loose box ∩ the forward maps' box, with the cells boundsOver proves
+  // outside upper(0) cut away.
   void tightenBoundingBox() const;
   PartBox levelBox(double alpha) const;  // P(alpha), the stored support and core at 0 and 1
   double valueAt(const PlacedSuperquadric& theta, const Vec3& p) const;  // F(p; θ)
