@@ -163,10 +163,11 @@ AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
   }
   AlphaLevels out;
   // F monotone over the cut near the answer (levelsAboveCut): u, and often l, with no search.
-  const int above = levelsAboveCut(p, &out);
+  Seed upSeed, downSeed;
+  const int above = levelsAboveCut(p, &out, &upSeed, &downSeed);
   if (above == 2) return out;
   if (above == 0) {
-    const Search up = maxMin(p, true);
+    const Search up = maxMin(p, true, upSeed);
     if (up.exhausted) {
       // Conservative: an upper bound of u (upper grows); l is not sought below u = 1.
       out.upper = floatUp(std::min(1.0, std::max(up.incumbent, up.pruned)));
@@ -191,7 +192,7 @@ AlphaLevels FuzzyPartField::levelsAt(const Vec3& p) const {
     }
   }
   // l(p) = sup{m(θ) : F(p; θ) > 1} (0 when no θ of P(0) puts p outside, proven).
-  const Search down = maxMin(p, false);
+  const Search down = maxMin(p, false, downSeed);
   if (!down.exhausted && down.incumbent < 0.0 && down.pruned < 0.0) {
     out.lower = 0.0f;  // every box excluded: p ∈ lower(0)
     return out;

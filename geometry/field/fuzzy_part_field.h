@@ -92,7 +92,13 @@ class FuzzyPartField : public AlphaFieldSource {
     bool exhausted = false;
     PlacedSuperquadric witness;
   };
-  Search maxMin(const Vec3& p, bool inside) const;
+  // A witness the search may start from: θ qualifies (F <= 1 for u, F > 1 for l) and lies in
+  // P(level). level < 0: none.
+  struct Seed {
+    double level = -1.0;
+    PlacedSuperquadric witness;
+  };
+  Search maxMin(const Vec3& p, bool inside, const Seed& seed) const;
   class MaxMinSearch;  // one maxMin call's state and steps (fuzzy_part_search.cpp)
   // Is the box excluded for the search (inside: no θ with F <= 1; else none with F > 1) once its
   // monotone values are collapsed to their ends? Adds its evaluations to *evaluations.
@@ -119,7 +125,9 @@ class FuzzyPartField : public AlphaFieldSource {
   // The monotone shortcut above a level (fuzzy_part_monotone.cpp): the corner path with the core's
   // signs, its brackets proven by the signs over the cut at their upper ends. 0: u not answered;
   // 1: u = 1 answered in *out, l not; 2: both answered.
-  int levelsAboveCut(const Vec3& p, AlphaLevels* out) const;
+  // Where it cannot answer, *up and *down hold the witnesses its brackets found (their lower
+  // ends), for the searches to start from.
+  int levelsAboveCut(const Vec3& p, AlphaLevels* out, Seed* up, Seed* down) const;
   // levelsAt where monotoneSigns holds over a box that contains p; inCore: p is known to be
   // inside S(θ) for every θ of P(1) (then u = 1 needs no evaluation).
   AlphaLevels cornerLevels(const Vec3& p, const signed char* sign, bool inCore = false) const;

@@ -153,7 +153,7 @@ AlphaLevels FuzzyPartField::cornerLevels(const Vec3& p, const signed char* sign,
 //    l_true <= hi).
 // So the answers carry cornerLevels' guarantees. Returns 0 when it cannot answer u, 1 when it
 // answered u = 1 and not l (the caller searches l), 2 when *out holds both levels.
-int FuzzyPartField::levelsAboveCut(const Vec3& p, AlphaLevels* out) const {
+int FuzzyPartField::levelsAboveCut(const Vec3& p, AlphaLevels* out, Seed* up, Seed* down) const {
   const double tau = options_.tolerance;
   signed char sign[kSlots];
   // The guess: the signs of the slopes at the core's midpoint (a guess only: the bracket's ends
@@ -182,7 +182,10 @@ int FuzzyPartField::levelsAboveCut(const Vec3& p, AlphaLevels* out) const {
     if (!(g0 <= 1.0)) return 0;  // no witness in P(0) on this path: the search decides
     double lo = 0.0, hi = 1.0;
     narrowBracket(least, true, tau, &lo, &hi, g0, g1);
-    if (!provenAt(hi)) return 0;
+    if (!provenAt(hi)) {
+      *up = {lo, cornerAt(lo, sign, true)};
+      return 0;
+    }
     *out = {roundedUpper(lo, cornerAt(lo, sign, true)), kNeverInside};
     return 2;  // l <= 1 needs p ∈ lower(1) ⊆ upper(1)
   }
@@ -198,7 +201,10 @@ int FuzzyPartField::levelsAboveCut(const Vec3& p, AlphaLevels* out) const {
   if (!(h0 > 1.0)) return 1;  // l = 0 needs a proof over all of P(0): the search's
   double lo = 0.0, hi = 1.0;
   narrowBracket(largest, false, tau, &lo, &hi, h0, h1);
-  if (!provenAt(hi)) return 1;
+  if (!provenAt(hi)) {
+    *down = {lo, cornerAt(lo, sign, false)};
+    return 1;
+  }
   out->lower = floatUp(hi);
   return 2;
 }

@@ -162,7 +162,7 @@ class FuzzyPartField::MaxMinSearch {
     for (int i = 0; i < kSlots; ++i) slopeAt_[i] = mid(slot(field_.core_, i));
   }
 
-  Search run();
+  Search run(const Seed& seed);
 
  private:
   struct Node {
@@ -218,11 +218,11 @@ class FuzzyPartField::MaxMinSearch {
   double corePeakValue_ = 0.0;  // F at the core's midpoint, taken first by run()
 };
 
-FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside) const {
-  return MaxMinSearch(*this, p, inside).run();
+FuzzyPartField::Search FuzzyPartField::maxMin(const Vec3& p, bool inside, const Seed& seed) const {
+  return MaxMinSearch(*this, p, inside).run(seed);
 }
 
-FuzzyPartField::Search FuzzyPartField::MaxMinSearch::run() {
+FuzzyPartField::Search FuzzyPartField::MaxMinSearch::run(const Seed& seed) {
   // The peak of P(0), every value at its core's midpoint, first: where it is a witness, m = 1 is
   // the answer with one crisp evaluation and no enclosure (tryWitnesses would find it too, but
   // only after the first box's exclusion tests, which cannot succeed there).
@@ -236,6 +236,9 @@ FuzzyPartField::Search FuzzyPartField::MaxMinSearch::run() {
       if (s_.incumbent >= 1.0) return s_;
     }
   }
+  // A caller's witness (the monotone shortcut's bracket end): every box is cut to the level it
+  // must beat from the first one on.
+  if (seed.level >= 0.0) improve(seed.level, seed.witness);
   heap_.push_back({field_.support_, 1.0, 0.0});
   // A dive that finds no witness in a quarter of the budget may find none at all (u_true <= τ, or
   // no θ of P(0) puts p outside): from then on best first, so that the proof lowers the largest
