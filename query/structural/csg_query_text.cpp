@@ -366,6 +366,7 @@ class PhraseParser {
     }
     const size_t subjectLeaf = leaves_.size();  // the next leaf read, hollowed or not
     nlohmann::json subject = hollowed ? hollow(how) : leaf();
+    if (const int ends = endWords()) return atEnds(std::move(subject), subjectLeaf, ends == 2 && !hollowed);
     const size_t before = previousHead_;
     std::optional<RelationWords> words = relationWords();
     head_ = subjectLeaf;
@@ -400,6 +401,47 @@ class PhraseParser {
     nlohmann::json out = node("union", std::move(operands));
     head_ = subjectLeaf;
     return out;
+  }
+
+  // at_ends (header grammar) after a noun phrase: 1 for one end ("at its end", "on the end"), 2 for
+  // both ("at both ends", "on each end", "at either end", "at its ends"), 0 when the words there
+  // are none (pos_ unchanged).
+  int endWords() {
+    if (!atAny({"at", "on"}) || pos_ + 2 >= words_.size()) return 0;
+    const std::string& a = words_[pos_ + 1].text;
+    const std::string& b = words_[pos_ + 2].text;
+    int ends = 0, used = 3;
+    if (b == "end" && contains({"its", "the", "an"}, a)) ends = 1;
+    else if (b == "end" && contains({"each", "either", "every"}, a)) ends = 2;
+    else if (b == "ends" && contains({"its", "the", "both"}, a)) ends = 2;
+    else if (a == "both" && contains({"its", "the"}, b) && pos_ + 3 < words_.size() && words_[pos_ + 3].text == "ends")
+      ends = 2, used = 4;
+    pos_ += ends ? used : 0;
+    return ends;
+  }
+
+  // A noun phrase at the end (or both ends) of a part: the part before it in its list ("a plate
+  // with a peg at its end"), or the object after "of" ("a ball at the end of a rod"). An end lies
+  // along that part's long axis, which words do not place in world directions, so the union says
+  // no direction: the parts alone. Both ends: two copies of the noun phrase, as "two balls" makes
+  // them ("a stick with balls on both ends" is a stick and two balls).
+  nlohmann::json atEnds(nlohmann::json subject, size_t subjectLeaf, bool two) {
+    nlohmann::json operands = nlohmann::json::array();
+    operands.push_back(std::move(subject));
+    if (two) {
+      leaves_.push_back(leaves_[subjectLeaf]);
+      operands.push_back(placeholder(leaves_.size() - 1));
+    }
+    if (accept("of")) {
+      if (accept("it")) {
+        // the part before: nothing more to read
+      } else {
+        previousHead_ = kNone;
+        operands.push_back(item());
+      }
+    }
+    head_ = subjectLeaf;
+    return operands.size() == 1 ? std::move(operands[0]) : node("union", std::move(operands));
   }
 
   struct RelationWords {
@@ -877,6 +919,8 @@ const std::vector<std::string>& csgPhraseWords() {
                        // counts of copies and their arrangement
                        "pair", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "together",
                        "row", "line", "lined", "touching", "each", "other", "next", "stacked", "up", "hollow", "annular",
+                       // ends of a part ("at its end", "on both ends")
+                       "end", "ends", "both", "either", "every",
                        // intersections in words
                        "common", "where", "overlap", "overlaps", "meet", "meets", "intersect", "intersects", "cross"});
     std::sort(w.begin(), w.end());

@@ -70,6 +70,29 @@ TEST(CsgQueryText, CountsAreCopiesUnited) {
   EXPECT_THROW(parse("2 units"), Error);
 }
 
+// Ends of a part: the noun phrase united with the part before it (or the object after "of"), with
+// no direction (an end lies along that part's long axis, not in a world direction); both ends
+// make two copies, as a count does.
+TEST(CsgQueryText, PartsAtTheEndsOfAPart) {
+  for (const char* text : {"a stick with balls on both ends", "a stick with a ball at each end",
+                           "a stick with a ball at either end", "a stick with balls at its ends",
+                           "a stick with balls on both the ends", "a stick with a ball on every end"}) {
+    const std::string got = shape(parse(text));
+    EXPECT_EQ(got.rfind("union('a stick', ", 0), 0u) << text << ": " << got;
+    const CsgQuery q = parse(text);
+    ASSERT_EQ(q.leaves.size(), 3u) << text;
+    for (const CsgQueryLeaf& leaf : q.leaves) EXPECT_FALSE(leaf.relation) << text;
+    EXPECT_EQ(q.leaves[1].text, q.leaves[2].text) << text;
+  }
+  EXPECT_EQ(shape(parse("a plate with a peg at its end")), "union('a plate', 'a peg')");
+  EXPECT_EQ(shape(parse("a plate with a peg on the end")), "union('a plate', 'a peg')");
+  EXPECT_EQ(shape(parse("a ball at the end of a rod")), "union('a ball', 'a rod')");
+  EXPECT_EQ(shape(parse("balls on both ends of a rod")), "union('balls', 'balls', 'a rod')");
+  EXPECT_EQ(shape(parse("a rod and a ball at the end of it")), "union('a rod', 'a ball')");
+  // Other words after "at" and "on" stay relations.
+  EXPECT_EQ(shape(parse("a box with a cylinder on its side")), "union('a box', 'a cylinder'<side 'a box'>)");
+}
+
 // The phrase form opens with the linguistic grammar's verbs and names operations after its articles.
 TEST(CsgQueryText, DesignersPhrasingsOfAUnion) {
   const std::string tree = "union('a very bent cylinder', 'a very sharp pyramid')";
