@@ -278,7 +278,12 @@ class PhraseParser {
     }
     const size_t save = pos_;
     acceptAny(queryArticles());
-    if (const size_t n = numeral()) {
+    const size_t groupFrom = offset();
+    const char* group = collective();
+    const size_t groupEnd = group ? words_[pos_ - 1].offset + words_[pos_ - 1].text.size() : 0;
+    size_t n = numeral();
+    if (group) n = std::max<size_t>(n, 2);  // "a stack of spheres": at least two
+    if (n) {
       // numeral noun_phrase [ arrangement ]: that many copies of the part, united ("two balls",
       // "three spheres in a row", "a pair of cylinders"). An arrangement that says where they
       // stand places each copy against the one before it, as "a sphere beside a sphere" would:
@@ -294,12 +299,18 @@ class PhraseParser {
         operands.push_back(placeholder(leaves_.size() - 1));
       }
       const size_t from = offset();
-      if (const char* direction = acceptArrangement()) {
+      const char* direction = acceptArrangement();
+      std::string words;
+      if (direction) {
         const size_t end = words_[pos_ - 1].offset + words_[pos_ - 1].text.size();  // as relationWords ends
-        const std::string words = text_.substr(from, end - from);
+        words = text_.substr(from, end - from);
+      } else if (group && *group) {
+        direction = group;  // the collective noun's arrangement: "a stack of"
+        words = text_.substr(groupFrom, groupEnd - groupFrom);
+      }
+      if (direction)
         for (size_t k = 1; k < n; ++k)
           leaves_[one + k].relation = CsgRelation{one + k - 1, *v_.direction(direction), std::nullopt, words};
-      }
       return node("union", std::move(operands));
     }
     if ((at("common") && nextIsAny({"part"})) || at("where") || (at("part") && nextIsAny({"where"}))) {
@@ -674,6 +685,21 @@ class PhraseParser {
     return n;
   }
 
+  // collective = ( "stack" | "pile" | "tower" | "row" | "line" | "array" | "set" | "group" |
+  // "cluster" ) , "of": copies of the noun phrase that follows (at least two), each placed as the
+  // noun says against the one before it (on top of it for a stack, a pile and a tower; beside it
+  // for a row, a line and an array; a set, a group or a cluster says no direction: ""). nullptr
+  // (pos_ unchanged) when the words there are none.
+  const char* collective() {
+    if (!nextIsAny({"of"})) return nullptr;
+    const char* direction = nullptr;
+    if (atAny({"stack", "pile", "tower"})) direction = "top";
+    else if (atAny({"row", "line", "array"})) direction = "side";
+    else if (atAny({"set", "group", "cluster"})) direction = "";
+    if (direction) pos_ += 2;
+    return direction;
+  }
+
   // The words of an arrangement after counted copies: "together", "joined together", "in a row",
   // "in a line", "lined up", "side by side", "touching [each other]", "next to each other",
   // "stacked [up]", after an optional "which are" and "joined".
@@ -921,6 +947,8 @@ const std::vector<std::string>& csgPhraseWords() {
                        "row", "line", "lined", "touching", "each", "other", "next", "stacked", "up", "hollow", "annular",
                        // ends of a part ("at its end", "on both ends")
                        "end", "ends", "both", "either", "every",
+                       // collective nouns of copies ("a stack of spheres")
+                       "stack", "pile", "tower", "array", "set", "group", "cluster",
                        // intersections in words
                        "common", "where", "overlap", "overlaps", "meet", "meets", "intersect", "intersects", "cross"});
     std::sort(w.begin(), w.end());

@@ -66,6 +66,16 @@ TEST(CsgQueryText, CountsAreCopiesUnited) {
   }
   EXPECT_NE(row.leaves[1].relation->to, row.leaves[2].relation->to);
   EXPECT_EQ(shape(parse("a cube minus two spheres")), "difference('a cube', union('spheres', 'spheres'))");
+  // Collective nouns: at least two copies, placed as the noun says unless an arrangement does.
+  EXPECT_EQ(shape(parse("a stack of spheres")), "union('spheres', 'spheres'<top 'spheres'>)");
+  EXPECT_EQ(shape(parse("a stack of three balls")), "union('balls', 'balls'<top 'balls'>, 'balls'<top 'balls'>)");
+  EXPECT_EQ(shape(parse("a row of cubes")), "union('cubes', 'cubes'<side 'cubes'>)");
+  EXPECT_EQ(shape(parse("an array of 3 cubes")), "union('cubes', 'cubes'<side 'cubes'>, 'cubes'<side 'cubes'>)");
+  EXPECT_EQ(shape(parse("a set of two cylinders")), "union('cylinders', 'cylinders')");
+  EXPECT_EQ(shape(parse("a pile of two balls side by side")), "union('balls', 'balls'<side 'balls'>)");
+  const CsgQuery stack = parse("a stack of three balls");
+  ASSERT_TRUE(stack.leaves[1].relation);
+  EXPECT_EQ(stack.leaves[1].relation->text, "stack of");
   // A number before units or sides is no count.
   EXPECT_THROW(parse("2 units"), Error);
 }
