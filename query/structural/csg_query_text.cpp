@@ -44,6 +44,8 @@ const std::pair<const char*, const char*> kCutOutPhrases[] = {
 // Words that make the part after them hollow (PhraseParser::hollow): "a hollow cylinder" (a tube),
 // "an annular disc" (ring-shaped: a disc with a hole through it, a washer).
 const std::vector<std::string> kHollowWords = {"hollow", "annular"};
+// Participles that say a part has a hole: "a drilled block" is "a block with a hole".
+const std::vector<std::string> kDrilledWords = {"drilled", "bored", "pierced", "perforated", "holed"};
 
 bool contains(const std::vector<std::string>& list, const std::string& w) {
   return std::find(list.begin(), list.end(), w) != list.end();
@@ -161,9 +163,9 @@ class PhraseParser {
     if (!at("hole")) noun = holeNoun(words_[pos_++].text);
     const size_t end = words_[pos_].offset + words_[pos_].text.size();
     ++pos_;  // "hole"
-    // How the hole was made adds nothing: "a slab with a hole drilled through it", "with a hole in
-    // it" (word_routes.h reads "bored", "cut", "punched" as "drilled").
-    const bool drilled = accept("drilled");
+    // How the hole was made adds nothing: "a slab with a hole drilled through it", "bored through
+    // it", "with a hole in it" (word_routes.h reads "cut", "punched" as "drilled").
+    const bool drilled = acceptAny(kDrilledWords);
     if (acceptAny({"through", "in", "into"}) || drilled) accept("it");
     head_ = plainNounLeaf(noun, text_.substr(from, end - from));
     return placeholder(head_);
@@ -196,6 +198,15 @@ class PhraseParser {
     nlohmann::json operands = nlohmann::json::array();
     operands.push_back(std::move(outer));
     operands.push_back(placeholder(plainNounLeaf(noun, word)));
+    return node("difference", std::move(operands));
+  }
+
+  // drilled = ( "drilled" | "bored" | "pierced" | "perforated" | "holed" ) noun_phrase, after that
+  // `word`: the part minus a hole's part, as "a block with a hole" reads ("a drilled block").
+  nlohmann::json drilledPart(const std::string& word) {
+    nlohmann::json operands = nlohmann::json::array();
+    operands.push_back(leaf());
+    operands.push_back(placeholder(plainNounLeaf(v_.plainHoleNoun(), word)));
     return node("difference", std::move(operands));
   }
 
@@ -370,13 +381,16 @@ class PhraseParser {
   nlohmann::json relatedLeaf() {
     // [ article ] "hollow" noun_phrase (hollow()): the hollowed part is the subject.
     const bool hollowed = atAny(kHollowWords) || (atAny(queryArticles()) && nextIsAny(kHollowWords));
+    // [ article ] drilled noun_phrase (drilledPart()): the drilled part is the subject.
+    const bool drilled =
+        !hollowed && (atAny(kDrilledWords) || (atAny(queryArticles()) && nextIsAny(kDrilledWords)));
     std::string how;
-    if (hollowed) {
-      if (!atAny(kHollowWords)) ++pos_;
+    if (hollowed || drilled) {
+      if (!atAny(hollowed ? kHollowWords : kDrilledWords)) ++pos_;
       how = words_[pos_++].text;
     }
     const size_t subjectLeaf = leaves_.size();  // the next leaf read, hollowed or not
-    nlohmann::json subject = hollowed ? hollow(how) : leaf();
+    nlohmann::json subject = hollowed ? hollow(how) : drilled ? drilledPart(how) : leaf();
     if (const int ends = endWords()) return atEnds(std::move(subject), subjectLeaf, ends == 2 && !hollowed);
     const size_t before = previousHead_;
     std::optional<RelationWords> words = relationWords();
@@ -947,6 +961,8 @@ const std::vector<std::string>& csgPhraseWords() {
                        "row", "line", "lined", "touching", "each", "other", "next", "stacked", "up", "hollow", "annular",
                        // ends of a part ("at its end", "on both ends")
                        "end", "ends", "both", "either", "every",
+                       // parts with a hole ("a drilled block")
+                       "bored", "pierced", "perforated", "holed",
                        // collective nouns of copies ("a stack of spheres")
                        "stack", "pile", "tower", "array", "set", "group", "cluster",
                        // intersections in words

@@ -158,6 +158,16 @@ TEST(CsgQueryText, DesignersPhrasingsOfDifferencesAndIntersections) {
             "union(difference('cylinder'<top 'a box'>, 'hollow'), 'a box')");
   EXPECT_EQ(shape(parse("a box with a hollow ball on top")),
             "union('a box', difference('ball'<top 'a box'>, 'hollow'))");
+  // Drilled, bored, pierced, perforated, holed: the part with a hole, as "with a hole" reads.
+  for (const char* word : {"drilled", "bored", "pierced", "perforated", "holed"}) {
+    const CsgQuery drilled = parse(std::string("a ") + word + " block");
+    EXPECT_EQ(shape(drilled), std::string("difference('block', '") + word + "')");
+    ASSERT_EQ(drilled.leaves.size(), 2u);
+    EXPECT_EQ(toJson(*drilled.leaves[1].condition), toJson(*holed.leaves[1].condition)) << word;
+  }
+  EXPECT_EQ(shape(parse("a drilled cube on top of a box")),
+            "union(difference('cube'<top 'a box'>, 'drilled'), 'a box')");
+  EXPECT_EQ(shape(parse("a plate drilled with a rod")), "difference('a plate', 'a rod')");
   // A noun without a shape cannot be hollowed: a 422 that says so.
   EXPECT_NE(errorOf("a hollow shape").find("needs a noun with a shape"), std::string::npos);
   // "with" alone joins a union; the cut applies to all before it.
