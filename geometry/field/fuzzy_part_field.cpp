@@ -29,6 +29,7 @@ FuzzyPartField::FuzzyPartField(const FuzzyPart& part, FuzzyPartFieldOptions opti
     throw Error(errc::kInvalidParameter, "evaluationBudget must be >= 1", "evaluationBudget");
   support_ = part_.boxAt(0.0);
   core_ = part_.boxAt(1.0);
+  coreMidpoint_ = crispPartBox(midpointPart(core_));
   for (int i = 0; i < kSlots; ++i) supportWidth_[i] = width(slot(support_, i));
   const FuzzyNumber* const values[kSlots] = {
       &part_.eps1, &part_.eps2, &part_.a1, &part_.a2, &part_.a3, &part_.kx,  &part_.ky,

@@ -158,6 +158,7 @@ class FuzzyPartField : public AlphaFieldSource {
   FuzzyPartFieldOptions options_;
   PartBox support_;          // P(0)
   PartBox core_;             // P(1)
+  PartBox coreMidpoint_;     // the one θ at the middle of P(1) (levelsAboveCut's guess)
   double supportWidth_[kPartSlots];  // widths of P(0), the yardstick for choosing a split
   const FuzzyNumber* values_[kPartSlots];  // the part's values, in slot order
   int fuzzySlots_[kPartSlots];            // the slots of the fuzzy values, fuzzyCount_ of them

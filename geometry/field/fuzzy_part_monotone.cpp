@@ -160,9 +160,8 @@ int FuzzyPartField::levelsAboveCut(const Vec3& p, AlphaLevels* out, Seed* up, Se
   // are shown and proven below whatever it is).
   {
     Interval d[kSlots];
-    const PartBox mid = crispPartBox(midpointPart(core_));
-    if (fuzzyCount_ == 0 || !insideOutsideSlopes(mid, {p.x, p.x}, {p.y, p.y}, {p.z, p.z},
-                                                 fuzzySlots_, fuzzyCount_, d))
+    if (fuzzyCount_ == 0 || !insideOutsideSlopes(coreMidpoint_, {p.x, p.x}, {p.y, p.y},
+                                                 {p.z, p.z}, fuzzySlots_, fuzzyCount_, d))
       return 0;
     for (int i = 0; i < kSlots; ++i) sign[i] = 0;
     for (int j = 0; j < fuzzyCount_; ++j) sign[fuzzySlots_[j]] = d[j].lo + d[j].hi >= 0.0 ? 1 : -1;

@@ -104,20 +104,8 @@ IntervalVec3 untwist(const Interval& t, const Interval& c, const IntervalVec3& p
   // An infinite z/C (a tiny C) leaves θ unknown: the full turn.
   const Interval theta =
       std::isfinite(zc.lo) && std::isfinite(zc.hi) ? mul(t, zc) : Interval{-kInf, kInf};
-  const double r = std::hypot(magnitude(p.x), magnitude(p.y));
-  const Interval disc{-r, r};
-  const Interval cs = cos(theta), sn = sin(theta);
-  Interval x = intersect(add(mul(cs, p.x), mul(sn, p.y)), disc);
-  Interval y = intersect(sub(mul(cs, p.y), mul(sn, p.x)), disc);
-  const double delta = 0.5 * (theta.hi - theta.lo);
-  if (delta < 0.5 * kPi) {  // also false for infinite or NaN ends
-    const double m = mid(theta), cm = std::cos(m), sm = std::sin(m);
-    const Interval xm = add(mul(cm, p.x), mul(sm, p.y)), ym = sub(mul(cm, p.y), mul(sm, p.x));
-    const double radial = (1.0 - std::cos(delta)) * r, sd = std::sin(delta);
-    const double px = radial + sd * magnitude(ym), py = radial + sd * magnitude(xm);
-    x = intersect(x, {xm.lo - px, xm.hi + px});
-    y = intersect(y, {ym.lo - py, ym.hi + py});
-  }
+  Interval x = p.x, y = p.y;
+  turnEnclosure(neg(theta), &x, &y);  // back by θ
   return {x, y, p.z};
 }
 
@@ -219,6 +207,27 @@ PlacedSuperquadric midpointPart(const PartBox& box) {
   part.placement.deg = mid(pl.deg);
   part.placement.scale = mid(pl.scale);
   return part;
+}
+
+// Interval cos θ and sin θ in the turn, intersected with the disc the turn keeps and, for
+// narrow θ, with the mid angle's turn widened by the change of a turn by at most δ (as unplace).
+void turnEnclosure(const Interval& theta, Interval* x, Interval* y) {
+  const double r = std::hypot(magnitude(*x), magnitude(*y));
+  const Interval disc{-r, r};
+  const Interval cs = cos(theta), sn = sin(theta);
+  Interval tx = intersect(sub(mul(cs, *x), mul(sn, *y)), disc);
+  Interval ty = intersect(add(mul(sn, *x), mul(cs, *y)), disc);
+  const double delta = 0.5 * (theta.hi - theta.lo);
+  if (delta < 0.5 * kPi) {  // also false for infinite or NaN ends
+    const double m = mid(theta), cm = std::cos(m), sm = std::sin(m);
+    const Interval xm = sub(mul(cm, *x), mul(sm, *y)), ym = add(mul(sm, *x), mul(cm, *y));
+    const double radial = (1.0 - std::cos(delta)) * r, sd = std::sin(delta);
+    const double px = radial + sd * magnitude(ym), py = radial + sd * magnitude(xm);
+    tx = intersect(tx, {xm.lo - px, xm.hi + px});
+    ty = intersect(ty, {ym.lo - py, ym.hi + py});
+  }
+  *x = tx;
+  *y = ty;
 }
 
 PartBox crispPartBox(const PlacedSuperquadric& part) {

@@ -48,6 +48,11 @@ struct PartBox {
   PlacementBox placement;
 };
 
+// Turns (x, y) about z by any angle of θ (radians): x' = x·cos θ − y·sin θ, y' = x·sin θ +
+// y·cos θ, enclosed for every point of x × y and every angle (the twist, and with −θ its
+// inverse).
+void turnEnclosure(const Interval& theta, Interval* x, Interval* y);
+
 // The degenerate box of a crisp part: every interval a single value.
 PartBox crispPartBox(const PlacedSuperquadric& part);
 

@@ -70,7 +70,7 @@ class ForwardMap {
     Interval x = mul(cell.x, add(mul(q_.kx, zc), Interval{1.0, 1.0}));
     Interval y = mul(cell.y, add(mul(q_.ky, zc), Interval{1.0, 1.0}));
     const Interval z = cell.z;
-    if (!isPoint(q_.t, 0.0)) twist(mul(q_.t, zc), &x, &y);
+    if (!isPoint(q_.t, 0.0)) turnEnclosure(mul(q_.t, zc), &x, &y);  // twist by θ = t·z/C
     Interval bx = x, bz = z;
     if (!isPoint(q_.kv, 0.0)) {
       // Bend (γ = k·z): X = x·cos γ + z·(1 − cos γ)/γ, Z = z·sin γ/γ − x·sin γ, the forms of
@@ -95,28 +95,6 @@ class ForwardMap {
 
  private:
   static double sqr(double a) { return a * a; }
-
-  // Rotation about z by θ (an interval): the interval product, intersected with the disc the turn
-  // keeps and, for narrow θ, with the mid angle's turn widened by the change of a turn by at most
-  // δ (as untwist in superquadric_bounds.cpp).
-  static void twist(const Interval& theta, Interval* x, Interval* y) {
-    const double r = std::hypot(magnitude(*x), magnitude(*y));
-    const Interval disc{-r, r};
-    const Interval cs = cos(theta), sn = sin(theta);
-    Interval tx = intersect(sub(mul(cs, *x), mul(sn, *y)), disc);
-    Interval ty = intersect(add(mul(sn, *x), mul(cs, *y)), disc);
-    const double delta = 0.5 * (theta.hi - theta.lo);
-    if (delta < 0.5 * kPi) {
-      const double m = mid(theta), cm = std::cos(m), sm = std::sin(m);
-      const Interval xm = sub(mul(cm, *x), mul(sm, *y)), ym = add(mul(sm, *x), mul(cm, *y));
-      const double radial = (1.0 - std::cos(delta)) * r, sd = std::sin(delta);
-      const double px = radial + sd * magnitude(ym), py = radial + sd * magnitude(xm);
-      tx = intersect(tx, {xm.lo - px, xm.hi + px});
-      ty = intersect(ty, {ym.lo - py, ym.hi + py});
-    }
-    *x = tx;
-    *y = ty;
-  }
 
   SuperquadricBox q_;
   PlacementBox pl_;

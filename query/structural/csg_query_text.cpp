@@ -391,7 +391,10 @@ class PhraseParser {
     }
     const size_t subjectLeaf = leaves_.size();  // the next leaf read, hollowed or not
     nlohmann::json subject = hollowed ? hollow(how) : drilled ? drilledPart(how) : leaf();
-    if (const int ends = endWords()) return atEnds(std::move(subject), subjectLeaf, ends == 2 && !hollowed);
+    // (A hollowed or drilled part is a difference of two leaves; copying its outer leaf alone would
+    // make the second copy whole, so at both ends it stays one.)
+    if (const int ends = endWords())
+      return atEnds(std::move(subject), subjectLeaf, ends == 2 && !hollowed && !drilled);
     const size_t before = previousHead_;
     std::optional<RelationWords> words = relationWords();
     head_ = subjectLeaf;

@@ -496,3 +496,30 @@ TEST(SuperquadricBounds, IsTameBoundsMagnitudeAndRejectsNaN) {
 
 }  // namespace
 }  // namespace fsdb
+
+namespace fsdb {
+namespace {
+
+// The turn's enclosure holds every sampled point turned by every sampled angle, narrow and wide.
+TEST(TurnEnclosure, HoldsSampledTurns) {
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int k = 0; k < 200; ++k) {
+    const double x0 = 4 * u(rng) - 2, y0 = 4 * u(rng) - 2, a0 = 8 * u(rng) - 4;
+    const Interval xs{x0, x0 + u(rng)}, ys{y0, y0 + u(rng)}, theta{a0, a0 + (k % 2 ? 0.1 : 4.0) * u(rng)};
+    Interval x = xs, y = ys;
+    turnEnclosure(theta, &x, &y);
+    for (int s = 0; s < 50; ++s) {
+      const double px = xs.lo + u(rng) * width(xs), py = ys.lo + u(rng) * width(ys);
+      const double t = theta.lo + u(rng) * width(theta);
+      const double tx = px * std::cos(t) - py * std::sin(t), ty = px * std::sin(t) + py * std::cos(t);
+      EXPECT_GE(tx, x.lo - 1e-12) << k;
+      EXPECT_LE(tx, x.hi + 1e-12) << k;
+      EXPECT_GE(ty, y.lo - 1e-12) << k;
+      EXPECT_LE(ty, y.hi + 1e-12) << k;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace fsdb

@@ -99,6 +99,9 @@ TEST(CsgQueryText, PartsAtTheEndsOfAPart) {
   EXPECT_EQ(shape(parse("a ball at the end of a rod")), "union('a ball', 'a rod')");
   EXPECT_EQ(shape(parse("balls on both ends of a rod")), "union('balls', 'balls', 'a rod')");
   EXPECT_EQ(shape(parse("a rod and a ball at the end of it")), "union('a rod', 'a ball')");
+  // A hollowed or drilled part is not copied by halves: one difference, not a whole second copy.
+  EXPECT_EQ(shape(parse("a rod with drilled balls on both ends")),
+            "union('a rod', difference('balls', 'drilled'))");
   // Other words after "at" and "on" stay relations.
   EXPECT_EQ(shape(parse("a box with a cylinder on its side")), "union('a box', 'a cylinder'<side 'a box'>)");
 }
