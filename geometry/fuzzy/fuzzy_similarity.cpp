@@ -1,6 +1,8 @@
 #include "geometry/fuzzy/fuzzy_similarity.h"
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 
 namespace fsdb {
 
@@ -41,6 +43,28 @@ double coverage(const FuzzyNumber& a, const FuzzyNumber& b) {
   if (areaB == 0) return heightOfIntersection(a, b);
   if (areaA == 0) return 0.0;
   return ratioOfAreas(cardinalityOfIntersection(a, b) / areaB);
+}
+
+double expectedMembership(const FuzzyNumber& a, const FuzzyNumber& b) {
+  const double areaA = a.cardinality();
+  if (areaA == 0) return heightOfIntersection(a, b);
+  // Between consecutive breakpoints of either set both memberships are linear, so their product
+  // is quadratic there and two-point Gauss-Legendre is exact; its nodes lie inside the piece, off
+  // any vertical side.
+  std::vector<double> xs;
+  for (const Breakpoint& p : a.breakpoints()) xs.push_back(p.x);
+  for (const Breakpoint& p : b.breakpoints()) xs.push_back(p.x);
+  std::sort(xs.begin(), xs.end());
+  const double lo = a.breakpoints().front().x, hi = a.breakpoints().back().x;
+  const double g = 0.5 / std::sqrt(3.0);
+  double sum = 0.0;
+  for (size_t i = 0; i + 1 < xs.size(); ++i) {
+    const double x0 = std::max(xs[i], lo), x1 = std::min(xs[i + 1], hi);
+    if (!(x1 > x0)) continue;
+    const double mid = 0.5 * (x0 + x1), w = x1 - x0;
+    for (const double x : {mid - g * w, mid + g * w}) sum += 0.5 * w * a.membership(x) * b.membership(x);
+  }
+  return ratioOfAreas(sum / areaA);
 }
 
 }  // namespace fsdb

@@ -30,4 +30,13 @@ double similarity(const FuzzyNumber& a, const FuzzyNumber& b);
 // vaguely as the words comes first (docs/design/linguistic-search.md, "Ties").
 double coverage(const FuzzyNumber& a, const FuzzyNumber& b);
 
+// The expected membership of the datum A in B: ∫ mu_A·mu_B / ∫ mu_A, the mean of mu_B over A
+// weighted by A's own membership (Zadeh's probability of a fuzzy event, with A normalised to a
+// density). A crisp A (no area) gives the height of A ∩ B, mu_B(x) for x, as S does. In [0, 1];
+// 1 when A lies in B's core however narrow A is (S is then |A|/|B|), and at most the largest
+// mu_B over A's support. The linguistic search scores a noun's defaults with it: "a knob" is
+// small, and a knob whose size is fuzzy within "small" is wholly a knob
+// (docs/design/linguistic-search.md, "Nouns are defaults").
+double expectedMembership(const FuzzyNumber& a, const FuzzyNumber& b);
+
 }  // namespace fsdb

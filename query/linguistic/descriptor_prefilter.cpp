@@ -30,6 +30,8 @@ PrefilterPlan combine(Kind kind, std::vector<PrefilterPlan> children) {
         if (seen.kind == Kind::kOverlap && seen.test.descriptor == c.test.descriptor && seen.set == c.set) {
           // Said once, said: its coverage bound stays valid for both (the same test fails both).
           seen.said = seen.said || c.said;
+          seen.bySimilarity = seen.bySimilarity || c.bySimilarity;
+          seen.byExpectedMembership = seen.byExpectedMembership || c.byExpectedMembership;
           return;
         }
     plan.children.push_back(std::move(c));
@@ -49,21 +51,25 @@ PrefilterPlan combine(Kind kind, std::vector<PrefilterPlan> children) {
 }
 
 // said: no noun's node above (QueryScore::coverage reads the leaves below).
-PrefilterPlan planOf(const QueryCondition& condition, bool andNeedsAll, bool forParts, bool said) {
+PrefilterPlan planOf(const QueryCondition& condition, bool andNeedsAll, bool forParts, bool said,
+                     bool nounDefaults = false) {
   said = said && condition.noun.empty();
+  nounDefaults = nounDefaults || !condition.noun.empty();
   switch (condition.kind) {
     case QueryCondition::Kind::kDescriptor: {
       PrefilterPlan plan = leaf(Kind::kOverlap);
       plan.test = supportTest(condition.descriptor, condition.set);
       plan.set = condition.set;
       plan.said = said;
+      plan.bySimilarity = !nounDefaults;
+      plan.byExpectedMembership = nounDefaults;
       return plan;
     }
     case QueryCondition::Kind::kAnd:
     case QueryCondition::Kind::kOr: {
       std::vector<PrefilterPlan> children;
       for (const QueryCondition& child : condition.children)
-        children.push_back(planOf(child, andNeedsAll, forParts, said));
+        children.push_back(planOf(child, andNeedsAll, forParts, said, nounDefaults));
       const bool all = condition.kind == QueryCondition::Kind::kAnd && andNeedsAll;
       return combine(all ? Kind::kAnd : Kind::kOr, std::move(children));
     }
@@ -139,12 +145,33 @@ double membershipIntegral(const FuzzyNumber& set, double lo, double hi) {
   return area;
 }
 
+namespace {
+
+double maxMembership(const FuzzyNumber& set, double lo, double hi) {
+  double m = std::max(set.membership(lo), set.membership(hi));
+  for (const Breakpoint& p : set.breakpoints())
+    if (p.x >= lo && p.x <= hi) m = std::max(m, p.mu);
+  return m;
+}
+
+// The bound of every wide value with support inside [lo, hi] (lo < hi), unraised: S <= |A∩B|/|B|
+// <= ∫_lo^hi μ_set / |set| (1 against a crisp set); expected membership <= max μ_set there.
+double wideBound(const PrefilterPlan& leaf, double lo, double hi) {
+  double bound = 0;
+  if (leaf.byExpectedMembership) bound = maxMembership(leaf.set, lo, hi);
+  if (leaf.bySimilarity) {
+    const double setArea = leaf.set.cardinality();
+    bound = std::max(bound, setArea > 0 ? membershipIntegral(leaf.set, lo, hi) / setArea * (1 + kSlack) : 1.0);
+  }
+  return bound;
+}
+
+}  // namespace
+
 double scoreBound(const PrefilterPlan& leaf, double supportLo, double supportHi, bool pending) {
   if (pending) return 1;
   if (supportLo == supportHi) return raised(leaf.set.membership(supportLo));
-  const double setArea = leaf.set.cardinality();
-  if (!(setArea > 0)) return 1;
-  return raised(membershipIntegral(leaf.set, supportLo, supportHi) / setArea * (1 + kSlack));
+  return raised(wideBound(leaf, supportLo, supportHi));
 }
 
 double coverageBound(const PrefilterPlan& leaf, double supportLo, double supportHi, bool pending) {
@@ -163,13 +190,6 @@ double absentCoverage(const PrefilterPlan& plan) {
 }
 
 namespace {
-
-double maxMembership(const FuzzyNumber& set, double lo, double hi) {
-  double m = std::max(set.membership(lo), set.membership(hi));
-  for (const Breakpoint& p : set.breakpoints())
-    if (p.x >= lo && p.x <= hi) m = std::max(m, p.mu);
-  return m;
-}
 
 // How μ_set runs over [lo, hi]: through its values at the ends and every breakpoint between.
 LevelOrder membershipOrder(const FuzzyNumber& set, double lo, double hi) {
@@ -212,11 +232,11 @@ std::vector<LevelPiece> levelPieces(const PrefilterPlan& leaf, double maxWidth, 
     if (maxWidth == 0) {
       piece.bound = crispLevelBound(leaf, start, end);
       piece.order = membershipOrder(leaf.set, start, end);
-    } else if (setArea > 0) {
+    } else if (setArea > 0 || leaf.byExpectedMembership) {
       // The widest support the piece holds ends at end + maxWidth; one ulp more against rounding
       // of support_hi - support_lo (widthClass).
       const double reach = std::nextafter(end + maxWidth * (1 + 1e-12), inf);
-      piece.bound = raised(membershipIntegral(leaf.set, start, reach) / setArea * (1 + kSlack));
+      piece.bound = raised(wideBound(leaf, start, reach));
     }
     pieces.push_back(piece);
   };

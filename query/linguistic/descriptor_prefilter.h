@@ -24,7 +24,8 @@
 // index returns, so the search can score candidates best bound first and stop once the k-th best
 // exact score beats the next bound (server/service/linguistic_search.h). For a kDescriptor condition:
 // a crisp value x scores μ_set(x) exactly; a wide value [slo, shi] scores at most
-// |A∩B|/|B| <= ∫_slo^shi μ_set / |set| (any value against a crisp set: 1); a pending object: 1.
+// |A∩B|/|B| <= ∫_slo^shi μ_set / |set| (any value against a crisp set: 1), or under a noun's
+// node (expected membership) at most the largest μ_set over [slo, shi]; a pending object: 1.
 // A shape takes the largest bound of its components. kAnd under a t-norm takes the children's
 // min (T <= min); kOr (max or a t-conorm: <= the bounded sum) and a non-t-norm kAnd (a mean is
 // <= max) take min(1, sum); kAll is 1. Each bound is raised by 1e-9 against rounding.
@@ -60,6 +61,11 @@ struct PrefilterPlan {
   // kOverlap: the words say it of the part itself, so QueryScore::coverage reads it (not a noun's
   // default: saysVagueness, query/linguistic/linguistic_query.h).
   bool said = false;
+  // kOverlap: how the leaf is scored. A noun's default scores its expected membership, at most
+  // the largest μ_set over the value's support (geometry/fuzzy/fuzzy_similarity.h); anything else
+  // S. A leaf said both ways (two merged leaves) is bounded for both.
+  bool bySimilarity = true;
+  bool byExpectedMembership = false;
   std::vector<PrefilterPlan> children;  // kAnd, kOr: two or more
 };
 
@@ -93,7 +99,8 @@ double membershipIntegral(const FuzzyNumber& set, double lo, double hi);
 // exactly (adjacent, disjoint, in order). Bounds (the rules above, over all the rows a piece can
 // hold): a crisp x in [s0, s1] scores μ_set(x) <= max of μ_set over [s0, s1] (at s0, s1 or a
 // breakpoint between: μ_set is piecewise linear); a wide value has support in
-// [s0, s1 + maxWidth], so S <= |A∩B|/|B| <= ∫_s0^(s1+maxWidth) μ_set / |set| (1 for a crisp set).
+// [s0, s1 + maxWidth], so S <= |A∩B|/|B| <= ∫_s0^(s1+maxWidth) μ_set / |set| (1 for a crisp set),
+// and a noun's default (expected membership) <= the largest μ_set over [s0, s1 + maxWidth].
 // Raised like scoreBound, and never below scoreBound of a row the piece holds.
 // order (crisp pieces only, else kAny): how μ_set runs over [fromLo, toLo], so the search can read
 // the rows best first and stop early: kRising (non-decreasing: best at the top, read by value

@@ -21,6 +21,9 @@ struct Context {
   const std::vector<DescriptorValue>* values;     // the component the descriptor conditions read
   std::string component;                          // its path, for explain
   std::vector<ConditionScore>* explain;
+  // Scoring a noun's defaults ("a knob" is small): a value scores its expected membership in the
+  // set, not S (geometry/fuzzy/fuzzy_similarity.h, expectedMembership).
+  bool nounDefaults = false;
 };
 
 double aggregate(const std::string& how, const std::vector<double>& scores) {
@@ -140,8 +143,9 @@ Scores score(const QueryCondition& c, Context& ctx) {
       if (ctx.values)
         for (const DescriptorValue& v : *ctx.values)
           if (v.descriptor == c.descriptor) {
-            s.score = similarity(v.value, c.set);
-            s.asked = c.asked ? similarity(v.value, *c.asked) : s.score;
+            const auto measure = ctx.nounDefaults ? expectedMembership : similarity;
+            s.score = measure(v.value, c.set);
+            s.asked = c.asked ? measure(v.value, *c.asked) : s.score;
             s.coverage = coverage(v.value, c.set);
           }
       break;
@@ -151,6 +155,8 @@ Scores score(const QueryCondition& c, Context& ctx) {
       asked.reserve(c.children.size());
       s.coverage = 1.0;  // the least of the children's
       const QueryCondition* previous = nullptr;  // the last descriptor child scored
+      const bool outer = ctx.nounDefaults;
+      ctx.nounDefaults = outer || !c.noun.empty();
       for (const QueryCondition& child : c.children) {
         // A descriptor condition said again right after itself ("a large large ... ball") scores
         // what it scored: the same set against the same value. Its explain entry is repeated, so
@@ -171,6 +177,7 @@ Scores score(const QueryCondition& c, Context& ctx) {
         s.coverage = std::min(s.coverage, one.coverage);
         previous = child.kind == Kind::kDescriptor ? &child : nullptr;
       }
+      ctx.nounDefaults = outer;
       s.score = aggregate(ctx.query->aggregation, scores);
       s.asked = aggregate(ctx.query->aggregation, asked);
       break;

@@ -148,5 +148,67 @@ TEST(FuzzySimilarity, DecreasesWithDistance) {
   }
 }
 
+// Expected membership ∫ mu_A·mu_B / ∫ mu_A: hand values, and where S and it part.
+TEST(FuzzySimilarity, ExpectedMembershipHandComputed) {
+  // A narrow value in a wide condition's core is wholly in it, where S is only |A| / |B|.
+  const FuzzyNumber small = FuzzyNumber::trapezoidal(0, 0, 0.3, 0.45);
+  const FuzzyNumber narrow = FuzzyNumber::triangular(0.1, 0.15, 0.2);
+  EXPECT_EQ(expectedMembership(narrow, small), 1.0);
+  EXPECT_NEAR(similarity(narrow, small), 0.05 / 0.375, 1e-12);
+  // tri(0,1,2) against the ramp mu_B(x) = x / 2 on [0, 2]: ∫ mu_A·x/2 = 1/2 (A symmetric about 1),
+  // over |A| = 1.
+  const FuzzyNumber ramp = FuzzyNumber::fromPoints({{0, 0}, {2, 1}, {2, 0}});
+  EXPECT_NEAR(expectedMembership(FuzzyNumber::triangular(0, 1, 2), ramp), 0.5, 1e-12);
+  // A crisp value: its membership, as S.
+  EXPECT_EQ(expectedMembership(FuzzyNumber::crisp(0.35), small), small.membership(0.35));
+  EXPECT_EQ(expectedMembership(FuzzyNumber::crisp(0.5), small), 0.0);
+  // Apart: 0.
+  EXPECT_EQ(expectedMembership(FuzzyNumber::triangular(1, 2, 3), small), 0.0);
+}
+
+// In [0, 1], at most the largest mu_B over A's support, 1 where A lies in B's core, and the
+// midpoint rule's integral.
+TEST(FuzzySimilarity, ExpectedMembershipRandomProperties) {
+  std::mt19937 rng(29);
+  int inCore = 0;
+  for (int i = 0; i < 400; ++i) {
+    const FuzzyNumber a = randomAny(rng, i), b = randomAny(rng, i / 4 + i);
+    const double e = expectedMembership(a, b);
+    EXPECT_GE(e, 0);
+    EXPECT_LE(e, 1);
+    const Interval s = a.support();
+    double most = std::max(b.membership(s.lo), b.membership(s.hi));
+    for (const Breakpoint& p : b.breakpoints())
+      if (p.x >= s.lo && p.x <= s.hi) most = std::max(most, p.mu);
+    EXPECT_LE(e, most + 1e-12);
+    if (a.isCrisp()) {
+      EXPECT_EQ(e, heightOfIntersection(a, b));
+      continue;
+    }
+    const int n = 200000;
+    const double h = (s.hi - s.lo) / n;
+    double product = 0;
+    for (int k = 0; k < n; ++k) {
+      const double x = s.lo + (k + 0.5) * h;
+      product += h * a.membership(x) * b.membership(x);
+    }
+    EXPECT_NEAR(e, product / a.cardinality(), 2e-4);
+    if (b.isCrisp() || !(b.core().lo <= s.lo && s.hi <= b.core().hi)) continue;
+    EXPECT_EQ(e, 1.0);
+    ++inCore;
+  }
+  // A narrow value inside a wide set's core: B's own core widened around a point of it.
+  for (int i = 0; i < 50; ++i) {
+    const FuzzyNumber b = testing::randomTrapezoidal(rng);
+    const Interval core = b.core();
+    const double x = uniform(rng, core.lo, core.hi), w = (core.hi - core.lo) / 8;
+    const FuzzyNumber a = FuzzyNumber::triangular(std::max(core.lo, x - w), x, std::min(core.hi, x + w));
+    if (a.cardinality() == 0) continue;
+    EXPECT_EQ(expectedMembership(a, b), 1.0);
+    ++inCore;
+  }
+  EXPECT_GT(inCore, 20);
+}
+
 }  // namespace
 }  // namespace fsdb

@@ -125,6 +125,25 @@ TEST(PartFromWords, FoundByItsOwnWords) {
             scoreDescriptors(very, describePart(make("a slightly bent cylinder"))).score);
 }
 
+// A noun's defaults score the expected membership of a part's value, not S: a knob is small, and
+// "a slightly flat knob" (its size fuzzy through a2, narrow beside "small") is wholly small. S
+// gave it |A∩B| / |B| = 0.053 and its words did not find it. What the words say is still S.
+TEST(PartFromWords, NounDefaultsScoreAFuzzyValueByItsExpectedMembership) {
+  const FuzzyPart knob = make("a slightly flat knob");
+  const FuzzyNumber size = valueOf(knob, "size");
+  ASSERT_FALSE(size.isCrisp());
+  const FuzzyNumber knobSize = FuzzyNumber::trapezoidal(0, 0, 0.3, 0.45);
+  ASSERT_LE(size.support().hi, knobSize.core().hi);
+  EXPECT_LT(similarity(size, knobSize), 0.2);
+  EXPECT_EQ(scoreDescriptors(parseLinguisticQuery("find a slightly flat knob", v()), describePart(knob)).score, 1.0);
+  // Said, "small" scores the same value by S, and the knob's own "small" default by its expected
+  // membership: the words' set is wider than the value, so S is below 1 while the default is 1.
+  const QueryScore said = scoreDescriptors(parseLinguisticQuery("find a small knob", v()), describePart(knob));
+  const FuzzyNumber small = v().plainSet(*v().adjective("small"));
+  EXPECT_NEAR(said.score, similarity(size, small), 1e-12);
+  EXPECT_LT(said.score, 1.0);
+}
+
 // A plain adjective beside a noun condition the words keep: the part takes a degree where both
 // conditions are highest; one extent beside the noun's proportions scales the whole part.
 TEST(PartFromWords, PlainAdjectivesTakeADegreeTheirNounAllows) {

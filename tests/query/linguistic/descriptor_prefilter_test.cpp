@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <random>
 
@@ -262,8 +263,46 @@ TEST(DescriptorPrefilter, BoundsAreAtLeastTheScores) {
     plan.said = false;
     EXPECT_EQ(coverageBound(plan, s.lo, s.hi, false), 1);
     if (score > 0 && bound < 1) ++tight;
+    // A noun's default scores its expected membership: bounded alone, and both ways when a said
+    // leaf and a noun's were merged into one.
+    plan.bySimilarity = false;
+    plan.byExpectedMembership = true;
+    const double defaultScore = expectedMembership(value, set);
+    EXPECT_GE(scoreBound(plan, s.lo, s.hi, false), defaultScore) << "value [" << s.lo << ", " << s.hi << "]";
+    plan.bySimilarity = true;
+    EXPECT_GE(scoreBound(plan, s.lo, s.hi, false), std::max(score, defaultScore));
   }
   EXPECT_GT(tight, 1000);
+}
+
+// The plan marks a noun's defaults for the expected membership they score, and a leaf said
+// and also a noun's default (merged) for both.
+TEST(DescriptorPrefilter, NounDefaultsAreBoundedByTheirExpectedMembership) {
+  const LinguisticQuery q = parseLinguisticQuery("find a small knob", activeVocabulary());
+  const PrefilterPlan plan = prefilterPlan(q, "part");
+  int defaults = 0, said = 0;
+  std::function<void(const PrefilterPlan&)> walk = [&](const PrefilterPlan& p) {
+    if (p.kind == PrefilterPlan::Kind::kOverlap) {
+      EXPECT_NE(p.bySimilarity, p.byExpectedMembership);
+      defaults += p.byExpectedMembership;
+      said += p.said;
+      EXPECT_EQ(p.said, p.bySimilarity);
+    }
+    for (const PrefilterPlan& c : p.children) walk(c);
+  };
+  walk(plan);
+  EXPECT_EQ(said, 1);      // small
+  EXPECT_EQ(defaults, 2);  // the knob's roundness and size
+  // A narrow size in the knob's core scores 1, and its piece of the level scan is bounded by 1.
+  const FuzzyNumber knobSize = FuzzyNumber::trapezoidal(0, 0, 0.3, 0.45);
+  PrefilterPlan leaf;
+  leaf.kind = PrefilterPlan::Kind::kOverlap;
+  leaf.test = supportTest("size", knobSize);
+  leaf.set = knobSize;
+  leaf.bySimilarity = false;
+  leaf.byExpectedMembership = true;
+  EXPECT_GE(scoreBound(leaf, 0.1, 0.12, false), 1.0);
+  for (const LevelPiece& piece : levelPieces(leaf, 0.02, 0.0, 0.28)) EXPECT_GE(piece.bound, 1.0);
 }
 
 // levelPieces: the pieces cover the range exactly, in order, and bound the score of every value
