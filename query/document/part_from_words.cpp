@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
 
 #include "geometry/core/error.h"
 #include "geometry/fuzzy/fuzzy_arithmetic.h"
+#include "geometry/fuzzy/fuzzy_similarity.h"
 #include "geometry/numeric/piecewise_linear.h"
 #include "query/linguistic/degree_sets.h"
 #include "query/linguistic/descriptors.h"
@@ -351,6 +353,67 @@ FuzzyNumber degreeForNoun(const Adjective& adjective, const FuzzyNumber& nounSet
   return FuzzyNumber::crisp(0.5 * (lo + hi));
 }
 
+// An exponent word beside a noun whose own exponent shape the words keep ("a round box", the
+// paper's rounded box; "a boxy ball", the boxiest ball): the query asks for both, and the shape
+// the word alone makes ("round": an ellipsoid) can score 0 for the noun, so the part's words did
+// not find it at all. The part's exponents then move along the path the word sets (eps1 = eps2 =
+// e for a whole-shape word, eps2 = e for a section word) to where the words themselves, read as
+// a query, score it highest: what the words find is what they make. Coarse to fine over e in
+// [kMinExponent, 4]; kept only where it scores higher than the word's own shape.
+void meetTheNounsShape(const std::string& text, bool section, const Vocabulary& vocabulary, FuzzyPart* part) {
+  LinguisticQuery query;
+  try {
+    query = parseLinguisticQuery(text, vocabulary);
+  } catch (const Error&) {
+    return;  // words the search reads around (routed, or left out): the part stays as made
+  }
+  const auto scoreAt = [&](double e) {
+    FuzzyPart candidate = *part;
+    candidate.eps2 = FuzzyNumber::crisp(e);
+    if (!section) candidate.eps1 = candidate.eps2;
+    return scoreDescriptors(query, describePart(candidate)).score;
+  };
+  // Only where the words keep a noun's exponent shape that the part as made misses: elsewhere the
+  // word's own set stands (a crisp compromise would lose its vagueness, and with it the ties
+  // that coverage breaks).
+  std::vector<const QueryCondition*> kept;
+  const std::function<void(const QueryCondition&, bool)> collect = [&](const QueryCondition& c, bool noun) {
+    noun = noun || !c.noun.empty();
+    if (noun && c.kind == QueryCondition::Kind::kDescriptor) {
+      const std::string* whole = vocabulary.wholeShapeDescriptor(c.descriptor);
+      if (exponentRule(whole ? *whole : c.descriptor)) kept.push_back(&c);
+    }
+    for (const QueryCondition& child : c.children) collect(child, noun);
+  };
+  collect(query.root, false);
+  const std::vector<DescriptorValue> made = describePart(*part);
+  const bool misses = std::any_of(kept.begin(), kept.end(), [&](const QueryCondition* c) {
+    for (const DescriptorValue& v : made)
+      if (v.descriptor == c->descriptor) return expectedMembership(v.value, c->set) < 1.0;
+    return false;
+  });
+  if (!misses) return;
+  const double asMade = scoreDescriptors(query, made).score;
+  double best = asMade, bestE = -1, step = 0.05;
+  for (double e = kMinExponent; e <= 4.0; e += step) {
+    const double s = scoreAt(e);
+    if (s > best) best = s, bestE = e;
+  }
+  if (bestE < 0) return;
+  for (int round = 0; round < 2; ++round) {  // around the best, a tenth of the step each time
+    const double centre = bestE;
+    step /= 10;
+    for (int k = -10; k <= 10; ++k) {
+      const double e = centre + k * step;
+      if (e < kMinExponent || e > 4.0) continue;
+      const double s = scoreAt(e);
+      if (s > best) best = s, bestE = e;
+    }
+  }
+  part->eps2 = FuzzyNumber::crisp(bestE);
+  if (!section) part->eps1 = part->eps2;
+}
+
 }  // namespace
 
 FuzzyPart partFromWords(const std::string& text, const Vocabulary& vocabulary) {
@@ -381,9 +444,12 @@ FuzzyPart partFromWords(const std::string& text, const Vocabulary& vocabulary) {
     for (const MeasureUse& m : words.measures) extents[m.descriptor] = m.extent;
     realizeExtents(extents, words.keepsProportions, &part);
   };
+  std::optional<bool> exponentWord;  // an exponent-shape word: whether a section word
   for (const AdjectiveUse& use : uses) {
     const Adjective& a = *use.adjective;
     const std::string& descriptor = descriptorOf(use);
+    if (const std::string* whole = vocabulary.wholeShapeDescriptor(descriptor); exponentRule(whole ? *whole : descriptor))
+      exponentWord = whole != nullptr;
     const FuzzyNumber d = use.nounSet ? degreeForNoun(a, *use.nounSet, vocabulary) : vocabulary.createdSet(a, use.intensity);
     const bool deformation = std::find(kOrder.begin(), kOrder.end(), descriptor) >=
                              std::find(kOrder.begin(), kOrder.end(), "bendness");
@@ -398,6 +464,7 @@ FuzzyPart partFromWords(const std::string& text, const Vocabulary& vocabulary) {
   // the noun's edge exponents at the degree the words say (query/linguistic/edges.h).
   if (words.edges) realizeEdges(words.edges->degree, *words.noun, vocabulary, &part);
   setExtents();
+  if (exponentWord && !words.edges) meetTheNounsShape(text, *exponentWord, vocabulary, &part);
   try {
     part.validate();
   } catch (const Error& e) {

@@ -27,6 +27,10 @@
 // the shape's adjectives: the noun's edge exponents (query/linguistic/edges.h: those below 1; a
 // cylinder's eps1 alone) take the edge degree through the rule of the vocabulary's edge
 // descriptor above (roundness: ε = max(0.05, d)); the others keep what the words gave them.
+// An exponent word beside a noun whose own exponent shape the words keep (a box's squareness:
+// "a round box", the paper's rounded box) moves the exponents along the word's path (eps1 = eps2
+// = e, or eps2 alone for a section word) to where the same words, read as a query, score the
+// part highest: the word's own shape could score 0 for the noun, and the words did not find it.
 // A word the grammar lacks is routed onto the vocabulary first (query/linguistic/word_routes.h:
 // its lemma, WordNet's links), so "a skinny pole" is made as "a thin pole"; the document keeps
 // the words as written.

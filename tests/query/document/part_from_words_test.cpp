@@ -246,15 +246,18 @@ TEST(PartFromWords, SectionWordsSetTheSectionAlone) {
   const FuzzyPart box = make("a box"), cylindrical = make("a cylindrical box");
   EXPECT_EQ(cylindrical.eps1, box.eps1);
   EXPECT_NE(cylindrical.eps2, box.eps2);
-  // The same rule as roundness's (max(0.05, d)), on eps2 alone: the same degrees.
-  EXPECT_NEAR(similarity(valueOf(cylindrical, "section-roundness"), valueOf(make("a round box"), "roundness")), 1.0,
-              1e-9);
-  EXPECT_NEAR(similarity(valueOf(make("a very tubular box"), "section-roundness"),
-                         valueOf(make("a very round box"), "roundness")),
+  // The same rule as roundness's (max(0.05, d)), on eps2 alone: the same degrees. (On a rod,
+  // whose roundness the words replace: a box keeps its squareness beside them, and its part
+  // meets it, ExponentWordsMeetANounsKeptShape.)
+  EXPECT_NEAR(similarity(valueOf(make("a cylindrical rod"), "section-roundness"), valueOf(make("a round rod"), "roundness")),
+              1.0, 1e-9);
+  EXPECT_NEAR(similarity(valueOf(make("a very tubular rod"), "section-roundness"),
+                         valueOf(make("a very round rod"), "roundness")),
               1.0, 1e-9);
   // A section word acts after a word on the whole shape, whatever the text's order.
-  EXPECT_EQ(make("a cylindrical square box").eps2, cylindrical.eps2);
-  EXPECT_EQ(make("a cylindrical square box").eps1, make("a square box").eps1);
+  EXPECT_EQ(make("a cylindrical square rod").eps2, make("a cylindrical rod").eps2);
+  EXPECT_EQ(make("a cylindrical square rod").eps1, make("a square rod").eps1);
+  EXPECT_NE(make("a square rod").eps1, make("a rod").eps1);
 }
 
 // On a flat noun "round" and "square" make the outline: a round plate is a plate with a round
@@ -314,9 +317,36 @@ TEST(PartFromWords, ExponentWordsInvertTheirDescriptorExactly) {
   // (A set starts at membership 0: a jump is two points at one x.)
   expectPoints(make("an extremely square box").eps1, {{0.01, 0}, {0.01, 1}, {0.05, 1}, {0.2, 0}});
   // slightly: trap(0, 0.1, 0.25, 0.4); the degrees under 0.01 (membership up to 0.1) gather at it.
-  expectPoints(make("a slightly round box").eps1, {{0.01, 0}, {0.01, 0.1}, {0.1, 1}, {0.25, 1}, {0.4, 0}});
+  // (On a ball: a box keeps its square shape beside a round word, ExponentWordsMeetANounsKeptShape.)
+  expectPoints(make("a slightly round ball").eps1, {{0.01, 0}, {0.01, 0.1}, {0.1, 1}, {0.25, 1}, {0.4, 0}});
   const LinguisticQuery q = parseLinguisticQuery("find a moderately round shape", v());
   EXPECT_NEAR(scoreDescriptors(q, describePart(make("a moderately round ball"))).score, 1.0, 1e-9);
+}
+
+// An exponent word beside a noun whose exponent shape the words keep (a box is its squareness,
+// an octahedron its bevels): the word's own shape scored 0 for the noun, and the words did not
+// find their part at all. The exponents now sit where the words score the part highest along
+// the word's path (eps1 = eps2 = e; eps2 alone for a section word).
+TEST(PartFromWords, ExponentWordsMeetANounsKeptShape) {
+  for (const char* text : {"a round box", "a round octahedron", "a boxy ellipsoid", "a cylindrical box",
+                           "a slightly round box"}) {
+    const LinguisticQuery q = parseLinguisticQuery(text, v());
+    const FuzzyPart part = make(text);
+    const double own = scoreDescriptors(q, describePart(part)).score;
+    EXPECT_GT(own, 0.2) << text;
+    const bool section = std::string(text) == "a cylindrical box";
+    for (double e = 0.01; e <= 4.0; e += 0.01) {
+      FuzzyPart other = part;
+      other.eps2 = FuzzyNumber::crisp(e);
+      if (!section) other.eps1 = other.eps2;
+      ASSERT_GE(own + 1e-3, scoreDescriptors(q, describePart(other)).score) << text << " at " << e;
+    }
+  }
+  EXPECT_EQ(make("a cylindrical box").eps1, make("a box").eps1);  // a section word moves eps2 alone
+  // Where the noun's shape is replaced or met, the word's own set stands.
+  EXPECT_FALSE(make("a very boxy ball").eps1.isCrisp());
+  EXPECT_FALSE(make("a slightly round ball").eps1.isCrisp());
+  EXPECT_EQ(make("a round ball").eps1, make("a ball").eps1);
 }
 
 // "with rounded edges" sets the exponents as the adjective before the noun does ("a rounded
