@@ -32,6 +32,7 @@ PrefilterPlan combine(Kind kind, std::vector<PrefilterPlan> children) {
           seen.said = seen.said || c.said;
           seen.bySimilarity = seen.bySimilarity || c.bySimilarity;
           seen.byExpectedMembership = seen.byExpectedMembership || c.byExpectedMembership;
+          seen.relativeTo = std::min(seen.relativeTo, c.relativeTo);
           return;
         }
     plan.children.push_back(std::move(c));
@@ -63,6 +64,7 @@ PrefilterPlan planOf(const QueryCondition& condition, bool andNeedsAll, bool for
       plan.said = said;
       plan.bySimilarity = !nounDefaults;
       plan.byExpectedMembership = nounDefaults;
+      plan.relativeTo = condition.relativeTo;
       return plan;
     }
     case QueryCondition::Kind::kAnd:
@@ -84,6 +86,8 @@ PrefilterPlan planOf(const QueryCondition& condition, bool andNeedsAll, bool for
 constexpr double kSlack = 1e-9;  // bounds are raised by this against rounding
 
 double raised(double bound) { return std::min(1.0, bound + kSlack); }
+// A leaf's bound of its raw score (μ, S or expected membership) as it scores: over relativeTo.
+double raised(const PrefilterPlan& leaf, double bound) { return raised(bound / leaf.relativeTo); }
 
 // Children (by id) combined: the intersection with the min of the bounds, or the union with the
 // bounded sum; coverage bounds the min or the max (absentA, absentB: absentCoverage of the
@@ -170,8 +174,8 @@ double wideBound(const PrefilterPlan& leaf, double lo, double hi) {
 
 double scoreBound(const PrefilterPlan& leaf, double supportLo, double supportHi, bool pending) {
   if (pending) return 1;
-  if (supportLo == supportHi) return raised(leaf.set.membership(supportLo));
-  return raised(wideBound(leaf, supportLo, supportHi));
+  if (supportLo == supportHi) return raised(leaf, leaf.set.membership(supportLo));
+  return raised(leaf, wideBound(leaf, supportLo, supportHi));
 }
 
 double coverageBound(const PrefilterPlan& leaf, double supportLo, double supportHi, bool pending) {
@@ -206,7 +210,7 @@ LevelOrder membershipOrder(const FuzzyNumber& set, double lo, double hi) {
 }  // namespace
 
 double crispLevelBound(const PrefilterPlan& leaf, double fromLo, double toLo) {
-  return raised(maxMembership(leaf.set, fromLo, toLo));
+  return raised(leaf, maxMembership(leaf.set, fromLo, toLo));
 }
 
 std::vector<LevelPiece> levelPieces(const PrefilterPlan& leaf, double maxWidth, double fromLo, double toLo) {
@@ -236,7 +240,7 @@ std::vector<LevelPiece> levelPieces(const PrefilterPlan& leaf, double maxWidth, 
       // The widest support the piece holds ends at end + maxWidth; one ulp more against rounding
       // of support_hi - support_lo (widthClass).
       const double reach = std::nextafter(end + maxWidth * (1 + 1e-12), inf);
-      piece.bound = raised(wideBound(leaf, start, reach));
+      piece.bound = raised(leaf, wideBound(leaf, start, reach));
     }
     pieces.push_back(piece);
   };

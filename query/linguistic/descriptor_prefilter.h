@@ -66,6 +66,9 @@ struct PrefilterPlan {
   // S. A leaf said both ways (two merged leaves) is bounded for both.
   bool bySimilarity = true;
   bool byExpectedMembership = false;
+  // kOverlap: QueryCondition::relativeTo (the score is min(1, s / relativeTo)), so every bound is
+  // divided by it; two merged leaves keep the smaller.
+  double relativeTo = 1.0;
   std::vector<PrefilterPlan> children;  // kAnd, kOr: two or more
 };
 

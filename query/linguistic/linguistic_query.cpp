@@ -143,6 +143,23 @@ bool isProportion(const std::string& d) { return d == "elongation" || d == "flat
 // Whether two sets over the degrees contradict each other: no degree belongs to both (exactly).
 bool contradicts(const FuzzyNumber& a, const FuzzyNumber& b) { return heightOfIntersection(a, b) == 0.0; }
 
+// A plain adjective `word` (under "and" only: not under "not" or "or", whose scores mean
+// otherwise) on the descriptor of a noun's kept condition `noun`, where the two meet only up to
+// h in (0, 1): both score relative to h (QueryCondition::relativeTo).
+void relateToNoun(QueryCondition* word, QueryCondition* noun) {
+  if (word->kind == Kind::kAnd) {
+    for (QueryCondition& child : word->children) relateToNoun(&child, noun);
+    return;
+  }
+  if (word->kind != Kind::kDescriptor || !word->plainRamp || word->descriptor != noun->descriptor ||
+      word->edges != QueryCondition::Edges::kNone)
+    return;
+  const double h = heightOfIntersection(word->set, noun->set);
+  if (!(h > 0.0) || h >= 1.0) return;
+  word->relativeTo = std::min(word->relativeTo, h);
+  noun->relativeTo = std::min(noun->relativeTo, h);
+}
+
 // Whether the words a user says replace a noun's condition (nouns are defaults, not vetoes):
 //  * a condition on the same descriptor that contradicts the noun's ("a slightly tapered cone":
 //    the cone's own taper is high; "a tapered cylinder" agrees with the cylinder's and both hold),
@@ -719,8 +736,12 @@ class Parser {
       std::vector<QueryCondition> leaves;
       const auto graded = [&](const QueryCondition& c) { return !c.plainRamp; };
       for (const NounCondition& c : noun.conditions)
-        if (!overriddenByWords(c, noun, said, graded))
+        if (!overriddenByWords(c, noun, said, graded)) {
           leaves.push_back(descriptorCondition(c.descriptor, c.set, nounText + ": " + c.descriptor));
+          // A plain word the noun's condition caps: both score relative to what they allow together.
+          for (std::vector<QueryCondition>* words : {&parts, &clause})
+            for (QueryCondition& w : *words) relateToNoun(&w, &leaves.back());
+        }
       QueryCondition node;
       if (leaves.size() == 1) {
         node = std::move(leaves[0]);

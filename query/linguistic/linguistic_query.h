@@ -107,6 +107,14 @@ struct QueryCondition {
   // A plain adjective's set (Vocabulary::plainSet of an adjective without a `set` of its own): it
   // ranks by degree and states no degree of its own, so a noun's condition it agrees with stays.
   bool plainRamp = false;
+  // A plain adjective and the noun's condition it meets on the same descriptor ("a tapered
+  // cylinder": tapered, and the cylinder's "hardly tapered"), where the two can be met together
+  // only up to h < 1, the height of their intersection: both score relative to it, min(1, s / h)
+  // (the words read as "tapered, as cylinders go": Dubois & Prade's conditioning of a possibility
+  // on the noun). It rescales the pair's scores alike, so where the pair decides an object's
+  // score (the least under min) no order changes, only what the score says: the most tapered
+  // cylinder the words allow scores 1, not h. 1 elsewhere.
+  double relativeTo = 1.0;
   // A closest-match query (query/linguistic/closest_match.h): `asked` is the set the words asked
   // where `set` is it widened (a kDescriptor scores on `set` and explains its score on `asked`).
   std::optional<FuzzyNumber> asked;

@@ -27,6 +27,7 @@ nlohmann::json conditionJson(const QueryCondition& c) {
     j["descriptor"] = c.descriptor;
     j["set"] = toJson(c.set);
     if (c.measure) j["measure"] = toJson(*c.measure);  // the extent in world units
+    if (c.relativeTo < 1.0) j["relative_to"] = c.relativeTo;  // scores min(1, s / relative_to)
   }
   if (c.kind == Kind::kRelation) {
     j["direction"] = c.direction;

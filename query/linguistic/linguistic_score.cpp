@@ -146,6 +146,10 @@ Scores score(const QueryCondition& c, Context& ctx) {
             const auto measure = ctx.nounDefaults ? expectedMembership : similarity;
             s.score = measure(v.value, c.set);
             s.asked = c.asked ? measure(v.value, *c.asked) : s.score;
+            if (c.relativeTo < 1.0) {  // QueryCondition::relativeTo
+              s.score = std::min(1.0, s.score / c.relativeTo);
+              s.asked = std::min(1.0, s.asked / c.relativeTo);
+            }
             s.coverage = coverage(v.value, c.set);
           }
       break;

@@ -157,11 +157,22 @@ TEST(PartFromWords, PlainAdjectivesTakeADegreeTheirNounAllows) {
   const FuzzyNumber tapered = v().plainSet(*v().adjective("tapered"));
   const FuzzyNumber cylinderTaper = FuzzyNumber::trapezoidal(0, 0, 0.2, 0.4);
   EXPECT_NEAR(tapered.membership(t), cylinderTaper.membership(t), 1e-9);
+  // The query scores the two relative to where they meet (LinguisticQuery,
+  // APlainWordCappedByItsNounScoresRelativeToTheirMeeting): the part is as tapered as the two
+  // allow together, so its words score it 1; no other taper scores more.
   const LinguisticQuery q = parseLinguisticQuery("find a tapered cylinder", v());
-  const double own = scoreDescriptors(q, describePart(make("a tapered cylinder"))).score;
-  EXPECT_NEAR(own, tapered.membership(t), 1e-6);
-  for (double other : {0.1, 0.2, 0.25, 0.35, 0.45})
-    EXPECT_GE(own, std::min(tapered.membership(other), cylinderTaper.membership(other))) << other;
+  const auto scoreOf = [&](const FuzzyPart& p) { return scoreDescriptors(q, describePart(p)).score; };
+  const double own = scoreOf(make("a tapered cylinder"));
+  EXPECT_NEAR(own, 1.0, 1e-6);
+  const double h = heightOfIntersection(tapered, cylinderTaper);
+  EXPECT_NEAR(tapered.membership(t), h, 1e-6);
+  for (double other : {0.1, 0.2, 0.25, 0.35, 0.45}) {
+    FuzzyPart p = make("a tapered cylinder");
+    p.kx = p.ky = FuzzyNumber::crisp(-other);
+    EXPECT_GE(own, scoreOf(p)) << other;
+    EXPECT_NEAR(scoreOf(p), std::min(1.0, std::min(tapered.membership(other), cylinderTaper.membership(other)) / h), 1e-9)
+        << other;
+  }
   // Where the two cores meet, the middle of where both are 1: "a long board" is as long as a board.
   const FuzzyNumber slender = valueOf(make("a long board"), "slenderness");
   EXPECT_NEAR(v().plainSet(*v().adjective("long")).membership(slender.core().lo), 1.0, 1e-9);

@@ -271,6 +271,10 @@ TEST(DescriptorPrefilter, BoundsAreAtLeastTheScores) {
     EXPECT_GE(scoreBound(plan, s.lo, s.hi, false), defaultScore) << "value [" << s.lo << ", " << s.hi << "]";
     plan.bySimilarity = true;
     EXPECT_GE(scoreBound(plan, s.lo, s.hi, false), std::max(score, defaultScore));
+    // Scored relative to a meeting height h (QueryCondition::relativeTo): min(1, s / h).
+    plan.relativeTo = testing::uniform(rng, 0.1, 1.0);
+    EXPECT_GE(scoreBound(plan, s.lo, s.hi, false), std::min(1.0, std::max(score, defaultScore) / plan.relativeTo));
+    plan.relativeTo = 1.0;
   }
   EXPECT_GT(tight, 1000);
 }

@@ -11,6 +11,7 @@
 
 #include "geometry/core/error.h"
 #include "geometry/fuzzy/fuzzy_arithmetic.h"
+#include "geometry/fuzzy/fuzzy_similarity.h"
 #include "query/json/fuzzy_json.h"
 #include "query/linguistic/degree_sets.h"
 #include "query/linguistic/descriptors.h"
@@ -241,6 +242,44 @@ TEST(LinguisticQuery, NounsAreDefaultsTheWordsOverride) {
 }
 
 // Adjectives after the noun read as its clause: "ball small" is "a ball that is small".
+// A plain word the noun's kept condition caps ("a tapered cylinder": tapered, and the cylinder's
+// "hardly tapered", which meet at most at h = 1/3): both leaves score relative to h, so the most
+// tapered cylinder the words allow scores 1, and the order of cylinders by taper is what it was.
+TEST(LinguisticQuery, APlainWordCappedByItsNounScoresRelativeToTheirMeeting) {
+  const LinguisticQuery q = parse("find a tapered cylinder");
+  std::vector<QueryCondition> taper;
+  for (const QueryCondition& leaf : leavesOf(q.root))
+    if (leaf.descriptor == "taperness") taper.push_back(leaf);
+  ASSERT_EQ(taper.size(), 2u);
+  const double h = heightOfIntersection(taper[0].set, taper[1].set);
+  ASSERT_GT(h, 0.2);
+  ASSERT_LT(h, 0.5);
+  EXPECT_EQ(taper[0].relativeTo, h);
+  EXPECT_EQ(taper[1].relativeTo, h);
+  EXPECT_EQ(toJson(q)["condition"]["children"][0]["relative_to"], h);
+  const auto cylinder = [&](double t) {
+    return scoreDescriptors(q, {{"squariness", FuzzyNumber::crisp(0.45)},
+                                {"roundness", FuzzyNumber::crisp(0.55)},
+                                {"taperness", FuzzyNumber::crisp(t)}})
+        .score;
+  };
+  double best = 0, bestT = 0;
+  for (double t = 0; t <= 1.0; t += 0.001) {
+    const double raw = std::min(taper[0].set.membership(t), taper[1].set.membership(t));
+    EXPECT_NEAR(cylinder(t), std::min(1.0, raw / h), 1e-9) << t;
+    if (cylinder(t) > best) best = cylinder(t), bestT = t;
+  }
+  EXPECT_NEAR(best, 1.0, 1e-2);
+  EXPECT_GT(bestT, 0.3);
+  EXPECT_LT(cylinder(0.2), cylinder(1.0 / 3));  // the designers' tapered cylinder before the slightly tapered one
+  EXPECT_EQ(cylinder(1.0), 0.0);                // and a cone is no cylinder
+  // Where the two meet fully, under "not" or "or", with an intensity (which replaces the noun's
+  // condition), or with no noun condition on the descriptor: no rescaling.
+  for (const char* text : {"find a long board", "find a cylinder that is not tapered", "find a slightly tapered cylinder",
+                           "find a tapered ball", "find a cylinder that is tapered or bent"})
+    for (const QueryCondition& leaf : leavesOf(parse(text).root)) EXPECT_EQ(leaf.relativeTo, 1.0) << text;
+}
+
 TEST(LinguisticQuery, ConditionsAfterTheNoun) {
   EXPECT_EQ(meaning("ball small"), meaning("a ball that is small"));
   EXPECT_EQ(meaning("cylinder very long and slightly bent"), meaning("a cylinder that is very long and slightly bent"));
