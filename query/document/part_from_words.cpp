@@ -357,9 +357,10 @@ FuzzyNumber degreeForNoun(const Adjective& adjective, const FuzzyNumber& nounSet
 // paper's rounded box; "a boxy ball", the boxiest ball): the query asks for both, and the shape
 // the word alone makes ("round": an ellipsoid) can score 0 for the noun, so the part's words did
 // not find it at all. The part's exponents then move along the path the word sets (eps1 = eps2 =
-// e for a whole-shape word, eps2 = e for a section word) to where the words themselves, read as
-// a query, score it highest: what the words find is what they make. Coarse to fine over e in
-// [kMinExponent, 4]; kept only where it scores higher than the word's own shape.
+// e for a whole-shape word; for a section word eps2, then eps1, then eps2 again) to where the
+// words themselves, read as a query, score it highest: what the words find is what they make.
+// Coarse to fine over e in [kMinExponent, 4]; kept only where it scores higher than the word's
+// own shape.
 void meetTheNounsShape(const std::string& text, bool section, const Vocabulary& vocabulary, FuzzyPart* part) {
   LinguisticQuery query;
   try {
@@ -367,12 +368,6 @@ void meetTheNounsShape(const std::string& text, bool section, const Vocabulary& 
   } catch (const Error&) {
     return;  // words the search reads around (routed, or left out): the part stays as made
   }
-  const auto scoreAt = [&](double e) {
-    FuzzyPart candidate = *part;
-    candidate.eps2 = FuzzyNumber::crisp(e);
-    if (!section) candidate.eps1 = candidate.eps2;
-    return scoreDescriptors(query, describePart(candidate)).score;
-  };
   // Only where the words keep a noun's exponent shape that the part as made misses: elsewhere the
   // word's own set stands (a crisp compromise would lose its vagueness, and with it the ties
   // that coverage breaks).
@@ -393,25 +388,44 @@ void meetTheNounsShape(const std::string& text, bool section, const Vocabulary& 
     return false;
   });
   if (!misses) return;
-  const double asMade = scoreDescriptors(query, made).score;
-  double best = asMade, bestE = -1, step = 0.05;
-  for (double e = kMinExponent; e <= 4.0; e += step) {
-    const double s = scoreAt(e);
-    if (s > best) best = s, bestE = e;
-  }
-  if (bestE < 0) return;
-  for (int round = 0; round < 2; ++round) {  // around the best, a tenth of the step each time
-    const double centre = bestE;
-    step /= 10;
-    for (int k = -10; k <= 10; ++k) {
-      const double e = centre + k * step;
-      if (e < kMinExponent || e > 4.0) continue;
+  double best = scoreDescriptors(query, made).score;
+  // The best e along one path (set(e, candidate) puts e in), coarse to fine; false when no e beats
+  // `best` (the part stays).
+  const auto along = [&](const std::function<void(double, FuzzyPart*)>& set) {
+    const auto scoreAt = [&](double e) {
+      FuzzyPart candidate = *part;
+      set(e, &candidate);
+      return scoreDescriptors(query, describePart(candidate)).score;
+    };
+    double bestE = -1, step = 0.05;
+    for (double e = kMinExponent; e <= 4.0; e += step) {
       const double s = scoreAt(e);
       if (s > best) best = s, bestE = e;
     }
+    if (bestE < 0) return false;
+    for (int round = 0; round < 2; ++round) {  // around the best, a tenth of the step each time
+      const double centre = bestE;
+      step /= 10;
+      for (int k = -10; k <= 10; ++k) {
+        const double e = centre + k * step;
+        if (e < kMinExponent || e > 4.0) continue;
+        const double s = scoreAt(e);
+        if (s > best) best = s, bestE = e;
+      }
+    }
+    set(bestE, part);
+    return true;
+  };
+  const auto setBoth = [](double e, FuzzyPart* p) { p->eps1 = p->eps2 = FuzzyNumber::crisp(e); };
+  const auto setEps1 = [](double e, FuzzyPart* p) { p->eps1 = FuzzyNumber::crisp(e); };
+  const auto setEps2 = [](double e, FuzzyPart* p) { p->eps2 = FuzzyNumber::crisp(e); };
+  if (!section) {
+    along(setBoth);
+    return;
   }
-  part->eps2 = FuzzyNumber::crisp(bestE);
-  if (!section) part->eps1 = part->eps2;
+  // A section word: eps2 first, then the ends' eps1 that the noun's shape also reads (a box's
+  // squareness is the mean over both), then eps2 again.
+  if (along(setEps2) && along(setEps1)) along(setEps2);
 }
 
 }  // namespace

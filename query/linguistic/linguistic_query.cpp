@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <functional>
+#include <map>
+#include <mutex>
 #include <set>
 
 #include "geometry/core/closest_names.h"
@@ -17,6 +19,7 @@
 #include "query/json/fuzzy_json.h"
 #include "query/json/number_phrases.h"
 #include "query/linguistic/degree_sets.h"
+#include "query/linguistic/descriptors.h"
 #include "query/linguistic/edges.h"
 #include "query/linguistic/query_tokens.h"
 #include "query/linguistic/vocabulary.h"
@@ -155,6 +158,54 @@ void relateToNoun(QueryCondition* word, QueryCondition* noun) {
       word->edges != QueryCondition::Edges::kNone)
     return;
   const double h = heightOfIntersection(word->set, noun->set);
+  if (!(h > 0.0) || h >= 1.0) return;
+  word->relativeTo = std::min(word->relativeTo, h);
+  noun->relativeTo = std::min(noun->relativeTo, h);
+}
+
+// The most that an exponent-shape condition `word` and a noun's kept one on another exponent
+// descriptor `noun` ("a round box": roundness and the box's squariness) give together over every
+// part: max over eps1, eps2 of min(μ_word, μ_noun) of the two descriptors' degrees, which read the
+// exponents alone. On a grid of 0.01 over [0.01, 4]^2 (the degrees are piecewise linear in the
+// exponents, so the grid is within 0.01·slope of the sup); cached per pair, for a text repeats them.
+double exponentShapesMeeting(const QueryCondition& word, const QueryCondition& noun) {
+  static std::mutex mutex;
+  static std::map<std::string, double> cache;
+  const std::string key = word.descriptor + toJson(word.set).dump() + noun.descriptor + toJson(noun.set).dump();
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    auto it = cache.find(key);
+    if (it != cache.end()) return it->second;
+  }
+  const int w = descriptorIndex(word.descriptor), n = descriptorIndex(noun.descriptor);
+  PlacedSuperquadric part;
+  double best = 0.0;
+  for (int i = 1; i <= 400 && best < 1.0; ++i)
+    for (int j = 1; j <= 400; ++j) {
+      part.params.eps1 = 0.01 * i;
+      part.params.eps2 = 0.01 * j;
+      best = std::max(best, std::min(word.set.membership(descriptorDegree(w, part)),
+                                     noun.set.membership(descriptorDegree(n, part))));
+    }
+  std::lock_guard<std::mutex> lock(mutex);
+  if (cache.size() >= 4096) cache.clear();  // bounded: the vocabulary's sets make far fewer pairs
+  cache[key] = best;
+  return best;
+}
+
+// An exponent word (plain or with an intensity, under "and" only) beside a noun's kept exponent
+// shape on another descriptor: both score relative to the most they give together, as a plain
+// word and its noun's condition on one descriptor do (relateToNoun): "a round box" is the roundest
+// box, and the roundest box the words allow scores 1.
+void relateExponentShapes(QueryCondition* word, QueryCondition* noun) {
+  if (word->kind == Kind::kAnd) {
+    for (QueryCondition& child : word->children) relateExponentShapes(&child, noun);
+    return;
+  }
+  if (word->kind != Kind::kDescriptor || word->edges != QueryCondition::Edges::kNone ||
+      !isExponentShape(word->descriptor) || !isExponentShape(noun->descriptor) || word->descriptor == noun->descriptor)
+    return;
+  const double h = exponentShapesMeeting(*word, *noun);
   if (!(h > 0.0) || h >= 1.0) return;
   word->relativeTo = std::min(word->relativeTo, h);
   noun->relativeTo = std::min(noun->relativeTo, h);
@@ -740,7 +791,10 @@ class Parser {
           leaves.push_back(descriptorCondition(c.descriptor, c.set, nounText + ": " + c.descriptor));
           // A plain word the noun's condition caps: both score relative to what they allow together.
           for (std::vector<QueryCondition>* words : {&parts, &clause})
-            for (QueryCondition& w : *words) relateToNoun(&w, &leaves.back());
+            for (QueryCondition& w : *words) {
+              relateToNoun(&w, &leaves.back());
+              relateExponentShapes(&w, &leaves.back());
+            }
         }
       QueryCondition node;
       if (leaves.size() == 1) {

@@ -251,11 +251,16 @@ TEST(PartFromWords, ExtentWordsKeepTheAxesInTheirRoles) {
   }
 }
 
-// Words on the traverse section set eps2 alone ("a cylindrical box" keeps the box's eps1, so its
-// ends stay flat), after the whole shape's words. They set nothing before: the part was the box.
+// Words on the traverse section set eps2 alone ("a cylindrical plate" keeps the plate's eps1, so its
+// ends stay flat), after the whole shape's words. They set nothing before: the part was the noun.
+// Beside a box, which keeps its squareness, the ends may only sharpen towards it
+// (ExponentWordsMeetANounsKeptShape): they stay flat.
 TEST(PartFromWords, SectionWordsSetTheSectionAlone) {
   const FuzzyPart box = make("a box"), cylindrical = make("a cylindrical box");
-  EXPECT_EQ(cylindrical.eps1, box.eps1);
+  EXPECT_EQ(make("a cylindrical plate").eps1, make("a plate").eps1);
+  EXPECT_NE(make("a cylindrical plate").eps2, make("a plate").eps2);
+  ASSERT_TRUE(cylindrical.eps1.isCrisp());
+  EXPECT_LE(cylindrical.eps1.core().hi, box.eps1.core().lo);
   EXPECT_NE(cylindrical.eps2, box.eps2);
   // The same rule as roundness's (max(0.05, d)), on eps2 alone: the same degrees. (On a rod,
   // whose roundness the words replace: a box keeps its squareness beside them, and its part
@@ -345,6 +350,9 @@ TEST(PartFromWords, ExponentWordsMeetANounsKeptShape) {
     const FuzzyPart part = make(text);
     const double own = scoreDescriptors(q, describePart(part)).score;
     EXPECT_GT(own, 0.2) << text;
+    // The words score it relative to the most the word and the noun give together (LinguisticQuery,
+    // AnExponentWordBesideANounsShapeScoresRelativeToTheirMeeting): 1, or within the grid's reach.
+    EXPECT_GT(own, 0.95) << text;
     const bool section = std::string(text) == "a cylindrical box";
     for (double e = 0.01; e <= 4.0; e += 0.01) {
       FuzzyPart other = part;
@@ -353,7 +361,8 @@ TEST(PartFromWords, ExponentWordsMeetANounsKeptShape) {
       ASSERT_GE(own + 1e-3, scoreDescriptors(q, describePart(other)).score) << text << " at " << e;
     }
   }
-  EXPECT_EQ(make("a cylindrical box").eps1, make("a box").eps1);  // a section word moves eps2 alone
+  // A section word moves the section (eps2) and the ends (eps1) that the box's squareness reads.
+  EXPECT_NE(make("a cylindrical box").eps2, make("a box").eps2);
   // Where the noun's shape is replaced or met, the word's own set stands.
   EXPECT_FALSE(make("a very boxy ball").eps1.isCrisp());
   EXPECT_FALSE(make("a slightly round ball").eps1.isCrisp());

@@ -280,6 +280,40 @@ TEST(LinguisticQuery, APlainWordCappedByItsNounScoresRelativeToTheirMeeting) {
     for (const QueryCondition& leaf : leavesOf(parse(text).root)) EXPECT_EQ(leaf.relativeTo, 1.0) << text;
 }
 
+// An exponent word beside a noun's kept exponent shape on another descriptor ("a round box": round,
+// and the box's squareness) scores relative to the most the two give together over every pair of
+// exponents, as a plain word and its noun's condition on one descriptor do.
+TEST(LinguisticQuery, AnExponentWordBesideANounsShapeScoresRelativeToTheirMeeting) {
+  const LinguisticQuery q = parse("find a round box");
+  std::vector<QueryCondition> leaves = leavesOf(q.root);
+  ASSERT_EQ(leaves.size(), 2u);
+  const QueryCondition& round = leaves[0].descriptor == "roundness" ? leaves[0] : leaves[1];
+  const QueryCondition& box = leaves[0].descriptor == "roundness" ? leaves[1] : leaves[0];
+  ASSERT_EQ(box.descriptor, "squariness");
+  // Below 1 the two exponent degrees sum to 1 (sq = 1 − e, ro = e), so the meeting is where the
+  // box's trap(0.6, 0.8, 1, 1) over 1 − e falls to round's rising set over e.
+  double h = 0;
+  for (double e = 0.01; e <= 1.0; e += 1e-4)
+    h = std::max(h, std::min(round.set.membership(e), box.set.membership(1 - e)));
+  EXPECT_NEAR(round.relativeTo, h, 0.01);
+  EXPECT_EQ(round.relativeTo, box.relativeTo);
+  EXPECT_LT(h, 0.5);
+  const auto score = [&](double e) {
+    return scoreDescriptors(q, {{"roundness", FuzzyNumber::crisp(e)}, {"squariness", FuzzyNumber::crisp(1 - e)}}).score;
+  };
+  double best = 0;
+  for (double e = 0.01; e <= 1.0; e += 1e-3) {
+    EXPECT_NEAR(score(e), std::min(1.0, std::min(round.set.membership(e), box.set.membership(1 - e)) / round.relativeTo),
+                1e-9);
+    best = std::max(best, score(e));
+  }
+  EXPECT_EQ(best, 1.0);
+  // No shape in common ("a pinched box"), or the noun's shape replaced ("a very boxy ball", "a
+  // round plate"): no rescaling.
+  for (const char* text : {"find a pinched box", "find a very boxy ball", "find a round plate", "find a rounded box"})
+    for (const QueryCondition& leaf : leavesOf(parse(text).root)) EXPECT_EQ(leaf.relativeTo, 1.0) << text;
+}
+
 TEST(LinguisticQuery, ConditionsAfterTheNoun) {
   EXPECT_EQ(meaning("ball small"), meaning("a ball that is small"));
   EXPECT_EQ(meaning("cylinder very long and slightly bent"), meaning("a cylinder that is very long and slightly bent"));
