@@ -166,8 +166,8 @@ void relateToNoun(QueryCondition* word, QueryCondition* noun) {
 // The most that an exponent-shape condition `word` and a noun's kept one on another exponent
 // descriptor `noun` ("a round box": roundness and the box's squariness) give together over every
 // part: max over eps1, eps2 of min(μ_word, μ_noun) of the two descriptors' degrees, which read the
-// exponents alone. On a grid of 0.01 over [0.01, 4]^2 (the degrees are piecewise linear in the
-// exponents, so the grid is within 0.01·slope of the sup); cached per pair, for a text repeats them.
+// exponents alone. On a grid of 0.02 over [0.01, 4]^2, then of 0.001 around its best point (the
+// degrees are piecewise linear in the exponents); cached per pair, for texts repeat them.
 double exponentShapesMeeting(const QueryCondition& word, const QueryCondition& noun) {
   static std::mutex mutex;
   static std::map<std::string, double> cache;
@@ -179,14 +179,18 @@ double exponentShapesMeeting(const QueryCondition& word, const QueryCondition& n
   }
   const int w = descriptorIndex(word.descriptor), n = descriptorIndex(noun.descriptor);
   PlacedSuperquadric part;
-  double best = 0.0;
-  for (int i = 1; i <= 400 && best < 1.0; ++i)
-    for (int j = 1; j <= 400; ++j) {
-      part.params.eps1 = 0.01 * i;
-      part.params.eps2 = 0.01 * j;
-      best = std::max(best, std::min(word.set.membership(descriptorDegree(w, part)),
-                                     noun.set.membership(descriptorDegree(n, part))));
-    }
+  double best = 0.0, best1 = 1.0, best2 = 1.0;
+  const auto at = [&](double e1, double e2) {
+    part.params.eps1 = std::clamp(e1, 0.01, 4.0);
+    part.params.eps2 = std::clamp(e2, 0.01, 4.0);
+    const double m = std::min(word.set.membership(descriptorDegree(w, part)), noun.set.membership(descriptorDegree(n, part)));
+    if (m > best) best = m, best1 = part.params.eps1, best2 = part.params.eps2;
+  };
+  for (int i = 0; i <= 200; ++i)
+    for (int j = 0; j <= 200; ++j) at(0.01 + 0.02 * i, 0.01 + 0.02 * j);
+  const double c1 = best1, c2 = best2;
+  for (int i = -20; i <= 20; ++i)
+    for (int j = -20; j <= 20; ++j) at(c1 + 0.001 * i, c2 + 0.001 * j);
   std::lock_guard<std::mutex> lock(mutex);
   if (cache.size() >= 4096) cache.clear();  // bounded: the vocabulary's sets make far fewer pairs
   cache[key] = best;
