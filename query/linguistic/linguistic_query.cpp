@@ -344,7 +344,8 @@ class Parser {
     return out;
   }
 
-  // part_description = [ article ] adjectives noun { measure } [ [ "," ] adjectives ] [ "with" edge ]
+  // part_description = [ article ] adjectives noun { measure } [ [ "," ] adjectives ]
+  //                    [ "with" ( edge | measure { [ "," | "and" ] measure } ) ]
   PartDescription partDescription() {
     entry_ = Entry::kPartDescription;
     PartDescription d;
@@ -363,12 +364,15 @@ class Parser {
     }
     pos_ += n;
     d.noun = v_.noun(word);
-    for (QueryCondition& m : measuresAfterNoun()) {
-      std::vector<QueryCondition> leaves;
-      if (m.kind == Kind::kDescriptor) leaves.push_back(std::move(m));
-      else leaves = std::move(m.children);
-      for (const QueryCondition& leaf : leaves) d.measures.push_back({leaf.descriptor, *leaf.measure, leaf.text});
-    }
+    const auto addMeasures = [&d](std::vector<QueryCondition> measures) {
+      for (QueryCondition& m : measures) {
+        std::vector<QueryCondition> leaves;
+        if (m.kind == Kind::kDescriptor) leaves.push_back(std::move(m));
+        else leaves = std::move(m.children);
+        for (const QueryCondition& leaf : leaves) d.measures.push_back({leaf.descriptor, *leaf.measure, leaf.text});
+      }
+    };
+    addMeasures(measuresAfterNoun());
     // Adjectives after the noun, as a query reads them ("a cylinder slightly bent", "a box, very
     // twisted"): the same as before it.
     {
@@ -379,11 +383,18 @@ class Parser {
     // [ "with" edge ] ("a cube with rounded edges", "a cylinder with sharp edges"); or an
     // edges.before_nouns adjective of a noun with a squariness condition, plain or with an
     // intensity, says its edges ("a rounded box", "a somewhat softened box"), as in a query.
+    // Or measures after "with", as a query reads them ("a cylinder with diameter 2 and length 1").
     if (at("with")) {
       const size_t start = ++pos_;
-      std::optional<FuzzyNumber> degree = edgePhrase();
-      if (!degree) fail({"the shape of its edges ('with rounded edges', 'with sharp edges')"});
-      d.edges = EdgeUse{std::move(*degree), span(start, pos_)};
+      if (startsMeasure()) {
+        addMeasures(measuresAfterNoun());
+      } else {
+        std::optional<FuzzyNumber> degree = edgePhrase();
+        if (!degree)
+          fail({"the shape of its edges ('with rounded edges', 'with sharp edges')",
+                "a measure ('with diameter 2 and length 1')"});
+        d.edges = EdgeUse{std::move(*degree), span(start, pos_)};
+      }
     }
     if (isSquareNoun(*d.noun))
       for (auto use = d.adjectives.begin(); use != d.adjectives.end(); ++use)
@@ -781,6 +792,7 @@ class Parser {
       for (QueryCondition& c : *said) {
         turnOutlines(&c, noun);
         turnEdges(&c, noun);
+        turnAxialLength(&c, noun);
       }
     if (!noun.conditions.empty()) {
       // Nouns are defaults: a condition the words state themselves may replace the noun's on the
@@ -1111,6 +1123,27 @@ class Parser {
       c->edgeDegree.reset();
     }
     for (QueryCondition& child : c->children) turnEdges(&child, noun, negated || c->kind == Kind::kNot);
+  }
+
+  // A measured length of a noun turned about its own z axis (a round section, and z its longest
+  // axis: a cylinder, a rod, a cone) is its axial length, the height descriptor, whatever its
+  // diameter: "a cylinder with diameter 2 and length 1" is a stubby cylinder, whose longest
+  // extent is its diameter. (A part made from those words sets that axis: part_from_words.h.)
+  // Elsewhere "long" measures the longest extent ("a board 8 long").
+  void turnAxialLength(QueryCondition* c, const Noun& noun) const {
+    if (c->kind == Kind::kDescriptor && c->measure && c->descriptor == "length" && axial(noun)) {
+      c->descriptor = "height";
+      c->axialLength = true;
+    }
+    if (c->kind == Kind::kAnd)
+      for (QueryCondition& child : c->children) turnAxialLength(&child, noun);
+  }
+  static bool axial(const Noun& noun) {
+    const auto number = [&](const char* name, double otherwise) {
+      const auto it = noun.params.is_object() ? noun.params.find(name) : noun.params.end();
+      return noun.params.is_object() && it != noun.params.end() && it->is_number() ? it->get<double>() : otherwise;
+    };
+    return number("eps2", 0.0) == 1.0 && number("a2", 1.0) == 1.0 && number("a3", 1.0) >= 1.0;
   }
 
   // Every outline leaf of `c` resolved for `noun` (Vocabulary::descriptorOn): on the section's

@@ -104,6 +104,9 @@ struct QueryCondition {
   // A measure ("about 10 long", "a radius of 1"): the extent it asks for in world units (a
   // radius already doubled) and `set` its image over the descriptor's degrees (extentDegreeSet).
   std::optional<FuzzyNumber> measure;
+  // A measured length read as the height, along the axis of a noun turned about its own z axis
+  // ("a cylinder with diameter 2 and length 1"): printed back as "long".
+  bool axialLength = false;
   // A plain adjective's set (Vocabulary::plainSet of an adjective without a `set` of its own): it
   // ranks by degree and states no degree of its own, so a noun's condition it agrees with stays.
   bool plainRamp = false;

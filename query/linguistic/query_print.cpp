@@ -90,7 +90,7 @@ class Printer {
       // A radius doubled may be no number phrase of the width ("radius about 0.3" is
       // tri(0.4, 0.6, 0.8)); halved back (exactly, in binary) it reads as a radius again.
       if (c.descriptor == "width" && !measurePrintable(*c.measure)) return measureText(scale(*c.measure, 0.5)) + " in radius";
-      return measureText(*c.measure) + " " + measureWord(c.descriptor);
+      return measureText(*c.measure) + " " + (c.axialLength ? "long" : measureWord(c.descriptor));
     }
     const std::string text = lowerCase(c.text);
     if (descriptorIndex(firstWord(text)) >= 0 && firstWord(text) == c.descriptor) return text;

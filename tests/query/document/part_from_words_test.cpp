@@ -230,6 +230,20 @@ TEST(PartFromWords, MeasuresSetTheExtents) {
   EXPECT_GT(thin.score, 0.8);
 }
 
+// A measured length of a cylinder, a rod or a cone runs along its axis even when it is shorter
+// than the diameter: the part made is a stubby cylinder, and its words find it (they read the
+// axial length, the height; they read the longest extent, its diameter, before, and scored 0).
+TEST(PartFromWords, AStubbyCylinderIsFoundByItsMeasures) {
+  for (const char* words : {"a cylinder with diameter 2 and length 1", "a cylinder 2 across and 1 long",
+                            "a rod 0.5 long and 3 across", "a cylinder 2 across and 10 long", "a board 8 long and 1 wide"}) {
+    const LinguisticQuery q = parseLinguisticQuery(words, v());
+    EXPECT_GE(scoreDescriptors(q, describePart(make(words))).score, 0.9) << words;
+  }
+  const FuzzyPart stubby = make("a cylinder with diameter 2 and length 1");
+  EXPECT_NEAR(valueOf(stubby, "height").core().lo, 0.5, 0.05);  // d(1) = 1 / 2
+  EXPECT_NEAR(valueOf(stubby, "length").core().lo, 2.0 / 3, 0.05);  // its diameter, d(2)
+}
+
 // An extent word keeps the axes in their roles (shortest, middle, longest), so the extent read back
 // is the one the words set.
 TEST(PartFromWords, ExtentWordsKeepTheAxesInTheirRoles) {

@@ -66,15 +66,22 @@ FuzzyNumber near(double x) { return FuzzyNumber::triangular(0.9 * x, x, 1.1 * x)
 
 TEST(LinguisticQuery, MeasuresAreConditionsOnTheExtents) {
   // After a number, a dimension word; a plain number is within 10 %, a number phrase as written.
+  // The length of a noun turned about its own z axis (a cylinder, a rod, a pin) is its axial
+  // length, the height; elsewhere the longest extent.
   EXPECT_EQ(measuresOf("a cylinder about 10 long and 1 across"),
-            (Measures{{"length", FuzzyNumber::triangular(9, 10, 11)}, {"width", near(1)}}));
-  EXPECT_EQ(measuresOf("a rod 6 long and 0.2 in diameter"), (Measures{{"length", near(6)}, {"width", near(0.2)}}));
+            (Measures{{"height", FuzzyNumber::triangular(9, 10, 11)}, {"width", near(1)}}));
+  EXPECT_EQ(measuresOf("a rod 6 long and 0.2 in diameter"), (Measures{{"height", near(6)}, {"width", near(0.2)}}));
   EXPECT_EQ(measuresOf("something between 3 and 4 wide"), (Measures{{"width", FuzzyNumber::trapezoidal(3, 3, 4, 4)}}));
   EXPECT_EQ(measuresOf("a post 3 units tall"), (Measures{{"height", near(3)}}));
   EXPECT_EQ(measuresOf("a pin exactly 2 long, 0.1 thick"),
-            (Measures{{"length", FuzzyNumber::crisp(2)}, {"thickness", near(0.1)}}));
-  // Before a number, a dimension noun; a radius is half a width.
-  EXPECT_EQ(measuresOf("a cylinder with diameter 2 and length 1"), (Measures{{"width", near(2)}, {"length", near(1)}}));
+            (Measures{{"height", FuzzyNumber::crisp(2)}, {"thickness", near(0.1)}}));
+  EXPECT_EQ(measuresOf("a board 8 long"), (Measures{{"length", near(8)}}));
+  EXPECT_EQ(measuresOf("a box 3 long"), (Measures{{"length", near(3)}}));
+  EXPECT_EQ(measuresOf("a disc 2 long"), (Measures{{"length", near(2)}}));
+  EXPECT_EQ(measuresOf("something 5 long"), (Measures{{"length", near(5)}}));
+  // Before a number, a dimension noun; a radius is half a width. A stubby cylinder's length is
+  // along its axis, shorter than its diameter.
+  EXPECT_EQ(measuresOf("a cylinder with diameter 2 and length 1"), (Measures{{"width", near(2)}, {"height", near(1)}}));
   EXPECT_EQ(measuresOf("a ball of radius 5"), (Measures{{"width", near(10)}}));
   EXPECT_EQ(measuresOf("a disc with a radius of about 1"), (Measures{{"width", FuzzyNumber::triangular(1.8, 2, 2.2)}}));
   EXPECT_EQ(measuresOf("sphere, diameter 0.2"), (Measures{{"width", near(0.2)}}));

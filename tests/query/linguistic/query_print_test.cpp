@@ -78,6 +78,9 @@ TEST(QueryPrint, MeasuresPrintAsTheirNumbersAndWords) {
   EXPECT_EQ(printed("a rod about 0.5 long"), "find a rod that is about 0.5 long");  // not within 10 %
   EXPECT_EQ(printed("a rod exactly 6 long"), "find a rod that is exactly 6 long");
   EXPECT_EQ(printed("a post height 3"), "find a column that is 3 tall");
+  // A cylinder's length is along its axis (the height), and prints as the length it was said as.
+  EXPECT_EQ(printed("a cylinder with diameter 2 and length 1"), "find a cylinder that is 2 across and 1 long");
+  EXPECT_EQ(printed("a board 8 long"), "find a board that is 8 long");
 }
 
 TEST(QueryPrint, NumbersAndDistances) {
