@@ -229,15 +229,23 @@ void realizeExtents(const std::map<std::string, FuzzyNumber>& extents, bool keep
   const char* sorted[3] = {"thickness", "width", "length"};
   for (int k = 0; k < 3; ++k)
     if (extents.count(sorted[k])) target[order[k]] = halfOf(extents.at(sorted[k]));
+  // An unmeasured axis as long as measured ones follows the nearest in the sorted order, so the
+  // roles stay in order: a ball "1 across and 0.2 thick" is a disc, its third axis the width's,
+  // not the thickness's (which made the width the longest extent, and the words missed the part).
   int tieOf[3] = {-1, -1, -1};
+  int position[3];
+  for (int k = 0; k < 3; ++k) position[order[k]] = k;
   for (int k = 0; k < 3; ++k) {
     if (target[k]) continue;
+    int nearest = -1;
     for (int j = 0; j < 3; ++j)
-      if (j != k && target[j] && tieOf[j] < 0 && std::fabs(half[k] - half[j]) <= 1e-9 * std::max(half[k], half[j])) {
-        target[k] = target[j];
-        tieOf[k] = j;
-        break;
-      }
+      if (j != k && target[j] && tieOf[j] < 0 && std::fabs(half[k] - half[j]) <= 1e-9 * std::max(half[k], half[j]) &&
+          (nearest < 0 || std::abs(position[j] - position[k]) < std::abs(position[nearest] - position[k])))
+        nearest = j;
+    if (nearest >= 0) {
+      target[k] = target[nearest];
+      tieOf[k] = nearest;
+    }
   }
   if (extents.count("height")) {
     target[2] = halfOf(extents.at("height"));
@@ -289,6 +297,20 @@ void realizeExtents(const std::map<std::string, FuzzyNumber>& extents, bool keep
       if (!target[j])
         passes = passes || (half[j] >= half[measured] ? support.hi > half[j] : support.lo < half[j]);
     if (passes) return scaleWhole(measured);
+  }
+  // An unmeasured axis keeps its length, within its role: no longer than any value of a measured
+  // axis of a later role, no shorter than any of an earlier one (a box "1 wide and 2 long" keeps
+  // its thickness 1.4 no longer, which would make it the width; a bar "4 across" has its length
+  // past the width's whole spread, which the sorted extents would clip otherwise).
+  for (int k = 0; k < 3; ++k) {
+    if (target[k]) continue;
+    double lo = 0, hi = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < 3; ++j) {
+      if (!target[j]) continue;
+      if (position[j] < position[k]) lo = std::max(lo, target[j]->support().hi);
+      if (position[j] > position[k]) hi = std::min(hi, target[j]->support().lo);
+    }
+    if (lo <= hi && (half[k] < lo || half[k] > hi)) target[k] = FuzzyNumber::crisp(std::clamp(half[k], lo, hi));
   }
   // B and C scale with a1, and the part's values are independent fuzzy numbers: a fuzzy a1 would
   // spread every other axis by its cut. So A keeps a spread only when its group (A and the axes

@@ -258,6 +258,26 @@ bool overriddenByWords(const NounCondition& condition, const Noun& noun, const s
   return isProportion(descriptor) && extents.size() >= 2;
 }
 
+// Measures name sorted roles: the thickness is the shortest extent, the width the middle one, the
+// length the longest. Where the numbers said for two or three of them contradict that order ("a
+// box with diameter 2 and length 1"), they are read sorted, as three sides are ("4 x 2 x 1"): the
+// smallest number takes the lowest role said. Without this no part had those extents, and the
+// part made from the words, whose maker sets each axis to its number, was not found by them.
+// `measures`: the descriptor and extent of each measure (height and the rest are left alone).
+void sortMeasuredRoles(const std::vector<std::pair<std::string*, const FuzzyNumber*>>& measures) {
+  static const std::vector<std::string> roles = {"thickness", "width", "length"};
+  std::vector<std::pair<std::string*, const FuzzyNumber*>> sorted;
+  for (const auto& m : measures)
+    if (std::find(roles.begin(), roles.end(), *m.first) != roles.end()) sorted.push_back(m);
+  const auto mid = [](const FuzzyNumber* e) { return e->core().lo + e->core().hi; };
+  const auto rank = [&](const std::string& d) { return std::find(roles.begin(), roles.end(), d) - roles.begin(); };
+  std::vector<std::string> said;
+  for (const auto& m : sorted) said.push_back(*m.first);
+  std::stable_sort(said.begin(), said.end(), [&](const std::string& a, const std::string& b) { return rank(a) < rank(b); });
+  std::stable_sort(sorted.begin(), sorted.end(), [&](const auto& a, const auto& b) { return mid(a.second) < mid(b.second); });
+  for (size_t i = 0; i < sorted.size(); ++i) *sorted[i].first = said[i];
+}
+
 class Parser {
  public:
   Parser(const std::string& text, const Vocabulary& vocabulary, size_t from = 0, size_t to = std::string::npos,
@@ -409,6 +429,14 @@ class Parser {
         }
     if (pos_ < tokens_.size())
       fail({"the end of the description (a part is adjectives, one noun and its measures: 'a pole about 10 long')"});
+    // The measures as the same words read as a query read them: a length along the axis of a noun
+    // turned about z, and contradicting roles sorted.
+    std::vector<std::pair<std::string*, const FuzzyNumber*>> measures;
+    for (MeasureUse& m : d.measures) {
+      if (m.descriptor == "length" && axial(*d.noun)) m.descriptor = "height";
+      measures.push_back({&m.descriptor, &m.extent});
+    }
+    sortMeasuredRoles(measures);
     // The noun's conditions that the words keep, as the same words read as a query keep them: a
     // plain adjective on one of their descriptors takes a degree where both are highest.
     std::vector<QueryCondition> said;
@@ -794,6 +822,17 @@ class Parser {
         turnEdges(&c, noun);
         turnAxialLength(&c, noun);
       }
+    {
+      std::vector<std::pair<std::string*, const FuzzyNumber*>> measures;
+      const std::function<void(QueryCondition&)> collect = [&](QueryCondition& c) {
+        if (c.kind == Kind::kDescriptor && c.measure) measures.push_back({&c.descriptor, &*c.measure});
+        if (c.kind == Kind::kAnd)
+          for (QueryCondition& child : c.children) collect(child);
+      };
+      for (std::vector<QueryCondition>* said : {&parts, &clause})
+        for (QueryCondition& c : *said) collect(c);
+      sortMeasuredRoles(measures);
+    }
     if (!noun.conditions.empty()) {
       // Nouns are defaults: a condition the words state themselves may replace the noun's on the
       // same quality (overriddenByWords): "a round plate" is round, not square.
