@@ -418,6 +418,26 @@ size_t requestLimit(const nlohmann::json& request) {
   return 10;
 }
 
+// `result` among the answer's results by score, after those of equal or higher score; an object
+// already there at a score as high keeps its place, one lower is moved up as `result`. The list
+// stays within `limit`.
+void mergeByScore(nlohmann::json* answer, const nlohmann::json& result, size_t limit) {
+  if (!answer->contains("results") || !(*answer)["results"].is_array()) (*answer)["results"] = nlohmann::json::array();
+  nlohmann::json& results = (*answer)["results"];
+  const double score = result.value("score", 0.0);
+  for (size_t i = 0; i < results.size(); ++i)
+    if (results[i].value("id", nlohmann::json()) == result.value("id", nlohmann::json())) {
+      if (results[i].value("score", 0.0) >= score) return;
+      results.erase(results.begin() + static_cast<std::ptrdiff_t>(i));
+      break;
+    }
+  size_t at = 0;
+  while (at < results.size() && results[at].value("score", 0.0) >= score) ++at;
+  if (at >= limit) return;
+  results.insert(results.begin() + static_cast<std::ptrdiff_t>(at), result);
+  if (results.size() > limit) results.erase(results.begin() + static_cast<std::ptrdiff_t>(limit), results.end());
+}
+
 // The answer with the named objects first, then its results and the described objects by score
 // (stable: a result before a described object of the same score), each object once, up to
 // `limit`. An object both found and described keeps its result, at the higher of the two scores,
@@ -701,8 +721,12 @@ nlohmann::json queryResponse(const Store& store, const nlohmann::json& request,
         deeper["limit"] = depth;
         return readAroundUnknownWords(store, deeper, text, reading, refused, linguisticLimits, csgLimits, graphs);
       });
+      // A name the text only nearly holds is a guess at an unknown word ("spikes" one letter from
+      // the object named spike): it ranks by its score among what the read words found, so "star
+      // with spikes" lists the spiky star (1) before the spike (0.8). Named objects of the read
+      // words, and near names where the read words find nothing, come first.
       nlohmann::json names = objectsNamedAsRead(store, request, answer, asRead);
-      for (const nlohmann::json& n : nearly) names.push_back(n);
+      for (const nlohmann::json& n : nearly) mergeByScore(&answer, n, limit);
       putWordMatches(&answer, names, byWords, limit);
       return answer;
     } catch (const Error& unread) {

@@ -521,6 +521,47 @@ TEST(DesignersQueries, NamesTheTextNearlyHoldsFindTheirObjectFirst) {
   EXPECT_EQ(server.post("/query", json{{"text", "purple elephant"}}).status, 422);
 }
 
+// A name the text only nearly holds is a guess at an unknown word: where the words read around it
+// find objects, it ranks by its score among them. "star with spikes" is read as "a star"; the
+// object named spike, one letter from "spikes", came first at 0.8 before the stars at 1.
+TEST(DesignersQueries, ANearNameRanksByItsScoreAmongWhatTheWordsFind) {
+  ServerProcess server({"--demo", kDemo});
+  ASSERT_EQ(server.post("/parts", json{{"name", "spike"}, {"text", "a very sharp cone"}}).status, 201);
+  auto answer = server.post("/query", json{{"text", "star with spikes"}, {"limit", 20}});
+  ASSERT_EQ(answer.status, 200) << answer.body;
+  const json& results = answer.json["results"];
+  ASSERT_GE(results.size(), 2u) << answer.body;
+  EXPECT_NE(results[0]["name"], "spike") << answer.body;
+  EXPECT_EQ(results[0]["score"], 1.0) << answer.body;
+  bool spike = false;
+  double previous = 2;
+  for (const json& r : results) {
+    EXPECT_LE(r["score"].get<double>(), previous) << answer.body;  // by score throughout
+    previous = r["score"].get<double>();
+    if (r["name"] == "spike") {
+      spike = true;
+      EXPECT_EQ(r["score"], 0.8);
+      EXPECT_EQ(r["named"], true);
+    }
+  }
+  EXPECT_TRUE(spike) << answer.body;
+  // An object the read words found lower (a house with a pyramid roof, 0.5 for "pyramid" among its
+  // name's words) moves up to its near name's score, once.
+  const json house = json::parse(R"({"kind": "shape", "name": "house", "tree": {"op": "union", "children": [
+      {"part": {"name": "walls", "text": "a box"}},
+      {"part": {"name": "roof", "text": "a pyramid"}, "transform": {"translate": [0, 0, 2]}}]}})");
+  ASSERT_EQ(server.post("/shapes", house).status, 201);
+  auto roof = server.post("/query", json{{"text", "house with roof of pyramid"}, {"limit", 20}});
+  ASSERT_EQ(roof.status, 200) << roof.body;
+  ASSERT_FALSE(roof.json["results"].empty()) << roof.body;
+  EXPECT_EQ(roof.json["results"][0]["name"], "house") << roof.body;
+  EXPECT_EQ(roof.json["results"][0]["score"], 0.9) << roof.body;
+  int houses = 0;
+  for (const json& r : roof.json["results"]) houses += r["name"] == "house";
+  EXPECT_EQ(houses, 1) << roof.body;
+  // Where the read words find nothing, the near name is the answer, first ("snowmn": above).
+}
+
 // Names among a readable text's words. Every content word of the text is the name's, in another
 // order: the object is the text's name, score 1, first. A name that takes some of the words
 // changes no score (the meaning scores the rest), but of objects the meaning scores alike the
