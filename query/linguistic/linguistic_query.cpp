@@ -841,6 +841,10 @@ class Parser {
       for (const QueryCondition& c : clause) collectLeaves(c, &said);
       std::vector<QueryCondition> leaves;
       const auto graded = [&](const QueryCondition& c) { return !c.plainRamp; };
+      // A flat noun whose outline the words set ("a round plate", "a square disc") keeps its
+      // profile: its flat faces and sharp rims, which its exponent shape said beside its own outline.
+      const std::vector<QueryCondition> profile = profileConditions(noun, said, graded, nounText);
+      leaves.insert(leaves.end(), profile.begin(), profile.end());
       for (const NounCondition& c : noun.conditions)
         if (!overriddenByWords(c, noun, said, graded)) {
           leaves.push_back(descriptorCondition(c.descriptor, c.set, nounText + ": " + c.descriptor));
@@ -1183,6 +1187,53 @@ class Parser {
       return noun.params.is_object() && it != noun.params.end() && it->is_number() ? it->get<double>() : otherwise;
     };
     return number("eps2", 0.0) == 1.0 && number("a2", 1.0) == 1.0 && number("a3", 1.0) >= 1.0;
+  }
+
+  // The profile a flat noun keeps when the words set its outline (a section descriptor): for each
+  // of its exponent-shape conditions that the words replace, the degrees its prototype (its params)
+  // has with the section the words say, as trap(lo − 0.15, lo − 0.05, hi + 0.05, hi + 0.15), the
+  // tolerance of the vocabulary's disc and cylinder around theirs. [lo, hi] is the image, through
+  // the section rule (roundness d is eps2 = d, squariness d is eps2 = 1 − d), of the degrees a
+  // part made from the words has: the core of a plain adjective's set (its part takes one degree
+  // there), else the support (an intensity's set, which its part takes whole). So "a round plate"
+  // asks for a disc's squariness 0.45 (flat faces, sharp rims, a round outline), which a ball
+  // squashed flat (0) does not have, and the part made from the words has.
+  std::vector<QueryCondition> profileConditions(const Noun& noun, const std::vector<const QueryCondition*>& said,
+                                                const std::function<bool(const QueryCondition&)>& graded,
+                                                const std::string& nounText) const {
+    std::vector<QueryCondition> out;
+    if (!noun.flat || !noun.params.is_object()) return out;
+    const QueryCondition* outline = nullptr;
+    for (const QueryCondition* c : said)
+      if (c->kind == Kind::kDescriptor && v_.wholeShapeDescriptor(c->descriptor)) outline = c;
+    if (!outline) return out;
+    const Interval made = outline->plainRamp ? outline->set.core() : outline->set.support();
+    const bool round = *v_.wholeShapeDescriptor(outline->descriptor) == "roundness";
+    PlacedSuperquadric prototype;
+    const auto param = [&](const char* name, double otherwise) {
+      const auto it = noun.params.find(name);
+      return it != noun.params.end() && it->is_number() ? it->get<double>() : otherwise;
+    };
+    prototype.params.eps1 = param("eps1", 1.0);
+    for (const NounCondition& c : noun.conditions) {
+      if (!isExponentShape(c.descriptor) || v_.wholeShapeDescriptor(c.descriptor) ||
+          !overriddenByWords(c, noun, said, graded))
+        continue;
+      double lo = 1.0, hi = 0.0;
+      for (const double d : {made.lo, made.hi}) {  // the degrees are monotone in eps2 over [0.01, 1]
+        const double e = std::clamp(round ? d : 1.0 - d, kLeastDegree, 1.0);
+        prototype.params.eps2 = e;
+        const double v = descriptorDegree(descriptorIndex(c.descriptor), prototype);
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
+      out.push_back(descriptorCondition(
+          c.descriptor,
+          FuzzyNumber::trapezoidal(std::max(0.0, lo - 0.15), std::max(0.0, lo - 0.05), std::min(1.0, hi + 0.05),
+                                   std::min(1.0, hi + 0.15)),
+          nounText + ": " + c.descriptor));
+    }
+    return out;
   }
 
   // Every outline leaf of `c` resolved for `noun` (Vocabulary::descriptorOn): on the section's

@@ -177,9 +177,18 @@ TEST(LinguisticQuery, NounsAreDefaultsTheWordsOverride) {
         for (const QueryCondition& leaf : leavesOf(part)) out.push_back(leaf.descriptor);
     return out;
   };
-  // A plate stays flat when it is round; a disc stays flat when square.
-  EXPECT_EQ(descriptorsOfNoun("a round plate"), (std::vector<std::string>{"taperness", "elongation"}));
-  EXPECT_EQ(descriptorsOfNoun("a square disc"), (std::vector<std::string>{"taperness", "elongation"}));
+  // A plate stays flat when it is round; a disc stays flat when square. Their exponent shape is
+  // the profile they keep with the words' outline (AFlatNounKeepsItsProfileBesideItsOutlineWord),
+  // no longer their own square or round one.
+  EXPECT_EQ(descriptorsOfNoun("a round plate"), (std::vector<std::string>{"squariness", "taperness", "elongation"}));
+  EXPECT_EQ(descriptorsOfNoun("a square disc"),
+            (std::vector<std::string>{"squariness", "roundness", "taperness", "elongation"}));
+  for (const QueryCondition& part : parse("a round plate").root.children)
+    for (const QueryCondition& leaf : leavesOf(part))
+      if (!part.noun.empty() && leaf.descriptor == "squariness") {
+        EXPECT_NEAR(leaf.set.core().lo, 0.4, 1e-9);  // a disc's 0.45, not a plate's [0.8, 1]
+        EXPECT_NEAR(leaf.set.core().hi, 0.5, 1e-9);
+      }
   // And "round" and "square" say a flat noun's outline, its traverse section, before or after it
   // and under "not"; on a ball, a box or no noun they say the whole shape.
   const auto leafDescriptors = [](const std::string& text) {
@@ -319,6 +328,39 @@ TEST(LinguisticQuery, AnExponentWordBesideANounsShapeScoresRelativeToTheirMeetin
   // round plate"): no rescaling.
   for (const char* text : {"find a pinched box", "find a very boxy ball", "find a round plate", "find a rounded box"})
     for (const QueryCondition& leaf : leavesOf(parse(text).root)) EXPECT_EQ(leaf.relativeTo, 1.0) << text;
+}
+
+// A flat noun whose outline the words set keeps its profile: "a round plate" is a disc (flat faces,
+// sharp rims), not a ball squashed flat, whose outline is as round.
+TEST(LinguisticQuery, AFlatNounKeepsItsProfileBesideItsOutlineWord) {
+  const auto score = [](const std::string& text, double eps1, double eps2) {
+    PlacedSuperquadric p;
+    p.params.eps1 = eps1;
+    p.params.eps2 = eps2;
+    p.params.a1 = 1;
+    p.params.a2 = 1;
+    p.params.a3 = 0.1;
+    std::vector<DescriptorValue> values;
+    for (const std::string& d : descriptorNames())
+      values.push_back({d, FuzzyNumber::crisp(descriptorDegree(descriptorIndex(d), p))});
+    return scoreDescriptors(parse(text), values).score;
+  };
+  EXPECT_EQ(score("find a round plate", 0.1, 1.0), 1.0);  // a disc
+  EXPECT_EQ(score("find a round plate", 1.0, 1.0), 0.0);  // a ball squashed flat
+  EXPECT_GE(score("find a square disc", 0.1, 0.01), 0.99);  // a plate with a square outline
+  EXPECT_EQ(score("find a square disc", 1.0, 0.01), 0.0);  // a square pillow
+  EXPECT_EQ(score("find a plate", 0.1, 0.1), 1.0);
+  // The derived conditions are the noun's, named so in explain.
+  bool named = false;
+  for (const QueryCondition& leaf : leavesOf(parse("find a round plate").root))
+    named = named || leaf.text == "plate: squariness";
+  EXPECT_TRUE(named);
+  // Not for a noun that is not flat, nor without an outline word.
+  for (const char* text : {"find a round box", "find a flat plate", "find a plate"}) {
+    int squariness = 0;
+    for (const QueryCondition& leaf : leavesOf(parse(text).root)) squariness += leaf.descriptor == "squariness";
+    EXPECT_LE(squariness, 1) << text;
+  }
 }
 
 TEST(LinguisticQuery, ConditionsAfterTheNoun) {
