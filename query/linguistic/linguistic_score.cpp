@@ -143,9 +143,9 @@ Scores score(const QueryCondition& c, Context& ctx) {
       if (ctx.values)
         for (const DescriptorValue& v : *ctx.values)
           if (v.descriptor == c.descriptor) {
-            const auto measure = ctx.nounDefaults ? expectedMembership : similarity;
-            s.score = measure(v.value, c.set);
-            s.asked = c.asked ? measure(v.value, *c.asked) : s.score;
+            s.score = ctx.nounDefaults ? expectedMembership(v.value, c.set) : similarity(v.value, c.set);
+            if (c.asked) s.asked = ctx.nounDefaults ? expectedMembership(v.value, *c.asked) : similarity(v.value, *c.asked);
+            else s.asked = s.score;
             if (c.relativeTo < 1.0) {  // QueryCondition::relativeTo
               s.score = std::min(1.0, s.score / c.relativeTo);
               s.asked = std::min(1.0, s.asked / c.relativeTo);
