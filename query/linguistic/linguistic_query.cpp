@@ -146,23 +146,6 @@ bool isProportion(const std::string& d) { return d == "elongation" || d == "flat
 // Whether two sets over the degrees contradict each other: no degree belongs to both (exactly).
 bool contradicts(const FuzzyNumber& a, const FuzzyNumber& b) { return heightOfIntersection(a, b) == 0.0; }
 
-// A plain adjective `word` (under "and" only: not under "not" or "or", whose scores mean
-// otherwise) on the descriptor of a noun's kept condition `noun`, where the two meet only up to
-// h in (0, 1): both score relative to h (QueryCondition::relativeTo).
-void relateToNoun(QueryCondition* word, QueryCondition* noun) {
-  if (word->kind == Kind::kAnd) {
-    for (QueryCondition& child : word->children) relateToNoun(&child, noun);
-    return;
-  }
-  if (word->kind != Kind::kDescriptor || !word->plainRamp || word->descriptor != noun->descriptor ||
-      word->edges != QueryCondition::Edges::kNone)
-    return;
-  const double h = heightOfIntersection(word->set, noun->set);
-  if (!(h > 0.0) || h >= 1.0) return;
-  word->relativeTo = std::min(word->relativeTo, h);
-  noun->relativeTo = std::min(noun->relativeTo, h);
-}
-
 // The most that an exponent-shape condition `word` and a noun's kept one on another exponent
 // descriptor `noun` ("a round box": roundness and the box's squariness) give together over every
 // part: max over eps1, eps2 of min(μ_word, μ_noun) of the two descriptors' degrees, which read the
@@ -197,19 +180,24 @@ double exponentShapesMeeting(const QueryCondition& word, const QueryCondition& n
   return best;
 }
 
-// An exponent word (plain or with an intensity, under "and" only) beside a noun's kept exponent
-// shape on another descriptor: both score relative to the most they give together, as a plain
-// word and its noun's condition on one descriptor do (relateToNoun): "a round box" is the roundest
-// box, and the roundest box the words allow scores 1.
-void relateExponentShapes(QueryCondition* word, QueryCondition* noun) {
+// A word the noun's kept condition caps scores relative to the most the two give together, h in
+// (0, 1) (QueryCondition::relativeTo), under "and" only (not "not" or "or", whose scores mean
+// otherwise): a plain adjective on the condition's descriptor, whose sets meet up to
+// h = heightOfIntersection ("a tapered cylinder"); or an exponent word, plain or with an
+// intensity, beside an exponent shape on another descriptor, h = exponentShapesMeeting ("a round
+// box": the roundest box the words allow scores 1).
+void relateToNoun(QueryCondition* word, QueryCondition* noun) {
   if (word->kind == Kind::kAnd) {
-    for (QueryCondition& child : word->children) relateExponentShapes(&child, noun);
+    for (QueryCondition& child : word->children) relateToNoun(&child, noun);
     return;
   }
-  if (word->kind != Kind::kDescriptor || word->edges != QueryCondition::Edges::kNone ||
-      !isExponentShape(word->descriptor) || !isExponentShape(noun->descriptor) || word->descriptor == noun->descriptor)
-    return;
-  const double h = exponentShapesMeeting(*word, *noun);
+  if (word->kind != Kind::kDescriptor || word->edges != QueryCondition::Edges::kNone) return;
+  double h = 1.0;
+  if (word->descriptor == noun->descriptor) {
+    if (word->plainRamp) h = heightOfIntersection(word->set, noun->set);
+  } else if (isExponentShape(word->descriptor) && isExponentShape(noun->descriptor)) {
+    h = exponentShapesMeeting(*word, *noun);
+  }
   if (!(h > 0.0) || h >= 1.0) return;
   word->relativeTo = std::min(word->relativeTo, h);
   noun->relativeTo = std::min(noun->relativeTo, h);
@@ -850,10 +838,7 @@ class Parser {
           leaves.push_back(descriptorCondition(c.descriptor, c.set, nounText + ": " + c.descriptor));
           // A plain word the noun's condition caps: both score relative to what they allow together.
           for (std::vector<QueryCondition>* words : {&parts, &clause})
-            for (QueryCondition& w : *words) {
-              relateToNoun(&w, &leaves.back());
-              relateExponentShapes(&w, &leaves.back());
-            }
+            for (QueryCondition& w : *words) relateToNoun(&w, &leaves.back());
         }
       QueryCondition node;
       if (leaves.size() == 1) {
@@ -1181,12 +1166,14 @@ class Parser {
     if (c->kind == Kind::kAnd)
       for (QueryCondition& child : c->children) turnAxialLength(&child, noun);
   }
+  // A number of the noun's params, or `otherwise` where it gives none.
+  static double nounParam(const Noun& noun, const char* name, double otherwise) {
+    if (!noun.params.is_object()) return otherwise;
+    const auto it = noun.params.find(name);
+    return it != noun.params.end() && it->is_number() ? it->get<double>() : otherwise;
+  }
   static bool axial(const Noun& noun) {
-    const auto number = [&](const char* name, double otherwise) {
-      const auto it = noun.params.is_object() ? noun.params.find(name) : noun.params.end();
-      return noun.params.is_object() && it != noun.params.end() && it->is_number() ? it->get<double>() : otherwise;
-    };
-    return number("eps2", 0.0) == 1.0 && number("a2", 1.0) == 1.0 && number("a3", 1.0) >= 1.0;
+    return nounParam(noun, "eps2", 0.0) == 1.0 && nounParam(noun, "a2", 1.0) == 1.0 && nounParam(noun, "a3", 1.0) >= 1.0;
   }
 
   // The profile a flat noun keeps when the words set its outline (a section descriptor): for each
@@ -1210,11 +1197,7 @@ class Parser {
     const Interval made = outline->plainRamp ? outline->set.core() : outline->set.support();
     const bool round = *v_.wholeShapeDescriptor(outline->descriptor) == "roundness";
     PlacedSuperquadric prototype;
-    const auto param = [&](const char* name, double otherwise) {
-      const auto it = noun.params.find(name);
-      return it != noun.params.end() && it->is_number() ? it->get<double>() : otherwise;
-    };
-    prototype.params.eps1 = param("eps1", 1.0);
+    prototype.params.eps1 = nounParam(noun, "eps1", 1.0);
     for (const NounCondition& c : noun.conditions) {
       if (!isExponentShape(c.descriptor) || v_.wholeShapeDescriptor(c.descriptor) ||
           !overriddenByWords(c, noun, said, graded))
