@@ -1,5 +1,6 @@
 #include "geometry/superquadric/deformation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -106,6 +107,21 @@ bool bendIsInjectiveOnPart(const SuperquadricParams& params) {
   const double maxX = std::hypot(params.A() * (1.0 + std::fabs(params.kx)),
                                  params.B() * (1.0 + std::fabs(params.ky)));
   return std::fabs(params.kv) * maxX < 1.0;
+}
+
+double taperedHalfWidthFactor(double eps1, double k) {
+  k = std::fabs(k);
+  if (k == 0.0 || eps1 >= 2.0) return 1.0;
+  const double q = 2.0 / eps1;
+  // φ(w) = w^(q − 1)·(1 + 2kw) rises from 0 to 1 + 2k > k: one crossing, where the half-width's
+  // logarithm (ε1/2)·log(1 − w^q) + log(1 + kw) turns.
+  double lo = 0.0, hi = 1.0;
+  for (int i = 0; i < 60; ++i) {
+    const double w = 0.5 * (lo + hi);
+    (std::pow(w, q - 1.0) * (1.0 + 2.0 * k * w) < k ? lo : hi) = w;
+  }
+  const double w = 0.5 * (lo + hi);
+  return std::max(1.0, std::pow(1.0 - std::pow(w, q), eps1 / 2.0) * (1.0 + k * w));
 }
 
 }  // namespace fsdb

@@ -55,4 +55,16 @@ Vec3 undeformPoint(const SuperquadricParams& params, const Vec3& p);
 // volume; when it fails, see "Domain of the bend inverse" above.
 bool bendIsInjectiveOnPart(const SuperquadricParams& params);
 
+// brief: The tapered solid's largest half-width across one axis, over its half-length there
+//   (A or B): max over heights w = |z|/C in [0, 1] of (1 − w^(2/ε1))^(ε1/2) · (1 + |k|·w), the
+//   superquadric's section edge at that height (y = 0 for x) times the taper factor on the side
+//   the taper widens. A cone (ε1 = 0.1, k = −1) is 1.91 times as wide at its base as its
+//   untapered A; a box (ε1 → 0) 1 + |k|; an ellipsoid (ε1 = 1) with k = 1 is 1.30.
+// note: 1 where k = 0 or ε1 >= 2: the section edge then falls at least as fast as the taper
+//   rises, so the middle is widest. Otherwise the maximum is the one root of
+//   w^(2/ε1 − 1)·(1 + 2|k|w) = |k| (the derivative of the logarithm), found by bisection; the
+//   product rises with |k| and falls with ε1, so extents built on it keep those directions.
+// Preconditions: ε1 in (0, 4], |k| <= 1 (SuperquadricParams::validate's ranges).
+double taperedHalfWidthFactor(double eps1, double k);
+
 }  // namespace fsdb

@@ -11,6 +11,7 @@
 #include "geometry/fuzzy/fuzzy_arithmetic.h"
 #include "geometry/fuzzy/fuzzy_similarity.h"
 #include "geometry/numeric/piecewise_linear.h"
+#include "geometry/superquadric/deformation.h"
 #include "query/linguistic/degree_sets.h"
 #include "query/linguistic/descriptors.h"
 #include "query/linguistic/edges.h"
@@ -24,12 +25,13 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// The order in which adjectives act (see the header): the shape, then its size and extents, then
-// the deformations (a bend's degree is its angle over the length the extents gave).
+// The order in which adjectives act (see the header): the shape, then its size, its taper and
+// extents, then the bend and twist (a bend's degree is its angle over the length the extents gave;
+// the taper widens the section the extents measure, descriptors.h, so it comes before them).
 const std::vector<std::string> kOrder = {"squariness", "roundness", "bevelness", "pinchness",
                                          "section-squariness", "section-roundness", "elongation",
-                                         "slenderness", "flatness", "size",    "length",    "width",
-                                         "thickness",  "height",    "bendness",  "taperness", "twistness"};
+                                         "slenderness", "flatness", "size",    "taperness", "length",
+                                         "width",      "thickness", "height",   "bendness",  "twistness"};
 
 bool isExtent(const std::string& descriptor) {
   return descriptor == "length" || descriptor == "width" || descriptor == "thickness" || descriptor == "height";
@@ -217,18 +219,37 @@ void realize(const std::string& descriptor, const FuzzyNumber& d, const Vocabula
 // when no other axis is measured (below). `keepProportions`: the words keep the noun's condition
 // on its proportions (PartDescription::keepsProportions), so one extent asked for scales the whole
 // part ("a wide rod" is a thicker rod, still a rod; widening its section alone made it a stub).
+// The half-lengths compared and set are the extents' (descriptors.h): A and B widened by the taper
+// at its core (fx, fy), so "a cone 2 across" has a base 2 across; a1 and a2 are divided by them.
 void realizeExtents(const std::map<std::string, FuzzyNumber>& extents, bool keepProportions, FuzzyPart* part) {
   if (extents.empty()) return;
   const PlacedSuperquadric core = part->coreRepresentative();
   const double s = core.placement.scale;
-  const double half[3] = {core.params.a1, core.params.a1 * core.params.a2, core.params.a1 * core.params.a3};
+  const double fx = taperedHalfWidthFactor(core.params.eps1, core.params.kx);
+  const double fy = taperedHalfWidthFactor(core.params.eps1, core.params.ky);
+  const double half[3] = {core.params.a1 * fx, core.params.a1 * core.params.a2 * fy, core.params.a1 * core.params.a3};
+  // The roles follow the extents' order (a sharp cone's widened base is wider than its default
+  // height). A measured height names the z axis itself, so the roles said beside it go to A and B:
+  // "a cone 4 x 2 x 1" reads its axis as the height (turnAxialLength), 4, and its base as 2 by 1.
+  const bool heightNamed = extents.count("height") > 0;
   int order[3] = {0, 1, 2};
-  std::stable_sort(order, order + 3, [&](int a, int b) { return half[a] < half[b]; });
-  std::optional<FuzzyNumber> target[3];  // canonical half-lengths of A, B, C
+  std::stable_sort(order, order + (heightNamed ? 2 : 3), [&](int a, int b) { return half[a] < half[b]; });
+  std::optional<FuzzyNumber> target[3];  // half-extents of A, B, C (A and B widened by the taper)
   const auto halfOf = [s](const FuzzyNumber& e) { return scale(e, 0.5 / s); };
   const char* sorted[3] = {"thickness", "width", "length"};
+  std::vector<int> said;  // the roles measured, shortest first
   for (int k = 0; k < 3; ++k)
-    if (extents.count(sorted[k])) target[order[k]] = halfOf(extents.at(sorted[k]));
+    if (extents.count(sorted[k])) said.push_back(k);
+  for (size_t i = 0; i < said.size(); ++i) {
+    int at = said[i];
+    // Beside a height, two axes for up to three roles: the shortest role said takes the shorter,
+    // the longest the longer (a thickness alone the shorter, a width or length alone the longer).
+    if (heightNamed) {
+      if (said.size() > 2 && i == 1) continue;
+      at = said.size() == 1 ? (said[0] == 0 ? 0 : 1) : (i == 0 ? 0 : 1);
+    }
+    target[order[at]] = halfOf(extents.at(sorted[said[i]]));
+  }
   // An unmeasured axis as long as measured ones follows the nearest in the sorted order, so the
   // roles stay in order: a ball "1 across and 0.2 thick" is a disc, its third axis the width's,
   // not the thickness's (which made the width the longest extent, and the words missed the part).
@@ -323,7 +344,7 @@ void realizeExtents(const std::map<std::string, FuzzyNumber>& extents, bool keep
     for (int k = 0; k < 3; ++k)
       if (group(k) == group(0)) target[k] = mid;
   }
-  const FuzzyNumber a1 = target[0] ? *target[0] : part->a1;
+  const FuzzyNumber a1 = target[0] ? scale(*target[0], 1.0 / fx) : part->a1;
   const double a1Core = (a1.core().lo + a1.core().hi) / 2.0;
   const double was = core.params.a1;
   // An axis of A's group while A keeps a spread is as long as A: its ratio is 1, crisp. Its target
@@ -332,7 +353,7 @@ void realizeExtents(const std::map<std::string, FuzzyNumber>& extents, bool keep
   const auto ratio = [&](int k, const FuzzyNumber& was_k) {
     if (!target[k]) return scale(was_k, was / a1Core);
     if (!a1.isCrisp() && group(k) == group(0)) return FuzzyNumber::crisp(1.0);
-    return scale(*target[k], 1.0 / a1Core);
+    return scale(*target[k], 1.0 / (a1Core * (k == 1 ? fy : 1.0)));
   };
   part->a2 = ratio(1, part->a2);
   part->a3 = ratio(2, part->a3);

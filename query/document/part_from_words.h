@@ -15,13 +15,15 @@
 //   length, width, thickness, height: the extent e = d / (1 − d) (d clamped to [0.02, 0.98]), or a
 //               measure's extent in world units ("a pole about 10 long": length about 10), set on
 //               the axis it measures (realizeExtents: the noun's axes sorted by length say which
-//               is which; an axis as long as a measured one follows it; height is C)
+//               is which; an axis as long as a measured one follows it; height is C). The
+//               extents are the tapered solid's (descriptors.h): "a cone 2 across" has a base
+//               2 across, its A the base's half over the taper's widening.
 // with C and L (query/linguistic/descriptors.h) of the part so far (core midpoints). The degree d is the
 // intensity's set ("slightly bent": `slightly`), else the adjective's own "create", else the
 // vocabulary's plain "create" set; low-pole adjectives ("narrow", "small") mirror the intensity and
 // plain sets (d → 1 − d; an adjective's own "create" is its degree as written). Adjectives act in
-// the order shape, proportions, size, extents, deformations, whatever their order in the text,
-// so a bend is measured on the final length; measures override an adjective of the same extent. Affine rules are exact; elongation and
+// the order shape, proportions, size, taper, extents, bend and twist, whatever their order in the
+// text, so a bend is measured on the final length and an extent on the final taper; measures override an adjective of the same extent. Affine rules are exact; elongation and
 // size map the set's breakpoints (exact there, linear between).
 // Edges ("a box with rounded edges", "a rounded box", "a cylinder with sharp edges") act after
 // the shape's adjectives: the noun's edge exponents (query/linguistic/edges.h: those below 1; a

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "geometry/core/error.h"
+#include "geometry/superquadric/deformation.h"
 
 namespace fsdb {
 namespace {
@@ -33,12 +34,31 @@ double elongation(double a2, double a3) {
 // A world-unit extent as a degree in [0, 1): e / (1 + e), as size does (0 for e <= 0).
 double extentDegreeOf(double e) { return e > 0.0 ? e / (1.0 + e) : 0.0; }
 
-// The part's full extents along its own axes, sorted: 2·scale·(A, B, C), A = a1, B = a1·a2, C = a1·a3.
+// The part's full extents along its own axes, sorted: 2·scale·(A·fx, B·fy, C), A = a1, B = a1·a2,
+// C = a1·a3, with the taper's widening fx, fy (taperedHalfWidthFactor: a cone's base is its width).
 std::array<double, 3> sortedExtents(const Values& v) {
   const double k = 2.0 * v[kScale] * v[kA1];
-  std::array<double, 3> e{k, k * v[kA2], k * v[kA3]};
+  std::array<double, 3> e{k * taperedHalfWidthFactor(v[kEps1], v[kKx]),
+                          k * v[kA2] * taperedHalfWidthFactor(v[kEps1], v[kKy]), k * v[kA3]};
   std::sort(e.begin(), e.end());
   return e;
+}
+
+// The values of a box at which every extent is least (`high` false) or largest: each of the three
+// rises with the scale, a1, a2, a3, |kx| and |ky| and falls with ε1 (taperedHalfWidthFactor), and so
+// does each of their sorted order (the k-th smallest of functions that rise together rises), so
+// the box's two corners of those directions hold the measures' extremes. Two evaluations instead
+// of every combination of candidates: each factor is a root found by bisection.
+Values extentCorner(const std::array<Interval, kParamCount>& box, bool high) {
+  Values v{};
+  for (int p = 0; p < kParamCount; ++p) v[p] = high ? box[p].hi : box[p].lo;
+  v[kEps1] = high ? box[kEps1].lo : box[kEps1].hi;
+  for (Param p : {kKx, kKy}) {
+    const Interval& r = box[p];
+    const double nearer = std::fabs(r.lo) <= std::fabs(r.hi) ? r.lo : r.hi, farther = r.lo + r.hi - nearer;
+    v[p] = high ? farther : (r.lo <= 0.0 && r.hi >= 0.0 ? 0.0 : nearer);
+  }
+  return v;
 }
 
 // The half-lengths A : B : C = 1 : a2 : a3, sorted (a1 and the scale cancel in their ratios).
@@ -95,10 +115,11 @@ const Reads& readsOf(int index) {
       {{kT}, {0.0}},                        {{kScale, kA1, kA2, kA3}, {}},
       {{kA2, kA3}, {1.0}},                  {{kEps2}, {1.0}},
       {{kEps2}, {1.0, 2.0}},
-      // The extents rise with every parameter they read (sorting keeps that: the k-th smallest
-      // of rising functions rises), so the corners hold their extremes.
-      {{kScale, kA1, kA2, kA3}, {}},        {{kScale, kA1, kA2, kA3}, {}},
-      {{kScale, kA1, kA2, kA3}, {}},        {{kScale, kA1, kA3}, {}},
+      // The measures (extentCorner decides their ranges; listed for what they read).
+      {{kScale, kA1, kA2, kA3, kEps1, kKx, kKy}, {0.0}},
+      {{kScale, kA1, kA2, kA3, kEps1, kKx, kKy}, {0.0}},
+      {{kScale, kA1, kA2, kA3, kEps1, kKx, kKy}, {0.0}},
+      {{kScale, kA1, kA3}, {}},
       // The proportions turn where a2 or a3 passes 1 (A) and where they pass each other (below).
       {{kA2, kA3}, {1.0}},                  {{kA2, kA3}, {1.0}},
   };
@@ -153,6 +174,8 @@ double descriptorDegree(int index, const PlacedSuperquadric& part) { return degr
 Interval descriptorRange(int index, const PartBox& box) {
   const Reads& reads = readsOf(index);
   const auto intervals = toIntervals(box);
+  if (index >= 11 && index <= 14)  // the measures: monotone in every value they read (extentCorner)
+    return {degree(index, extentCorner(intervals, false)), degree(index, extentCorner(intervals, true))};
   // Candidate values per read parameter: the ends and the critical values inside.
   std::vector<std::vector<double>> candidates;
   for (Param p : reads.params) {

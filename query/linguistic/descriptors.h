@@ -29,12 +29,16 @@
 //                cylinder has a round section and a pyramid a squarish one ("a very sharp shape
 //                with squarish traverse section", §1).
 //   length, width, thickness = d(e3), d(e2), d(e1) with e1 <= e2 <= e3 the part's full extents
-//                along its own axes, 2·scale·(A, B, C), and d(e) = e / (1 + e) as for size: a
-//                cylinder 10 long and 1 across has length d(10), width and thickness d(1); a board
-//                8 × 1 × 0.2 has length d(8), width d(1), thickness d(0.2).
+//                along its own axes, 2·scale·(A·fx, B·fy, C), and d(e) = e / (1 + e) as for size:
+//                a cylinder 10 long and 1 across has length d(10), width and thickness d(1); a
+//                board 8 × 1 × 0.2 has length d(8), width d(1), thickness d(0.2). fx, fy are the
+//                taper's widening (taperedHalfWidthFactor(ε1, kx), deformation.h): the tapered
+//                solid's widest section over its untapered one, so a cone's width is its base's
+//                diameter (a sharp cone with A = 0.5 is 1.91 across, not 1).
 //   height     = d(2·scale·C), the extent along the part's own z axis (the axis its taper, bend
 //                and twist follow): a post's height is its length, a dome's its thickness.
-//                The four are the undeformed part's box: a taper or bend changes them little.
+//                The bend and the twist are not in the four: a bent rod's length is its length
+//                along its axis, a twisted bar's width its section's.
 //                Measures in queries ("about 10 long", "2 across", "3 units tall") are conditions
 //                on them (query/linguistic/linguistic_query.h, measureSet).
 //   flatness    = 1 − s1/s2   how much thinner the part is than it is wide: 0.9 for a plate 10

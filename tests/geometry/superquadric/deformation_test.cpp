@@ -224,3 +224,45 @@ TEST(Deformation, BendIsInjectiveOnPart) {
 
 }  // namespace
 }  // namespace fsdb
+
+namespace fsdb {
+namespace {
+
+// The tapered solid's widest section, against the forward map of its section edge: points
+// (A·cos^ε1 η, 0, C·sin^ε1 η) (signed powers) tapered, their largest |X| over A.
+TEST(Deformation, TaperedHalfWidthFactorIsTheWidestTaperedSection) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> e(0.05, 4.0), k(-1.0, 1.0);
+  const auto signedPow = [](double b, double p) { return std::copysign(std::pow(std::fabs(b), p), b); };
+  for (int trial = 0; trial < 200; ++trial) {
+    SuperquadricParams p;
+    p.eps1 = e(rng);
+    p.a1 = 0.7;
+    p.a3 = 1.8;
+    p.kx = k(rng);
+    double widest = 0.0;
+    for (int i = 0; i <= 20000; ++i) {
+      const double eta = -M_PI / 2 + M_PI * i / 20000;
+      const Vec3 q{p.A() * signedPow(std::cos(eta), p.eps1), 0.0, p.C() * signedPow(std::sin(eta), p.eps1)};
+      widest = std::max(widest, std::fabs(taper(p, q).x) / p.A());
+    }
+    const double f = taperedHalfWidthFactor(p.eps1, p.kx);
+    EXPECT_LE(widest, f + 1e-12) << p.eps1 << " " << p.kx;
+    EXPECT_NEAR(f, widest, 2e-3) << p.eps1 << " " << p.kx;
+  }
+  EXPECT_EQ(taperedHalfWidthFactor(0.5, 0.0), 1.0);
+  EXPECT_EQ(taperedHalfWidthFactor(2.0, 1.0), 1.0);  // a double pyramid's edge falls as the taper rises
+  EXPECT_EQ(taperedHalfWidthFactor(3.0, -0.7), 1.0);
+  EXPECT_NEAR(taperedHalfWidthFactor(1.0, 1.0), 1.5 * std::sqrt(0.75), 1e-12);  // w = 1/2
+  EXPECT_NEAR(taperedHalfWidthFactor(0.01, 0.6), 1.6, 0.01);                     // a box: 1 + |k|
+  EXPECT_NEAR(taperedHalfWidthFactor(0.1, -1.0), 1.9075, 1e-4);                  // a sharp cone's base
+  // It rises with |k| and falls with ε1: the measures' corners rely on both (descriptors.h).
+  for (double eps : {0.05, 0.3, 1.0, 1.7})
+    for (double a = 0.0; a < 1.0; a += 0.05) {
+      EXPECT_LE(taperedHalfWidthFactor(eps, a), taperedHalfWidthFactor(eps, a + 0.05));
+      EXPECT_GE(taperedHalfWidthFactor(eps, a), taperedHalfWidthFactor(eps + 0.2, a));
+    }
+}
+
+}  // namespace
+}  // namespace fsdb

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <random>
 
+#include "geometry/superquadric/deformation.h"
+
 namespace fsdb {
 namespace {
 
@@ -327,6 +329,41 @@ TEST(Descriptors, ExtentDegreeSetMapsEveryCut) {
   }
   EXPECT_TRUE(extentDegreeSet(FuzzyNumber::crisp(3)).isCrisp());
   EXPECT_DOUBLE_EQ(extentDegreeSet(FuzzyNumber::crisp(3)).core().lo, 0.75);
+}
+
+}  // namespace
+}  // namespace fsdb
+
+namespace fsdb {
+namespace {
+
+// A taper widens the section the measures read: a sharp cone's width is its base's diameter, and
+// its height stays its axis. A fuzzy taper through 0 gives the untapered width at the cut's low end.
+TEST(Descriptors, MeasuresReadTheTaperedSection) {
+  PlacedSuperquadric cone;  // the catalogue's sharp cone: A 0.5, C 1.5, tapered to a point
+  cone.params.eps1 = 0.1;
+  cone.params.a1 = 0.5;
+  cone.params.a3 = 3;
+  cone.params.kx = cone.params.ky = -1;
+  const double base = 2 * 0.5 * taperedHalfWidthFactor(0.1, -1);
+  EXPECT_NEAR(base, 1.9075, 1e-4);
+  EXPECT_DOUBLE_EQ(degreeOf("width", cone), extentDegree(base));
+  EXPECT_DOUBLE_EQ(degreeOf("thickness", cone), extentDegree(base));
+  EXPECT_DOUBLE_EQ(degreeOf("length", cone), extentDegree(3));
+  EXPECT_DOUBLE_EQ(degreeOf("height", cone), extentDegree(3));
+  // A wedge (tapered along x alone) is wider across x only.
+  PlacedSuperquadric wedge = cone;
+  wedge.params.ky = 0;
+  wedge.params.a3 = 0.8;  // C 0.4: the base (0.95 by 0.5) is longer than the height
+  EXPECT_DOUBLE_EQ(degreeOf("length", wedge), extentDegree(base));
+  EXPECT_DOUBLE_EQ(degreeOf("width", wedge), extentDegree(1.0));
+  EXPECT_DOUBLE_EQ(degreeOf("thickness", wedge), extentDegree(0.8));
+  FuzzyPart fuzzy;
+  fuzzy.eps1 = FuzzyNumber::crisp(0.1);
+  fuzzy.kx = fuzzy.ky = FuzzyNumber::triangular(-0.5, 0, 0.5);
+  const Interval width = descriptorRange(descriptorIndex("width"), fuzzy.boxAt(0));
+  EXPECT_DOUBLE_EQ(width.lo, extentDegree(2));
+  EXPECT_DOUBLE_EQ(width.hi, extentDegree(2 * taperedHalfWidthFactor(0.1, 0.5)));
 }
 
 }  // namespace

@@ -1,0 +1,6 @@
+-- 012_tapered_measures for PostgreSQL: as schema/migrations/012_tapered_measures.sql, every part and
+-- shape is marked pending so the server recomputes its rows with the measures of the tapered solid.
+UPDATE descriptor_clock SET generation = generation + 1;
+INSERT INTO descriptor_pending (object_id, generation)
+  SELECT id, (SELECT generation FROM descriptor_clock) FROM objects WHERE kind IN ('part', 'shape')
+  ON CONFLICT (object_id) DO UPDATE SET generation = excluded.generation;
