@@ -88,8 +88,20 @@ const std::vector<DimensionWord>& dimensionsAfterNumber() {
       {"in radius", "width", 2},    {"thick", "thickness", 1},        {"deep", "thickness", 1},
       {"in thickness", "thickness", 1}, {"tall", "height", 1},        {"high", "height", 1},
       {"in height", "height", 1},   {"on a side", "cube", 1},         {"on each side", "cube", 1},
-      {"side", "cube", 1},          {"sides", "cube", 1}};
+      {"side", "cube", 1},          {"sides", "cube", 1},
+      // The dimension nouns after their number, as people who learnt another word order say
+      // them ("a rod of 6 length", "2 height").
+      {"length", "length", 1},      {"width", "width", 1},            {"breadth", "width", 1},
+      {"thickness", "thickness", 1}, {"depth", "thickness", 1},       {"height", "height", 1}};
   return d;
+}
+
+// The words after two numbers ("0.6 by 1 cross section") that make them a section across the
+// part's length: its two shorter extents, the thickness and the width.
+const std::vector<std::string>& sectionWords() {
+  static const std::vector<std::string> words = {"cross section", "cross-section", "section", "profile",
+                                                 "cross sections", "cross-sections", "sections", "profiles"};
+  return words;
 }
 
 const std::vector<DimensionWord>& dimensionsBeforeNumber() {
@@ -606,8 +618,15 @@ class Parser {
     static const std::vector<std::string> before = phrasesOf(dimensionsBeforeNumber());
     std::string m;
     size_t at = pos_;
-    if (const size_t n = numberPhraseTokens(at)) {
-      at += n;
+    // "of" before a number ("a rod of 6 length") only where a dimension follows the number; an
+    // article only before two numbers of a section ("with a 0.6 by 1 cross section").
+    if (isWordAt(at, {"a", "an", "its"}) && numberPhraseTokens(at + 1)) {
+      const size_t n = numberPhraseTokens(at + 1);
+      return isWordAt(at + 1 + n, {"x", "by"}) && at + 2 + n < tokens_.size() && tokens_[at + 2 + n].number;
+    }
+    const size_t number = isWordAt(at, {"of"}) ? at + 1 : at;
+    if (const size_t n = numberPhraseTokens(number)) {
+      at = number + n;
       if (isWordAt(at, {"x", "by"}) && at + 1 < tokens_.size() && tokens_[at + 1].number) return true;
       if (isWordAt(at, {"unit", "units"})) ++at;
       return matchPhrase(after, &m, at - pos_) > 0;
@@ -663,22 +682,31 @@ class Parser {
     const size_t start = pos_;
     std::vector<QueryCondition> out;
     std::string word;
+    if ((at("of") || at("a") || at("an") || at("its")) && numberPhraseTokens(pos_ + 1)) ++pos_;
     if (numberPhraseTokens(pos_)) {
       const FuzzyNumber first = measureNumber();
       if (at("x") || at("by")) {
-        // "4 x 2 x 1": the three extents, sorted: the shortest is the thickness, the longest the length.
+        // "4 x 2 x 1": the three extents, sorted: the shortest is the thickness, the longest the
+        // length. "0.6 by 1 cross section": the two shorter, the section across the length.
         std::vector<FuzzyNumber> sides{first};
         while ((at("x") || at("by")) && sides.size() < 3) {
           ++pos_;
           sides.push_back(measureNumber());
         }
-        if (sides.size() != 3) fail({"'x' and a third number (the three sides of a box: '4 x 2 x 1')"});
         acceptUnits();
+        std::string section;
+        if (sides.size() == 2) {
+          const size_t n = matchPhrase(sectionWords(), &section);
+          if (n == 0)
+            fail({"'x' and a third number (the three sides of a box: '4 x 2 x 1')",
+                  "a section word after two numbers ('0.6 by 1 cross section')"});
+          pos_ += n;
+        }
         std::stable_sort(sides.begin(), sides.end(), [](const FuzzyNumber& a, const FuzzyNumber& b) {
           return a.core().lo + a.core().hi < b.core().lo + b.core().hi;
         });
         const char* names[] = {"thickness", "width", "length"};
-        for (size_t i = 0; i < 3; ++i) out.push_back(measureCondition(names[i], sides[i], span(start, pos_)));
+        for (size_t i = 0; i < sides.size(); ++i) out.push_back(measureCondition(names[i], sides[i], span(start, pos_)));
       } else {
         acceptUnits();
         const size_t n = matchPhrase(after, &word);

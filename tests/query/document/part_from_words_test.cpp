@@ -239,7 +239,8 @@ TEST(PartFromWords, EveryNounTakesMeasuresItsWordsFind) {
   const std::vector<std::string> measures = {
       "2 long", "3 across", "0.5 thick", "4 tall", "2 across and 5 long", "with diameter 2 and length 1",
       "about 10 long", "between 3 and 4 wide", "4 x 2 x 1", "1 across and 0.2 thick", "5 long and 0.5 wide",
-      "3 long, 2 wide and 1 thick", "0.3 thick and 4 across", "with a radius of 1", "exactly 2 long"};
+      "3 long, 2 wide and 1 thick", "0.3 thick and 4 across", "with a radius of 1", "exactly 2 long",
+      "8 long with a 0.6 by 1 cross section", "of 6 length"};
   int nouns = 0;
   for (const std::string& noun : v().nounWords()) {
     const Noun* n = v().noun(noun);

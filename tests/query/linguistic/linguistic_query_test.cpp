@@ -92,6 +92,17 @@ TEST(LinguisticQuery, MeasuresAreConditionsOnTheExtents) {
             (Measures{{"thickness", near(0.1)}, {"width", near(4)}, {"length", near(4)}}));
   EXPECT_EQ(measuresOf("a cube 4 units on a side"),
             (Measures{{"thickness", near(4)}, {"width", near(4)}, {"length", near(4)}}));
+  // Two numbers and a section word are the section across the length: the two shorter extents.
+  EXPECT_EQ(measuresOf("a beam 8 long with a 0.6 by 1 cross section"),
+            (Measures{{"length", near(8)}, {"thickness", near(0.6)}, {"width", near(1)}}));
+  EXPECT_EQ(measuresOf("a bar with a 2 x 0.5 profile"), (Measures{{"thickness", near(0.5)}, {"width", near(2)}}));
+  EXPECT_EQ(measuresOf("a board with a 1 by 0.2 cross-section"),
+            (Measures{{"thickness", near(0.2)}, {"width", near(1)}}));
+  EXPECT_THROW(parse("a box 3 by 2"), Error);  // two numbers and no section: which two extents is unsaid
+  // A dimension noun after its number, "of" before it, as a non-native speaker may order them.
+  EXPECT_EQ(measuresOf("rod thin straight of 6 length"), (Measures{{"height", near(6)}}));
+  EXPECT_EQ(measuresOf("a box of 2 width"), (Measures{{"width", near(2)}}));
+  EXPECT_EQ(measuresOf("a plate 0.1 thickness"), (Measures{{"thickness", near(0.1)}}));
   // With the noun's own conditions and a clause: all of them hold (min).
   const LinguisticQuery q = parse("a cylinder 6 long that is slightly bent");
   ASSERT_EQ(q.root.kind, Kind::kAnd);
