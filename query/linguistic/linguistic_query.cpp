@@ -370,6 +370,9 @@ class Parser {
     entry_ = Entry::kPartDescription;
     PartDescription d;
     if (tokens_.empty()) fail({"words such as 'a slightly bent cylinder'"});
+    // A request before the words, as a query has one ("find a box", "show me ..."): the same words
+    // make the part that the query finds (the search box's typical first, typical_first.h).
+    skipRequest();
     acceptAny(queryArticles());
     std::string word;
     adjectiveUses(&d);
@@ -384,6 +387,15 @@ class Parser {
     }
     pos_ += n;
     d.noun = v_.noun(word);
+    // A plain adjective that names a noun's shape, on a noun with no shape of its own, is that
+    // noun, as in a query ("a cylindrical thing" is a cylinder).
+    if (d.noun->params.is_null())
+      for (auto use = d.adjectives.begin(); use != d.adjectives.end(); ++use)
+        if (!use->intensity && !use->adjective->shapeOf.empty()) {
+          d.noun = v_.noun(use->adjective->shapeOf);
+          d.adjectives.erase(use);
+          break;
+        }
     const auto addMeasures = [&d](std::vector<QueryCondition> measures) {
       for (QueryCondition& m : measures) {
         std::vector<QueryCondition> leaves;
@@ -743,6 +755,36 @@ class Parser {
     }
   }
 
+  // The noun named by a plain adjective of `parts` that names a noun's shape (Adjective::shapeOf:
+  // "cylindrical"), taken out of them with its text; null when none is. Only a leaf said by
+  // itself or in an "and" of leaves: under "not" or "or" the word says something else.
+  const Noun* takeShapeNoun(std::vector<QueryCondition>* parts, std::string* text) const {
+    const auto names = [&](const QueryCondition& c) -> const Noun* {
+      if (c.kind != Kind::kDescriptor || c.measure || c.edges != QueryCondition::Edges::kNone) return nullptr;
+      const Adjective* a = v_.adjective(c.text);
+      return a && !a->shapeOf.empty() && c.descriptor == a->descriptor ? v_.noun(a->shapeOf) : nullptr;
+    };
+    for (auto part = parts->begin(); part != parts->end(); ++part) {
+      if (const Noun* noun = names(*part)) {
+        *text = part->text;
+        parts->erase(part);
+        return noun;
+      }
+      if (part->kind != Kind::kAnd) continue;
+      for (auto child = part->children.begin(); child != part->children.end(); ++child)
+        if (const Noun* noun = names(*child)) {
+          *text = child->text;
+          part->children.erase(child);
+          if (part->children.size() == 1) {
+            QueryCondition only = std::move(part->children[0]);
+            *part = std::move(only);
+          }
+          return noun;
+        }
+    }
+    return nullptr;
+  }
+
   // noun_phrase = [ article ] [ condition ] noun [ ("that"|"which") ("is"|"are") condition ]
   QueryCondition nounPhrase(std::string* subject) {
     const size_t start = pos_;
@@ -753,7 +795,13 @@ class Parser {
     std::string word;
     const size_t nounStart = pos_;
     const size_t n = matchPhrase(nounWords_, &word);
-    if (n == 0 && hasModifiers && !article && !prefix_) {
+    // An adjective that names a noun's shape, with no noun after it ("cylindrical", "a part that
+    // is ..." aside) or before a noun with no shape of its own ("a cylindrical thing", "something
+    // conical"), is that noun: a ball has a round section, but it is not cylindrical.
+    std::string shapeText;
+    const Noun* shaped = nullptr;
+    if (n == 0 && hasModifiers && !prefix_) shaped = takeShapeNoun(&parts, &shapeText);
+    if (n == 0 && hasModifiers && !article && !prefix_ && !shaped) {
       // A bare description ("slightly bent", "round and tapered") is a query about any shape. With
       // an article ("a slightly bent") the noun is still expected: the phrase is unfinished. It
       // may take a "with" clause as a noun does: "very sharp with squarish traverse section"
@@ -771,19 +819,23 @@ class Parser {
       }
       return std::move(parts[0]);
     }
-    if (n == 0) {
+    if (n == 0 && !shaped) {
       std::vector<std::string> expected;
       if (!hasModifiers) expected = conditionStarts();
       expected.push_back("a noun (" + joinList(nounWords_) + ")");
       fail(expected);
     }
     pos_ += n;
-    const Noun& noun = *v_.noun(word);
-    *subject = noun.subject;
+    const Noun* named = shaped ? shaped : v_.noun(word);
+    *subject = shaped ? "any" : named->subject;
     // "something twisted": a pronoun takes its adjectives after it.
-    if (noun.pronoun && !hasModifiers && startsCondition()) parts.push_back(condition());
-    const size_t nounAt = parts.size();
-    const std::string nounText = span(nounStart, pos_);
+    if (named->pronoun && !hasModifiers && startsCondition()) parts.push_back(condition());
+    const bool shapeless = !shaped && named->params.is_null() && named->conditions.empty();
+    if (shapeless) shaped = takeShapeNoun(&parts, &shapeText);  // "a cylindrical thing", "something conical"
+    // The noun goes before the words it is said with; one an adjective named goes first, where a
+    // clause of its words would put it ("something conical and small" as "shapes that are ...").
+    size_t nounAt = shaped ? 0 : parts.size();
+    std::string nounText = shaped ? shapeText : span(nounStart, pos_);
     // Measures right after the noun ("a rod 6 long and 0.2 across") join its clause, if any: one
     // condition after the noun, as "that is" gives.
     const size_t clauseStart = pos_;
@@ -830,6 +882,13 @@ class Parser {
         clause.push_back(condition());
       }
     }
+    // Or in its clause: "a part that is cylindrical".
+    if (shapeless && !shaped && (shaped = takeShapeNoun(&clause, &shapeText))) {
+      nounText = shapeText;
+      nounAt = 0;
+    }
+    if (shaped) named = shaped;
+    const Noun& noun = *named;
     // Outline adjectives describe a flat noun's outline, its traverse section ("a round plate",
     // "a plate that is not square"); elsewhere they keep their descriptor.
     for (std::vector<QueryCondition>* said : {&parts, &clause})

@@ -174,6 +174,10 @@ class Printer {
     const QueryCondition* clause = nullptr;
     if (nounAt < parts.size()) {
       noun = parts[nounAt]->noun;
+      // A noun an adjective named on a part ("a part that is cylindrical": a cylinder) is printed
+      // as that adjective before "part", which reads back the same.
+      const Adjective* named = v_.adjective(parts[nounAt]->text);
+      if (subject == "part" && named && !named->shapeOf.empty()) noun = parts[nounAt]->text + " part";
       if (nounAt > 1 || parts.size() - nounAt > 2) unprintable("a noun phrase of more than three parts");
       if (nounAt == 1) modifiers = parts[0];
       if (nounAt + 1 < parts.size()) clause = parts[nounAt + 1];

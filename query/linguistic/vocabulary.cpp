@@ -169,7 +169,7 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
   for (auto it = adjectives.begin(); it != adjectives.end(); ++it) {
     const std::string p = joinPath("adjectives", it.key());
     const auto& a = requireObject(it.value(), p);
-    rejectUnknownKeys(a, p, {"descriptor", "pole", "create", "outline", "set"});
+    rejectUnknownKeys(a, p, {"descriptor", "pole", "create", "outline", "set", "shape_of"});
     Adjective adj;
     adj.word = it.key();
     adj.descriptor = checkedDescriptor(requireField(a, "descriptor", p), joinPath(p, "descriptor"));
@@ -191,6 +191,7 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
         throw Error(errc::kInvalidDocument, "outline must be true or false", joinPath(p, "outline"));
       adj.outline = a["outline"].get<bool>();
     }
+    if (a.contains("shape_of")) adj.shapeOf = requireString(a["shape_of"], joinPath(p, "shape_of"));
     v.adjectives_[adj.word] = adj;
   }
 
@@ -309,6 +310,14 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
       if (descriptorIndex(to) < 0) throw Error(errc::kInvalidDocument, "unknown descriptor '" + to + "'", ip);
       v.sectionDescriptors_[it.key()] = to;
     }
+  }
+  // An adjective that names a noun's shape names a noun with a shape.
+  for (const auto& [word, adjective] : v.adjectives_) {
+    if (adjective.shapeOf.empty()) continue;
+    const Noun* noun = v.noun(adjective.shapeOf);
+    if (!noun || noun->params.is_null())
+      throw Error(errc::kInvalidDocument, "shape_of names no noun with params: '" + adjective.shapeOf + "'",
+                  joinPath(joinPath("adjectives", word), "shape_of"));
   }
   // An outline adjective turns onto its descriptor's section descriptor: it needs one.
   for (const auto& [word, adjective] : v.adjectives_)

@@ -71,6 +71,11 @@ struct Adjective {
   // A middle of the descriptor, not a pole ("truncated": a taper short of a point): the set the
   // plain adjective asks for (plainSet), as written; `create` is it unless given.
   std::optional<FuzzyNumber> set;
+  // The noun whose shape the adjective names ("cylindrical": cylinder), or empty. Plain, on a noun
+  // with no shape of its own or on none, it is that noun ("a cylindrical thing" is a cylinder,
+  // not any round-sectioned shape such as a ball); beside a noun with a shape it keeps its
+  // descriptor ("a cylindrical box").
+  std::string shapeOf;
 };
 
 struct NounCondition {

@@ -46,6 +46,16 @@ TEST(PartFromWords, NounGivesTheParameters) {
 }
 
 // The descriptor of the made part equals the words' degree set (exact for the affine rules).
+// An adjective that names a noun's shape, on a noun with no shape of its own, makes that noun.
+TEST(PartFromWords, AnAdjectiveThatNamesAShapeMakesItsNoun) {
+  const auto same = [](const std::string& a, const std::string& b) { return partToJson(make(a)) == partToJson(make(b)); };
+  EXPECT_TRUE(same("a cylindrical thing", "a cylinder"));
+  EXPECT_TRUE(same("a slightly bent conical part", "a slightly bent cone"));
+  EXPECT_TRUE(same("a small spherical object", "a small sphere"));
+  EXPECT_FALSE(same("a cylindrical box", "a cylinder"));  // a box with a round section
+  EXPECT_NE(errorOf("a very cylindrical thing").find("names no shape"), std::string::npos);
+}
+
 TEST(PartFromWords, AdjectivesSetTheirDescriptor) {
   const FuzzyPart bent = make("a slightly bent cylinder");
   const FuzzyNumber bend = valueOf(bent, "bendness");

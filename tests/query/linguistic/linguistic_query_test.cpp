@@ -64,6 +64,40 @@ std::vector<std::pair<std::string, FuzzyNumber>> measuresOf(const std::string& t
 using Measures = std::vector<std::pair<std::string, FuzzyNumber>>;
 FuzzyNumber near(double x) { return FuzzyNumber::triangular(0.9 * x, x, 1.1 * x); }
 
+// An adjective that names a noun's shape ("cylindrical") is that noun where no noun with a shape
+// of its own follows: a ball has a round section, but "a cylindrical thing" is a cylinder. Beside a
+// noun with a shape it keeps its descriptor; under "not" or "or" it says something else.
+TEST(LinguisticQuery, AnAdjectiveThatNamesAShapeIsItsNoun) {
+  const auto nounOf = [](const std::string& text) {
+    const LinguisticQuery q = parse(text);
+    std::string noun;
+    const std::function<void(const QueryCondition&)> find = [&](const QueryCondition& c) {
+      if (!c.noun.empty() && noun.empty()) noun = c.noun;
+      for (const QueryCondition& child : c.children) find(child);
+    };
+    find(q.root);
+    return noun;
+  };
+  EXPECT_EQ(nounOf("a cylindrical thing"), "cylinder");
+  EXPECT_EQ(nounOf("cylindrical"), "cylinder");
+  EXPECT_EQ(nounOf("something conical"), "cone");
+  EXPECT_EQ(nounOf("a part that is cylindrical"), "cylinder");
+  EXPECT_EQ(parse("a part that is cylindrical").subject, parse("a part").subject);
+  EXPECT_EQ(nounOf("a slightly bent spherical shape"), "sphere");
+  EXPECT_EQ(nounOf("a pyramidal thing on a cubic thing"), "pyramid");
+  EXPECT_EQ(meaning("a cylindrical thing that is slightly bent"), meaning("a cylinder that is slightly bent"));
+  EXPECT_EQ(meaning("cylindrical and small")["condition"]["children"].size(), 2u);
+  // Beside a noun with a shape, its descriptor: a cylindrical box has a round section.
+  EXPECT_EQ(nounOf("a cylindrical box"), "box");
+  bool roundSection = false;
+  for (const QueryCondition& leaf : leavesOf(parse("a cylindrical box").root))
+    roundSection = roundSection || leaf.descriptor == "section-roundness";
+  EXPECT_TRUE(roundSection);
+  EXPECT_EQ(nounOf("not cylindrical"), "");
+  EXPECT_EQ(nounOf("cylindrical or conical"), "");
+  EXPECT_EQ(nounOf("a very cylindrical thing"), "");  // a degree of its own: the round section
+}
+
 TEST(LinguisticQuery, MeasuresAreConditionsOnTheExtents) {
   // After a number, a dimension word; a plain number is within 10 %, a number phrase as written.
   // The length of a noun turned about its own z axis (a cylinder, a rod, a pin) is its axial
@@ -679,12 +713,23 @@ TEST(LinguisticQuery, TraverseSections) {
             meaning("find a very sharp shape with squarish traverse section"));
   // Without a section word the adjective means the whole shape, as before.
   expectLeaf(parse("a squarish shape").root, "squariness", v().plainSet(*v().adjective("squarish")), "squarish");
-  // Designers' shape adjectives: cylindrical and tubular say the section, the others the whole.
+  // Designers' shape adjectives: cylindrical and tubular say the section, the others the whole,
+  // beside a noun with a shape of its own; beside "shape" those that name a noun's shape are that
+  // noun (AnAdjectiveThatNamesAShapeIsItsNoun).
   for (const auto& [word, descriptor] : std::vector<std::pair<const char*, const char*>>{
            {"cylindrical", "section-roundness"}, {"tubular", "section-roundness"}, {"spherical", "roundness"},
            {"conical", "taperness"}, {"pyramidal", "taperness"}, {"cubic", "squariness"},
-           {"rectangular", "squariness"}, {"filleted", "roundness"}, {"radiused", "roundness"}})
-    expectLeaf(parse(std::string("a ") + word + " shape").root, descriptor, v().plainSet(*v().adjective(word)), word);
+           {"rectangular", "squariness"}, {"filleted", "roundness"}, {"radiused", "roundness"}}) {
+    const QueryCondition beside = parse(std::string("a ") + word + " wedge").root;
+    ASSERT_EQ(beside.kind, Kind::kAnd) << word;
+    EXPECT_EQ(beside.children[0].descriptor, descriptor) << word;  // its set may meet the wedge's (relative_to)
+    EXPECT_EQ(beside.children[0].text, word);
+    EXPECT_EQ(beside.children[1].noun, "wedge");
+    if (v().adjective(word)->shapeOf.empty())
+      expectLeaf(parse(std::string("a ") + word + " shape").root, descriptor, v().plainSet(*v().adjective(word)), word);
+    else
+      EXPECT_EQ(parse(std::string("a ") + word + " shape").root.noun, v().noun(v().adjective(word)->shapeOf)->word);
+  }
   // An adjective that says nothing of a section is an error naming the words and the ones that do.
   const std::string e = errorOf("a shape with a bent cross-section");
   EXPECT_NE(e.find("'a bent cross-section' at character 13"), std::string::npos) << e;

@@ -513,6 +513,17 @@ TEST(Vocabulary, OutlineAdjectivesDescribeAFlatNounsSection) {
                 "outline must be true or false", "adjectives.round.outline");
 }
 
+// An adjective that names a noun's shape names a noun with params.
+TEST(Vocabulary, ShapeOfNamesANounWithAShape) {
+  EXPECT_EQ(v().adjective("cylindrical")->shapeOf, "cylinder");
+  EXPECT_EQ(v().adjective("tubular")->shapeOf, "tube");
+  EXPECT_EQ(v().adjective("round")->shapeOf, "");
+  expectRefused([](nlohmann::json& d) { d["adjectives"]["conical"]["shape_of"] = "thing"; },
+                "shape_of names no noun with params: 'thing'", "adjectives.conical.shape_of");
+  expectRefused([](nlohmann::json& d) { d["adjectives"]["conical"]["shape_of"] = "kettle"; },
+                "shape_of names no noun with params: 'kettle'", "adjectives.conical.shape_of");
+}
+
 // Users extend the vocabulary with their own words.
 TEST(Vocabulary, ExtendedVocabulary) {
   auto doc = builtinDocument();
