@@ -252,6 +252,21 @@ std::vector<DescriptorValue> describePart(const FuzzyPart& part) {
   return values;
 }
 
+double descriptorDistance(const std::vector<DescriptorValue>& a, const std::vector<DescriptorValue>& b,
+                          const std::vector<std::string>& skip) {
+  const auto mid = [](const FuzzyNumber& f) { return (f.core().lo + f.core().hi) / 2.0; };
+  double sum = 0.0;
+  for (const DescriptorValue& x : a) {
+    if (std::find(skip.begin(), skip.end(), x.descriptor) != skip.end()) continue;
+    for (const DescriptorValue& y : b)
+      if (x.descriptor == y.descriptor) {
+        sum += std::fabs(mid(x.value) - mid(y.value));
+        break;
+      }
+  }
+  return sum;
+}
+
 }  // namespace fsdb
 
 namespace fsdb {

@@ -132,4 +132,13 @@ Interval descriptorRange(int index, const PartBox& box);
 // Every descriptor of a part, in descriptorNames() order. Deterministic, pure, thread-safe.
 std::vector<DescriptorValue> describePart(const FuzzyPart& part);
 
+// brief: How far two described parts lie apart: the sum over the descriptors both have, except
+//   those in `skip`, of the distance between their cores' midpoints, in degrees (each in [0, 1]).
+// note: The search box breaks ties of score with it (docs/design/linguistic-search.md, "Typical
+//   first"): of the objects that meet the words equally, the one nearest the part the words make,
+//   their prototype, comes first. A descriptor only one side has (rows written before it existed)
+//   is left out.
+double descriptorDistance(const std::vector<DescriptorValue>& a, const std::vector<DescriptorValue>& b,
+                          const std::vector<std::string>& skip = {});
+
 }  // namespace fsdb

@@ -18,6 +18,7 @@
 #include "query/structural/csg_query_text.h"
 #include "query/structural/unknown_words.h"
 #include "server/service/documents.h"
+#include "server/service/typical_first.h"
 
 namespace fsdb {
 
@@ -319,8 +320,12 @@ bool holdsRelation(const nlohmann::json& node) {
 // given, answers the same request with that limit): it comes in where it ties with the last.
 // Not for texts with a relation: their answer is a whole of parts, and each part's name would
 // come before it.
+//
+// Of results with equal scores and coverage, after a whole name, the most typical comes first
+// (typical_first.h): the nearest the part `text` makes. Where such a tie runs past the cut, the
+// first kNamedTieDepth results are read for the rest of it.
 void rankNamesAmongWords(const Store& store, const nlohmann::json& request, const std::vector<std::string>& words,
-                         nlohmann::json* answer, size_t limit,
+                         const std::string& text, nlohmann::json* answer, size_t limit,
                          const std::function<nlohmann::json(size_t)>& deeper = nullptr) {
   if (answer->value("search", "") != "linguistic" || !answer->contains("results") ||
       !(*answer)["results"].is_array() || holdsRelation(answer->value("parsed", nlohmann::json::object())))
@@ -396,15 +401,48 @@ void rankNamesAmongWords(const Store& store, const nlohmann::json& request, cons
     nameWords.push_back(tie.rank);
     resultAt.emplace(o.id, results.size() - 1);
   }
+  // Typical first, where two results tie on score and coverage.
+  const auto tied = [&](const nlohmann::json& a, const nlohmann::json& b) {
+    return a.value("score", 0.0) == b.value("score", 0.0) && a.value("coverage", 0.0) == b.value("coverage", 0.0);
+  };
+  bool ties = false;
+  for (size_t i = 0; i + 1 < results.size() && !ties; ++i)
+    for (size_t j = i + 1; j < results.size() && !ties; ++j) ties = tied(results[i], results[j]);
+  // The answer's last result may tie with objects past the cut (with one result, it is unseen).
+  const bool tieAtCut = cut && (limit == 1 || tied(results[limit - 2], results[limit - 1]));
+  std::vector<double> distance(results.size(), 0.0);
+  // Not in closest matches (partial): their order is the mean's, how near each comes.
+  if ((ties || tieAtCut) && !answer->value("partial", false)) {
+    if (const std::optional<std::vector<DescriptorValue>> prototype = wordsPrototype(text)) {
+      if (tieAtCut) {
+        // The tie at the cut may hold objects the answer left out: read them.
+        if (!deep) deep = deeper(kNamedTieDepth);
+        const nlohmann::json last = results[limit - 1];
+        for (const nlohmann::json& r : (*deep)["results"]) {
+          if (!tied(r, last) || resultAt.count(idOf(r))) continue;
+          results.push_back(r);
+          const Tie tie = tieRank(r.value("name", ""));
+          nameWords.push_back(tie.rank);
+          if (tie.rank > 0) mark(results.back(), r.value("name", ""), false, tie.said);
+          resultAt.emplace(idOf(r), results.size() - 1);
+        }
+      }
+      distance = typicalityDistances(store, results, *prototype, answer->value("parsed", nlohmann::json::object()));
+    }
+  }
   std::vector<size_t> order(results.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = i;
   // Of equal scores, coverage first (what the descriptors say: the object described as vaguely
-  // as the words, QueryScore::coverage), then the name.
+  // as the words, QueryScore::coverage), then a whole name, then the most typical, then the name.
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
     const double sa = results[a].value("score", 0.0), sb = results[b].value("score", 0.0);
     if (sa != sb) return sa > sb;
     const double ca = results[a].value("coverage", 0.0), cb = results[b].value("coverage", 0.0);
-    return ca != cb ? ca > cb : nameWords[a] > nameWords[b];
+    if (ca != cb) return ca > cb;
+    const bool wa = wholeIds.count(idOf(results[a])) > 0, wb = wholeIds.count(idOf(results[b])) > 0;
+    if (wa != wb) return wa;
+    if (nameWords[a] != nameWords[b]) return nameWords[a] > nameWords[b];
+    return distance[a] < distance[b];
   });
   nlohmann::json ranked = nlohmann::json::array();
   for (size_t i = 0; i < order.size() && i < limit; ++i) ranked.push_back(std::move(results[order[i]]));
@@ -680,7 +718,7 @@ nlohmann::json queryResponse(const Store& store, const nlohmann::json& request,
     // Where the meaning finds something whole, it is the answer: a description's words may meet
     // by chance ("a sharp cylinder" in "a very bent cylinder and a very sharp pyramid").
     const bool found = answer.contains("results") && !answer["results"].empty() && !answer.value("partial", false);
-    rankNamesAmongWords(store, request, words, &answer, limit, [&](size_t depth) {
+    rankNamesAmongWords(store, request, words, text, &answer, limit, [&](size_t depth) {
       nlohmann::json deeper = request;
       deeper["limit"] = depth;
       return searchText(store, deeper, text, linguisticLimits, csgLimits, graphs);
@@ -716,7 +754,8 @@ nlohmann::json queryResponse(const Store& store, const nlohmann::json& request,
       std::vector<std::string> readWords = words;
       for (const std::string& w : asRead)
         if (std::find(readWords.begin(), readWords.end(), w) == readWords.end()) readWords.push_back(w);
-      rankNamesAmongWords(store, request, readWords, &answer, limit, [&](size_t depth) {
+      const std::string readText = answer.value("read_text", text);
+      rankNamesAmongWords(store, request, readWords, readText, &answer, limit, [&](size_t depth) {
         nlohmann::json deeper = request;
         deeper["limit"] = depth;
         return readAroundUnknownWords(store, deeper, text, reading, refused, linguisticLimits, csgLimits, graphs);
