@@ -15,6 +15,7 @@
 #include "query/linguistic/linguistic_query.h"
 #include "query/linguistic/query_tokens.h"
 #include "query/linguistic/vocabulary.h"
+#include "query/linguistic/wordnet.h"
 #include "query/structural/csg_query_text.h"
 #include "query/structural/unknown_words.h"
 #include "server/service/documents.h"
@@ -113,8 +114,13 @@ constexpr size_t kLongestNearlyNamedText = 300;
 // three unknown words (no route either) of four to twenty letters, every spelling one edit away
 // (a letter left out, added, changed, or two swapped: "snowmn" gives snowman, "tabel" table).
 // Each name once, runs first.
+//
+// `related`, when given: for the same unknown words, the names WordNet relates to them as nouns
+// (wordNetNames): "a pillow" may be the object named cushion.
+void wordNetNames(const std::string& word, std::vector<std::string>* synonyms, std::vector<std::string>* hypernyms);
 void nearNames(const std::string& text, const KnownWordsReading& reading, std::vector<std::string>* runs,
-               std::vector<std::string>* edits) {
+               std::vector<std::string>* edits, std::vector<std::string>* synonyms = nullptr,
+               std::vector<std::string>* hypernyms = nullptr) {
   // A name is a few words: long texts are not names, and each spelling costs a lookup.
   if (text.size() > kLongestNearlyNamedText) return;
   std::vector<query_tokens::Token> tokens;
@@ -153,6 +159,12 @@ void nearNames(const std::string& text, const KnownWordsReading& reading, std::v
     if (edited == 3) break;
     if (w.size() < 4 || w.size() > 20) continue;
     ++edited;
+    if (synonyms && hypernyms) {
+      std::vector<std::string> same, broader;
+      wordNetNames(w, &same, &broader);
+      for (std::string& name : same) list(synonyms, std::move(name));
+      for (std::string& name : broader) list(hypernyms, std::move(name));
+    }
     std::vector<std::string> near;
     for (size_t k = 0; k < w.size(); ++k) near.push_back(w.substr(0, k) + w.substr(k + 1));
     for (size_t k = 0; k + 1 < w.size(); ++k) {
@@ -171,31 +183,75 @@ void nearNames(const std::string& text, const KnownWordsReading& reading, std::v
 }
 
 // How names a text nearly holds score (nearNames): below an exact name (1) and above the
-// objects' own words (kDescribedScore); a name in the text's words above a spelling one edit away.
+// objects' own words (kDescribedScore); a name in the text's words above a spelling one edit away,
+// which a name WordNet gives as a synonym of an unknown word matches, and a hypernym's is that
+// times WordNet routes' hypernym discount (0.9, word_routes.h).
 constexpr double kNameInTextScore = 0.9;
 constexpr double kNearNameScore = 0.8;
+constexpr double kHypernymNameScore = 0.9 * kNearNameScore;
+
+// The nouns WordNet gives for an unknown word, as names: the words of its first four senses as a
+// noun (synonyms: "sofa" for couch) and of their hypernyms ("cushion" for pillow), each as the
+// spellings namesOfText makes of its words. The word itself is not among them.
+void wordNetNames(const std::string& word, std::vector<std::string>* synonyms, std::vector<std::string>* hypernyms) {
+  const WordNet* wordnet = systemWordNet();
+  if (!wordnet) return;
+  const auto add = [&](const std::string& phrase, std::vector<std::string>* out) {
+    if (phrase == word) return;
+    std::vector<std::string> words;
+    size_t from = 0;
+    while (from < phrase.size()) {
+      size_t to = phrase.find(' ', from);
+      if (to == std::string::npos) to = phrase.size();
+      if (to > from) words.push_back(phrase.substr(from, to - from));
+      from = to + 1;
+    }
+    if (words.empty() || words.size() > 3) return;
+    for (std::string& name : namesOfText(words)) out->push_back(std::move(name));
+  };
+  for (const std::string& base : wordnet->baseForms(word, WordNet::Pos::kNoun)) {
+    const std::vector<WordNet::Synset> senses = wordnet->senses(base, WordNet::Pos::kNoun);
+    for (size_t k = 0; k < senses.size() && k < 4; ++k) {
+      for (const std::string& w : senses[k].words) add(w, synonyms);
+      for (const WordNet::Pointer& p : senses[k].pointers)
+        if (p.symbol == "@" && p.pos == WordNet::Pos::kNoun)
+          for (const std::string& w : wordnet->synsetAt(WordNet::Pos::kNoun, p.offset).words) add(w, hypernyms);
+    }
+  }
+}
 
 // The stored parts and shapes whose name the text nearly holds (nearNames), as named results:
 // the names in its words (kNameInTextScore), then those one edit away (kNearNameScore), each
 // object once, looked up kMaxNamedLookups names a statement.
 nlohmann::json objectsNearlyNamed(const Store& store, const nlohmann::json& request, const std::string& text,
                                   const KnownWordsReading& reading) {
-  std::vector<std::string> runs, edits;
-  nearNames(text, reading, &runs, &edits);
+  std::vector<std::string> runs, edits, synonyms, hypernyms;
+  nearNames(text, reading, &runs, &edits, &synonyms, &hypernyms);
   nlohmann::json out = nlohmann::json::array();
   std::unordered_set<int64_t> seen;
   const std::vector<std::string> kinds = requestKinds(request);
-  for (const bool typo : {false, true}) {
-    const std::vector<std::string>& names = typo ? edits : runs;
+  // The names in the words, then WordNet's synonyms of an unknown word, spellings one edit away,
+  // WordNet's hypernyms.
+  enum class How { kRun, kSynonym, kTypo, kHypernym };
+  for (const How how : {How::kRun, How::kSynonym, How::kTypo, How::kHypernym}) {
+    const std::vector<std::string>& names = how == How::kRun       ? runs
+                                            : how == How::kSynonym ? synonyms
+                                            : how == How::kTypo    ? edits
+                                                                   : hypernyms;
     for (size_t at = 0; at < names.size(); at += Store::kMaxNamedLookups) {
       const std::vector<std::string> chunk(
           names.begin() + static_cast<std::ptrdiff_t>(at),
           names.begin() + static_cast<std::ptrdiff_t>(std::min(names.size(), at + Store::kMaxNamedLookups)));
       for (const StoredObject& o : store.named(chunk, kinds)) {
         if (!seen.insert(o.id).second) continue;
-        const double score = typo ? kNearNameScore : kNameInTextScore;
-        const std::string why = typo ? "the name '" + o.name + "', one letter away from a word of the text"
-                                     : "the name '" + o.name + "' among the words of the text";
+        const double score = how == How::kRun        ? kNameInTextScore
+                             : how == How::kHypernym ? kHypernymNameScore
+                                                     : kNearNameScore;
+        const std::string why =
+            how == How::kRun       ? "the name '" + o.name + "' among the words of the text"
+            : how == How::kTypo    ? "the name '" + o.name + "', one letter away from a word of the text"
+            : how == How::kSynonym ? "the name '" + o.name + "', a WordNet synonym of a word of the text"
+                                   : "the name '" + o.name + "', a WordNet hypernym of a word of the text";
         out.push_back({{"id", o.id}, {"kind", o.kind}, {"name", o.name}, {"version", o.version}, {"score", score},
                        {"named", true}, {"explain", {{{"text", why}, {"score", score}}}}});
       }

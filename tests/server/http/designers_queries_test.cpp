@@ -884,3 +884,29 @@ TEST(DesignersQueries, TiesGoToTheMostTypicalObject) {
 
 }  // namespace
 }  // namespace fsdb
+
+namespace fsdb {
+namespace {
+
+// A word no vocabulary or route knows may name a stored object through WordNet: its synonyms as a
+// noun at the score of a spelling one letter away (0.8), its hypernyms at 0.9 of that ("a pillow"
+// is a cushion; "a couch" the object named sofa). Words WordNet relates to no name find nothing.
+TEST(DesignersQueries, WordNetRelatesAnUnknownWordToAStoredName) {
+  ServerProcess server;
+  const json ball = {{"eps1", 1}, {"eps2", 1}, {"a1", 1}, {"a3", 0.4}};
+  for (const char* name : {"cushion", "sofa"})
+    ASSERT_EQ(server.post("/parts", json{{"name", name}, {"params", ball}}).status, 201);
+  for (const auto& [text, name, score, how] : std::vector<std::tuple<const char*, const char*, double, const char*>>{
+           {"a pillow", "cushion", 0.72, "hypernym"}, {"a couch", "sofa", 0.8, "synonym"}}) {
+    auto r = server.post("/query", json{{"text", text}});
+    ASSERT_EQ(r.status, 200) << text << " " << r.body;
+    ASSERT_EQ(r.json["results"].size(), 1u) << r.body;
+    EXPECT_EQ(r.json["results"][0]["name"], name) << r.body;
+    EXPECT_NEAR(r.json["results"][0]["score"].get<double>(), score, 1e-12) << r.body;
+    EXPECT_NE(r.json["results"][0]["explain"][0]["text"].get<std::string>().find(how), std::string::npos) << r.body;
+  }
+  EXPECT_EQ(server.post("/query", json{{"text", "a quasar"}}).status, 422);
+}
+
+}  // namespace
+}  // namespace fsdb
