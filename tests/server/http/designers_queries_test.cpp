@@ -875,6 +875,15 @@ TEST(DesignersQueries, TiesGoToTheMostTypicalObject) {
     ASSERT_EQ(meaning.status, 200) << meaning.body;
     EXPECT_EQ(meaning.json["results"][0]["name"], "longer") << meaning.body;
   }
+  // Nor does a text longer than a description (300 characters): the same words said 25 times.
+  std::string repeated = "a";
+  for (int k = 0; k < 25; ++k) repeated += " slightly bent";
+  repeated += " cylinder";
+  ASSERT_GT(repeated.size(), 300u);
+  auto longText = server.post("/query", json{{"text", repeated}, {"limit", 10}});
+  ASSERT_EQ(longText.status, 200) << longText.body;
+  ASSERT_EQ(longText.json["results"].size(), 3u) << longText.body;
+  EXPECT_EQ(longText.json["results"][0]["name"], "longer") << longText.body;
   // A noun with no shape makes no part: its ties stay in the ids' order.
   auto shape = server.post("/query", json{{"text", "a slightly bent part"}, {"limit", 10}});
   ASSERT_EQ(shape.status, 200) << shape.body;
