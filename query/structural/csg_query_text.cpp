@@ -84,15 +84,38 @@ std::vector<Word> words(const std::string& text) {
   return out;
 }
 
+// The text with a hollow or drilled word that follows a run of adjectives and intensities moved
+// before them ("a bent hollow tube" is "a hollow bent tube", "a big drilled block" "a drilled big
+// block"), where the grammar reads it: the hollowed or drilled part is the noun phrase after it,
+// and the noun phrases are read from the text's characters, so the words move there.
+std::string hollowWordsFirst(const std::string& text, const Vocabulary& vocabulary) {
+  std::string out = text;
+  const std::vector<Word> ws = words(text);
+  for (size_t k = 1; k < ws.size(); ++k) {
+    if (!contains(kHollowWords, ws[k].text) && !contains(kDrilledWords, ws[k].text)) continue;
+    size_t j = k;
+    while (j > 0 && (vocabulary.adjective(ws[j - 1].text) || vocabulary.intensity(ws[j - 1].text))) --j;
+    if (j == k) continue;
+    // out keeps text's length and offsets outside the run: the run and the word swap places.
+    const std::string run = text.substr(ws[j].offset, ws[k - 1].offset + ws[k - 1].text.size() - ws[j].offset);
+    const std::string word = text.substr(ws[k].offset, ws[k].text.size());
+    const std::string between = text.substr(ws[k - 1].offset + ws[k - 1].text.size(),
+                                            ws[k].offset - (ws[k - 1].offset + ws[k - 1].text.size()));
+    out.replace(ws[j].offset, run.size() + between.size() + word.size(), word + between + run);
+  }
+  return out;
+}
+
 // The phrase form: recursive descent over `words`, one function per production of the header; the
 // leaves are noun phrases read by the linguistic parser from their first character on.
 class PhraseParser {
  public:
   PhraseParser(const std::string& text, const Vocabulary& vocabulary, std::vector<CsgQueryLeaf>& leaves)
-      : text_(text),
-        words_(query_tokens::withoutFillers(words(text), vocabulary)),  // as the linguistic parser reads them
+      : owned_(hollowWordsFirst(text, vocabulary)),
+        text_(owned_),
+        words_(query_tokens::withoutFillers(words(text_), vocabulary)),  // as the linguistic parser reads them
         leaves_(leaves),
-        phrases_(text, vocabulary),
+        phrases_(text_, vocabulary),
         v_(vocabulary) {}
 
   nlohmann::json parse() {
@@ -800,6 +823,7 @@ class PhraseParser {
 
   static constexpr int kMaxNesting = 64;
   static constexpr size_t kNone = std::string::npos;
+  const std::string owned_;  // the text with hollow words first (hollowWordsFirst)
   const std::string& text_;
   std::vector<Word> words_;
   std::vector<CsgQueryLeaf>& leaves_;

@@ -156,6 +156,13 @@ TEST(CsgQueryText, DesignersPhrasingsOfDifferencesAndIntersections) {
   ASSERT_EQ(tube.leaves.size(), 2u);
   EXPECT_EQ(tube.leaves[0].text, "slightly bent cylinder");
   EXPECT_EQ(toJson(*tube.leaves[1].condition), toJson(*parse("a cylinder").leaves[0].condition));
+  // After the part's adjectives, the same ("a bent hollow tube" as "a hollow bent tube").
+  const CsgQuery after = parse("a slightly bent hollow cylinder");
+  ASSERT_EQ(after.leaves.size(), 2u);
+  EXPECT_EQ(after.leaves[0].text, "slightly bent cylinder");
+  EXPECT_EQ(toJson(*after.leaves[0].condition), toJson(*tube.leaves[0].condition));
+  EXPECT_EQ(shape(parse("a very big drilled block")), shape(parse("a drilled very big block")));
+  EXPECT_EQ(shape(parse("a sphere and a bent hollow tube")), shape(parse("a sphere and a hollow bent tube")));
   // The hollowed part may be placed, and be the part another is placed against.
   EXPECT_EQ(shape(parse("a hollow cylinder on top of a box")),
             "union(difference('cylinder'<top 'a box'>, 'hollow'), 'a box')");
