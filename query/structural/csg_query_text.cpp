@@ -86,7 +86,8 @@ std::vector<Word> words(const std::string& text) {
 
 // The text with a hollow or drilled word that follows a run of adjectives and intensities moved
 // before them ("a bent hollow tube" is "a hollow bent tube", "a big drilled block" "a drilled big
-// block"), where the grammar reads it: the hollowed or drilled part is the noun phrase after it,
+// block"), and a hollow word that follows its noun before the noun ("tube hollow"), where the
+// grammar reads it: the hollowed or drilled part is the noun phrase after it,
 // and the noun phrases are read from the text's characters, so the words move there.
 std::string hollowWordsFirst(const std::string& text, const Vocabulary& vocabulary) {
   std::string out = text;
@@ -94,6 +95,12 @@ std::string hollowWordsFirst(const std::string& text, const Vocabulary& vocabula
   for (size_t k = 1; k < ws.size(); ++k) {
     if (!contains(kHollowWords, ws[k].text) && !contains(kDrilledWords, ws[k].text)) continue;
     size_t j = k;
+    // A hollow word right after its noun, ending the noun phrase, goes before it and its
+    // adjectives too ("tube hollow which is bent"). ("a plate drilled with a rod" is the grammar's
+    // own difference: drilled words stay.)
+    const bool nextStartsPhrase = k + 1 < ws.size() && (vocabulary.noun(ws[k + 1].text) || vocabulary.adjective(ws[k + 1].text) ||
+                                                        vocabulary.intensity(ws[k + 1].text) || contains(queryArticles(), ws[k + 1].text));
+    if (contains(kHollowWords, ws[k].text) && vocabulary.noun(ws[k - 1].text) && !nextStartsPhrase) --j;
     while (j > 0 && (vocabulary.adjective(ws[j - 1].text) || vocabulary.intensity(ws[j - 1].text))) --j;
     if (j == k) continue;
     // out keeps text's length and offsets outside the run: the run and the word swap places.

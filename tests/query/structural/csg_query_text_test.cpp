@@ -163,6 +163,10 @@ TEST(CsgQueryText, DesignersPhrasingsOfDifferencesAndIntersections) {
   EXPECT_EQ(toJson(*after.leaves[0].condition), toJson(*tube.leaves[0].condition));
   EXPECT_EQ(shape(parse("a very big drilled block")), shape(parse("a drilled very big block")));
   EXPECT_EQ(shape(parse("a sphere and a bent hollow tube")), shape(parse("a sphere and a hollow bent tube")));
+  // After its noun, ending the noun phrase, hollow too (a non-native order: "tube hollow").
+  EXPECT_EQ(shape(parse("tube hollow which is bent")), shape(parse("hollow tube which is bent")));
+  EXPECT_EQ(shape(parse("a slightly bent tube hollow")), shape(parse("a hollow slightly bent tube")));
+  EXPECT_EQ(shape(parse("a plate drilled with a rod")), "difference('a plate', 'a rod')");
   // The hollowed part may be placed, and be the part another is placed against.
   EXPECT_EQ(shape(parse("a hollow cylinder on top of a box")),
             "union(difference('cylinder'<top 'a box'>, 'hollow'), 'a box')");
