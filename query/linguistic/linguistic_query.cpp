@@ -832,9 +832,10 @@ class Parser {
     if (named->pronoun && !hasModifiers && startsCondition()) parts.push_back(condition());
     const bool shapeless = !shaped && named->params.is_null() && named->conditions.empty();
     if (shapeless) shaped = takeShapeNoun(&parts, &shapeText);  // "a cylindrical thing", "something conical"
-    // The noun goes before the words it is said with; one an adjective named goes first, where a
-    // clause of its words would put it ("something conical and small" as "shapes that are ...").
-    size_t nounAt = shaped ? 0 : parts.size();
+    // Words said after the noun they name (a bare description, a pronoun's adjectives): what is
+    // left of them is the noun's clause, as "shapes that are conical and small" reads.
+    const bool wordsAfter = n == 0 || (named->pronoun && !hasModifiers);
+    size_t nounAt = parts.size();
     std::string nounText = shaped ? shapeText : span(nounStart, pos_);
     // Measures right after the noun ("a rod 6 long and 0.2 across") join its clause, if any: one
     // condition after the noun, as "that is" gives.
@@ -883,8 +884,10 @@ class Parser {
       }
     }
     // Or in its clause: "a part that is cylindrical".
-    if (shapeless && !shaped && (shaped = takeShapeNoun(&clause, &shapeText))) {
-      nounText = shapeText;
+    if (shapeless && !shaped && (shaped = takeShapeNoun(&clause, &shapeText))) nounText = shapeText;
+    if (shaped && wordsAfter && !parts.empty()) {
+      clause.insert(clause.begin(), std::make_move_iterator(parts.begin()), std::make_move_iterator(parts.end()));
+      parts.clear();
       nounAt = 0;
     }
     if (shaped) named = shaped;

@@ -15,6 +15,7 @@
 #include "query/json/fuzzy_json.h"
 #include "query/linguistic/degree_sets.h"
 #include "query/linguistic/descriptors.h"
+#include "query/linguistic/query_print.h"
 #include "query/linguistic/vocabulary.h"
 #include "tests/testing/grammar_examples.h"
 #include "tests/testing/query_shapes.h"
@@ -96,6 +97,17 @@ TEST(LinguisticQuery, AnAdjectiveThatNamesAShapeIsItsNoun) {
   EXPECT_EQ(nounOf("not cylindrical"), "");
   EXPECT_EQ(nounOf("cylindrical or conical"), "");
   EXPECT_EQ(nounOf("a very cylindrical thing"), "");  // a degree of its own: the round section
+  // Each reads back from its printed text (a noun phrase is printed as modifiers, noun, clause).
+  for (const char* text : {"something cubic and small that is bent", "cubic and small with squarish traverse section",
+                           "a small cubic thing that is bent", "a small part that is cylindrical",
+                           "something conical and very small", "a small bent spherical object that is twisted",
+                           "find parts that are conical, small and bent"}) {
+    const LinguisticQuery q = parse(text);
+    const std::string printed = linguisticQueryText(q, v());
+    LinguisticQuery again;
+    ASSERT_NO_THROW(again = parse(printed)) << text << " -> " << printed;
+    EXPECT_EQ(testing::queryMeaning(again), testing::queryMeaning(q)) << text << " -> " << printed;
+  }
 }
 
 TEST(LinguisticQuery, MeasuresAreConditionsOnTheExtents) {
