@@ -465,9 +465,13 @@ void rankNamesAmongWords(const Store& store, const nlohmann::json& request, cons
   const auto tied = [&](const nlohmann::json& a, const nlohmann::json& b) {
     return a.value("score", 0.0) == b.value("score", 0.0) && a.value("coverage", 0.0) == b.value("coverage", 0.0);
   };
-  bool ties = false;
-  for (size_t i = 0; i + 1 < results.size() && !ties; ++i)
-    for (size_t j = i + 1; j < results.size() && !ties; ++j) ties = tied(results[i], results[j]);
+  // Whether any two results tie: one sort of their (score, coverage) pairs, not a comparison of
+  // every pair (a limit of 1000 made that half a million JSON lookups on every search-box answer).
+  std::vector<std::pair<double, double>> keys;
+  keys.reserve(results.size());
+  for (const nlohmann::json& r : results) keys.emplace_back(r.value("score", 0.0), r.value("coverage", 0.0));
+  std::sort(keys.begin(), keys.end());
+  const bool ties = std::adjacent_find(keys.begin(), keys.end()) != keys.end();
   // The answer's last result may tie with objects past the cut (with one result, it is unseen).
   const bool tieAtCut = cut && (limit == 1 || tied(results[limit - 2], results[limit - 1]));
   std::vector<double> distance(results.size(), 0.0);
