@@ -169,7 +169,7 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
   for (auto it = adjectives.begin(); it != adjectives.end(); ++it) {
     const std::string p = joinPath("adjectives", it.key());
     const auto& a = requireObject(it.value(), p);
-    rejectUnknownKeys(a, p, {"descriptor", "pole", "create", "outline", "set", "shape_of"});
+    rejectUnknownKeys(a, p, {"descriptor", "pole", "create", "outline", "set", "shape_of", "written_only"});
     Adjective adj;
     adj.word = it.key();
     adj.descriptor = checkedDescriptor(requireField(a, "descriptor", p), joinPath(p, "descriptor"));
@@ -192,6 +192,11 @@ Vocabulary Vocabulary::fromJson(const nlohmann::json& doc) {
       adj.outline = a["outline"].get<bool>();
     }
     if (a.contains("shape_of")) adj.shapeOf = requireString(a["shape_of"], joinPath(p, "shape_of"));
+    if (a.contains("written_only")) {
+      if (!a["written_only"].is_boolean())
+        throw Error(errc::kInvalidDocument, "written_only must be true or false", joinPath(p, "written_only"));
+      adj.writtenOnly = a["written_only"].get<bool>();
+    }
     v.adjectives_[adj.word] = adj;
   }
 

@@ -76,6 +76,10 @@ struct Adjective {
   // not any round-sectioned shape such as a ball); beside a noun with a shape it keeps its
   // descriptor ("a cylindrical box").
   std::string shapeOf;
+  // Read where it is written, never reached by a WordNet route (word_routes.h): WordNet's senses
+  // of "low" are also of mood and sound ("blue", "gloomy", "crushed" are low there), and a blue
+  // box is no flat one.
+  bool writtenOnly = false;
 };
 
 struct NounCondition {

@@ -23,6 +23,7 @@ constexpr double kAlsoSee = 0.85;
 constexpr double kAntonym = 0.85;
 constexpr double kDerived = 0.9;
 constexpr double kAbbreviation = 0.9;
+constexpr double kCompound = 0.9;
 
 // WordNet's lexicographer files of nouns that name things with a shape (lexnames(5WN)).
 constexpr int kNounArtifact = 6, kNounObject = 17, kNounShape = 25;
@@ -81,11 +82,12 @@ std::string target(const Vocabulary& v, Pos pos, const std::string& w, bool flip
   if (pos == Pos::kAdverb) return !flip && v.intensity(w) ? w : "";
   if (pos != Pos::kAdjective) return "";
   const Adjective* a = v.adjective(w);
-  if (!a) return "";
+  if (!a || a->writtenOnly) return "";
   if (!flip) return w;
   for (const std::string& other : v.adjectiveWords()) {
     const Adjective* b = v.adjective(other);
-    if (b && b->descriptor == a->descriptor && b->lowPole != a->lowPole && b->word == other) return other;
+    if (b && !b->writtenOnly && b->descriptor == a->descriptor && b->lowPole != a->lowPole && b->word == other)
+      return other;
   }
   return "";
 }
@@ -297,14 +299,56 @@ std::optional<WordRoute> stativeVerb(const std::string& word, const WordNet& wor
 
 std::optional<WordRoute> routeWordWith(const std::string& word, const std::string& next, const Vocabulary& vocabulary,
                                        const WordNet* wordnet, const std::function<bool(const std::string&)>& known,
+                                       ParticipleList& participleList);
+
+// A hyphenated compound that no route above reads, by its parts. A first part that is (or routes
+// to) an adjective of the vocabulary says what the compound says: "sharp-edged", "low-profile",
+// "thin-walled", "round-ended" are that adjective with the part it describes. Else a last part
+// that is one: "wafer-thin", "paper-thin" say thin, with what it is as thin as. Else a noun with
+// -shaped or -like whose shape an adjective names (shape_of: "cylinder-like" -> cylindrical). At
+// the part's own discount times kCompound.
+Candidate compound(const Vocabulary& v, const WordNet& wn, const std::string& word,
+                   const std::function<bool(const std::string&)>& known, ParticipleList& participleList) {
+  const size_t first = word.find('-'), last = word.rfind('-');
+  if (first == std::string::npos || first == 0 || last + 1 >= word.size()) return {};
+  const auto adjectiveOf = [&](const std::string& part) -> Candidate {
+    if (v.adjective(part)) return {part, "compound", word + " -> " + part, kCompound, 0};
+    const std::optional<WordRoute> r = routeWordWith(part, "", v, &wn, known, participleList);
+    if (!r || !v.adjective(r->became)) return {};
+    return {r->became, "compound", word + " -> " + part + " -> " + r->became, kCompound * r->discount, 0};
+  };
+  Candidate c = adjectiveOf(word.substr(0, first));
+  if (!c.became.empty()) return c;
+  const std::string tail = word.substr(last + 1), head = word.substr(0, first);
+  if (tail == "shaped" || tail == "like") {
+    const Noun* n = v.noun(head);
+    if (!n) return {};
+    for (const std::string& a : v.adjectiveWords()) {
+      const Adjective* adj = v.adjective(a);
+      if (adj && !adj->shapeOf.empty() && v.noun(adj->shapeOf) && v.noun(adj->shapeOf)->word == n->word)
+        return {a, "compound", word + " -> " + head + " -> " + a, kCompound, 0};
+    }
+    return {};
+  }
+  return adjectiveOf(tail);
+}
+
+std::optional<WordRoute> routeWordWith(const std::string& word, const std::string& next, const Vocabulary& vocabulary,
+                                       const WordNet* wordnet, const std::function<bool(const std::string&)>& known,
                                        ParticipleList& participleList) {
   if (!wordnet || word.size() < 2 || !std::all_of(word.begin(), word.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '-' || c == '\''; }))
     return std::nullopt;
   const Pos order[] = {Pos::kAdjective, Pos::kNoun, Pos::kAdverb, Pos::kVerb};
-  // Lemmas: an inflection of a word the grammars know.
-  for (Pos pos : order)
+  // Lemmas: an inflection of a word the grammars know. Not a verb's, where WordNet has the word as
+  // an adjective of its own: "towering" is an adjective (of great height), not the verb "tower"
+  // that would read as the noun.
+  const std::vector<std::string> asAdjective = wordnet->baseForms(word, Pos::kAdjective);
+  const bool adjectiveItself = std::find(asAdjective.begin(), asAdjective.end(), word) != asAdjective.end();
+  for (Pos pos : order) {
+    if (pos == Pos::kVerb && adjectiveItself) continue;
     for (const std::string& base : wordnet->baseForms(word, pos))
       if (base != word && known(base)) return WordRoute{word, base, "lemma", base, 1.0};
+  }
   // Verbs of assembly, by their lemmas.
   for (const std::string& base : wordnet->baseForms(word, Pos::kVerb)) {
     if (contains(joiningVerbs(), base) && known("joined")) return WordRoute{word, "joined", "joining verb", base, 1.0};
@@ -329,6 +373,7 @@ std::optional<WordRoute> routeWordWith(const std::string& word, const std::strin
   }
   if (best.became.empty()) best = synonymVerbParticiple(*wordnet, word, participles);
   if (best.became.empty()) best = abbreviated(vocabulary, *wordnet, word);
+  if (best.became.empty()) best = compound(vocabulary, *wordnet, word, known, participleList);
   if (best.became.empty()) return std::nullopt;
   if (best.noun) {
     // The plural the vocabulary gives the noun reached ("wands" -> rods).

@@ -27,7 +27,13 @@
 //                      links win a tie (it is weighed with them, not before)
 //   abbreviation 0.9   a word WordNet lacks that begins one shape noun of the vocabulary, or with
 //                      none one adjective ("cyl" -> cylinder, "cyls" -> cylinders, "rect" ->
-//                      rectangular); last, and only for words WordNet lacks in every part of speech
+//                      rectangular); only for words WordNet lacks in every part of speech
+//   compound     0.9   a hyphenated word, last: its first part's adjective ("sharp-edged" -> sharp),
+//                      else its last part's ("paper-thin" -> thin), else for noun-like or
+//                      noun-shaped the adjective naming that noun's shape ("cylinder-like" ->
+//                      cylindrical); times the part's own discount
+// A vocabulary adjective marked written_only is no target (WordNet's "low" is also of mood), and a
+// word WordNet has as an adjective takes no verb lemma ("towering" is no form of "tower").
 // Only the first senses count (three for adjectives and adverbs, four for nouns): a rare sense
 // ("slender": "small" by its fourth) is no route; and a noun's sense only where WordNet files it
 // as an artifact, an object or a shape ("egg" is no ball by its sense of a body part). Targets are the vocabulary's adjectives, nouns
@@ -49,7 +55,7 @@ struct WordRoute {
   std::string became;   // the known word it reads as; "" when it is left out (a support verb)
   std::string why;      // the kind: "lemma", "joining verb", "cutting verb", "support verb", "stative verb",
                         // "WordNet synonym", "WordNet similar-to", "WordNet hypernym",
-                        // "WordNet also-see", "WordNet antonym", "derivation"
+                        // "WordNet also-see", "WordNet antonym", "derivation", "abbreviation", "compound"
   std::string via;      // the WordNet words on the way ("skinny -> thin -> ..."), for `routed`
   double discount = 1.0;
 };

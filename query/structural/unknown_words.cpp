@@ -15,6 +15,8 @@ namespace fsdb {
 namespace {
 
 constexpr size_t kCorrectedWords = 16;
+// The noun with no shape of its own that stands for an unknown noun after an adjective.
+constexpr const char* kPlaceholderNoun = "thing";
 
 // Whether WordNet knows `word` in some form (a noun, verb, adjective or adverb): then it is a word
 // the writer meant, not a typo ("pillow" is no misspelt pillar), and the search does not read it
@@ -30,13 +32,22 @@ bool dictionaryWord(const std::string& word) {
 // the whole text up to 49 times (as the linguistic parser's did-you-mean, which stops at the same length).
 constexpr size_t kLongestCorrectedText = 1000;
 
+bool knownWordAlone(const std::string& w, const Vocabulary& vocabulary) {
+  return knowsLinguisticWord(w, vocabulary) || vocabulary.holeNoun(w) ||
+         std::binary_search(csgPhraseWords().begin(), csgPhraseWords().end(), w);
+}
+
+// A word either grammar reads. A hyphenated word whose head one reads counts too ("sphere-shaped"
+// before "hole" is the CSG phrase's), unless it routes as a compound (word_routes.h: "sharp-edged"
+// reads as sharp, which the head alone left unread).
 bool knownWord(const std::string& word, const Vocabulary& vocabulary) {
-  const std::string head = word.substr(0, word.find('-'));
-  for (const std::string& w : {word, head})
-    if (knowsLinguisticWord(w, vocabulary) || vocabulary.holeNoun(w) ||
-        std::binary_search(csgPhraseWords().begin(), csgPhraseWords().end(), w))
-      return true;
-  return false;
+  if (knownWordAlone(word, vocabulary)) return true;
+  const size_t dash = word.find('-');
+  if (dash == std::string::npos || !knownWordAlone(word.substr(0, dash), vocabulary)) return false;
+  const bool shapedNoun = word.size() > 7 && word.compare(word.size() - 7, 7, "-shaped") == 0;
+  if (shapedNoun) return true;
+  const auto alone = [&](const std::string& w) { return knownWordAlone(w, vocabulary); };
+  return !routeWord(word, "", vocabulary, systemWordNet(), alone);
 }
 
 // Words that only join what follows them to what comes before: left dangling when every word
@@ -180,6 +191,20 @@ KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& voca
     leftOut[r.token] = r.route.became;
     reading.routed.push_back({std::move(r.route), tokens[r.token].offset});
   }
+  // A noun the vocabulary lacks right after an adjective of the vocabulary stands as "thing" rather than going:
+  // "a hollow cylindrical sleeve" reads "a hollow cylindrical thing" (a cylinder made hollow), where
+  // "a hollow cylindrical" reads as neither grammar. It is still listed as ignored.
+  std::vector<bool> placeholder(tokens.size(), false);
+  const WordNet* wn = systemWordNet();
+  for (size_t i = 1; wn && vocabulary.noun(kPlaceholderNoun) && i < tokens.size(); ++i) {
+    if (!unknown[i] || routed[i]) continue;
+    // An adjective as written: a routed one may be a reading of a noun phrase ("with a slight bend"
+    // is no slender thing).
+    if (unknown[i - 1] || !vocabulary.adjective(tokens[i - 1].text)) continue;
+    if (wn->baseForms(tokens[i].text, WordNet::Pos::kNoun).empty()) continue;
+    leftOut[i] = kPlaceholderNoun;
+    placeholder[i] = true;
+  }
   reading.text = textWith(leftOut);
 
   // Corrections, chosen together: every word its nearest correction first; when that text does not
@@ -227,7 +252,7 @@ KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& voca
   if (reads && choice != leftOut) {
     reading.corrected = textWith(choice);
     for (size_t i = 0; i < tokens.size(); ++i)
-      if (unknown[i] && !routed[i] && !choice[i].empty())
+      if (unknown[i] && !routed[i] && !placeholder[i] && !choice[i].empty())
         reading.corrections.push_back(
             {{tokens[i].text, choice[i], "spelling", tokens[i].text + " -> " + choice[i], kSpellingDiscount},
              tokens[i].offset});

@@ -524,6 +524,20 @@ TEST(Vocabulary, ShapeOfNamesANounWithAShape) {
                 "shape_of names no noun with params: 'kettle'", "adjectives.conical.shape_of");
 }
 
+// Profile words read as written; WordNet's other senses of them route nowhere (word_routes_test).
+TEST(Vocabulary, WrittenOnlyAdjectivesSayAProfile) {
+  for (const char* w : {"low", "shallow", "deep"}) {
+    ASSERT_NE(v().adjective(w), nullptr) << w;
+    EXPECT_TRUE(v().adjective(w)->writtenOnly) << w;
+    EXPECT_EQ(v().adjective(w)->descriptor, "flatness") << w;
+  }
+  EXPECT_TRUE(v().adjective("deep")->lowPole);
+  EXPECT_FALSE(v().adjective("flat")->writtenOnly);
+  EXPECT_EQ(v().adjective("high")->descriptor, "height");
+  expectRefused([](nlohmann::json& d) { d["adjectives"]["low"]["written_only"] = "yes"; },
+                "written_only must be true or false", "adjectives.low.written_only");
+}
+
 // Users extend the vocabulary with their own words.
 TEST(Vocabulary, ExtendedVocabulary) {
   auto doc = builtinDocument();

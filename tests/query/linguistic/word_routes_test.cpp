@@ -106,6 +106,33 @@ TEST(WordRoutes, ParticiplesOfVerbsReachTheirSynonymsParticiple) {
   }
 }
 
+// Hyphenated compounds WordNet lacks read as their adjective part: the first ("sharp-edged": an
+// adjective and what it describes), else the last ("paper-thin"); "-like" and "-shaped" after a
+// noun whose shape an adjective names read as that adjective. A compound WordNet has keeps its
+// links ("wafer-thin" is similar to thin there).
+TEST(WordRoutes, HyphenatedCompoundsReadAsTheirAdjectivePart) {
+  expectRoute("sharp-edged", "sharp", "compound", 0.9);
+  expectRoute("low-profile", "low", "compound", 0.9);
+  expectRoute("thin-walled", "thin", "compound", 0.9);
+  expectRoute("paper-thin", "thin", "compound", 0.9);
+  expectRoute("skinny-legged", "thin", "compound", 0.9 * 0.9);  // skinny -> thin (similar-to)
+  expectRoute("cylinder-like", "cylindrical", "compound", 0.9);
+  expectRoute("wafer-thin", "thin", "WordNet similar-to", 0.9);
+  EXPECT_FALSE(route("purple-spotted").has_value());
+  EXPECT_FALSE(route("kettle-shaped").has_value());
+}
+
+// An adjective of the vocabulary marked written_only is no route's target: "low" is a profile, but
+// WordNet's "blue", "gloomy" and "crushed" are low in spirits. And a word WordNet has as an
+// adjective is not read as a verb's lemma: "towering" is no form of the noun "tower".
+TEST(WordRoutes, WrittenOnlyAdjectivesAndAdjectivesThemselves) {
+  EXPECT_FALSE(route("blue").has_value());
+  EXPECT_FALSE(route("gloomy").has_value());
+  expectRoute("crushed", "squashed", "WordNet synonym", 0.95);
+  const std::optional<WordRoute> towering = route("towering");
+  EXPECT_TRUE(!towering || towering->became != "tower");
+}
+
 TEST(WordRoutes, AbbreviationsOfOneWordReachIt) {
   expectRoute("cyl", "cylinder", "abbreviation", 0.9);
   expectRoute("cyls", "cylinders", "abbreviation", 0.9);  // a plural stays plural

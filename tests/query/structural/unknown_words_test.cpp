@@ -27,6 +27,31 @@ TEST(UnknownWords, KnownTextsAreReadWhole) {
   }
 }
 
+// A hyphenated word whose head is known was read as known and then left out with its article
+// ("a sharp-edged box" read "box"); now it routes as a compound. "-shaped" after a noun stays the
+// CSG phrase's word.
+TEST(UnknownWords, HyphenatedCompoundsRoute) {
+  const KnownWordsReading r = readKnownWords("a sharp-edged box", v());
+  EXPECT_TRUE(r.unknown.empty());
+  EXPECT_EQ(r.text, "a sharp box");
+  ASSERT_EQ(r.routed.size(), 1u);
+  EXPECT_EQ(r.routed[0].route.why, "compound");
+  EXPECT_EQ(readKnownWords("a cube with a sphere-shaped hole", v()).text, "a cube with a sphere-shaped hole");
+}
+
+// A noun the vocabulary lacks after an adjective stands as "thing" (and is still ignored), so the
+// phrase keeps its head: "a hollow cylindrical" read as neither grammar.
+TEST(UnknownWords, UnknownNounsAfterAnAdjectiveStandAsThing) {
+  const KnownWordsReading r = readKnownWords("a hollow cylindrical sleeve", v());
+  EXPECT_EQ(r.text, "a hollow cylindrical thing");
+  ASSERT_EQ(r.unknown.size(), 1u);
+  EXPECT_EQ(r.unknown[0].word, "sleeve");
+  EXPECT_FALSE(r.corrected);
+  // Not after an article alone, nor for a word WordNet lacks as a noun (a typo is corrected).
+  EXPECT_EQ(readKnownWords("a sleeve on a cube", v()).text.find("thing"), std::string::npos);
+  EXPECT_EQ(readKnownWords("a bent cylindr", v()).corrected.value_or(""), "a bent cylinder");
+}
+
 TEST(UnknownWords, FormulasKeepTheirNames) {
   const KnownWordsReading r = readKnownWords("snowman + \"very bent cylinder\"", v());
   EXPECT_TRUE(r.unknown.empty());
