@@ -32,7 +32,7 @@ using query_tokens::Token;
 using query_tokens::TokenView;
 using query_tokens::tokenize;
 using query_tokens::requestLength;
-using query_tokens::withoutFillers;
+using query_tokens::readableWords;
 
 // A did-you-mean quotes the whole text back; past this many bytes it would be no help to read.
 constexpr size_t kLongestSuggestedText = 1000;
@@ -283,7 +283,7 @@ class Parser {
   Parser(const std::string& text, const Vocabulary& vocabulary, size_t from = 0, size_t to = std::string::npos,
          bool prefix = false)
       : Parser(text, vocabulary, TokenView{}, prefix) {
-    owned_ = withoutFillers(tokenize(text, from, std::min(to, text.size())), vocabulary);
+    owned_ = readableWords(tokenize(text, from, std::min(to, text.size())), vocabulary);
     tokens_ = TokenView{owned_.data(), owned_.size()};
   }
   // Over tokens of `text` tokenised elsewhere (NounPhraseReader): `tokens` must outlive the parser.
@@ -1544,7 +1544,7 @@ NounPhraseAt NounPhraseReader::at(size_t from) {
   // the same tokens from `from` on when `from` starts one; elsewhere the phrase is read on its own.
   if (!tokens_ || (!tokens_->tokens.empty() && from < tokens_->tokens.front().offset)) {
     tokens_ = std::make_unique<Tokens>();
-    tokens_->tokens = withoutFillers(tokenize(text_, from, text_.size()), vocabulary_);
+    tokens_->tokens = readableWords(tokenize(text_, from, text_.size()), vocabulary_);
   }
   const std::vector<Token>& all = tokens_->tokens;
   const auto first = std::lower_bound(all.begin(), all.end(), from,

@@ -58,6 +58,39 @@ std::vector<Word> withoutFillers(std::vector<Word> words, const Vocabulary& voca
   return out;
 }
 
+// The words as the readers take them: withoutFillers, and a run of one intensity said again and
+// again stepped up the vocabulary's order by one term per repetition, as far as the strongest
+// ("very very long" and "very, very long" are extremely long; "really really big" too: really is
+// very). People stress
+// a word by repeating it; read word by word, the second "very" left the first without its
+// adjective and the reading dropped both. The run keeps the first word's place.
+template <typename Word>
+std::vector<Word> readableWords(std::vector<Word> words, const Vocabulary& vocabulary) {
+  words = withoutFillers(std::move(words), vocabulary);
+  const std::vector<std::string>& order = vocabulary.intensityOrder();
+  std::vector<Word> out;
+  out.reserve(words.size());
+  for (size_t i = 0; i < words.size();) {
+    const FuzzyNumber* term = vocabulary.intensity(words[i].text);
+    size_t j = i + 1, repeats = 0;
+    // "very very" and "very, very".
+    for (;;) {
+      const size_t k = j < words.size() && words[j].text == "," ? j + 1 : j;
+      if (!term || k >= words.size() || vocabulary.intensity(words[k].text) != term) break;
+      j = k + 1;
+      ++repeats;
+    }
+    out.push_back(std::move(words[i]));
+    if (repeats > 0) {
+      size_t at = 0;
+      while (at < order.size() && vocabulary.intensity(order[at]) != term) ++at;
+      if (at < order.size()) out.back().text = order[std::min(order.size() - 1, at + repeats)];
+    }
+    i = j;
+  }
+  return out;
+}
+
 // How many words of `phrase` (words separated by one blank) stand at wordAt(0), wordAt(1), ...
 // (a const std::string*, null past the end): its length in words, 0 unless all of them do.
 template <typename WordAt>

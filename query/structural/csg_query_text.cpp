@@ -120,7 +120,7 @@ class PhraseParser {
   PhraseParser(const std::string& text, const Vocabulary& vocabulary, std::vector<CsgQueryLeaf>& leaves)
       : owned_(hollowWordsFirst(text, vocabulary)),
         text_(owned_),
-        words_(query_tokens::withoutFillers(words(text_), vocabulary)),  // as the linguistic parser reads them
+        words_(query_tokens::readableWords(words(text_), vocabulary)),  // as the linguistic parser reads them
         leaves_(leaves),
         phrases_(text_, vocabulary),
         v_(vocabulary) {}

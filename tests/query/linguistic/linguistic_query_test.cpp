@@ -68,6 +68,22 @@ FuzzyNumber near(double x) { return FuzzyNumber::triangular(0.9 * x, x, 1.1 * x)
 // An adjective that names a noun's shape ("cylindrical") is that noun where no noun with a shape
 // of its own follows: a ball has a round section, but "a cylindrical thing" is a cylinder. Beside a
 // noun with a shape it keeps its descriptor; under "not" or "or" it says something else.
+// "very very long" is extremely long (query_tokens.h, readableWords), in the adjective before its
+// noun, after it and in a clause; the condition's text keeps the words as written.
+TEST(LinguisticQuery, ARepeatedIntensityStepsUp) {
+  const auto conditions = [](const std::string& text) {
+    nlohmann::json j = toJson(parse(text))["condition"];
+    std::string sets;
+    for (const nlohmann::json& c : j["children"]) sets += c["set"].dump();
+    return sets;
+  };
+  EXPECT_EQ(conditions("a very very long box"), conditions("an extremely long box"));
+  EXPECT_EQ(conditions("a box that is very, very long"), conditions("a box that is extremely long"));
+  EXPECT_EQ(conditions("a box very very long"), conditions("a box extremely long"));
+  EXPECT_NE(conditions("a very very long box"), conditions("a very long box"));
+  EXPECT_EQ(toJson(parse("a very very long box"))["condition"]["children"][0]["text"], "very very long");
+}
+
 TEST(LinguisticQuery, AnAdjectiveThatNamesAShapeIsItsNoun) {
   const auto nounOf = [](const std::string& text) {
     const LinguisticQuery q = parse(text);

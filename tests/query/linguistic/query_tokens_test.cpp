@@ -52,6 +52,19 @@ TEST(QueryTokens, FillersGoWithTheCommaThatSetsThemOff) {
   EXPECT_EQ(texts(withoutFillers(tokens("kindly show bent"), v())), "show|bent");
 }
 
+// A repeated intensity steps up the order, one term per repetition, as far as the strongest; the
+// words keep the first one's place; different intensities in a row stay as they are.
+TEST(QueryTokens, ReadableWordsStepRepeatedIntensitiesUp) {
+  EXPECT_EQ(texts(readableWords(tokens("a very very long box"), v())), "a|extremely|long|box");
+  EXPECT_EQ(texts(readableWords(tokens("really really big, please"), v())), "extremely|big");
+  EXPECT_EQ(texts(readableWords(tokens("slightly slightly slightly bent"), v())), "moderately|bent");
+  EXPECT_EQ(texts(readableWords(tokens("a very, very long box"), v())), "a|extremely|long|box");
+  EXPECT_EQ(texts(readableWords(tokens("extremely extremely bent"), v())), "extremely|bent");
+  EXPECT_EQ(texts(readableWords(tokens("very slightly bent"), v())), "very|slightly|bent");
+  const std::vector<Token> t = readableWords(tokens("a very very long box"), v());
+  EXPECT_EQ(t[1].offset, 2u);
+}
+
 TEST(QueryTokens, FunctionWordsCarryNoPropertyOfAShape) {
   for (const char* w : {"a", "the", "and", "with", "of", "its", "has", "for"}) EXPECT_TRUE(functionWord(w)) << w;
   for (const char* w : {"bent", "cylinder", "not", "without", "box", ",", ""}) EXPECT_FALSE(functionWord(w)) << w;
