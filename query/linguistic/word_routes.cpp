@@ -75,6 +75,20 @@ bool shapeNoun(const Vocabulary& v, const std::string& w) {
   return n && !n->pronoun && !n->params.is_null();
 }
 
+// The adjective that names noun `w`'s shape (shape_of: cone -> conical, ball -> spherical, as a
+// synonym of sphere); "" when there is none.
+std::string shapeAdjectiveOf(const Vocabulary& v, const std::string& w) {
+  const Noun* n = v.noun(w);
+  if (!n) return "";
+  for (const std::string& a : v.adjectiveWords()) {
+    const Adjective* adj = v.adjective(a);
+    if (!adj || adj->shapeOf.empty() || adj->word != a) continue;
+    const Noun* of = v.noun(adj->shapeOf);
+    if (of && of->word == n->word) return a;
+  }
+  return "";
+}
+
 // The known word of `pos` that a WordNet word `w` reaches, with `flip` for an antonym: the
 // adjective of the same descriptor at the other pole. Empty when none.
 std::string target(const Vocabulary& v, Pos pos, const std::string& w, bool flip) {
@@ -161,8 +175,10 @@ Participles participleAdjectives(const Vocabulary& v, const WordNet& wn) {
 // WordNet mostly lacks or files under a looser head ("twisty" is similar to crooked, whose
 // antonym is straight): the stem itself where it is a known adjective ("roundish" -> round), or
 // the known adjective that is the stem's past participle ("twisty" -> twist -> twisted, "bendy"
-// -> bend -> bent). Stems as spelt, with a doubled last letter undone ("knobby" -> knob) and
-// with an e restored ("curvy" -> curve). Nouns are no targets ("party" is not a part).
+// -> bend -> bent), or the adjective that names the stem's shape where the stem is a noun
+// ("conish" -> cone -> conical; also by -like). Stems as spelt, with a doubled last letter undone
+// ("knobby" -> knob) and with an e restored ("curvy" -> curve). Nouns themselves are no targets
+// ("party" is not a part).
 Candidate derivedAdjective(const Vocabulary& v, const WordNet& wn, const std::string& word,
                            const Participles& participles) {
   // A verb made from an adjective by -en, in any form ("flattened", "widening", "sharpens": flatten,
@@ -180,6 +196,8 @@ Candidate derivedAdjective(const Vocabulary& v, const WordNet& wn, const std::st
   std::string stem;
   if (word.size() >= 5 && word.compare(word.size() - 3, 3, "ish") == 0) {
     stem = word.substr(0, word.size() - 3);
+  } else if (word.size() >= 6 && word.compare(word.size() - 4, 4, "like") == 0) {
+    stem = word.substr(0, word.size() - 4);
   } else if (word.size() >= 4 && word.back() == 'y') {
     stem = word.substr(0, word.size() - 1);
   } else {
@@ -192,6 +210,15 @@ Candidate derivedAdjective(const Vocabulary& v, const WordNet& wn, const std::st
   for (const auto& [base, a] : participles)
     if (std::find(stems.begin(), stems.end(), base) != stems.end())
       return {a, "derivation", word + " -> " + base + " -> " + a, kDerived, 0};
+  // A noun whose shape an adjective names: "conish", "coney" -> cone -> conical, "tubey" ->
+  // tubular, "conelike" -> conical. By -y or -ish not for an adjective WordNet has with a meaning
+  // of its own ("bally" is no round thing); -like always says the noun's likeness.
+  const std::vector<std::string> asAdjective = wn.baseForms(word, Pos::kAdjective);
+  const bool like = word.compare(word.size() - 4, 4, "like") == 0;
+  if (!like && std::find(asAdjective.begin(), asAdjective.end(), word) != asAdjective.end()) return {};
+  for (const std::string& s : stems)
+    if (const std::string a = shapeAdjectiveOf(v, s); !a.empty())
+      return {a, "derivation", word + " -> " + s + " -> " + a, kDerived, 0};
   return {};
 }
 
@@ -321,14 +348,9 @@ Candidate compound(const Vocabulary& v, const WordNet& wn, const std::string& wo
   if (!c.became.empty()) return c;
   const std::string tail = word.substr(last + 1), head = word.substr(0, first);
   if (tail == "shaped" || tail == "like") {
-    const Noun* n = v.noun(head);
-    if (!n) return {};
-    for (const std::string& a : v.adjectiveWords()) {
-      const Adjective* adj = v.adjective(a);
-      if (adj && !adj->shapeOf.empty() && v.noun(adj->shapeOf) && v.noun(adj->shapeOf)->word == n->word)
-        return {a, "compound", word + " -> " + head + " -> " + a, kCompound, 0};
-    }
-    return {};
+    const std::string a = shapeAdjectiveOf(v, head);
+    if (a.empty()) return {};
+    return {a, "compound", word + " -> " + head + " -> " + a, kCompound, 0};
   }
   return adjectiveOf(tail);
 }

@@ -122,6 +122,19 @@ TEST(WordRoutes, HyphenatedCompoundsReadAsTheirAdjectivePart) {
   EXPECT_FALSE(route("kettle-shaped").has_value());
 }
 
+// A noun by -ish, -y or -like reads as the adjective that names its shape, unless WordNet has the
+// word as an adjective of its own.
+TEST(WordRoutes, NounsByIshYAndLikeReachTheirShapesAdjective) {
+  expectRoute("conish", "conical", "derivation", 0.9);
+  expectRoute("tubey", "tubular", "derivation", 0.9);
+  expectRoute("ballish", "spherical", "derivation", 0.9);
+  const std::optional<WordRoute> bally = route("bally");  // a British oath in WordNet
+  EXPECT_TRUE(!bally || bally->became != "spherical");
+  const std::optional<WordRoute> conelike = route("conelike");
+  ASSERT_TRUE(conelike.has_value());
+  EXPECT_EQ(conelike->became, "conical");
+}
+
 // An adjective of the vocabulary marked written_only is no route's target: "low" is a profile, but
 // WordNet's "blue", "gloomy" and "crushed" are low in spirits. And a word WordNet has as an
 // adjective is not read as a verb's lemma: "towering" is no form of the noun "tower".
