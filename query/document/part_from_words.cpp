@@ -205,7 +205,7 @@ void realize(const std::string& descriptor, const FuzzyNumber& d, const Vocabula
   if (descriptor == "taperness") part->kx = part->ky = negate(d);
   if (descriptor == "twistness") part->t = scale(d, kPi);
   if (descriptor == "size") {
-    const double l = core.a1 * std::cbrt(core.a2 * core.a3);
+    const double l = core.a1 * (1.0 + core.a2 + core.a3) / 3.0;  // descriptors.h: the mean half-length
     part->scale = mapIncreasing(realizableDegrees(descriptor, d), [l](double x) { return x / (1.0 - x) / l; });
   }
 }

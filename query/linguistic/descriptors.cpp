@@ -78,7 +78,9 @@ double unclampedDegree(int index, const Values& v) {
     case 5: return clamp01(std::max(std::fabs(v[kKx]), std::fabs(v[kKy])));
     case 6: return clamp01(std::fabs(v[kT]) / kPi);
     case 7: {
-      const double l = v[kScale] * v[kA1] * std::cbrt(v[kA2] * v[kA3]);
+      // The arithmetic mean of the half-lengths A, B, C (not their geometric mean, a volume's: a
+      // plate 6 across and 0.1 thick was smaller than a stub 2 across).
+      const double l = v[kScale] * v[kA1] * (1.0 + v[kA2] + v[kA3]) / 3.0;
       return l / (1.0 + l);
     }
     case 8: return elongation(v[kA2], v[kA3]);

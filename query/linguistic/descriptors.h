@@ -18,8 +18,11 @@
 //   taperness  = max(|kx|, |ky|)       the taper (|k| <= 1: 1 tapers to a point)
 //   twistness  = min(1, |t| / π)       the total twist 2|t| (t per half-length C) relative to a
 //                                      full turn
-//   size       = L / (1 + L),  L = scale · (A·B·C)^(1/3)   (the mean half-length in world units;
-//                                      a unit sphere is 0.5)
+//   size       = L / (1 + L),  L = scale · (A + B + C) / 3   (the mean half-length in world
+//                                      units; a unit sphere is 0.5; a plate 6 across and 0.1
+//                                      thick 0.67, a stub 2 across and 1 long 0.45: the face
+//                                      people see, where the geometric mean, a volume's, made
+//                                      the plate the smaller)
 //   elongation = (1 + s1/s2 − s2/s3) / 2 with s1 <= s2 <= s3 the sorted half-lengths A, B, C:
 //                1 for a needle (s3 >> s2 = s1), 0 for a sheet (s1 << s2 = s3), 0.5 when the
 //                three are equal (and for a part both long and flat).

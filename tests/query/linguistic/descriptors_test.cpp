@@ -111,6 +111,13 @@ TEST(Descriptors, DeformationsSizeAndElongation) {
   EXPECT_DOUBLE_EQ(degreeOf("size", big), 0.75);
   big.placement.scale = 1.0 / 3.0;
   EXPECT_NEAR(degreeOf("size", big), 0.5, 1e-12);
+  // The arithmetic mean of the half-lengths: a plate 6 across and 0.1 thick (L = 2.0167) is bigger
+  // than a stub 2 across and 1 long (L = 5/6), as people see them.
+  const double plate = degreeOf("size", crispPart(1, 1, 3, 1, 0.05 / 3));
+  const double stub = degreeOf("size", crispPart(1, 1, 1, 1, 0.5));
+  EXPECT_NEAR(plate, 2.0166666666666666 / 3.0166666666666666, 1e-12);
+  EXPECT_NEAR(stub, (5.0 / 6.0) / (11.0 / 6.0), 1e-12);
+  EXPECT_GT(plate, stub);
   EXPECT_NEAR(degreeOf("elongation", crispPart(1, 1, 1, 1, 1)), 0.5, 1e-15);
   EXPECT_NEAR(degreeOf("elongation", crispPart(1, 1, 1, 1, 5)), 0.9, 1e-15);    // a rod
   EXPECT_NEAR(degreeOf("elongation", crispPart(1, 1, 1, 1, 0.1)), 0.05, 1e-15);  // a plate
