@@ -192,7 +192,7 @@ KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& voca
     reading.routed.push_back({std::move(r.route), tokens[r.token].offset});
   }
   // A noun the vocabulary lacks right after an adjective of the vocabulary stands as "thing" rather than going:
-  // "a hollow cylindrical sleeve" reads "a hollow cylindrical thing" (a cylinder made hollow), where
+  // "a hollow cylindrical housing" reads "a hollow cylindrical thing" (a cylinder made hollow), where
   // "a hollow cylindrical" reads as neither grammar. It is still listed as ignored.
   std::vector<bool> placeholder(tokens.size(), false);
   const WordNet* wn = systemWordNet();

@@ -42,13 +42,13 @@ TEST(UnknownWords, HyphenatedCompoundsRoute) {
 // A noun the vocabulary lacks after an adjective stands as "thing" (and is still ignored), so the
 // phrase keeps its head: "a hollow cylindrical" read as neither grammar.
 TEST(UnknownWords, UnknownNounsAfterAnAdjectiveStandAsThing) {
-  const KnownWordsReading r = readKnownWords("a hollow cylindrical sleeve", v());
+  const KnownWordsReading r = readKnownWords("a hollow cylindrical housing", v());
   EXPECT_EQ(r.text, "a hollow cylindrical thing");
   ASSERT_EQ(r.unknown.size(), 1u);
-  EXPECT_EQ(r.unknown[0].word, "sleeve");
+  EXPECT_EQ(r.unknown[0].word, "housing");
   EXPECT_FALSE(r.corrected);
   // Not after an article alone, nor for a word WordNet lacks as a noun (a typo is corrected).
-  EXPECT_EQ(readKnownWords("a sleeve on a cube", v()).text.find("thing"), std::string::npos);
+  EXPECT_EQ(readKnownWords("a housing on a cube", v()).text.find("thing"), std::string::npos);
   EXPECT_EQ(readKnownWords("a bent cylindr", v()).corrected.value_or(""), "a bent cylinder");
 }
 
