@@ -328,12 +328,13 @@ std::optional<WordRoute> routeWordWith(const std::string& word, const std::strin
                                        const WordNet* wordnet, const std::function<bool(const std::string&)>& known,
                                        ParticipleList& participleList);
 
-// A hyphenated compound that no route above reads, by its parts. A first part that is (or routes
-// to) an adjective of the vocabulary says what the compound says: "sharp-edged", "low-profile",
-// "thin-walled", "round-ended" are that adjective with the part it describes. Else a last part
-// that is one: "wafer-thin", "paper-thin" say thin, with what it is as thin as. Else a noun with
-// -shaped or -like whose shape an adjective names (shape_of: "cylinder-like" -> cylindrical). At
-// the part's own discount times kCompound.
+// A hyphenated compound that no route above reads, by its parts. An adjective with a noun made a
+// participle ("sharp-edged", "flat-topped", "thin-walled", "round-ended") describes a feature,
+// not the whole: a sharp-edged box is no pointed one, a flat-topped cone no flat one; no route.
+// Else a last part that is (or routes to) an adjective of the vocabulary says what the compound
+// says ("wafer-thin", "paper-thin", "extra-long"); else a noun with -shaped or -like whose shape an
+// adjective names (shape_of: "cylinder-like" -> cylindrical); else a first part that is one
+// ("low-profile": a low profile is a low shape). At the part's own discount times kCompound.
 Candidate compound(const Vocabulary& v, const WordNet& wn, const std::string& word,
                    const std::function<bool(const std::string&)>& known, ParticipleList& participleList) {
   const size_t first = word.find('-'), last = word.rfind('-');
@@ -344,15 +345,17 @@ Candidate compound(const Vocabulary& v, const WordNet& wn, const std::string& wo
     if (!r || !v.adjective(r->became)) return {};
     return {r->became, "compound", word + " -> " + part + " -> " + r->became, kCompound * r->discount, 0};
   };
-  Candidate c = adjectiveOf(word.substr(0, first));
-  if (!c.became.empty()) return c;
   const std::string tail = word.substr(last + 1), head = word.substr(0, first);
+  Candidate headAdjective = adjectiveOf(head);
+  const bool participle = tail.size() > 3 && tail.compare(tail.size() - 2, 2, "ed") == 0;
+  if (participle && !headAdjective.became.empty()) return {};
   if (tail == "shaped" || tail == "like") {
     const std::string a = shapeAdjectiveOf(v, head);
     if (a.empty()) return {};
     return {a, "compound", word + " -> " + head + " -> " + a, kCompound, 0};
   }
-  return adjectiveOf(tail);
+  Candidate c = adjectiveOf(tail);
+  return c.became.empty() ? headAdjective : c;
 }
 
 std::optional<WordRoute> routeWordWith(const std::string& word, const std::string& next, const Vocabulary& vocabulary,

@@ -28,10 +28,11 @@
 //   abbreviation 0.9   a word WordNet lacks that begins one shape noun of the vocabulary, or with
 //                      none one adjective ("cyl" -> cylinder, "cyls" -> cylinders, "rect" ->
 //                      rectangular); only for words WordNet lacks in every part of speech
-//   compound     0.9   a hyphenated word, last: its first part's adjective ("sharp-edged" -> sharp),
-//                      else its last part's ("paper-thin" -> thin), else for noun-like or
-//                      noun-shaped the adjective naming that noun's shape ("cylinder-like" ->
-//                      cylindrical); times the part's own discount
+//   compound     0.9   a hyphenated word, last: its last part's adjective ("paper-thin" -> thin),
+//                      else for noun-like or noun-shaped the adjective naming that noun's shape
+//                      ("cylinder-like" -> cylindrical), else its first part's ("low-profile" ->
+//                      low); times the part's own discount. None for an adjective with a noun's
+//                      participle ("sharp-edged": a feature, not the whole)
 // A vocabulary adjective marked written_only is no target (WordNet's "low" is also of mood), and a
 // word WordNet has as an adjective takes no verb lemma ("towering" is no form of "tower").
 // Only the first senses count (three for adjectives and adverbs, four for nouns): a rare sense

@@ -38,14 +38,16 @@ bool knownWordAlone(const std::string& w, const Vocabulary& vocabulary) {
 }
 
 // A word either grammar reads. A hyphenated word whose head one reads counts too ("sphere-shaped"
-// before "hole" is the CSG phrase's), unless it routes as a compound (word_routes.h: "sharp-edged"
-// reads as sharp, which the head alone left unread).
+// before "hole" is the CSG phrase's), unless its head is an adjective or it routes as a compound
+// (word_routes.h: "low-profile" reads as low): the head alone read nothing, and the reading that
+// left the word out took its article with it ("a sharp-edged box" read "box", now "a box").
 bool knownWord(const std::string& word, const Vocabulary& vocabulary) {
   if (knownWordAlone(word, vocabulary)) return true;
   const size_t dash = word.find('-');
   if (dash == std::string::npos || !knownWordAlone(word.substr(0, dash), vocabulary)) return false;
   const bool shapedNoun = word.size() > 7 && word.compare(word.size() - 7, 7, "-shaped") == 0;
   if (shapedNoun) return true;
+  if (vocabulary.adjective(word.substr(0, dash))) return false;
   const auto alone = [&](const std::string& w) { return knownWordAlone(w, vocabulary); };
   return !routeWord(word, "", vocabulary, systemWordNet(), alone);
 }

@@ -28,15 +28,20 @@ TEST(UnknownWords, KnownTextsAreReadWhole) {
 }
 
 // A hyphenated word whose head is known was read as known and then left out with its article
-// ("a sharp-edged box" read "box"); now it routes as a compound. "-shaped" after a noun stays the
+// ("a low-profile box" read "box"); now it routes as a compound. "-shaped" after a noun stays the
 // CSG phrase's word.
 TEST(UnknownWords, HyphenatedCompoundsRoute) {
-  const KnownWordsReading r = readKnownWords("a sharp-edged box", v());
+  const KnownWordsReading r = readKnownWords("a low-profile box", v());
   EXPECT_TRUE(r.unknown.empty());
-  EXPECT_EQ(r.text, "a sharp box");
+  EXPECT_EQ(r.text, "a low box");
   ASSERT_EQ(r.routed.size(), 1u);
   EXPECT_EQ(r.routed[0].route.why, "compound");
   EXPECT_EQ(readKnownWords("a cube with a sphere-shaped hole", v()).text, "a cube with a sphere-shaped hole");
+  // A feature compound routes nowhere and is left out alone, its article kept.
+  const KnownWordsReading edged = readKnownWords("a sharp-edged box", v());
+  EXPECT_EQ(edged.text, "a box");
+  ASSERT_EQ(edged.unknown.size(), 1u);
+  EXPECT_EQ(edged.unknown[0].word, "sharp-edged");
 }
 
 // A noun the vocabulary lacks after an adjective stands as "thing" (and is still ignored), so the
