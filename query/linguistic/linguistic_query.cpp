@@ -47,6 +47,25 @@ const std::vector<std::string>& grammarWords() {
   return words;
 }
 
+// Feature phrases, a deformation said as a noun: "with a slight bend" is slightly bent, "a box
+// with a twist" a twisted box. Each noun with the participle adjective it stands for (where the
+// vocabulary has that adjective), and the adjectives that grade it with the intensity they say
+// ("a slight bend", "a strong twist", "an extreme taper"); plain without one. Not "little": it is
+// no word of the grammar, so the search box reads it as small, its WordNet route ("a little
+// ball"), which grades a feature as well.
+const std::vector<std::pair<std::string, std::string>>& featureNouns() {
+  static const std::vector<std::pair<std::string, std::string>> words = {
+      {"bend", "bent"}, {"curve", "curved"}, {"twist", "twisted"}, {"taper", "tapered"}};
+  return words;
+}
+const std::vector<std::pair<std::string, std::string>>& featureDegrees() {
+  static const std::vector<std::pair<std::string, std::string>> words = {
+      {"slight", "slightly"}, {"small", "slightly"},   {"gentle", "slightly"},
+      {"mild", "slightly"},   {"moderate", "moderately"}, {"strong", "very"}, {"big", "very"},
+      {"large", "very"},      {"sharp", "very"},       {"heavy", "very"},     {"extreme", "extremely"}};
+  return words;
+}
+
 // The deepest nesting of parentheses and "not" a query may have.
 constexpr int kMaxNesting = 64;
 
@@ -418,8 +437,14 @@ class Parser {
     // Or measures after "with", as a query reads them ("a cylinder with diameter 2 and length 1").
     if (at("with")) {
       const size_t start = ++pos_;
+      const Adjective* featured = nullptr;
+      const FuzzyNumber* featureIntensity = nullptr;
       if (startsMeasure()) {
         addMeasures(measuresAfterNoun());
+      } else if (const size_t k = featurePhraseLength(&featured, &featureIntensity)) {
+        // "a cylinder with a slight bend": the adjective the noun stands for, with its degree.
+        pos_ += k;
+        d.adjectives.push_back({featured, featureIntensity, span(start, pos_)});
       } else {
         std::optional<FuzzyNumber> degree = edgePhrase();
         if (!degree)
@@ -589,7 +614,9 @@ class Parser {
   }
 
   bool startsCondition() const {
-    if (at("not") || at("(") || startsArticleSection() || startsMeasure() || taperPhraseLength(nullptr) > 0) return true;
+    if (at("not") || at("(") || startsArticleSection() || startsMeasure() || taperPhraseLength(nullptr) > 0 ||
+        featurePhraseLength(nullptr, nullptr) > 0)
+      return true;
     if (pos_ < tokens_.size() && descriptorIndex(tokens_[pos_].text) >= 0) return true;
     std::string m;
     return matchPhrase(intensityWords_, &m) > 0 || matchPhrase(adjectiveWords_, &m) > 0;
@@ -1035,6 +1062,7 @@ class Parser {
     }
     if (startsMeasure()) return measure();
     if (std::optional<QueryCondition> taper = taperPhrase()) return std::move(*taper);
+    if (std::optional<QueryCondition> feature = featurePhrase()) return std::move(*feature);
     if (pos_ < tokens_.size() && descriptorIndex(tokens_[pos_].text) >= 0) {
       const std::string descriptor = tokens_[pos_++].text;
       FuzzyNumber set = degree();
@@ -1149,6 +1177,41 @@ class Parser {
     if (tail == 0) return 0;
     if (intensity) *intensity = graded;
     return k + 1 + tail;
+  }
+
+  // feature = [ "a" | "an" ] [ feature-degree ] feature-noun (featureNouns): the tokens it spans at
+  // pos_ (0: none), with its adjective and intensity (null: plain).
+  size_t featurePhraseLength(const Adjective** adjective, const FuzzyNumber** intensity) const {
+    const auto word = [&](size_t i) { return pos_ + i < tokens_.size() ? tokens_[pos_ + i].text : std::string(); };
+    size_t k = word(0) == "a" || word(0) == "an" ? 1 : 0;
+    const FuzzyNumber* graded = nullptr;
+    for (const auto& [w, term] : featureDegrees())
+      if (word(k) == w && v_.intensity(term)) {
+        graded = v_.intensity(term);
+        ++k;
+        break;
+      }
+    for (const auto& [noun, participle] : featureNouns())
+      if (word(k) == noun && v_.adjective(participle)) {
+        if (adjective) *adjective = v_.adjective(participle);
+        if (intensity) *intensity = graded;
+        return k + 1;
+      }
+    return 0;
+  }
+
+  std::optional<QueryCondition> featurePhrase() {
+    const Adjective* adjective = nullptr;
+    const FuzzyNumber* intensity = nullptr;
+    const size_t n = featurePhraseLength(&adjective, &intensity);
+    if (n == 0) return std::nullopt;
+    const size_t start = pos_;
+    pos_ += n;
+    const FuzzyNumber set =
+        intensity ? (adjective->lowPole ? mirroredDegrees(*intensity) : *intensity) : v_.plainSet(*adjective);
+    QueryCondition c = descriptorCondition(adjective->descriptor, set, span(start, pos_));
+    c.plainRamp = !intensity && !adjective->set;
+    return c;
   }
 
   std::optional<QueryCondition> taperPhrase() {
@@ -1463,8 +1526,12 @@ LinguisticQuery parseLinguisticQuery(const std::string& text, const Vocabulary& 
 }
 
 bool knowsLinguisticWord(const std::string& word, const Vocabulary& vocabulary) {
+  const auto said = [&](const std::vector<std::pair<std::string, std::string>>& table) {
+    return std::any_of(table.begin(), table.end(), [&](const auto& p) { return p.first == word; });
+  };
   return vocabulary.knowsWord(word) || contains(grammarWords(), word) || descriptorIndex(word) >= 0 ||
-         std::binary_search(measureWords().begin(), measureWords().end(), word);
+         std::binary_search(measureWords().begin(), measureWords().end(), word) || said(featureNouns()) ||
+         said(featureDegrees());
 }
 
 const std::vector<std::string>& measureWords() {

@@ -56,6 +56,15 @@ TEST(PartFromWords, AnAdjectiveThatNamesAShapeMakesItsNoun) {
   EXPECT_NE(errorOf("a very cylindrical thing").find("names no shape"), std::string::npos);
 }
 
+// A deformation said as a noun after "with" makes the part its adjective makes.
+TEST(PartFromWords, AFeatureNounIsItsAdjective) {
+  const auto same = [](const std::string& a, const std::string& b) { return partToJson(make(a)) == partToJson(make(b)); };
+  EXPECT_TRUE(same("a cylinder with a slight bend", "a slightly bent cylinder"));
+  EXPECT_TRUE(same("a box with a twist", "a twisted box"));
+  EXPECT_TRUE(same("a rod with a strong taper", "a very tapered rod"));
+  EXPECT_TRUE(same("a rod with an extreme curve", "an extremely curved rod"));
+}
+
 TEST(PartFromWords, AdjectivesSetTheirDescriptor) {
   const FuzzyPart bent = make("a slightly bent cylinder");
   const FuzzyNumber bend = valueOf(bent, "bendness");

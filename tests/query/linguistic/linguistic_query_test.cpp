@@ -84,6 +84,27 @@ TEST(LinguisticQuery, ARepeatedIntensityStepsUp) {
   EXPECT_EQ(toJson(parse("a very very long box"))["condition"]["children"][0]["text"], "very very long");
 }
 
+// A deformation said as a noun after "with" reads as its adjective, graded by the adjective
+// before the noun; the condition's text is the phrase as written.
+TEST(LinguisticQuery, AFeatureNounIsItsAdjective) {
+  const auto sets = [](const std::string& text) {
+    std::string out;
+    const std::function<void(const nlohmann::json&)> walk = [&](const nlohmann::json& c) {
+      if (c.contains("set")) out += c["descriptor"].get<std::string>() + c["set"].dump();
+      if (c.contains("children"))
+        for (const nlohmann::json& child : c["children"]) walk(child);
+    };
+    walk(toJson(parse(text))["condition"]);
+    return out;
+  };
+  EXPECT_EQ(sets("a cylinder with a slight bend"), sets("a cylinder that is slightly bent"));
+  EXPECT_EQ(sets("a box with a twist"), sets("a box that is twisted"));
+  EXPECT_EQ(sets("a rod with a strong taper"), sets("a rod that is very tapered"));
+  EXPECT_EQ(sets("a rod with a gentle curve"), sets("a rod that is slightly curved"));
+  EXPECT_TRUE(knowsLinguisticWord("bend", v()));
+  EXPECT_TRUE(knowsLinguisticWord("slight", v()));
+}
+
 TEST(LinguisticQuery, AnAdjectiveThatNamesAShapeIsItsNoun) {
   const auto nounOf = [](const std::string& text) {
     const LinguisticQuery q = parse(text);
