@@ -1106,15 +1106,12 @@ class Parser {
     // Where a taper goes says no more than the taper: "tapering to a point", "narrowing towards
     // the top".
     if (descriptor == "taperness" && sectionWord.empty()) pos_ += endTailLength(0);
-    const FuzzyNumber set =
-        intensity ? (adjective.lowPole ? mirroredDegrees(*intensity) : *intensity) : v_.plainSet(adjective);
-    QueryCondition c = descriptorCondition(descriptor, set, span(start, pos_));
-    c.plainRamp = !intensity && !adjective.set;
+    QueryCondition c = adjectiveCondition(adjective, descriptor, intensity, span(start, pos_));
     c.outline = adjective.outline && sectionWord.empty();
     // An edges.before_nouns adjective may say the edges of a square noun ("a rounded box").
     // With an intensity too: "a slightly rounded box" is a box with slightly rounded edges, as
     // "with slightly rounded edges" says (edgePhrase), not a slightly round shape that no box is.
-    if (sectionWord.empty() && v_.saysEdgesBeforeNouns(word)) c.edgeDegree = intensity ? set : v_.edgeSet();
+    if (sectionWord.empty() && v_.saysEdgesBeforeNouns(word)) c.edgeDegree = intensity ? c.set : v_.edgeSet();
     return c;
   }
 
@@ -1207,10 +1204,17 @@ class Parser {
     if (n == 0) return std::nullopt;
     const size_t start = pos_;
     pos_ += n;
-    const FuzzyNumber set =
-        intensity ? (adjective->lowPole ? mirroredDegrees(*intensity) : *intensity) : v_.plainSet(*adjective);
-    QueryCondition c = descriptorCondition(adjective->descriptor, set, span(start, pos_));
-    c.plainRamp = !intensity && !adjective->set;
+    return adjectiveCondition(*adjective, adjective->descriptor, intensity, span(start, pos_));
+  }
+
+  // An adjective's condition on `descriptor` (its own, or its section's): the intensity's set,
+  // mirrored for a low pole, or without one the plain set, which rises as a ramp unless the
+  // adjective names a middle of its own.
+  QueryCondition adjectiveCondition(const Adjective& adjective, const std::string& descriptor,
+                                    const FuzzyNumber* intensity, std::string text) const {
+    FuzzyNumber set = intensity ? (adjective.lowPole ? mirroredDegrees(*intensity) : *intensity) : v_.plainSet(adjective);
+    QueryCondition c = descriptorCondition(descriptor, std::move(set), std::move(text));
+    c.plainRamp = !intensity && !adjective.set;
     return c;
   }
 

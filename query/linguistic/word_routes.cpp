@@ -346,14 +346,14 @@ Candidate compound(const Vocabulary& v, const WordNet& wn, const std::string& wo
     return {r->became, "compound", word + " -> " + part + " -> " + r->became, kCompound * r->discount, 0};
   };
   const std::string tail = word.substr(last + 1), head = word.substr(0, first);
-  Candidate headAdjective = adjectiveOf(head);
-  const bool participle = tail.size() > 3 && tail.compare(tail.size() - 2, 2, "ed") == 0;
-  if (participle && !headAdjective.became.empty()) return {};
   if (tail == "shaped" || tail == "like") {
     const std::string a = shapeAdjectiveOf(v, head);
     if (a.empty()) return {};
     return {a, "compound", word + " -> " + head + " -> " + a, kCompound, 0};
   }
+  Candidate headAdjective = adjectiveOf(head);
+  const bool participle = tail.size() > 3 && tail.compare(tail.size() - 2, 2, "ed") == 0;
+  if (participle && !headAdjective.became.empty()) return {};
   Candidate c = adjectiveOf(tail);
   return c.became.empty() ? headAdjective : c;
 }

@@ -198,7 +198,8 @@ KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& voca
   // "a hollow cylindrical" reads as neither grammar. It is still listed as ignored.
   std::vector<bool> placeholder(tokens.size(), false);
   const WordNet* wn = systemWordNet();
-  for (size_t i = 1; wn && vocabulary.noun(kPlaceholderNoun) && i < tokens.size(); ++i) {
+  const bool placeholders = wn && vocabulary.noun(kPlaceholderNoun);
+  for (size_t i = 1; placeholders && i < tokens.size(); ++i) {
     if (!unknown[i] || routed[i]) continue;
     // An adjective as written: a routed one may be a reading of a noun phrase ("with a slight bend"
     // is no slender thing).

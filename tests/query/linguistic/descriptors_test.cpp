@@ -6,6 +6,7 @@
 #include <random>
 
 #include "geometry/superquadric/deformation.h"
+#include "query/document/part_json.h"
 
 namespace fsdb {
 namespace {
@@ -349,15 +350,13 @@ namespace {
 // A part of the 1M bench catalogue stayed pending: the low corner of one measure's cut came out an
 // ulp above the high corner's (the taper's factor is found by bisection), and the cut was refused.
 TEST(Descriptors, MeasureCutsAreOrderedWhereTheCornersRoundApart) {
-  FuzzyPart part;
-  part.eps1 = FuzzyNumber::crisp(1.9405747382606588);
-  part.eps2 = FuzzyNumber::crisp(2.436026147387037);
-  part.a1 = FuzzyNumber::crisp(1.8036378250230751);
-  part.a2 = FuzzyNumber::crisp(1.6380837991356665);
-  part.a3 = FuzzyNumber::crisp(1.8101651131858043);
-  part.kv = FuzzyNumber::triangular(0.07280637506245109, 0.07898570607162232, 0.08516503708079355);
-  part.kx = FuzzyNumber::triangular(0.3175102602423413, 0.37088878626040495, 0.4242673122784686);
-  part.validate();
+  // The catalogue part's document as stored (part-0051473).
+  const FuzzyPart part = parsePart(nlohmann::json::parse(R"({"kind":"part","params":{
+      "a1":1.8036378250230751,"a2":1.6380837991356665,"a3":1.8101651131858043,
+      "eps1":1.9405747382606588,"eps2":2.436026147387037,
+      "kv":{"tri":[0.07280637506245109,0.07898570607162232,0.08516503708079355]},
+      "kx":{"tri":[0.3175102602423413,0.37088878626040495,0.4242673122784686]},"ky":0.0,"t":0.0}})"),
+                                  "");
   std::vector<DescriptorValue> values;
   ASSERT_NO_THROW(values = describePart(part));
   for (const DescriptorValue& v : values) EXPECT_LE(v.value.support().lo, v.value.support().hi) << v.descriptor;
