@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Rank quality of fsdb's search box (POST /query) on the phrasings of bench/query_corpus/.
 
-    python3 bench/query_rank.py --fsdb build/fsdb [--heldout] [--show-failures] [--json OUT]
+    python3 bench/query_rank.py --fsdb build/fsdb [--heldout] [--second] [--show-failures] [--json OUT]
 
 Starts `fsdb serve` on a free loopback port with a fresh SQLite file, imports
 bench/query_corpus/catalogue/{parts,shapes}.jsonl, waits for /health, runs every phrasing of
@@ -16,7 +16,8 @@ log2(rank + 1) discount, normalised by the best ordering of the phrasing's grade
 non-200 answer counts as an empty result list. The numbers are a measurement, not a gate: the
 exit status is 0 whenever the benchmark ran (2 when the server could not be started or the
 catalogue not imported). heldout.jsonl is reported only as aggregates; see
-bench/query_corpus/README.md for the rule about it.
+bench/query_corpus/README.md for the rule about it. --second runs the second corpus, written
+later the same way (dev2.jsonl, and with --heldout heldout2.jsonl, aggregates only too).
 """
 from __future__ import annotations
 
@@ -247,6 +248,8 @@ def main():
     ap.add_argument("--fsdb", required=True, help="the fsdb binary (e.g. build/fsdb)")
     ap.add_argument("--heldout", action="store_true",
                     help="also run heldout.jsonl and report it separately (aggregates only)")
+    ap.add_argument("--second", action="store_true",
+                    help="also run the second corpus: dev2.jsonl, and with --heldout heldout2.jsonl")
     ap.add_argument("--show-failures", action="store_true",
                     help="list dev phrasings whose RR@1 is 0, with the top 3 names they got")
     ap.add_argument("--json", metavar="OUT", help="also write the table as JSON to OUT")
@@ -262,6 +265,10 @@ def main():
     splits = [("dev", load_jsonl(os.path.join(CORPUS, "dev.jsonl")))]
     if args.heldout:
         splits.append(("heldout", load_jsonl(os.path.join(CORPUS, "heldout.jsonl"))))
+    if args.second:
+        splits.append(("dev2", load_jsonl(os.path.join(CORPUS, "dev2.jsonl"))))
+        if args.heldout:
+            splits.append(("heldout2", load_jsonl(os.path.join(CORPUS, "heldout2.jsonl"))))
 
     workdir = tempfile.mkdtemp(prefix="fsdb-query-rank-")
     server = Server(binary, workdir)
@@ -291,15 +298,17 @@ def main():
                        ("limit", LIMIT), ("k", K)])
     for split, (items, rows, seconds) in results.items():
         table = aggregate(rows)
-        title = "held-out" if split == "heldout" else split
+        title = {"heldout": "held-out", "heldout2": "held-out (second)", "dev2": "dev (second)"}.get(split, split)
         print_table(f"{title}: {len(rows)} phrasings, {seconds:.1f} s", table)
         out[split] = table
         unknown = sorted({n for r in rows for n in r["unknown_names"]})
         if unknown:
             print(f"  note: results named objects outside the catalogue: {', '.join(unknown)}")
     if args.show_failures:
-        items, rows, _ = results["dev"]
-        print_failures(items, rows)
+        for split in ("dev", "dev2"):
+            if split in results:
+                items, rows, _ = results[split]
+                print_failures(items, rows)
     if args.json:
         with open(args.json, "w", encoding="utf-8") as f:
             json.dump(out, f, indent=2)
