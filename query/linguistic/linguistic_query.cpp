@@ -49,20 +49,13 @@ const std::vector<std::string>& grammarWords() {
 
 // Feature phrases, a deformation said as a noun: "with a slight bend" is slightly bent, "a box
 // with a twist" a twisted box. Each noun with the participle adjective it stands for (where the
-// vocabulary has that adjective), and the adjectives that grade it with the intensity they say
-// ("a slight bend", "a strong twist", "an extreme taper"); plain without one. Not "little": it is
+// vocabulary has that adjective), graded by query_tokens::degreeWords ("a slight bend", "a strong
+// twist", "an extreme taper"); plain without one. Not "little": it is
 // no word of the grammar, so the search box reads it as small, its WordNet route ("a little
 // ball"), which grades a feature as well.
 const std::vector<std::pair<std::string, std::string>>& featureNouns() {
   static const std::vector<std::pair<std::string, std::string>> words = {
       {"bend", "bent"}, {"curve", "curved"}, {"twist", "twisted"}, {"taper", "tapered"}};
-  return words;
-}
-const std::vector<std::pair<std::string, std::string>>& featureDegrees() {
-  static const std::vector<std::pair<std::string, std::string>> words = {
-      {"slight", "slightly"}, {"small", "slightly"},   {"gentle", "slightly"},
-      {"mild", "slightly"},   {"moderate", "moderately"}, {"strong", "very"}, {"big", "very"},
-      {"large", "very"},      {"sharp", "very"},       {"heavy", "very"},     {"extreme", "extremely"}};
   return words;
 }
 
@@ -92,7 +85,8 @@ QueryCondition descriptorCondition(const std::string& descriptor, FuzzyNumber se
 
 // Measures (see the header): the words after a number and before one, each with the descriptor
 // it measures (descriptors.h) and the factor from the number to the extent (a radius is half a
-// width); "cube" measures all three extents ("4 units on a side").
+// width); "cube" measures all three extents ("4 units on a side"), "section" the two shorter
+// ("section 0.4").
 struct DimensionWord {
   std::string words;
   std::string descriptor;
@@ -111,7 +105,10 @@ const std::vector<DimensionWord>& dimensionsAfterNumber() {
       // The dimension nouns after their number, as people who learnt another word order say
       // them ("a rod of 6 length", "2 height").
       {"length", "length", 1},      {"width", "width", 1},            {"breadth", "width", 1},
-      {"thickness", "thickness", 1}, {"depth", "thickness", 1},       {"height", "height", 1}};
+      {"thickness", "thickness", 1}, {"depth", "thickness", 1},       {"height", "height", 1},
+      // One number of a section: both its extents, a square or round section that size ("a bar
+      // of 0.4 section"; two numbers are "0.6 by 1 cross section").
+      {"section", "section", 1},    {"cross section", "section", 1},  {"cross-section", "section", 1}};
   return d;
 }
 
@@ -127,7 +124,8 @@ const std::vector<DimensionWord>& dimensionsBeforeNumber() {
   static const std::vector<DimensionWord> d = {
       {"length", "length", 1},   {"width", "width", 1},         {"breadth", "width", 1},
       {"diameter", "width", 1},  {"radius", "width", 2},        {"thickness", "thickness", 1},
-      {"depth", "thickness", 1}, {"height", "height", 1},       {"side", "cube", 1}};
+      {"depth", "thickness", 1}, {"height", "height", 1},       {"side", "cube", 1},
+      {"section", "section", 1}, {"cross section", "section", 1}, {"cross-section", "section", 1}};
   return d;
 }
 
@@ -481,6 +479,10 @@ class Parser {
       QueryCondition c = descriptorCondition(v_.descriptorOn(*use.adjective, d.noun),
                                              use.intensity ? *use.intensity : v_.plainSet(*use.adjective), use.text);
       c.plainRamp = !use.intensity && !use.adjective->set;
+      // A proportion the words say is kept as the noun's is: one extent asked for scales the part
+      // ("a short thick cylinder" is a short cylinder made thick; thickening its section alone
+      // left it long).
+      d.keepsProportions = d.keepsProportions || isProportion(c.descriptor);
       said.push_back(std::move(c));
     }
     for (const MeasureUse& m : d.measures) {
@@ -658,10 +660,14 @@ class Parser {
     std::string m;
     size_t at = pos_;
     // "of" before a number ("a rod of 6 length") only where a dimension follows the number; an
-    // article only before two numbers of a section ("with a 0.6 by 1 cross section").
+    // article only before the numbers of a section ("with a 0.6 by 1 cross section", "with a 0.5
+    // section").
     if (isWordAt(at, {"a", "an", "its"}) && numberPhraseTokens(at + 1)) {
       const size_t n = numberPhraseTokens(at + 1);
-      return isWordAt(at + 1 + n, {"x", "by"}) && at + 2 + n < tokens_.size() && tokens_[at + 2 + n].number;
+      if (isWordAt(at + 1 + n, {"x", "by"})) return at + 2 + n < tokens_.size() && tokens_[at + 2 + n].number;
+      size_t after = at + 1 + n;
+      if (isWordAt(after, {"unit", "units"})) ++after;
+      return matchPhrase(sectionWords(), &m, after - pos_) > 0;
     }
     const size_t number = isWordAt(at, {"of"}) ? at + 1 : at;
     if (const size_t n = numberPhraseTokens(number)) {
@@ -707,11 +713,13 @@ class Parser {
     if (!std::isfinite(number.support().hi * d.factor))
       throw Error(errc::kInvalidParameter, "the measure '" + text + "' is too large for a number", "text");
     const FuzzyNumber extent = d.factor == 1.0 ? number : scale(number, d.factor);
-    if (d.descriptor != "cube") {
+    if (d.descriptor == "cube") {
+      for (const char* descriptor : {"thickness", "width", "length"}) out->push_back(measureCondition(descriptor, extent, text));
+    } else if (d.descriptor == "section") {
+      for (const char* descriptor : {"thickness", "width"}) out->push_back(measureCondition(descriptor, extent, text));
+    } else {
       out->push_back(measureCondition(d.descriptor, extent, text));
-      return;
     }
-    for (const char* descriptor : {"thickness", "width", "length"}) out->push_back(measureCondition(descriptor, extent, text));
   }
 
   // measure, at startsMeasure(): one condition, or an "and" of them (three sides, a side).
@@ -899,6 +907,10 @@ class Parser {
         if (!verb) fail({"'is'", "'are'", "'has'", "'have'"});
         fail(conditionStarts());
       }
+    } else if (at("of") && startsSectionAfterOf()) {
+      // "a bar of square section", "a rod of a round cross-section": the section as "with" says it.
+      ++pos_;
+      clause.push_back(condition());
     } else if (at("with") && !(pos_ + 1 < tokens_.size() && tokens_[pos_ + 1].text == "score")) {
       ++pos_;
       if (!startsCondition()) {
@@ -1029,6 +1041,16 @@ class Parser {
     k += matchPhrase(intensityWords_, &m, k);
     const size_t n = matchPhrase(adjectiveWords_, &m, k);
     return n > 0 && (matchPhrase(v_.sectionWords(), &m, k + n) > 0 || matchPhrase(v_.edgeWords(), &m, k + n) > 0);
+  }
+
+  // "of" [ "a" | "an" ] [ intensity ] adjective section, at pos_: a section said after "of".
+  bool startsSectionAfterOf() const {
+    std::string m;
+    size_t k = 1;
+    if (isWordAt(pos_ + k, {"a", "an"})) ++k;
+    k += matchPhrase(intensityWords_, &m, k);
+    const size_t n = matchPhrase(adjectiveWords_, &m, k);
+    return n > 0 && matchPhrase(v_.sectionWords(), &m, k + n) > 0;
   }
 
   // negation = "not" negation | "(" condition ")" | [ intensity ] adjective [ section ]
@@ -1182,7 +1204,7 @@ class Parser {
     const auto word = [&](size_t i) { return pos_ + i < tokens_.size() ? tokens_[pos_ + i].text : std::string(); };
     size_t k = word(0) == "a" || word(0) == "an" ? 1 : 0;
     const FuzzyNumber* graded = nullptr;
-    for (const auto& [w, term] : featureDegrees())
+    for (const auto& [w, term] : query_tokens::degreeWords())
       if (word(k) == w && v_.intensity(term)) {
         graded = v_.intensity(term);
         ++k;
@@ -1537,7 +1559,7 @@ bool knowsLinguisticWord(const std::string& word, const Vocabulary& vocabulary) 
   // and elsewhere they are verbs ("rods which taper" is a stative verb's route, "which are
   // tapered"). Their grading words are: left unknown, "slight" routed to thin.
   return vocabulary.knowsWord(word) || contains(grammarWords(), word) || descriptorIndex(word) >= 0 ||
-         std::binary_search(measureWords().begin(), measureWords().end(), word) || said(featureDegrees());
+         std::binary_search(measureWords().begin(), measureWords().end(), word) || said(query_tokens::degreeWords());
 }
 
 const std::vector<std::string>& measureWords() {

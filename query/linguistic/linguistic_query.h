@@ -237,7 +237,8 @@ struct PartDescription {
   // After the measures: a "with" edge phrase; or a before_nouns adjective, plain or with an intensity.
   std::optional<EdgeUse> edges;
   // The noun has a condition on its proportions (elongation, flatness, slenderness) that the
-  // words keep, as the same words read as a query keep it: one extent asked for scales the part.
+  // words keep, as the same words read as a query keep it, or the words say one themselves ("a
+  // short thick cylinder"): one extent asked for scales the part.
   bool keepsProportions = false;
 };
 PartDescription parsePartDescription(const std::string& text, const Vocabulary& vocabulary);

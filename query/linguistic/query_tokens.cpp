@@ -74,6 +74,14 @@ size_t requestLength(const std::function<const std::string*(size_t)>& wordAt, co
   return next && *next == "for" ? verb + 1 : verb;
 }
 
+const std::vector<std::pair<std::string, std::string>>& degreeWords() {
+  static const std::vector<std::pair<std::string, std::string>> words = {
+      {"slight", "slightly"}, {"small", "slightly"},      {"gentle", "slightly"},
+      {"mild", "slightly"},   {"moderate", "moderately"}, {"strong", "very"}, {"big", "very"},
+      {"large", "very"},      {"sharp", "very"},          {"heavy", "very"},  {"extreme", "extremely"}};
+  return words;
+}
+
 bool functionWord(const std::string& word) {
   static const std::vector<std::string> kFunctionWords = {
       "a",  "an", "the",  "and",   "or", "with", "of",  "on",  "in",   "at",  "to",

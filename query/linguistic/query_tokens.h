@@ -3,9 +3,11 @@
 // numbers as strtod reads them, and the punctuation '(' ')' ','; each with its character offsets,
 // so that errors and parsed phrases can point into the text. Two shorthands of notes are read as
 // words: "w" and "w/" as "with", '~' as "about".
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "query/linguistic/vocabulary.h"
@@ -39,6 +41,13 @@ std::vector<Token> tokenize(const std::string& text, size_t from, size_t to);
 // where unknown words are dropped from a text.
 bool functionWord(const std::string& word);
 
+// The adjectives that grade a deformation or an extent, each with the intensity term it says:
+// slight, small, gentle and mild (slightly), moderate (moderately), strong, big, large, sharp and
+// heavy (very), extreme (extremely). The feature phrase reads them before its noun ("a slight
+// bend", "a strong twist"), and the word routes read an adverb made from one as its intensity
+// ("gently curved", "heavily bent": WordNet's pertainym link from the adverb to the adjective).
+const std::vector<std::pair<std::string, std::string>>& degreeWords();
+
 // The words without the vocabulary's fillers ("please"), which carry no meaning wherever they
 // stand, and without the comma that sets one off: the one after it ("please, find ...", "round,
 // please, tapered"), else the one before it when it ends the text ("small, please"). Word is any
@@ -58,15 +67,53 @@ std::vector<Word> withoutFillers(std::vector<Word> words, const Vocabulary& voca
   return out;
 }
 
-// The words as the readers take them: withoutFillers, and a run of one intensity said again and
-// again stepped up the vocabulary's order by one term per repetition, as far as the strongest
-// ("very very long" and "very, very long" are extremely long; "really really big" too: really is
-// very). People stress
+// The comparison "as WORD as ..." that names a thing to compare with ("as big as a house", "as
+// thin as a pencil"), at wordAt(0), wordAt(1), ... (a const std::string*, null past the end): the
+// words it spans, 0 when there is none. What is compared with runs to the next comma, and, or,
+// with, that, which or but, at most four words.
+template <typename WordAt>
+size_t comparisonLength(const WordAt& wordAt) {
+  constexpr size_t kLongestCompared = 4;
+  static const std::vector<std::string> kEnds = {",", "and", "or", "with", "that", "which", "but"};
+  const std::string* first = wordAt(0);
+  const std::string* second = wordAt(2);
+  if (!first || *first != "as" || !wordAt(1) || !second || *second != "as") return 0;
+  size_t n = 3;
+  while (n < 3 + kLongestCompared && wordAt(n) && std::find(kEnds.begin(), kEnds.end(), *wordAt(n)) == kEnds.end()) ++n;
+  return n;
+}
+
+// The words without comparisons (comparisonLength) whose word is one of the vocabulary's
+// adjectives ("a ball as big as a house", "a rod as thin as a pencil, slightly bent"): the
+// adjective alone is kept, plain, since how big a house is is no knowledge of the vocabulary. A
+// routed word is one by then: the readers route unknown words before they read (and keep the
+// words of a comparison, query/structural/unknown_words.h).
+template <typename Word>
+std::vector<Word> withoutComparisons(std::vector<Word> words, const Vocabulary& vocabulary) {
+  std::vector<Word> out;
+  out.reserve(words.size());
+  for (size_t i = 0; i < words.size();) {
+    const size_t n = comparisonLength([&](size_t k) { return i + k < words.size() ? &words[i + k].text : nullptr; });
+    if (n > 0 && vocabulary.adjective(words[i + 1].text)) {
+      out.push_back(std::move(words[i + 1]));
+      i += n;
+      continue;
+    }
+    out.push_back(std::move(words[i]));
+    ++i;
+  }
+  return out;
+}
+
+// The words as the readers take them: withoutFillers, withoutComparisons, and a run of one
+// intensity said again and again stepped up the vocabulary's order by one term per repetition, as
+// far as the strongest ("very very long" and "very, very long" are extremely long; "really really
+// big" too: really is very). People stress
 // a word by repeating it; read word by word, the second "very" left the first without its
 // adjective and the reading dropped both. The run keeps the first word's place.
 template <typename Word>
 std::vector<Word> readableWords(std::vector<Word> words, const Vocabulary& vocabulary) {
-  words = withoutFillers(std::move(words), vocabulary);
+  words = withoutComparisons(withoutFillers(std::move(words), vocabulary), vocabulary);
   const std::vector<std::string>& order = vocabulary.intensityOrder();
   std::vector<Word> out;
   out.reserve(words.size());

@@ -24,6 +24,7 @@ constexpr double kAntonym = 0.85;
 constexpr double kDerived = 0.9;
 constexpr double kAbbreviation = 0.9;
 constexpr double kCompound = 0.9;
+constexpr double kPertainym = 0.9;
 
 // WordNet's lexicographer files of nouns that name things with a shape (lexnames(5WN)).
 constexpr int kNounArtifact = 6, kNounObject = 17, kNounShape = 25;
@@ -110,6 +111,41 @@ void consider(Candidate* best, Candidate c) {
   if (!c.became.empty() && (best->became.empty() || c.beats(*best))) *best = std::move(c);
 }
 
+// An adverb made from an adjective that grades (query_tokens::degreeWords), as that adjective's
+// intensity: "gently" -> gentle -> slightly, "heavily" -> heavy -> very, "strongly" (a known
+// intensity already). WordNet's pertainym ("\\") links the adverb to its adjective, `target` its
+// word in `adjective` (0: all); an adjective that is no grading word itself may be a synonym of
+// one in its first senses or a satellite of one ("greatly" -> great -> large, "severely" ->
+// severe -> strong), a step more at that link's discount.
+Candidate degreeAdverb(const Vocabulary& v, const WordNet& wn, const std::string& adverb,
+                       const WordNet::Synset& adjective, int target, size_t rank) {
+  const auto degree = [&](const std::string& w) -> std::string {
+    for (const auto& [word, term] : query_tokens::degreeWords())
+      if (word == w && v.intensity(term)) return term;
+    return "";
+  };
+  Candidate best;
+  for (size_t i = 0; i < adjective.words.size(); ++i) {
+    if (target != 0 && target != static_cast<int>(i) + 1) continue;
+    const std::string& a = adjective.words[i];
+    consider(&best, {degree(a), "WordNet pertainym", adverb + " -> " + a, kPertainym, rank});
+    const std::vector<WordNet::Synset> senses = wn.senses(a, Pos::kAdjective);
+    for (size_t r = 0; r < senses.size() && r < sensesThatCount(Pos::kAdjective); ++r) {
+      for (const std::string& synonym : senses[r].words)
+        if (synonym != a)
+          consider(&best, {degree(synonym), "WordNet pertainym", adverb + " -> " + a + " = " + synonym,
+                           kPertainym * kSynonym, rank});
+      for (const WordNet::Pointer& p : senses[r].pointers) {
+        if (p.symbol != "&") continue;
+        for (const std::string& head : wn.synsetAt(p.pos, p.offset).words)
+          consider(&best, {degree(head), "WordNet pertainym", adverb + " -> " + a + " -> " + head,
+                           kPertainym * kSimilarTo, rank});
+      }
+    }
+  }
+  return best;
+}
+
 // The best WordNet route of one base form.
 void wordNetRoutes(const Vocabulary& v, const WordNet& wn, const std::string& base, Pos pos, Candidate* best) {
   const std::vector<WordNet::Synset> senses = wn.senses(base, pos);
@@ -126,6 +162,10 @@ void wordNetRoutes(const Vocabulary& v, const WordNet& wn, const std::string& ba
       if (w != base) consider(best, {target(v, pos, w, false), "WordNet synonym", base + " = " + w, kSynonym, rank});
     for (const WordNet::Pointer& p : s.pointers) {
       if (p.source != 0 && p.source != self) continue;
+      if (pos == Pos::kAdverb && p.symbol == "\\") {
+        consider(best, degreeAdverb(v, wn, base, wn.synsetAt(p.pos, p.offset), p.target, rank));
+        continue;
+      }
       const bool similar = p.symbol == "&", also = p.symbol == "^", antonym = p.symbol == "!";
       const bool hypernym = pos == Pos::kNoun && (p.symbol == "@" || p.symbol == "@i");
       if (!similar && !also && !antonym && !hypernym) continue;
@@ -224,7 +264,8 @@ Candidate derivedAdjective(const Vocabulary& v, const WordNet& wn, const std::st
 
 // A past participle ("flexed", "crushed", "curled") of a verb one of whose first senses has a
 // synonym of which a known adjective is the participle: flex = bend -> bent, crush = squash ->
-// squashed, curl = curve -> curved. Only where no other route reaches the vocabulary (WordNet's
+// squashed, curl = curve -> curved; or a fourth or fifth sense that is the synonym's first
+// ("stretched": stretch = elongate -> elongated). Only where no other route reaches the vocabulary (WordNet's
 // links from adjectives, nouns and adverbs win: "crooked", an adjective, is straight's antonym);
 // WordNet has no links from verbs to the vocabulary, so this is the route of a synonym of the
 // verb, at a synonym's discount. Not a present participle or
@@ -239,12 +280,20 @@ Candidate synonymVerbParticiple(const WordNet& wn, const std::string& word, cons
   for (const std::string& verb : wn.baseForms(word, Pos::kVerb))
     if (verb != word) verbs.push_back(verb);
   if (verbs.empty()) return {};
+  // A later sense counts too where it is the first sense of the synonym, the shape verb's own
+  // meaning: stretch's fifth sense is elongate's first ("make long or longer by pulling"), and
+  // "stretched" is elongated; "shown" is no "pointed", point's first sense being show's seventh.
+  constexpr size_t kLaterSenses = 5;
   Candidate best;
   for (const std::string& verb : verbs) {
     const std::vector<WordNet::Synset> senses = wn.senses(verb, Pos::kVerb);
-    for (size_t rank = 0; rank < senses.size() && rank < sensesThatCount(Pos::kVerb); ++rank)
+    for (size_t rank = 0; rank < senses.size() && rank < kLaterSenses; ++rank)
       for (const std::string& synonym : senses[rank].words) {
         if (synonym == verb) continue;
+        if (rank >= sensesThatCount(Pos::kVerb)) {
+          const std::vector<WordNet::Synset> own = wn.senses(synonym, Pos::kVerb);
+          if (own.empty() || own[0].words != senses[rank].words) continue;
+        }
         for (const auto& [base, adjective] : participles)
           if (base == synonym && adjective != word)
             consider(&best, {adjective, "WordNet synonym", word + " -> " + verb + " = " + synonym + " -> " + adjective,
@@ -372,7 +421,8 @@ std::optional<WordRoute> routeWordWith(const std::string& word, const std::strin
   for (Pos pos : order) {
     if (pos == Pos::kVerb && adjectiveItself) continue;
     for (const std::string& base : wordnet->baseForms(word, pos))
-      if (base != word && known(base)) return WordRoute{word, base, "lemma", base, 1.0};
+      // Not to a function word: "as" is no plural of "a".
+      if (base != word && known(base) && !query_tokens::functionWord(base)) return WordRoute{word, base, "lemma", base, 1.0};
   }
   // Verbs of assembly, by their lemmas.
   for (const std::string& base : wordnet->baseForms(word, Pos::kVerb)) {

@@ -20,6 +20,10 @@
 //   similar-to   0.9   an adjective satellite and its head ("colossal" -> large)
 //   hypernym     0.9   a noun's more general noun ("pole" -> rod), 0.81 two steps up
 //   also-see     0.85  an adjective's "see also" link
+//   pertainym    0.9   an adverb made from an adjective that grades (query_tokens::degreeWords) ->
+//                      that adjective's intensity ("gently" -> gentle -> slightly, "heavily" ->
+//                      very); times 0.95 through a synonym of the adjective, 0.9 through its head
+//                      ("greatly" -> great -> large, "severely" -> severe -> strong)
 //   antonym      0.85  the other pole of a known adjective's descriptor ("unbent" -> bent's other
 //                      pole: straight)
 //   derivation   0.9   an adjective by -y or -ish from a known adjective or from the verb of one
@@ -56,7 +60,8 @@ struct WordRoute {
   std::string became;   // the known word it reads as; "" when it is left out (a support verb)
   std::string why;      // the kind: "lemma", "joining verb", "cutting verb", "support verb", "stative verb",
                         // "WordNet synonym", "WordNet similar-to", "WordNet hypernym",
-                        // "WordNet also-see", "WordNet antonym", "derivation", "abbreviation", "compound"
+                        // "WordNet also-see", "WordNet antonym", "WordNet pertainym", "derivation",
+                        // "abbreviation", "compound"
   std::string via;      // the WordNet words on the way ("skinny -> thin -> ..."), for `routed`
   double discount = 1.0;
 };

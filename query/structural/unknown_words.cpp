@@ -169,6 +169,17 @@ KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& voca
     unknown[i] = !t.number && t.text.size() > 1 && std::isalpha(static_cast<unsigned char>(t.text[0])) &&
                  !knownWord(t.text, vocabulary);
   }
+  // A comparison ("as big as a house", "as skinny as a rail") keeps its words: the readers drop
+  // the "as" and what is compared with around an adjective (query_tokens::withoutComparisons),
+  // and the word between is read, or routed, as any other.
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    const size_t n = query_tokens::comparisonLength(
+        [&](size_t k) { return i + k < tokens.size() ? &tokens[i + k].text : nullptr; });
+    if (n == 0) continue;
+    for (size_t k = 0; k < n; ++k)
+      if (k != 1) unknown[i + k] = false;
+    i += n - 1;
+  }
   // The text with each unknown word replaced by choice[i] ("": left out), and the joining words
   // that only left-out words follow (up to the end or a comma) left out with them.
   const auto textWith = [&](const std::vector<std::string>& choice) {

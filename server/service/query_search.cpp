@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <functional>
+#include <map>
 #include <optional>
 #include <unordered_map>
 #include <unordered_set>
@@ -90,6 +91,77 @@ nlohmann::json objectsDescribed(const Store& store, const nlohmann::json& reques
   for (const StoredObject& o : store.described(content, requestKinds(request), static_cast<int>(limit)))
     out.push_back({{"id", o.id}, {"kind", o.kind}, {"name", o.name}, {"version", o.version}, {"score", kDescribedScore},
                    {"described", true}, {"explain", {{{"text", "its own words"}, {"score", kDescribedScore}}}}});
+  return out;
+}
+
+// Texts of which no word is understood are searched in objects' own words one word at a time:
+// at most this many content words (each is one full-text lookup).
+constexpr size_t kMostPartlyDescribedWords = 8;
+
+// Whether WordNet has `word` as a noun of the same synset, in its first four senses, as one of the
+// vocabulary's nouns without a geometry ("form" and "shape", "piece" and "part"): a word any
+// description may hold.
+bool genericNoun(const std::string& word) {
+  const WordNet* wordnet = systemWordNet();
+  if (!wordnet) return false;
+  constexpr size_t kSenses = 4;
+  const Vocabulary& v = activeVocabulary();
+  for (const std::string& base : wordnet->baseForms(word, WordNet::Pos::kNoun)) {
+    const std::vector<WordNet::Synset> senses = wordnet->senses(base, WordNet::Pos::kNoun);
+    for (size_t i = 0; i < senses.size() && i < kSenses; ++i)
+      for (const std::string& w : senses[i].words) {
+        const Noun* n = v.noun(w);
+        if (n && n->params.is_null()) return true;
+      }
+  }
+  return false;
+}
+
+// The stored parts and shapes whose own words hold some of the words no grammar reads of a text
+// that does not read (objectsDescribed asks for every content word): "a helical ribbon" finds the
+// object described as a ribbon. The grammars' own words are left out ("top" or "end", in many
+// descriptions, would list anything for "a spinning top"), and so are generic nouns ("form").
+// Scored kDescribedScore times the share of those words held, most held first (then by id),
+// "described" and "partial": true; explain says which words.
+nlohmann::json objectsPartlyDescribed(const Store& store, const nlohmann::json& request,
+                                      const std::vector<std::string>& words, size_t limit) {
+  std::vector<std::string> content;
+  for (const std::string& w : words) {
+    if (w == "not" || w == "no" || w == "without") return nlohmann::json::array();
+    if (!query_tokens::functionWord(w) && std::isalnum(static_cast<unsigned char>(w[0])) &&
+        !knowsLinguisticWord(w, activeVocabulary()) && !genericNoun(w) &&
+        std::find(content.begin(), content.end(), w) == content.end())
+      content.push_back(w);
+  }
+  if (content.empty() || content.size() > kMostPartlyDescribedWords) return nlohmann::json::array();
+  struct Held {
+    StoredObject object;
+    std::vector<std::string> words;
+  };
+  std::map<std::pair<std::string, int64_t>, Held> held;
+  for (const std::string& w : content)
+    for (const StoredObject& o : store.described({w}, requestKinds(request), static_cast<int>(limit))) {
+      Held& h = held[{o.kind, o.id}];
+      if (h.words.empty()) h.object = o;
+      h.words.push_back(w);
+    }
+  std::vector<const Held*> ranked;
+  for (const auto& [key, h] : held) ranked.push_back(&h);
+  std::stable_sort(ranked.begin(), ranked.end(), [](const Held* a, const Held* b) {
+    return a->words.size() != b->words.size() ? a->words.size() > b->words.size() : a->object.id < b->object.id;
+  });
+  nlohmann::json out = nlohmann::json::array();
+  for (const Held* h : ranked) {
+    if (out.size() >= limit) break;
+    const double score = kDescribedScore * static_cast<double>(h->words.size()) / static_cast<double>(content.size());
+    std::string said;
+    for (const std::string& w : h->words) said += (said.empty() ? "'" : ", '") + w + "'";
+    const std::string text = "its own words hold " + said + " (" + std::to_string(h->words.size()) + " of " +
+                             std::to_string(content.size()) + " words)";
+    out.push_back({{"id", h->object.id}, {"kind", h->object.kind}, {"name", h->object.name},
+                   {"version", h->object.version}, {"score", score}, {"described", true}, {"partial", true},
+                   {"explain", {{{"text", text}, {"score", score}}}}});
+  }
   return out;
 }
 
@@ -192,7 +264,9 @@ constexpr double kHypernymNameScore = 0.9 * kNearNameScore;
 
 // The nouns WordNet gives for an unknown word, as names: the words of its first four senses as a
 // noun (synonyms: "sofa" for couch) and of their hypernyms ("cushion" for pillow), each as the
-// spellings namesOfText makes of its words. The word itself is not among them.
+// spellings namesOfText makes of its words. The word itself is not among them. Not their
+// hyponyms, the word's kinds (tried: "a jewel" found the object named diamond, but "a plus sign"
+// found beam, a kind of sign, and "board of wood" log, a kind of wood).
 void wordNetNames(const std::string& word, std::vector<std::string>* synonyms, std::vector<std::string>* hypernyms) {
   const WordNet* wordnet = systemWordNet();
   if (!wordnet) return;
@@ -841,9 +915,22 @@ nlohmann::json queryResponse(const Store& store, const nlohmann::json& request,
         putWordMatches(&answer, nearly, byWords, limit);
         return answer;
       }
-      // Words no grammar reads that objects are described by ("a mushroom form").
-      if (byWords.empty()) throw;
-      return {{"search", "words"}, {"results", byWords}};
+      // Words no grammar reads that objects are described by ("a mushroom form"), or some of them
+      // ("a helical ribbon": the object described as a ribbon), as partial matches.
+      if (!byWords.empty()) return {{"search", "words"}, {"results", byWords}};
+      nlohmann::json partly = objectsPartlyDescribed(store, request, words, limit);
+      if (partly.empty()) throw;
+      // The unknown words no result's own words hold are ignored, each with its corrections.
+      nlohmann::json ignored = nlohmann::json::array();
+      if (reading)
+        for (const UnknownWord& u : reading->unknown) {
+          const std::string quoted = "'" + u.word + "'";
+          const bool held = std::any_of(partly.begin(), partly.end(), [&](const nlohmann::json& r) {
+            return r["explain"][0]["text"].get<std::string>().find(quoted) != std::string::npos;
+          });
+          if (!held) ignored.push_back({{"word", quotedWord(u.word)}, {"at", u.at}, {"did_you_mean", u.closest}});
+        }
+      return {{"search", "words"}, {"results", std::move(partly)}, {"partial", true}, {"ignored", std::move(ignored)}};
     }
   }
 }

@@ -199,6 +199,14 @@ TEST(PartFromWords, PlainAdjectivesTakeADegreeTheirNounAllows) {
   for (const char* d : {"elongation", "flatness", "slenderness"})
     EXPECT_NEAR(valueOf(make("a wide rod"), d).core().lo, valueOf(make("a rod"), d).core().lo, 1e-9) << d;
   EXPECT_GT(valueOf(make("a wide rod"), "width").core().lo, valueOf(make("a rod"), "width").core().lo);
+  // A proportion the words say is kept the same way: "a short thick cylinder" is as short as "a
+  // short cylinder" (thickening its section alone left it long: slenderness 0.42, not 0.05), and
+  // as thick as "a thick cylinder"; both words score 1 for the part.
+  for (const char* d : {"elongation", "flatness", "slenderness"})
+    EXPECT_NEAR(valueOf(make("a short thick cylinder"), d).core().lo, valueOf(make("a short cylinder"), d).core().lo,
+                1e-9) << d;
+  EXPECT_NEAR(valueOf(make("a short thick cylinder"), "thickness").core().lo,
+              valueOf(make("a thick cylinder"), "thickness").core().lo, 1e-9);
 }
 
 // Measures set the extents they name: "a pole about 10 long" has a fuzzy length of about 10.

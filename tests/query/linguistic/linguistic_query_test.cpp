@@ -184,6 +184,10 @@ TEST(LinguisticQuery, MeasuresAreConditionsOnTheExtents) {
   EXPECT_EQ(measuresOf("a board with a 1 by 0.2 cross-section"),
             (Measures{{"thickness", near(0.2)}, {"width", near(1)}}));
   EXPECT_THROW(parse("a box 3 by 2"), Error);  // two numbers and no section: which two extents is unsaid
+  // One number of a section, before or after its word: both shorter extents.
+  EXPECT_EQ(measuresOf("a bar, section 0.4, length 6"),
+            (Measures{{"thickness", near(0.4)}, {"width", near(0.4)}, {"height", near(6)}}));
+  EXPECT_EQ(measuresOf("a beam with a 0.5 cross section"), (Measures{{"thickness", near(0.5)}, {"width", near(0.5)}}));
   // A dimension noun after its number, "of" before it, as a non-native speaker may order them.
   EXPECT_EQ(measuresOf("rod thin straight of 6 length"), (Measures{{"height", near(6)}}));
   EXPECT_EQ(measuresOf("a box of 2 width"), (Measures{{"width", near(2)}}));
@@ -757,6 +761,9 @@ TEST(LinguisticQuery, TraverseSections) {
              *v().intensity("very"), "a very round cross-section");
   expectLeaf(parse("a shape with a circular cross-section").root, "section-roundness",
              v().plainSet(*v().adjective("circular")), "a circular cross-section");
+  // After "of", as after "with".
+  EXPECT_EQ(meaning("a bar of square section"), meaning("a bar with a square section"));
+  EXPECT_EQ(meaning("a rod of a very round cross-section"), meaning("a rod with a very round cross-section"));
   // The seed's own words for Figure 1, a bare description with a "with" clause.
   EXPECT_EQ(meaning("very sharp with squarish traverse section"),
             meaning("find a very sharp shape with squarish traverse section"));

@@ -65,6 +65,30 @@ TEST(QueryTokens, ReadableWordsStepRepeatedIntensitiesUp) {
   EXPECT_EQ(t[1].offset, 2u);
 }
 
+// "as ADJECTIVE as ..." keeps the adjective, plain, and drops what it is compared with, up to a
+// comma or a joining word, four words at most; not where the word between is no adjective.
+TEST(QueryTokens, ComparisonsKeepTheirAdjective) {
+  EXPECT_EQ(texts(readableWords(tokens("a ball as big as a house"), v())), "a|ball|big");
+  EXPECT_EQ(texts(readableWords(tokens("a rod as thin as a pencil, slightly bent"), v())), "a|rod|thin|,|slightly|bent");
+  EXPECT_EQ(texts(readableWords(tokens("a cube as small as a die and rounded"), v())), "a|cube|small|and|rounded");
+  EXPECT_EQ(texts(readableWords(tokens("as long as one two three four five"), v())), "long|five");
+  EXPECT_EQ(texts(readableWords(tokens("a cube as well as a ball"), v())), "a|cube|as|well|as|a|ball");
+  const std::vector<Token> t = readableWords(tokens("a ball as big as a house"), v());
+  EXPECT_EQ(t[2].offset, 10u);  // the adjective's own place
+  const auto at = [](const std::vector<std::string>& w) {
+    return [&w](size_t k) { return k < w.size() ? &w[k] : nullptr; };
+  };
+  const std::vector<std::string> a = {"as", "big", "as", "a", "house"}, b = {"as", "big"}, c = {"as", "big", "as"};
+  EXPECT_EQ(comparisonLength(at(a)), 5u);
+  EXPECT_EQ(comparisonLength(at(b)), 0u);
+  EXPECT_EQ(comparisonLength(at(c)), 3u);
+}
+
+TEST(QueryTokens, DegreeWordsSayAnIntensityOfTheVocabulary) {
+  ASSERT_FALSE(degreeWords().empty());
+  for (const auto& [word, term] : degreeWords()) EXPECT_NE(v().intensity(term), nullptr) << word << " -> " << term;
+}
+
 TEST(QueryTokens, FunctionWordsCarryNoPropertyOfAShape) {
   for (const char* w : {"a", "the", "and", "with", "of", "its", "has", "for"}) EXPECT_TRUE(functionWord(w)) << w;
   for (const char* w : {"bent", "cylinder", "not", "without", "box", ",", ""}) EXPECT_FALSE(functionWord(w)) << w;

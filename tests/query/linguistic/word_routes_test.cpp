@@ -84,6 +84,21 @@ TEST(WordRoutes, AdjectivesByYAndIshReachTheirStemsAdjective) {
   }
 }
 
+// An adverb made from a grading adjective reads as that adjective's intensity: WordNet's
+// pertainym link, then the grading word itself, a synonym of it or its satellite's head.
+TEST(WordRoutes, AdverbsOfDegreeReadAsTheirAdjectivesIntensity) {
+  expectRoute("gently", "slightly", "WordNet pertainym", 0.9);   // gently -> gentle
+  expectRoute("mildly", "slightly", "WordNet pertainym", 0.9);   // mildly -> mild
+  expectRoute("heavily", "very", "WordNet pertainym", 0.9);      // heavily -> heavy
+  expectRoute("sharply", "very", "WordNet pertainym", 0.9);      // its third sense, -> sharp
+  expectRoute("greatly", "very", "WordNet pertainym", 0.9 * 0.9);  // great -> large
+  expectRoute("severely", "very", "WordNet pertainym", 0.9 * 0.9);  // severe -> strong
+  // An adverb of no grading adjective routes nowhere by this link ("perfectly" -> perfect).
+  EXPECT_FALSE(route("perfectly").has_value());
+  // A known intensity is no route at all; the lemma route never reaches a function word.
+  EXPECT_FALSE(route("as").has_value());
+}
+
 TEST(WordRoutes, NounsReachTheirMoreGeneralNoun) {
   expectRoute("wand", "rod", "WordNet hypernym", 0.9);
   expectRoute("ingot", "block", "WordNet hypernym", 0.9);
@@ -96,6 +111,13 @@ TEST(WordRoutes, ParticiplesOfVerbsReachTheirSynonymsParticiple) {
   expectRoute("crushed", "squashed", "WordNet synonym", 0.95); // crush = squash
   // WordNet's links from an adjective come first: "arched" is an adjective, a synonym of bowed.
   expectRoute("arched", "bowed", "WordNet synonym", 0.95);
+  // A later sense of the verb where it is the synonym's first: stretch's fifth is elongate's first.
+  expectRoute("stretched", "elongated", "WordNet synonym", 0.95);
+  // Not where it is a later sense of the synonym too: point's first sense (indicate) is show's
+  // seventh, and "shown" says nothing of a pointed part (it is the grammar's "show").
+  const std::optional<WordRoute> shown = route("shown");
+  ASSERT_TRUE(shown.has_value());
+  EXPECT_EQ(shown->became, "show");
   // A verb's other forms say what a part does: spin = twist, but "spinning" and "flexes" are no
   // twisted or bent part.
   for (const char* w : {"spinning", "flexes"}) {
