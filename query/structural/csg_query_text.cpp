@@ -137,7 +137,8 @@ class PhraseParser {
  private:
   // A chain of minus nests (differences are not associative): each link counts as a nesting level.
   // subtraction = ( "minus" | "without" | "drilled" [ "through" ] [ "with" | "by" ] ) list
-  //             | "with" hole | "with" meet cut_out      (cut_out: "cut out", "removed", ...)
+  //             | hole_lead hole | "with" meet cut_out   (cut_out: "cut out", "removed", ...)
+  // hole_lead = "with" | ( "that" | "which" ) ( "has" | "have" )
   nlohmann::json expr() {
     nlohmann::json left = list();
     int links = 0;
@@ -148,8 +149,8 @@ class PhraseParser {
         pendingCut_ = nullptr;
       } else if (acceptAny({"minus", "without"}) || acceptDrilled()) {
         subtrahend = list();
-      } else if (atHole()) {
-        ++pos_;  // "with"
+      } else if (const size_t lead = holeLead()) {
+        pos_ += lead;  // "with", "which has"
         subtrahend = hole();
       } else {
         break;
@@ -164,12 +165,25 @@ class PhraseParser {
   }
 
   // "with" [ article ] [ SHAPE-shaped | ADJECTIVE-FORM ] "hole": the hole is the shape cut out.
-  bool atHole() const {
-    if (!at("with")) return false;
-    size_t i = pos_ + 1;
+  bool atHole() const { return at("with") && holeLead() == 1; }
+
+  // The words that lead a hole at pos_ (0: no hole follows): "with", or a relative clause that
+  // says the part has it ("a cube which has a hole", "a block that has a hole in it"), as a
+  // writer in another language or in a hurry puts it.
+  size_t holeLead() const {
+    size_t lead = 0;
+    if (at("with")) {
+      lead = 1;
+    } else if ((at("that") || at("which")) && pos_ + 1 < words_.size() &&
+               (words_[pos_ + 1].text == "has" || words_[pos_ + 1].text == "have")) {
+      lead = 2;
+    } else {
+      return 0;
+    }
+    size_t i = pos_ + lead;
     if (i < words_.size() && contains(queryArticles(), words_[i].text)) ++i;
-    if (i < words_.size() && words_[i].text == "hole") return !v_.plainHoleNoun().empty();
-    return i + 1 < words_.size() && words_[i + 1].text == "hole" && !holeNoun(words_[i].text).empty();
+    if (i < words_.size() && words_[i].text == "hole") return v_.plainHoleNoun().empty() ? 0 : lead;
+    return i + 1 < words_.size() && words_[i + 1].text == "hole" && !holeNoun(words_[i].text).empty() ? lead : 0;
   }
 
   // The noun a hole's shape word names: "cylinder-shaped" (any noun of the vocabulary with
@@ -184,8 +198,11 @@ class PhraseParser {
     return noun ? *noun : "";
   }
 
-  // hole = [ article ] [ shape word ] "hole" [ "drilled" ] [ ( "through" | "in" | "into" ) [ "it" ] ], at atHole(): a description leaf of the noun its
-  // shape word names (a cylinder when none: a drilled hole), with the words as written.
+  // hole = [ article ] [ shape word ] "hole" [ "drilled" ] [ ( "through" | "in" | "into" ) [ "it" | where ] ],
+  // where = [ "the" ] ( "middle" | "center" | "centre" ), at holeLead(): a description leaf of the
+  // noun its shape word names (a cylinder when none: a drilled hole), with the words as written.
+  // Where the hole is ("in the middle", "through the center") is not placed: a hole's leaf is
+  // compared by its noun, and the catalogue's holes are central.
   nlohmann::json hole() {
     const size_t from = words_[pos_].offset;
     acceptAny(queryArticles());
@@ -196,7 +213,13 @@ class PhraseParser {
     // How the hole was made adds nothing: "a slab with a hole drilled through it", "bored through
     // it", "with a hole in it" (word_routes.h reads "cut", "punched" as "drilled").
     const bool drilled = acceptAny(kDrilledWords);
-    if (acceptAny({"through", "in", "into"}) || drilled) accept("it");
+    if (acceptAny({"through", "in", "into"}) || drilled) {
+      if (!accept("it")) {
+        const size_t before = pos_;
+        accept("the");
+        if (!acceptAny({"middle", "center", "centre"})) pos_ = before;
+      }
+    }
     head_ = plainNounLeaf(noun, text_.substr(from, end - from));
     return placeholder(head_);
   }
@@ -995,8 +1018,8 @@ const std::vector<std::string>& csgPhraseWords() {
                        "row", "line", "lined", "touching", "each", "other", "next", "stacked", "up", "hollow", "annular",
                        // ends of a part ("at its end", "on both ends")
                        "end", "ends", "both", "either", "every",
-                       // parts with a hole ("a drilled block")
-                       "bored", "pierced", "perforated", "holed",
+                       // parts with a hole ("a drilled block", "a cube which has a hole in the middle")
+                       "bored", "pierced", "perforated", "holed", "has", "have", "middle", "center", "centre",
                        // collective nouns of copies ("a stack of spheres")
                        "stack", "pile", "tower", "array", "set", "group", "cluster",
                        // intersections in words

@@ -65,4 +65,134 @@ std::vector<double> typicalityDistances(const Store& store, const nlohmann::json
   return out;
 }
 
+namespace {
+
+// The part a query leaf's words make, read as a part's words are: without the article or count
+// the phrase put before them ("the very bent cylinder", "two spheres") and with a plural noun at
+// the end made singular ("spheres"), so that a text and its read_as form, or its synonyms, make
+// the same part. nullopt where they make none ("bored", a hole's words).
+std::optional<std::vector<DescriptorValue>> leafPrototype(const std::string& text) {
+  const Vocabulary& v = activeVocabulary();
+  std::vector<std::string> words;
+  size_t from = 0;
+  while (from < text.size()) {
+    size_t to = text.find(' ', from);
+    if (to == std::string::npos) to = text.size();
+    if (to > from) words.push_back(text.substr(from, to - from));
+    from = to + 1;
+  }
+  static const std::vector<std::string> kLeading = {"a", "an", "the", "its", "one", "two", "three", "four",
+                                                    "five", "six", "seven", "eight", "nine", "ten"};
+  size_t first = 0;
+  while (first < words.size() && std::find(kLeading.begin(), kLeading.end(), words[first]) != kLeading.end()) ++first;
+  if (first == words.size()) return std::nullopt;
+  if (const Noun* noun = v.noun(words.back())) words.back() = noun->word;
+  std::string phrase;
+  for (size_t i = first; i < words.size(); ++i) phrase += (phrase.empty() ? "" : " ") + words[i];
+  return wordsPrototype(phrase);
+}
+
+// The query leaves of a parsed CSG tree by path ("tree", "tree.children[1]", ...), as their words,
+// each with whether it cuts (a difference's second or later operand, or below one).
+struct QueryLeaf {
+  const nlohmann::json* node;
+  bool cutter;
+};
+void queryLeaves(const nlohmann::json& node, const std::string& path, bool cutter, std::map<std::string, QueryLeaf>* out) {
+  if (!node.is_object()) return;
+  if (node.contains("children") && node["children"].is_array()) {
+    const bool difference = node.value("op", "") == "difference";
+    for (size_t i = 0; i < node["children"].size(); ++i)
+      queryLeaves(node["children"][i], path + ".children[" + std::to_string(i) + "]", cutter || (difference && i > 0), out);
+    return;
+  }
+  if (node.contains("text") && node["text"].is_string()) (*out)[path] = {&node, cutter};
+}
+
+}  // namespace
+
+void orderCsgTiesTypicalFirst(const Store& store, nlohmann::json* answer, size_t maxNodes) {
+  if (!answer->contains("results") || !(*answer)["results"].is_array()) return;
+  nlohmann::json& results = (*answer)["results"];
+  std::vector<double> scores;
+  for (const nlohmann::json& r : results) scores.push_back(r.value("score", 0.0));
+  std::vector<double> sorted = scores;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()) return;
+  // Each query leaf's prototype and the descriptors its words name.
+  const nlohmann::json parsed = answer->value("parsed", nlohmann::json::object());
+  std::map<std::string, QueryLeaf> leaves;
+  if (parsed.contains("tree")) queryLeaves(parsed["tree"], "tree", false, &leaves);
+  struct Prototype {
+    std::vector<DescriptorValue> values;
+    std::vector<std::string> skip;
+  };
+  std::map<std::string, Prototype> prototypes;
+  for (const auto& [path, leaf] : leaves) {
+    // What a part cuts away is shaped by the part ("a hole" runs through it, "minus a cylinder"
+    // alike): it is no free-standing thing of its noun, so only the material's leaves count.
+    if (leaf.cutter) continue;
+    std::optional<std::vector<DescriptorValue>> prototype = leafPrototype((*leaf.node)["text"].get<std::string>());
+    if (!prototype) continue;
+    std::vector<std::string> named;
+    namedDescriptors(*leaf.node, &named);
+    Prototype made{std::move(*prototype), {}};
+    for (const char* d : {"size", "length", "width", "thickness", "height"})
+      if (std::find(named.begin(), named.end(), d) == named.end()) made.skip.push_back(d);
+    prototypes.emplace(path, std::move(made));
+  }
+  if (prototypes.empty()) return;
+  std::vector<double> distance(results.size(), 0.0);
+  // Only results that map every query leaf are compared: which leaf a partial match maps is the
+  // order of the query's words, and "a cone on top of a cylinder on top of a box" must rank as
+  // its read_as form, "the union of the box and the cylinder to its top and the cone to its top".
+  std::vector<bool> whole(results.size(), false);
+  for (size_t i = 0; i < results.size(); ++i) {
+    const nlohmann::json& r = results[i];
+    const bool tied = std::count(scores.begin(), scores.end(), scores[i]) > 1;
+    if (!tied || !r.contains("id") || !r["id"].is_number_integer() || !r.contains("mapping")) continue;
+    size_t mapped = 0;
+    for (const nlohmann::json& m : r["mapping"]) mapped += m.value("op", "") == "leaf" ? 1 : 0;
+    if (mapped != leaves.size()) continue;
+    whole[i] = true;
+    std::vector<ShapeComponent> components;
+    try {
+      components = storedShapeComponents(store, store.get("shape", r["id"].get<int64_t>()).documentJson, maxNodes);
+    } catch (const Error&) {
+      continue;  // deleted meanwhile, or past the limits: keeps its place
+    }
+    for (const nlohmann::json& m : r["mapping"]) {
+      if (m.value("op", "") != "leaf") continue;
+      const auto prototype = prototypes.find(m.value("query_path", ""));
+      if (prototype == prototypes.end()) continue;
+      const std::string stored = m.value("stored_path", "");
+      for (const ShapeComponent& c : components)
+        if (c.path == stored) {
+          distance[i] += descriptorDistance(c.descriptors, prototype->second.values, prototype->second.skip);
+          break;
+        }
+    }
+  }
+  std::vector<size_t> order(results.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  // Within each run of equal scores, the results that map every leaf typical first, in the places
+  // they held; the others keep theirs.
+  for (size_t from = 0; from < order.size();) {
+    size_t to = from;
+    while (to < order.size() && scores[to] == scores[from]) ++to;
+    std::vector<size_t> places, members;
+    for (size_t k = from; k < to; ++k)
+      if (whole[k]) {
+        places.push_back(k);
+        members.push_back(k);
+      }
+    std::stable_sort(members.begin(), members.end(), [&](size_t a, size_t b) { return distance[a] < distance[b]; });
+    for (size_t k = 0; k < places.size(); ++k) order[places[k]] = members[k];
+    from = to;
+  }
+  nlohmann::json ranked = nlohmann::json::array();
+  for (size_t i : order) ranked.push_back(std::move(results[i]));
+  results = std::move(ranked);
+}
+
 }  // namespace fsdb

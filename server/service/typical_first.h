@@ -30,4 +30,19 @@ std::optional<std::vector<DescriptorValue>> wordsPrototype(const std::string& te
 std::vector<double> typicalityDistances(const Store& store, const nlohmann::json& results,
                                         const std::vector<DescriptorValue>& prototype, const nlohmann::json& parsed);
 
+// brief: Typical first among a structural search's tied results (`answer`, a POST /query/csg
+//   answer): of results with equal scores, the one whose matched components are nearest the parts
+//   their query leaves' words make comes first ("a bored block": the cube with a hole before the
+//   slab with one, both a box minus a cylinder). A result's distance is the sum, over its leaf
+//   mappings, of descriptorDistance(component, prototype of the leaf's words), size and measures
+//   counted only where the leaf's words name them. A leaf's part is made from its words without
+//   their article or count and with a plural noun made singular ("the spheres"); a leaf whose
+//   words make none counts 0, and so does what a difference cuts away ("a hole", "minus a
+//   cylinder": the part it runs through shapes it). Only results that map every query leaf are reordered, in the places
+//   they held among their equals (which leaf a partial match maps follows the order of the
+//   query's words); only the answer's own results (a tie past the limit is not read).
+// note: Reads the tied results' documents (one Store::get each). Never throws for a result it
+//   cannot read (deleted meanwhile, or no mapping): it keeps its place among its equals.
+void orderCsgTiesTypicalFirst(const Store& store, nlohmann::json* answer, size_t maxNodes);
+
 }  // namespace fsdb

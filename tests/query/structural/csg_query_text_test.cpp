@@ -146,6 +146,17 @@ TEST(CsgQueryText, DesignersPhrasingsOfDifferencesAndIntersections) {
   EXPECT_EQ(holed.leaves[1].text, "a cylindrical hole");
   EXPECT_EQ(toJson(*holed.leaves[1].condition), toJson(*parse("a cylinder").leaves[0].condition));
   EXPECT_EQ(shape(parse("a box with a sphere-shaped hole")), "difference('a box', 'a sphere-shaped hole')");
+  // A relative clause may say the part has it, and where it is adds nothing.
+  for (const char* text : {"a cube which has a hole", "cube which have a hole", "a cube that has a hole in it",
+                           "a cube with a hole through the middle", "a cube with a hole in the centre",
+                           "a cube that has a cylindrical hole through the center"}) {
+    const CsgQuery q = parse(text);
+    EXPECT_EQ(shape(q).rfind("difference(", 0), 0u) << text;
+    ASSERT_EQ(q.leaves.size(), 2u) << text;
+    EXPECT_EQ(toJson(*q.leaves[0].condition), toJson(*parse("a cube").leaves[0].condition)) << text;
+    EXPECT_EQ(toJson(*q.leaves[1].condition), toJson(*parse("a cylinder").leaves[0].condition)) << text;
+  }
+  EXPECT_EQ(shape(parse("a cube with a hole in the middle")), "difference('a cube', 'a hole')");
   // Hollow: the part minus a part of its own noun, whatever else the words say of the part.
   EXPECT_EQ(shape(parse("a hollow cylinder")), "difference('cylinder', 'hollow')");
   EXPECT_EQ(shape(parse("find a hollow box")), "difference('box', 'hollow')");
