@@ -8,6 +8,7 @@
 
 #include "geometry/core/error.h"
 #include "query/document/part_from_words.h"
+#include "query/linguistic/query_tokens.h"
 #include "query/linguistic/vocabulary.h"
 #include "server/service/descriptor_rows.h"
 
@@ -74,12 +75,10 @@ namespace {
 std::optional<std::vector<DescriptorValue>> leafPrototype(const std::string& text) {
   const Vocabulary& v = activeVocabulary();
   std::vector<std::string> words;
-  size_t from = 0;
-  while (from < text.size()) {
-    size_t to = text.find(' ', from);
-    if (to == std::string::npos) to = text.size();
-    if (to > from) words.push_back(text.substr(from, to - from));
-    from = to + 1;
+  try {
+    for (const query_tokens::Token& t : query_tokens::tokenize(text, 0, text.size())) words.push_back(t.text);
+  } catch (const Error&) {
+    return std::nullopt;  // a character no query tokenises: no words to make a part of
   }
   static const std::vector<std::string> kLeading = {"a", "an", "the", "its", "one", "two", "three", "four",
                                                     "five", "six", "seven", "eight", "nine", "ten"};
