@@ -129,11 +129,13 @@ nlohmann::json objectsPartlyDescribed(const Store& store, const nlohmann::json& 
   for (const std::string& w : words) {
     if (w == "not" || w == "no" || w == "without") return nlohmann::json::array();
     if (!query_tokens::functionWord(w) && std::isalnum(static_cast<unsigned char>(w[0])) &&
-        !knowsLinguisticWord(w, activeVocabulary()) && !genericNoun(w) &&
-        std::find(content.begin(), content.end(), w) == content.end())
+        std::find(content.begin(), content.end(), w) == content.end() && !knowsLinguisticWord(w, activeVocabulary()) &&
+        !genericNoun(w)) {
       content.push_back(w);
+      if (content.size() > kMostPartlyDescribedWords) return nlohmann::json::array();  // not a few words
+    }
   }
-  if (content.empty() || content.size() > kMostPartlyDescribedWords) return nlohmann::json::array();
+  if (content.empty()) return nlohmann::json::array();
   struct Held {
     StoredObject object;
     std::vector<std::string> words;
