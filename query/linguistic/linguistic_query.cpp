@@ -1198,10 +1198,23 @@ class Parser {
     return k + 1 + tail;
   }
 
-  // feature = [ "a" | "an" ] [ feature-degree ] feature-noun (featureNouns): the tokens it spans at
-  // pos_ (0: none), with its adjective and intensity (null: plain).
+  // feature = [ "a" | "an" ] [ feature-degree ] feature-noun (featureNouns)
+  //         | [ "the" | "its" ] end-word cut-word [ "off" | "away" ]   ("its top cut off": truncated)
+  // : the tokens it spans at pos_ (0: none), with its adjective and intensity (null: plain).
   size_t featurePhraseLength(const Adjective** adjective, const FuzzyNumber** intensity) const {
     const auto word = [&](size_t i) { return pos_ + i < tokens_.size() ? tokens_[pos_ + i].text : std::string(); };
+    // A tip cut off is a taper short of a point: "a cone with its top cut off", "pyramid with top
+    // cutted" (as a writer in another language says it).
+    static const std::vector<std::string> kTips = {"top", "tip", "point", "apex", "peak"};
+    static const std::vector<std::string> kCuts = {"cut", "cutted", "chopped", "sliced", "sawn", "removed"};
+    if (const Adjective* truncated = v_.adjective("truncated")) {
+      const size_t t = word(0) == "the" || word(0) == "its" ? 1 : 0;
+      if (contains(kTips, word(t)) && contains(kCuts, word(t + 1))) {
+        if (adjective) *adjective = truncated;
+        if (intensity) *intensity = nullptr;
+        return t + 2 + (word(t + 2) == "off" || word(t + 2) == "away" ? 1 : 0);
+      }
+    }
     size_t k = word(0) == "a" || word(0) == "an" ? 1 : 0;
     const FuzzyNumber* graded = nullptr;
     for (const auto& [w, term] : query_tokens::degreeWords())

@@ -669,7 +669,9 @@ nlohmann::json searchText(const Store& store, const nlohmann::json& request, con
   nlohmann::json answer = csg ? csgQueryResponse(store, request, csgLimits, graphs)
                               : linguisticQueryResponse(store, request, linguisticLimits);
   answer["search"] = csg ? "csg" : "linguistic";
-  if (csg) orderCsgTiesTypicalFirst(store, &answer, csgLimits.maxNodes);
+  // Typical first among a structural search's ties, not for texts longer than a description is
+  // (each leaf's part is made).
+  if (csg && text.size() <= kLongestTypicalText) orderCsgTiesTypicalFirst(store, &answer, csgLimits.maxNodes);
   // No object meets every condition (min is 0 for all): the closest partial matches instead, by
   // the mean of the conditions' scores, each marked partial, its explain showing which failed.
   // Not for relations: their mean reads every pair of components of every shape (seconds on the

@@ -63,6 +63,7 @@ TEST(PartFromWords, AFeatureNounIsItsAdjective) {
   EXPECT_TRUE(same("a box with a twist", "a twisted box"));
   EXPECT_TRUE(same("a rod with a strong taper", "a very tapered rod"));
   EXPECT_TRUE(same("a rod with an extreme curve", "an extremely curved rod"));
+  EXPECT_TRUE(same("a cone with its top cut off", "a truncated cone"));
 }
 
 TEST(PartFromWords, AdjectivesSetTheirDescriptor) {

@@ -101,6 +101,10 @@ TEST(LinguisticQuery, AFeatureNounIsItsAdjective) {
   EXPECT_EQ(sets("a box with a twist"), sets("a box that is twisted"));
   EXPECT_EQ(sets("a rod with a strong taper"), sets("a rod that is very tapered"));
   EXPECT_EQ(sets("a rod with a gentle curve"), sets("a rod that is slightly curved"));
+  // A tip cut off is truncated, however it is said.
+  for (const char* text : {"a cone with its top cut off", "a cone with the tip cut away", "cone with top cutted",
+                           "a cone with the top removed", "a cone with the apex sliced off"})
+    EXPECT_EQ(sets(text), sets("a cone that is truncated")) << text;
   // The grading word is a word of the grammar; the noun is read in its phrase only, so that
   // after "that" or "which" it routes as a verb ("rods which taper": word_routes_test).
   EXPECT_TRUE(knowsLinguisticWord("slight", v()));
