@@ -780,6 +780,7 @@ class PhraseParser {
     // A lead-in: "which are", "that are", and a joining participle ("three balls which are
     // glued in line": glued is routed to joined before the parse).
     if (atAny({"which", "that"}) && nextIsAny({"are", "is"})) pos_ += 2;
+    if (atAny({"which", "that"}) && nextIsAny({"touch", "touches"})) ++pos_;
     const bool joined = accept("joined");
     if (accept("together")) return nullptr;
     const size_t save = pos_;
@@ -793,6 +794,13 @@ class PhraseParser {
     pos_ = save;
     if (accept("touching")) {
       acceptPair("each", "other");
+      return nullptr;
+    }
+    // The verb itself before "each other", as a writer in another language says it ("two ball
+    // touch each other"), or in the present ("two balls that touch each other" reads its lead-in).
+    if (atAny({"touch", "touches", "touched"}) && pos_ + 2 < words_.size() && words_[pos_ + 1].text == "each" &&
+        words_[pos_ + 2].text == "other") {
+      pos_ += 3;
       return nullptr;
     }
     if (acceptPair("next", "to") && acceptPair("each", "other")) return "side";
@@ -1015,7 +1023,8 @@ const std::vector<std::string>& csgPhraseWords() {
                        "that", "is", "are", "made", "composed", "built", "formed", "consisting", "from",
                        // counts of copies and their arrangement
                        "pair", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "together",
-                       "row", "line", "lined", "touching", "each", "other", "next", "stacked", "up", "hollow", "annular",
+                       "row", "line", "lined", "touching", "touch", "touches", "touched", "each", "other", "next",
+                       "stacked", "up", "hollow", "annular",
                        // ends of a part ("at its end", "on both ends")
                        "end", "ends", "both", "either", "every",
                        // parts with a hole ("a drilled block", "a cube which has a hole in the middle")

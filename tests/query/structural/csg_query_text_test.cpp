@@ -52,6 +52,10 @@ TEST(CsgQueryText, CountsAreCopiesUnited) {
   EXPECT_EQ(shape(parse("two cubes next to each other")), "union('cubes', 'cubes'<side 'cubes'>)");
   EXPECT_EQ(shape(parse("three balls stacked up")), "union('balls', 'balls'<top 'balls'>, 'balls'<top 'balls'>)");
   EXPECT_EQ(shape(parse("two balls touching each other")), "union('balls', 'balls')");
+  // The verb itself, as a writer in another language or a relative clause says it.
+  for (const char* text : {"two balls that touch each other", "two balls touched each other"})
+    EXPECT_EQ(toJson(parse(text)).dump(), toJson(parse("two balls touching each other")).dump()) << text;
+  EXPECT_EQ(shape(parse("two ball touch each other")), "union('ball', 'ball')");
   EXPECT_EQ(shape(parse("three balls which are joined in line")),
             "union('balls', 'balls'<side 'balls'>, 'balls'<side 'balls'>)");
   EXPECT_EQ(shape(parse("four cubes lined up")), "union('cubes', 'cubes'<side 'cubes'>, 'cubes'<side 'cubes'>, 'cubes'<side 'cubes'>)");
