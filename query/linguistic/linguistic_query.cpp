@@ -113,10 +113,12 @@ const std::vector<DimensionWord>& dimensionsAfterNumber() {
 }
 
 // The words after two numbers ("0.6 by 1 cross section") that make them a section across the
-// part's length: its two shorter extents, the thickness and the width.
+// part's length: its two shorter extents, the thickness and the width. A base or footprint ("a 1
+// x 1 base") is the section across the height instead (measure(), measuresAfterNoun()).
 const std::vector<std::string>& sectionWords() {
   static const std::vector<std::string> words = {"cross section", "cross-section", "section", "profile",
-                                                 "cross sections", "cross-sections", "sections", "profiles"};
+                                                 "cross sections", "cross-sections", "sections", "profiles",
+                                                 "base", "footprint"};
   return words;
 }
 
@@ -125,7 +127,9 @@ const std::vector<DimensionWord>& dimensionsBeforeNumber() {
       {"length", "length", 1},   {"width", "width", 1},         {"breadth", "width", 1},
       {"diameter", "width", 1},  {"radius", "width", 2},        {"thickness", "thickness", 1},
       {"depth", "thickness", 1}, {"height", "height", 1},       {"side", "cube", 1},
-      {"section", "section", 1}, {"cross section", "section", 1}, {"cross-section", "section", 1}};
+      {"section", "section", 1}, {"cross section", "section", 1}, {"cross-section", "section", 1},
+      // "base 2 x 2": the two extents across the height, or the width at the base ("base 2").
+      {"base", "base", 1},       {"footprint", "base", 1}};
   return d;
 }
 
@@ -139,6 +143,14 @@ const DimensionWord& dimensionWord(const std::vector<DimensionWord>& table, cons
   for (const DimensionWord& d : table)
     if (d.words == words) return d;
   return table.front();  // not reached: words come from the table
+}
+
+// The width a base of sides `a` and `b` says when its height is unsaid: it lies between them.
+// Which extents a base's sides are depends on the height (a tall pyramid's base is its two
+// shorter, a flat one's its two longer), but the middle extent is between them either way.
+FuzzyNumber widthOfBase(const FuzzyNumber& a, const FuzzyNumber& b) {
+  return FuzzyNumber::trapezoidal(std::min(a.support().lo, b.support().lo), std::min(a.core().lo, b.core().lo),
+                                  std::max(a.core().hi, b.core().hi), std::max(a.support().hi, b.support().hi));
 }
 
 // A measure's condition: its descriptor with the extent's set over the degrees.
@@ -413,6 +425,7 @@ class Parser {
           d.adjectives.erase(use);
           break;
         }
+    partNoun_ = d.noun;
     const auto addMeasures = [&d](std::vector<QueryCondition> measures) {
       for (QueryCondition& m : measures) {
         std::vector<QueryCondition> leaves;
@@ -667,13 +680,16 @@ class Parser {
       if (isWordAt(at + 1 + n, {"x", "by"})) return at + 2 + n < tokens_.size() && tokens_[at + 2 + n].number;
       size_t after = at + 1 + n;
       if (isWordAt(after, {"unit", "units"})) ++after;
-      return matchPhrase(sectionWords(), &m, after - pos_) > 0;
+      static const std::vector<std::string> afterWords = phrasesOf(dimensionsAfterNumber());
+      return matchPhrase(afterWords, &m, after - pos_) > 0 &&
+             dimensionWord(dimensionsAfterNumber(), m).descriptor == "section";
     }
     const size_t number = isWordAt(at, {"of"}) ? at + 1 : at;
     if (const size_t n = numberPhraseTokens(number)) {
       at = number + n;
       if (isWordAt(at, {"x", "by"}) && at + 1 < tokens_.size() && tokens_[at + 1].number) return true;
       if (isWordAt(at, {"unit", "units"})) ++at;
+      if (isWordAt(at, {"base", "footprint"}) && matchPhrase(after, &m, at + 1 - pos_) > 0) ++at;
       return matchPhrase(after, &m, at - pos_) > 0;
     }
     if (isWordAt(at, {"of"})) ++at;
@@ -681,6 +697,12 @@ class Parser {
     const size_t k = matchPhrase(before, &m, at - pos_);
     if (k == 0) return false;
     at += k;
+    if (dimensionWord(dimensionsBeforeNumber(), m).descriptor == "base") {
+      std::string measured;  // "base diameter 2"
+      if (const size_t j = matchPhrase(before, &measured, at - pos_);
+          j > 0 && dimensionWord(dimensionsBeforeNumber(), measured).descriptor != "base")
+        at += j;
+    }
     if (isWordAt(at, {"of", "is"})) ++at;
     return numberPhraseTokens(at) > 0;
   }
@@ -748,6 +770,14 @@ class Parser {
             fail({"'x' and a third number (the three sides of a box: '4 x 2 x 1')",
                   "a section word after two numbers ('0.6 by 1 cross section')"});
           pos_ += n;
+          if (section == "base" || section == "footprint") {
+            // "a 1 x 1 base": its width (widthOfBase); with a height beside it, measuresAfterNoun
+            // sorts the three.
+            acceptUnits();
+            lastBase_ = std::make_pair(sides[0], sides[1]);
+            out.push_back(measureCondition("width", widthOfBase(sides[0], sides[1]), span(start, pos_)));
+            return group(Kind::kAnd, std::move(out), start);
+          }
         }
         std::stable_sort(sides.begin(), sides.end(), [](const FuzzyNumber& a, const FuzzyNumber& b) {
           return a.core().lo + a.core().hi < b.core().lo + b.core().hi;
@@ -756,6 +786,8 @@ class Parser {
         for (size_t i = 0; i < sides.size(); ++i) out.push_back(measureCondition(names[i], sides[i], span(start, pos_)));
       } else {
         acceptUnits();
+        // "2 base diameter": the dimension at the base, as "base diameter 2".
+        if ((at("base") || at("footprint")) && matchPhrase(after, &word, 1) > 0) ++pos_;
         const size_t n = matchPhrase(after, &word);
         if (n == 0) fail({"a dimension word (" + joinList(after) + ")"});
         pos_ += n;
@@ -764,11 +796,33 @@ class Parser {
     } else {
       acceptWord("of");
       acceptAny({"a", "an", "the", "its"});
-      const size_t n = matchPhrase(before, &word);
+      size_t n = matchPhrase(before, &word);
       if (n == 0) fail({"a dimension (" + joinList(before) + ")"});
       pos_ += n;
+      // "base diameter 2", "base width 3": the dimension at the base.
+      if (dimensionWord(dimensionsBeforeNumber(), word).descriptor == "base") {
+        std::string measured;
+        if ((n = matchPhrase(before, &measured)) > 0 && dimensionWord(dimensionsBeforeNumber(), measured).descriptor != "base") {
+          pos_ += n;
+          word = measured;
+        }
+      }
       if (!acceptWord("of")) acceptWord("is");
       const FuzzyNumber number = measureNumber();
+      if (dimensionWord(dimensionsBeforeNumber(), word).descriptor == "base") {
+        // "base 2 x 2": the width between its sides (widthOfBase); "base 2": the width.
+        if (at("x") || at("by")) {
+          ++pos_;
+          const FuzzyNumber second = measureNumber();
+          acceptUnits();
+          lastBase_ = std::make_pair(number, second);
+          out.push_back(measureCondition("width", widthOfBase(number, second), span(start, pos_)));
+          return group(Kind::kAnd, std::move(out), start);
+        }
+        acceptUnits();
+        out.push_back(measureCondition("width", number, span(start, pos_)));
+        return group(Kind::kAnd, std::move(out), start);
+      }
       acceptUnits();
       addMeasure(dimensionWord(dimensionsBeforeNumber(), word), number, span(start, pos_), &out);
     }
@@ -777,16 +831,69 @@ class Parser {
 
   // Measures right after a noun: [ "," ] measure { ( "," | "and" ) measure }; a joining word not
   // followed by a measure is left for what comes next.
+  // A base said beside a height ("a wedge, base 2 x 2, height 1"): the three are the part's
+  // extents, sorted as three sides are, so that a flat part's base is its two longer sides.
+  // Without a height the base says its width alone (widthOfBase).
   std::vector<QueryCondition> measuresAfterNoun() {
     std::vector<QueryCondition> out;
+    std::optional<size_t> baseAt;
+    std::optional<std::pair<FuzzyNumber, FuzzyNumber>> base;
+    std::optional<FuzzyNumber> height;
+    const auto finish = [&]() {
+      if (!baseAt || !height) return;  // a base alone is its width (measure())
+      if (entry_ == Entry::kPartDescription) {
+        // A part made from words: a height names the z axis, and the roles said beside it go to
+        // the other two, the shorter to the shorter (realizeExtents): the base's sides.
+        QueryCondition& group = out[*baseAt];
+        const std::string text = group.text;
+        // A square base of a noun whose two axes across z are alike (a pyramid, a box, not a
+        // wedge, tapered along one): one role, which the other axis, as long, follows with the
+        // same spread, so the part's sides are the same fuzzy number and its words score it 1.
+        const auto taper = [&](const char* k) {
+          return partNoun_ && partNoun_->params.is_object() ? partNoun_->params.value(k, 0.0) : 0.0;
+        };
+        if (base->first == base->second && taper("kx") == taper("ky")) {
+          group = measureCondition("width", base->first, text);  // not length: a cone's is its height
+          return;
+        }
+        const bool swap = base->second.core().lo + base->second.core().hi < base->first.core().lo + base->first.core().hi;
+        const FuzzyNumber& shorter = swap ? base->second : base->first;
+        const FuzzyNumber& longer = swap ? base->first : base->second;
+        group.kind = Kind::kAnd;
+        group.children = {measureCondition("thickness", shorter, text), measureCondition("length", longer, text)};
+        return;
+      }
+      std::vector<FuzzyNumber> sides = {base->first, base->second, *height};
+      std::stable_sort(sides.begin(), sides.end(), [](const FuzzyNumber& a, const FuzzyNumber& b) {
+        return a.core().lo + a.core().hi < b.core().lo + b.core().hi;
+      });
+      QueryCondition& group = out[*baseAt];
+      const std::string text = group.kind == Kind::kAnd && !group.children.empty() ? group.children[0].text : group.text;
+      std::vector<QueryCondition> three;
+      const char* names[] = {"thickness", "width", "length"};
+      for (size_t i = 0; i < 3; ++i) three.push_back(measureCondition(names[i], sides[i], text));
+      group.kind = Kind::kAnd;
+      group.children = std::move(three);
+    };
     while (true) {
       const size_t save = pos_;
       if (!acceptWord(",") && !out.empty()) acceptWord("and");
       if (!startsMeasure()) {
         pos_ = save;
+        finish();
         return out;
       }
+      lastBase_.reset();
       out.push_back(measure());
+      if (lastBase_ && !baseAt) {
+        baseAt = out.size() - 1;
+        base = lastBase_;
+      }
+      const QueryCondition& m = out.back();
+      const auto holdsHeight = [](const QueryCondition& c) { return c.kind == Kind::kDescriptor && c.descriptor == "height"; };
+      if (holdsHeight(m)) height = *m.measure;
+      for (const QueryCondition& c : m.children)
+        if (holdsHeight(c)) height = *c.measure;
     }
   }
 
@@ -1532,6 +1639,10 @@ class Parser {
   std::vector<Token> owned_;  // the tokens when the parser tokenised the text itself
   TokenView tokens_;
   size_t pos_ = 0;
+  // The two sides of the last base measure() read ("base 2 x 2", "a 1 x 1 base"): measuresAfterNoun
+  // sorts them with a height said beside them.
+  std::optional<std::pair<FuzzyNumber, FuzzyNumber>> lastBase_;
+  const Noun* partNoun_ = nullptr;  // a part description's noun, once read (measuresAfterNoun)
   const bool prefix_;  // nounPhraseAt: the phrase is followed by the caller's words
   enum class Entry { kQuery, kPartDescription };
   Entry entry_ = Entry::kQuery;  // which production a whole text's parse started from (didYouMean retries it)

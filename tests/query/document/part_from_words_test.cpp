@@ -2,6 +2,8 @@
 // so the descriptors of the part made from "a very bent cylinder" are what the words say.
 #include "query/document/part_from_words.h"
 
+#include <array>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +11,7 @@
 #include "geometry/core/error.h"
 #include "geometry/fuzzy/fuzzy_arithmetic.h"
 #include "geometry/fuzzy/fuzzy_similarity.h"
+#include "geometry/superquadric/deformation.h"
 #include "query/linguistic/descriptors.h"
 #include "query/linguistic/linguistic_query.h"
 #include "query/document/part_json.h"
@@ -208,6 +211,32 @@ TEST(PartFromWords, PlainAdjectivesTakeADegreeTheirNounAllows) {
                 1e-9) << d;
   EXPECT_NEAR(valueOf(make("a short thick cylinder"), "thickness").core().lo,
               valueOf(make("a thick cylinder"), "thickness").core().lo, 1e-9);
+}
+
+// A base beside a height: the sides across the z axis, the height along it. A square base of a
+// noun alike across z is one role, so both sides are the same fuzzy number; a wedge's (tapered
+// along one axis) takes both sides as two roles.
+TEST(PartFromWords, ABaseSetsTheSidesAcrossTheHeight) {
+  const auto extents = [](const FuzzyPart& p) {
+    const PlacedSuperquadric core = p.coreRepresentative();
+    const double s = 2 * core.placement.scale, a = core.params.a1;
+    return std::array<double, 3>{s * a * taperedHalfWidthFactor(core.params.eps1, core.params.kx),
+                                 s * a * core.params.a2 * taperedHalfWidthFactor(core.params.eps1, core.params.ky),
+                                 s * a * core.params.a3};
+  };
+  for (const char* text : {"a pyramid, base 2 x 2, height 2.4", "a wedge, base 2 x 2, height 2.4"}) {
+    const std::array<double, 3> e = extents(make(text));
+    EXPECT_NEAR(e[0], 2, 1e-9) << text;
+    EXPECT_NEAR(e[1], 2, 1e-9) << text;
+    EXPECT_NEAR(e[2], 2.4, 1e-9) << text;
+  }
+  const std::array<double, 3> box = extents(make("a box, base 4 x 2, height 1"));
+  EXPECT_NEAR(std::max(box[0], box[1]), 4, 1e-9);
+  EXPECT_NEAR(std::min(box[0], box[1]), 2, 1e-9);
+  EXPECT_NEAR(box[2], 1, 1e-9);
+  // The square pyramid's two sides are one number: its words score it 1 on each.
+  const FuzzyPart pyramid = make("a pyramid, base 2 x 2, height 2.4");
+  EXPECT_EQ(valueOf(pyramid, "thickness"), valueOf(pyramid, "width"));
 }
 
 // Measures set the extents they name: "a pole about 10 long" has a fuzzy length of about 10.

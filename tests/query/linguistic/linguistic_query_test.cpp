@@ -192,6 +192,18 @@ TEST(LinguisticQuery, MeasuresAreConditionsOnTheExtents) {
   EXPECT_EQ(measuresOf("a bar, section 0.4, length 6"),
             (Measures{{"thickness", near(0.4)}, {"width", near(0.4)}, {"height", near(6)}}));
   EXPECT_EQ(measuresOf("a beam with a 0.5 cross section"), (Measures{{"thickness", near(0.5)}, {"width", near(0.5)}}));
+  // A base beside a height: the three sorted, so that a flat part's base is its two longer
+  // sides; alone, the width between its sides (which extents they are depends on the height).
+  EXPECT_EQ(measuresOf("a wedge, base 2 x 2, height 1"),
+            (Measures{{"thickness", near(1)}, {"width", near(2)}, {"length", near(2)}, {"height", near(1)}}));
+  EXPECT_EQ(measuresOf("a pyramid, 1 x 1 base, 6 tall"),
+            (Measures{{"thickness", near(1)}, {"width", near(1)}, {"length", near(6)}, {"height", near(6)}}));
+  // In a "with" clause the base is its width beside the height (both hold either way).
+  EXPECT_EQ(measuresOf("a pyramid with 1 x 1 base, 6 tall"), (Measures{{"width", near(1)}, {"height", near(6)}}));
+  EXPECT_EQ(measuresOf("a pyramid, base 2 by 3"),
+            (Measures{{"width", FuzzyNumber::trapezoidal(near(2).support().lo, 2, 3, near(3).support().hi)}}));
+  EXPECT_EQ(measuresOf("a cone with base diameter 2 and height 3"), (Measures{{"width", near(2)}, {"height", near(3)}}));
+  EXPECT_EQ(measuresOf("a cone with 2 base diameter and height 3"), (Measures{{"width", near(2)}, {"height", near(3)}}));
   // A dimension noun after its number, "of" before it, as a non-native speaker may order them.
   EXPECT_EQ(measuresOf("rod thin straight of 6 length"), (Measures{{"height", near(6)}}));
   EXPECT_EQ(measuresOf("a box of 2 width"), (Measures{{"width", near(2)}}));
