@@ -122,9 +122,10 @@ bool genericNoun(const std::string& word) {
 // object described as a ribbon. The grammars' own words are left out ("top" or "end", in many
 // descriptions, would list anything for "a spinning top"), and so are generic nouns ("form").
 // Scored kDescribedScore times the share of those words held, most held first (then by id),
-// "described" and "partial": true; explain says which words.
+// "described" and "partial": true; explain says which words. `held`: the words some result holds.
 nlohmann::json objectsPartlyDescribed(const Store& store, const nlohmann::json& request,
-                                      const std::vector<std::string>& words, size_t limit) {
+                                      const std::vector<std::string>& words, size_t limit,
+                                      std::unordered_set<std::string>* held) {
   std::vector<std::string> content;
   for (const std::string& w : words) {
     if (w == "not" || w == "no" || w == "without") return nlohmann::json::array();
@@ -140,21 +141,22 @@ nlohmann::json objectsPartlyDescribed(const Store& store, const nlohmann::json& 
     StoredObject object;
     std::vector<std::string> words;
   };
-  std::map<std::pair<std::string, int64_t>, Held> held;
+  std::map<std::pair<std::string, int64_t>, Held> objects;
   for (const std::string& w : content)
     for (const StoredObject& o : store.described({w}, requestKinds(request), static_cast<int>(limit))) {
-      Held& h = held[{o.kind, o.id}];
+      Held& h = objects[{o.kind, o.id}];
       if (h.words.empty()) h.object = o;
       h.words.push_back(w);
     }
   std::vector<const Held*> ranked;
-  for (const auto& [key, h] : held) ranked.push_back(&h);
+  for (const auto& [key, h] : objects) ranked.push_back(&h);
   std::stable_sort(ranked.begin(), ranked.end(), [](const Held* a, const Held* b) {
     return a->words.size() != b->words.size() ? a->words.size() > b->words.size() : a->object.id < b->object.id;
   });
   nlohmann::json out = nlohmann::json::array();
   for (const Held* h : ranked) {
     if (out.size() >= limit) break;
+    held->insert(h->words.begin(), h->words.end());
     const double score = kDescribedScore * static_cast<double>(h->words.size()) / static_cast<double>(content.size());
     std::string said;
     for (const std::string& w : h->words) said += (said.empty() ? "'" : ", '") + w + "'";
@@ -923,18 +925,15 @@ nlohmann::json queryResponse(const Store& store, const nlohmann::json& request,
       // Words no grammar reads that objects are described by ("a mushroom form"), or some of them
       // ("a helical ribbon": the object described as a ribbon), as partial matches.
       if (!byWords.empty()) return {{"search", "words"}, {"results", byWords}};
-      nlohmann::json partly = objectsPartlyDescribed(store, request, words, limit);
+      std::unordered_set<std::string> held;
+      nlohmann::json partly = objectsPartlyDescribed(store, request, words, limit, &held);
       if (partly.empty()) throw;
       // The unknown words no result's own words hold are ignored, each with its corrections.
       nlohmann::json ignored = nlohmann::json::array();
       if (reading)
-        for (const UnknownWord& u : reading->unknown) {
-          const std::string quoted = "'" + u.word + "'";
-          const bool held = std::any_of(partly.begin(), partly.end(), [&](const nlohmann::json& r) {
-            return r["explain"][0]["text"].get<std::string>().find(quoted) != std::string::npos;
-          });
-          if (!held) ignored.push_back({{"word", quotedWord(u.word)}, {"at", u.at}, {"did_you_mean", u.closest}});
-        }
+        for (const UnknownWord& u : reading->unknown)
+          if (!held.count(u.word))
+            ignored.push_back({{"word", quotedWord(u.word)}, {"at", u.at}, {"did_you_mean", u.closest}});
       return {{"search", "words"}, {"results", std::move(partly)}, {"partial", true}, {"ignored", std::move(ignored)}};
     }
   }
