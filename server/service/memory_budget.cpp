@@ -5,10 +5,44 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <utility>
 
 #include "geometry/core/error.h"
 
 namespace fsdb {
+
+MemoryBudget::MemoryBudget(std::uint64_t limitBytes, std::function<void()> trim, std::chrono::milliseconds interval)
+    : limit_(limitBytes),
+      trim_(trim ? std::move(trim) : std::function<void()>([] { malloc_trim(0); })),
+      interval_(interval),
+      trimmer_([this] { trimmerLoop(); }) {}
+
+MemoryBudget::~MemoryBudget() {
+  {
+    std::lock_guard<std::mutex> lock(trimMutex_);
+    stopping_ = true;
+  }
+  trimWake_.notify_all();
+  trimmer_.join();
+}
+
+void MemoryBudget::trimmerLoop() {
+  std::unique_lock<std::mutex> lock(trimMutex_);
+  for (;;) {
+    trimWake_.wait(lock, [this] { return stopping_ || trimWanted_; });
+    if (stopping_) return;
+    const auto next = lastTrim_ + interval_;
+    if (std::chrono::steady_clock::now() < next) {
+      trimWake_.wait_until(lock, next, [this] { return stopping_; });
+      continue;
+    }
+    trimWanted_ = false;  // releases from here on want the next trim
+    lock.unlock();
+    trim_();
+    lock.lock();
+    lastTrim_ = std::chrono::steady_clock::now();
+  }
+}
 
 bool MemoryBudget::fits(std::uint64_t bytes) {
   std::uint64_t now = reserved_.load(std::memory_order_relaxed);
@@ -74,9 +108,14 @@ void MemoryBudget::release(Reservation& r) {
     reserved_.fetch_sub(bytes, std::memory_order_relaxed);
   }
   released_.notify_all();
-  // The allocator keeps freed pages for reuse; after a large result is freed, hand them back so
-  // that the process's RSS falls once the load is over.
-  if (bytes >= kTrimBytes) malloc_trim(0);
+  // The allocator keeps freed pages for reuse; after a large result is freed, the trimmer hands
+  // them back (see the header for why not on this thread).
+  if (bytes < kTrimBytes) return;
+  {
+    std::lock_guard<std::mutex> lock(trimMutex_);
+    trimWanted_ = true;
+  }
+  trimWake_.notify_all();
 }
 
 std::shared_ptr<MemoryBudget::Reservation> MemoryBudget::reserve(std::uint64_t bytes, const std::string& what) {

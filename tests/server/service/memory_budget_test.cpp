@@ -8,6 +8,8 @@
 #include <atomic>
 #include <chrono>
 #include <thread>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "geometry/core/error.h"
@@ -90,6 +92,59 @@ TEST(MemoryBudget, RacingThreadsNeverHoldMoreThanTheLimit) {
   EXPECT_LE(most.load(), std::uint64_t(4) << 20);
   EXPECT_EQ(budget.reserved(), 0u);
   EXPECT_EQ(budget.refusals(), static_cast<std::uint64_t>(refused.load()));
+}
+
+// The free memory is handed back after a large release, on the budget's thread, at most once per
+// interval: releases that come together share one trim (malloc_trim holds the allocator's locks
+// and stalls every thread; eight back to back held a /health probe 1.5 s); a small release trims
+// nothing.
+TEST(MemoryBudget, TrimsAfterLargeReleasesAtMostOncePerInterval) {
+  using Clock = std::chrono::steady_clock;
+  std::mutex mutex;
+  std::vector<Clock::time_point> trims;
+  auto count = [&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    return trims.size();
+  };
+  auto waitForTrims = [&](size_t n) {
+    for (int i = 0; i < 1000 && count() < n; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    return count();
+  };
+  const auto interval = std::chrono::milliseconds(300);
+  MemoryBudget budget(0, [&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    trims.push_back(Clock::now());
+  }, interval);
+
+  budget.reserve(1 << 20, "small").reset();
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_EQ(count(), 0u) << "a small release trims nothing";
+
+  budget.reserve(MemoryBudget::kTrimBytes, "first").reset();
+  EXPECT_EQ(waitForTrims(1), 1u) << "a large release is trimmed without waiting for the interval";
+
+  // Eight large releases together, right after that trim: one more trim, an interval later.
+  std::vector<std::shared_ptr<MemoryBudget::Reservation>> load;
+  for (int i = 0; i < 8; ++i) load.push_back(budget.reserve(MemoryBudget::kTrimBytes, "load"));
+  load.clear();
+  EXPECT_EQ(waitForTrims(2), 2u);
+  std::this_thread::sleep_for(interval * 2);
+  ASSERT_EQ(count(), 2u) << "eight releases together share one trim";
+  EXPECT_GE(trims[1] - trims[0], interval);
+}
+
+// The budget's trimmer thread stops with it, also while it waits out an interval.
+TEST(MemoryBudget, DestroyedWhileATrimWaits) {
+  std::atomic<int> trims{0};
+  auto budget = std::make_unique<MemoryBudget>(0, [&] { ++trims; }, std::chrono::hours(1));
+  budget->reserve(MemoryBudget::kTrimBytes, "a").reset();
+  for (int i = 0; i < 500 && trims.load() < 1; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_EQ(trims.load(), 1);
+  budget->reserve(MemoryBudget::kTrimBytes, "b").reset();  // its trim waits an hour
+  const auto start = std::chrono::steady_clock::now();
+  budget.reset();
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+  EXPECT_EQ(trims.load(), 1);
 }
 
 }  // namespace
