@@ -402,8 +402,16 @@ class Parser {
     // A request before the words, as a query has one ("find a box", "show me ..."): the same words
     // make the part that the query finds (the search box's typical first, typical_first.h).
     skipRequest();
+    const bool indefinite = at("a") || at("an");
     acceptAny(queryArticles());
     std::string word;
+    // "a 4 cube": the noun's longest extent, as a query reads it (nounPhrase).
+    if (indefinite && numberBeforeNoun()) {
+      const size_t numberStart = pos_;
+      const FuzzyNumber extent = measureNumber();
+      acceptUnits();
+      d.measures.push_back({"length", extent, span(numberStart, pos_) + " (its longest extent)"});
+    }
     adjectiveUses(&d);
     const size_t n = matchPhrase(nounWords_, &word);
     if (n == 0) {
@@ -927,12 +935,32 @@ class Parser {
     return nullptr;
   }
 
-  // noun_phrase = [ article ] [ condition ] noun [ ("that"|"which") ("is"|"are") condition ]
+  // Whether a number phrase, "unit(s)" if said, and a noun follow: a size said before its noun.
+  bool numberBeforeNoun() const {
+    size_t k = pos_ + numberPhraseTokens(pos_);
+    if (k == pos_) return false;
+    if (isWordAt(k, {"unit", "units"})) ++k;
+    std::string word;
+    return matchPhrase(nounWords_, &word, k - pos_) > 0;
+  }
+
+  // noun_phrase = [ article ] [ number_phrase [ "unit(s)" ] | condition ] noun
+  //               [ ("that"|"which") ("is"|"are") condition ]
   QueryCondition nounPhrase(std::string* subject) {
     const size_t start = pos_;
+    const bool indefinite = at("a") || at("an");
     const bool article = acceptAny(queryArticles());
     std::vector<QueryCondition> parts;
-    const bool hasModifiers = startsCondition();
+    // An engineer's size before the noun: "a 4 cube", "a 2 unit ball", "an 0.8 rod" give the
+    // noun's longest extent (the side of a cube, a ball's diameter, a rod's length); after "a" a
+    // number is no count.
+    if (indefinite && numberBeforeNoun()) {
+      const size_t numberStart = pos_;
+      const FuzzyNumber extent = measureNumber();
+      acceptUnits();
+      parts.push_back(measureCondition("length", extent, span(numberStart, pos_) + " (its longest extent)"));
+    }
+    const bool hasModifiers = parts.empty() && startsCondition();
     if (hasModifiers) parts.push_back(condition());
     std::string word;
     const size_t nounStart = pos_;

@@ -182,8 +182,16 @@ class PhraseParser {
     }
     size_t i = pos_ + lead;
     if (i < words_.size() && contains(queryArticles(), words_[i].text)) ++i;
+    i += holeSizeWords(i);
     if (i < words_.size() && words_[i].text == "hole") return v_.plainHoleNoun().empty() ? 0 : lead;
     return i + 1 < words_.size() && words_[i + 1].text == "hole" && !holeNoun(words_[i].text).empty() ? lead : 0;
+  }
+
+  // The words of a hole's size at word i, as an engineer puts it before the hole ("a 0.8 hole",
+  // "a 0.5 unit hole"): a positive number and "unit(s)" if said; 0 for none.
+  size_t holeSizeWords(size_t i) const {
+    if (!isNumberAt(i) || std::strtod(words_[i].text.c_str(), nullptr) <= 0) return 0;
+    return i + 1 < words_.size() && (words_[i + 1].text == "unit" || words_[i + 1].text == "units") ? 2 : 1;
   }
 
   // The noun a hole's shape word names: "cylinder-shaped" (any noun of the vocabulary with
@@ -198,7 +206,7 @@ class PhraseParser {
     return noun ? *noun : "";
   }
 
-  // hole = [ article ] [ shape word ] "hole" [ "drilled" ] [ ( "through" | "in" | "into" ) [ "it" | where ] ],
+  // hole = [ article ] [ NUMBER [ "unit(s)" ] ] [ shape word ] "hole" [ "drilled" ] [ ( "through" | "in" | "into" ) [ "it" | where ] ],
   // where = [ "the" ] ( "middle" | "center" | "centre" ), at holeLead(): a description leaf of the
   // noun its shape word names (a cylinder when none: a drilled hole), with the words as written.
   // Where the hole is ("in the middle", "through the center") is not placed: a hole's leaf is
@@ -206,6 +214,12 @@ class PhraseParser {
   nlohmann::json hole() {
     const size_t from = words_[pos_].offset;
     acceptAny(queryArticles());
+    // A size said before the hole is its width: the leaf is "a cylinder 0.8 across".
+    std::string across;
+    if (const size_t k = holeSizeWords(pos_)) {
+      across = words_[pos_].text;
+      pos_ += k;
+    }
     std::string noun = v_.plainHoleNoun();  // "a cube with a hole": drilled
     if (!at("hole")) noun = holeNoun(words_[pos_++].text);
     const size_t end = words_[pos_].offset + words_[pos_].text.size();
@@ -220,16 +234,17 @@ class PhraseParser {
         if (!acceptAny({"middle", "center", "centre"})) pos_ = before;
       }
     }
-    head_ = plainNounLeaf(noun, text_.substr(from, end - from));
+    head_ = plainNounLeaf(noun, text_.substr(from, end - from), across);
     return placeholder(head_);
   }
 
   // A leaf of the plain noun ("a cylinder") with `text` as its words (a hole's, or "hollow"): the
-  // part a hole or a hollow cuts away. Returns its index.
-  size_t plainNounLeaf(const std::string& noun, std::string text) {
+  // part a hole or a hollow cuts away, `across` wide when given ("0.8"). Returns its index.
+  size_t plainNounLeaf(const std::string& noun, std::string text, const std::string& across = "") {
     CsgQueryLeaf out;
     out.text = std::move(text);
-    out.condition = parseNounPhraseAt("a " + noun, 0, std::string::npos, v_).query;
+    const std::string words = "a " + noun + (across.empty() ? "" : " " + across + " across");
+    out.condition = parseNounPhraseAt(words, 0, std::string::npos, v_).query;
     leaves_.push_back(std::move(out));
     return leaves_.size() - 1;
   }

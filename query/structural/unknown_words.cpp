@@ -18,16 +18,6 @@ constexpr size_t kCorrectedWords = 16;
 // The noun with no shape of its own that stands for an unknown noun after an adjective.
 constexpr const char* kPlaceholderNoun = "thing";
 
-// Whether WordNet knows `word` in some form (a noun, verb, adjective or adverb): then it is a word
-// the writer meant, not a typo ("pillow" is no misspelt pillar), and the search does not read it
-// as its closest vocabulary word; the closest words are still offered. False without WordNet.
-bool dictionaryWord(const std::string& word) {
-  const WordNet* wn = systemWordNet();
-  if (!wn) return false;
-  for (WordNet::Pos pos : {WordNet::Pos::kNoun, WordNet::Pos::kVerb, WordNet::Pos::kAdjective, WordNet::Pos::kAdverb})
-    if (!wn->baseForms(word, pos).empty()) return true;
-  return false;
-}
 // Texts longer than this get each word's closest words but no corrected text: finding it parses
 // the whole text up to 49 times (as the linguistic parser's did-you-mean, which stops at the same length).
 constexpr size_t kLongestCorrectedText = 1000;
@@ -155,6 +145,16 @@ std::optional<ReadableRun> longestReadableRun(const std::vector<query_tokens::To
 }
 
 }  // namespace
+
+// The search does not read a dictionary word as its closest vocabulary word; the closest words
+// are still offered.
+bool dictionaryWord(const std::string& word) {
+  const WordNet* wn = systemWordNet();
+  if (!wn) return false;
+  for (WordNet::Pos pos : {WordNet::Pos::kNoun, WordNet::Pos::kVerb, WordNet::Pos::kAdjective, WordNet::Pos::kAdverb})
+    if (!wn->baseForms(word, pos).empty()) return true;
+  return false;
+}
 
 KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& vocabulary) {
   KnownWordsReading reading;

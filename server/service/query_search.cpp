@@ -187,7 +187,9 @@ constexpr size_t kLongestNearlyNamedText = 300;
 // The names a text that no grammar reads as it is nearly holds: each run of up to four
 // consecutive words the grammars lack (unknown or only routed: "egg form" gives egg, form and
 // egg-form, "a mushroom form" mushroom), joined as namesOfText joins them; and, for the first
-// three unknown words (no route either) of four to twenty letters, every spelling one edit away
+// three unknown words (no route either) of four to twenty letters that WordNet does not know
+// (dictionaryWord: "wall" is meant as it is, no misspelt ball; of a word it knows, only its base
+// forms one edit away: "spikes" gives spike), every spelling one edit away
 // (a letter left out, added, changed, or two swapped: "snowmn" gives snowman, "tabel" table).
 // Each name once, runs first.
 //
@@ -253,8 +255,17 @@ void nearNames(const std::string& text, const KnownWordsReading& reading, std::v
         near.push_back(w.substr(0, k) + c + w.substr(k));
         if (k < w.size() && c != w[k]) near.push_back(w.substr(0, k) + c + w.substr(k + 1));
       }
+    // A word of the dictionary was meant as it is: of its spellings, only its own base forms
+    // ("spikes": spike, "snowmen": snowman) name objects; "wall" is no misspelt ball.
+    std::vector<std::string> bases;
+    if (dictionaryWord(w))
+      if (const WordNet* wordnet = systemWordNet())
+        for (WordNet::Pos pos : {WordNet::Pos::kNoun, WordNet::Pos::kVerb, WordNet::Pos::kAdjective})
+          for (std::string& base : wordnet->baseForms(w, pos)) bases.push_back(std::move(base));
+    const bool meant = !bases.empty();
     for (std::string& name : near)
-      if (name != w) list(edits, std::move(name));
+      if (name != w && (!meant || std::find(bases.begin(), bases.end(), name) != bases.end()))
+        list(edits, std::move(name));
   }
 }
 

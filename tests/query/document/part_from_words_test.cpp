@@ -2,11 +2,14 @@
 // so the descriptors of the part made from "a very bent cylinder" are what the words say.
 #include "query/document/part_from_words.h"
 
+#include <algorithm>
 #include <array>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "geometry/core/error.h"
 #include "geometry/fuzzy/fuzzy_arithmetic.h"
@@ -237,6 +240,24 @@ TEST(PartFromWords, ABaseSetsTheSidesAcrossTheHeight) {
   // The square pyramid's two sides are one number: its words score it 1 on each.
   const FuzzyPart pyramid = make("a pyramid, base 2 x 2, height 2.4");
   EXPECT_EQ(valueOf(pyramid, "thickness"), valueOf(pyramid, "width"));
+}
+
+// A number between "a" and the noun is the noun's longest extent: a cube's side, a ball's
+// diameter, a rod's length, a disc's diameter (the noun's proportions kept).
+TEST(PartFromWords, ANumberBeforeTheNounIsItsLongestExtent) {
+  const auto longest = [](const FuzzyPart& p) {
+    const PlacedSuperquadric core = p.coreRepresentative();
+    const double a = core.params.a1;
+    return 2 * core.placement.scale * std::max({a, a * core.params.a2, a * core.params.a3});
+  };
+  for (const auto& [text, extent] : std::vector<std::pair<const char*, double>>{
+           {"a 4 cube", 4}, {"a 2 unit ball", 2}, {"a 6 rod", 6}, {"a 2 disc", 2}, {"an 8 cylinder", 8}})
+    EXPECT_NEAR(longest(make(text)), extent, 1e-9) << text;
+  const FuzzyPart cube = make("a 4 cube");
+  EXPECT_EQ(cube.a2, FuzzyNumber::crisp(1.0));
+  EXPECT_EQ(cube.a3, FuzzyNumber::crisp(1.0));
+  const FuzzyPart rod = make("a 6 rod");
+  EXPECT_GT(rod.a3.core().lo, 1.0);  // still a rod: the length along its axis
 }
 
 // Measures set the extents they name: "a pole about 10 long" has a fuzzy length of about 10.

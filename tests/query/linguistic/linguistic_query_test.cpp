@@ -204,6 +204,14 @@ TEST(LinguisticQuery, MeasuresAreConditionsOnTheExtents) {
             (Measures{{"width", FuzzyNumber::trapezoidal(near(2).support().lo, 2, 3, near(3).support().hi)}}));
   EXPECT_EQ(measuresOf("a cone with base diameter 2 and height 3"), (Measures{{"width", near(2)}, {"height", near(3)}}));
   EXPECT_EQ(measuresOf("a cone with 2 base diameter and height 3"), (Measures{{"width", near(2)}, {"height", near(3)}}));
+  // A number between "a" and the noun is its longest extent (a cube's side, a ball's diameter, a
+  // rod's length: along its axis), units or not; without "a" a number before a noun is a count.
+  EXPECT_EQ(measuresOf("a 4 cube"), (Measures{{"length", near(4)}}));
+  EXPECT_EQ(measuresOf("a 2 unit ball"), (Measures{{"height", near(2)}}));
+  EXPECT_EQ(measuresOf("an 8 rod that is slightly bent"), (Measures{{"height", near(8)}}));
+  EXPECT_EQ(measuresOf("a 2 disc"), (Measures{{"length", near(2)}}));
+  EXPECT_THROW(parse("4 cube"), Error);
+  EXPECT_THROW(parse("a 4"), Error);
   // A dimension noun after its number, "of" before it, as a non-native speaker may order them.
   EXPECT_EQ(measuresOf("rod thin straight of 6 length"), (Measures{{"height", near(6)}}));
   EXPECT_EQ(measuresOf("a box of 2 width"), (Measures{{"width", near(2)}}));

@@ -161,6 +161,15 @@ TEST(CsgQueryText, DesignersPhrasingsOfDifferencesAndIntersections) {
     EXPECT_EQ(toJson(*q.leaves[1].condition), toJson(*parse("a cylinder").leaves[0].condition)) << text;
   }
   EXPECT_EQ(shape(parse("a cube with a hole in the middle")), "difference('a cube', 'a hole')");
+  // A size before the hole is its width, as an engineer writes it.
+  for (const char* text : {"cube with 0.8 hole through center", "a cube with a 0.8 hole", "a cube with a 0.8 unit round hole",
+                           "a cube which has a 0.8 hole"}) {
+    const CsgQuery q = parse(text);
+    EXPECT_EQ(shape(q).rfind("difference(", 0), 0u) << text;
+    ASSERT_EQ(q.leaves.size(), 2u) << text;
+    EXPECT_EQ(toJson(*q.leaves[1].condition), toJson(*parse("a cylinder 0.8 across").leaves[0].condition)) << text;
+  }
+  EXPECT_THROW(parse("a cube with a -1 hole"), Error);
   // Hollow: the part minus a part of its own noun, whatever else the words say of the part.
   EXPECT_EQ(shape(parse("a hollow cylinder")), "difference('cylinder', 'hollow')");
   EXPECT_EQ(shape(parse("find a hollow box")), "difference('box', 'hollow')");
