@@ -98,7 +98,7 @@ class Printer {
     // which its noun phrase turns the same way again).
     if (c.edges != QueryCondition::Edges::kNone) return text.rfind("a ", 0) == 0 ? text.substr(2) : text.rfind("an ", 0) == 0 ? text.substr(3) : text;
     std::string first;
-    bool firstIsMiddle = false;
+    bool firstIsMiddle = false, firstOwn = false;
     for (const std::string& word : v_.adjectiveWords()) {
       const Adjective& a = *v_.adjective(word);
       const std::string* section = v_.sectionDescriptor(a.descriptor);
@@ -118,9 +118,13 @@ class Printer {
           if (words == text) return words;
           // A pole's adjective before a middle's ("very tapered" read back as "very narrowing",
           // not "very blunt", whose own set is a middle of taperness).
-          if (first.empty() || (firstIsMiddle && !a.set)) {
+          // And the descriptor's own word before its synonyms: "very twisted" reads back as
+          // very twisted (twistness), not very helical.
+          const bool own = ownWord(word, c.descriptor);
+          if (first.empty() || (firstIsMiddle && !a.set) || (own && !firstOwn && firstIsMiddle == a.set.has_value())) {
             first = words;
             firstIsMiddle = a.set.has_value();
+            firstOwn = own;
           }
           continue;
         }
@@ -135,6 +139,16 @@ class Printer {
     }
     if (first.empty()) unprintable("the condition on " + c.descriptor + " of '" + c.text + "'");
     return first;
+  }
+
+  // Whether `word` is the word a descriptor is named after ("twisted" of twistness, "tapered"
+  // and "tapering" of taperness): the descriptor's stem before "ness" begins it.
+  static bool ownWord(const std::string& word, const std::string& descriptor) {
+    const std::string ness = "ness";
+    if (descriptor.size() <= ness.size() || descriptor.compare(descriptor.size() - ness.size(), ness.size(), ness) != 0)
+      return false;
+    const std::string stem = descriptor.substr(0, descriptor.size() - ness.size());
+    return word.compare(0, stem.size(), stem) == 0;
   }
 
   std::string operand(const QueryCondition& c) const {

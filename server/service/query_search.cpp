@@ -118,7 +118,7 @@ bool genericNoun(const std::string& word) {
 }
 
 // The stored parts and shapes whose own words hold some of the words no grammar reads of a text
-// that does not read (objectsDescribed asks for every content word): "a helical ribbon" finds the
+// that does not read (objectsDescribed asks for every content word): "a silk ribbon" finds the
 // object described as a ribbon. The grammars' own words are left out ("top" or "end", in many
 // descriptions, would list anything for "a spinning top"), and so are generic nouns ("form").
 // Scored kDescribedScore times the share of those words held, most held first (then by id),
@@ -934,7 +934,7 @@ nlohmann::json queryResponse(const Store& store, const nlohmann::json& request,
         return answer;
       }
       // Words no grammar reads that objects are described by ("a mushroom form"), or some of them
-      // ("a helical ribbon": the object described as a ribbon), as partial matches.
+      // ("a silk ribbon": the object described as a ribbon), as partial matches.
       if (!byWords.empty()) return {{"search", "words"}, {"results", byWords}};
       std::unordered_set<std::string> held;
       nlohmann::json partly = objectsPartlyDescribed(store, request, words, limit, &held);
