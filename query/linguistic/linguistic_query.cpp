@@ -145,6 +145,12 @@ const DimensionWord& dimensionWord(const std::vector<DimensionWord>& table, cons
   return table.front();  // not reached: words come from the table
 }
 
+// Whether extent `a` is shorter than `b` (by their cores' midpoints): the order in which a
+// measure's sides are sorted into thickness, width and length.
+bool shorterExtent(const FuzzyNumber& a, const FuzzyNumber& b) {
+  return a.core().lo + a.core().hi < b.core().lo + b.core().hi;
+}
+
 // The width a base of sides `a` and `b` says when its height is unsaid: it lies between them.
 // Which extents a base's sides are depends on the height (a tall pyramid's base is its two
 // shorter, a flat one's its two longer), but the middle extent is between them either way.
@@ -406,12 +412,8 @@ class Parser {
     acceptAny(queryArticles());
     std::string word;
     // "a 4 cube": the noun's longest extent, as a query reads it (nounPhrase).
-    if (indefinite && numberBeforeNoun()) {
-      const size_t numberStart = pos_;
-      const FuzzyNumber extent = measureNumber();
-      acceptUnits();
-      d.measures.push_back({"length", extent, span(numberStart, pos_) + " (its longest extent)"});
-    }
+    if (std::optional<QueryCondition> size = sizeBeforeNoun(indefinite))
+      d.measures.push_back({size->descriptor, *size->measure, size->text});
     adjectiveUses(&d);
     const size_t n = matchPhrase(nounWords_, &word);
     if (n == 0) {
@@ -752,6 +754,15 @@ class Parser {
     }
   }
 
+  // A base of sides `a` and `b` read from token `start` (its units, if said, next): its width
+  // (widthOfBase), its sides kept in lastBase_ for measuresAfterNoun to sort with a height.
+  QueryCondition baseMeasure(const FuzzyNumber& a, const FuzzyNumber& b, size_t start, std::vector<QueryCondition>* out) {
+    acceptUnits();
+    lastBase_ = std::make_pair(a, b);
+    out->push_back(measureCondition("width", widthOfBase(a, b), span(start, pos_)));
+    return group(Kind::kAnd, std::move(*out), start);
+  }
+
   // measure, at startsMeasure(): one condition, or an "and" of them (three sides, a side).
   QueryCondition measure() {
     static const std::vector<std::string> after = phrasesOf(dimensionsAfterNumber());
@@ -781,15 +792,10 @@ class Parser {
           if (section == "base" || section == "footprint") {
             // "a 1 x 1 base": its width (widthOfBase); with a height beside it, measuresAfterNoun
             // sorts the three.
-            acceptUnits();
-            lastBase_ = std::make_pair(sides[0], sides[1]);
-            out.push_back(measureCondition("width", widthOfBase(sides[0], sides[1]), span(start, pos_)));
-            return group(Kind::kAnd, std::move(out), start);
+            return baseMeasure(sides[0], sides[1], start, &out);
           }
         }
-        std::stable_sort(sides.begin(), sides.end(), [](const FuzzyNumber& a, const FuzzyNumber& b) {
-          return a.core().lo + a.core().hi < b.core().lo + b.core().hi;
-        });
+        std::stable_sort(sides.begin(), sides.end(), shorterExtent);
         const char* names[] = {"thickness", "width", "length"};
         for (size_t i = 0; i < sides.size(); ++i) out.push_back(measureCondition(names[i], sides[i], span(start, pos_)));
       } else {
@@ -822,10 +828,7 @@ class Parser {
         if (at("x") || at("by")) {
           ++pos_;
           const FuzzyNumber second = measureNumber();
-          acceptUnits();
-          lastBase_ = std::make_pair(number, second);
-          out.push_back(measureCondition("width", widthOfBase(number, second), span(start, pos_)));
-          return group(Kind::kAnd, std::move(out), start);
+          return baseMeasure(number, second, start, &out);
         }
         acceptUnits();
         out.push_back(measureCondition("width", number, span(start, pos_)));
@@ -864,7 +867,7 @@ class Parser {
           group = measureCondition("width", base->first, text);  // not length: a cone's is its height
           return;
         }
-        const bool swap = base->second.core().lo + base->second.core().hi < base->first.core().lo + base->first.core().hi;
+        const bool swap = shorterExtent(base->second, base->first);
         const FuzzyNumber& shorter = swap ? base->second : base->first;
         const FuzzyNumber& longer = swap ? base->first : base->second;
         group.kind = Kind::kAnd;
@@ -872,9 +875,7 @@ class Parser {
         return;
       }
       std::vector<FuzzyNumber> sides = {base->first, base->second, *height};
-      std::stable_sort(sides.begin(), sides.end(), [](const FuzzyNumber& a, const FuzzyNumber& b) {
-        return a.core().lo + a.core().hi < b.core().lo + b.core().hi;
-      });
+      std::stable_sort(sides.begin(), sides.end(), shorterExtent);
       QueryCondition& group = out[*baseAt];
       const std::string text = group.kind == Kind::kAnd && !group.children.empty() ? group.children[0].text : group.text;
       std::vector<QueryCondition> three;
@@ -935,13 +936,20 @@ class Parser {
     return nullptr;
   }
 
-  // Whether a number phrase, "unit(s)" if said, and a noun follow: a size said before its noun.
-  bool numberBeforeNoun() const {
+  // A size said before its noun, after "a" or "an" (`indefinite`): a number phrase and
+  // "unit(s)" if said, with a noun next. Read as the noun's longest extent (a cube's side, a
+  // ball's diameter, a rod's length); nullopt, reading nothing, where no such size is there.
+  std::optional<QueryCondition> sizeBeforeNoun(bool indefinite) {
+    if (!indefinite) return std::nullopt;
     size_t k = pos_ + numberPhraseTokens(pos_);
-    if (k == pos_) return false;
+    if (k == pos_) return std::nullopt;
     if (isWordAt(k, {"unit", "units"})) ++k;
     std::string word;
-    return matchPhrase(nounWords_, &word, k - pos_) > 0;
+    if (matchPhrase(nounWords_, &word, k - pos_) == 0) return std::nullopt;
+    const size_t numberStart = pos_;
+    const FuzzyNumber extent = measureNumber();
+    acceptUnits();
+    return measureCondition("length", extent, span(numberStart, pos_) + " (its longest extent)");
   }
 
   // noun_phrase = [ article ] [ number_phrase [ "unit(s)" ] | condition ] noun
@@ -954,12 +962,7 @@ class Parser {
     // An engineer's size before the noun: "a 4 cube", "a 2 unit ball", "an 0.8 rod" give the
     // noun's longest extent (the side of a cube, a ball's diameter, a rod's length); after "a" a
     // number is no count.
-    if (indefinite && numberBeforeNoun()) {
-      const size_t numberStart = pos_;
-      const FuzzyNumber extent = measureNumber();
-      acceptUnits();
-      parts.push_back(measureCondition("length", extent, span(numberStart, pos_) + " (its longest extent)"));
-    }
+    if (std::optional<QueryCondition> size = sizeBeforeNoun(indefinite)) parts.push_back(std::move(*size));
     const bool hasModifiers = parts.empty() && startsCondition();
     if (hasModifiers) parts.push_back(condition());
     std::string word;

@@ -146,14 +146,14 @@ std::optional<ReadableRun> longestReadableRun(const std::vector<query_tokens::To
 
 }  // namespace
 
-// The search does not read a dictionary word as its closest vocabulary word; the closest words
-// are still offered.
-bool dictionaryWord(const std::string& word) {
+std::vector<std::string> dictionaryBaseForms(const std::string& word) {
+  std::vector<std::string> bases;
   const WordNet* wn = systemWordNet();
-  if (!wn) return false;
+  if (!wn) return bases;
   for (WordNet::Pos pos : {WordNet::Pos::kNoun, WordNet::Pos::kVerb, WordNet::Pos::kAdjective, WordNet::Pos::kAdverb})
-    if (!wn->baseForms(word, pos).empty()) return true;
-  return false;
+    for (std::string& base : wn->baseForms(word, pos))
+      if (std::find(bases.begin(), bases.end(), base) == bases.end()) bases.push_back(std::move(base));
+  return bases;
 }
 
 KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& vocabulary) {
@@ -232,7 +232,9 @@ KnownWordsReading readKnownWords(const std::string& text, const Vocabulary& voca
     if (!unknown[i] || routed[i]) continue;
     UnknownWord u{tokens[i].text, tokens[i].offset, {}};
     if (tried++ < kCorrectedWords) u.closest = nearestNames(u.word, correctable, 3, plausibleTypoDistance(u.word.size()));
-    typo[i] = !u.closest.empty() && !dictionaryWord(u.word);  // WordNet asked only where it matters
+    // A dictionary word is not read as its closest vocabulary word (the closest are still
+    // offered); WordNet asked only where it matters.
+    typo[i] = !u.closest.empty() && dictionaryBaseForms(u.word).empty();
     if (!u.closest.empty() && typo[i]) choice[i] = u.closest[0];
     reading.unknown.push_back(std::move(u));
   }

@@ -66,10 +66,10 @@ struct KnownWordsReading {
 // WordNet synset (word_routes.h); a non-word two edits from a vocabulary word may mean another.
 constexpr double kSpellingDiscount = 0.95;
 
-// Whether WordNet knows `word` in some form (a noun, verb, adjective or adverb): then it is a word
-// the writer meant, not a typo ("pillow" is no misspelt pillar, "wall" no misspelt ball). False
-// without WordNet.
-bool dictionaryWord(const std::string& word);
+// WordNet's base forms of `word` as a noun, verb, adjective or adverb, each once (the word itself
+// where it is a lemma): empty when WordNet does not know it, or without WordNet. A word it knows
+// is a word the writer meant, not a typo ("pillow" is no misspelt pillar, "wall" no misspelt ball).
+std::vector<std::string> dictionaryBaseForms(const std::string& word);
 
 // The reading of `text`. Corrections are looked for among the first 16 unknown words only (each
 // costs up to three parses of the text), and no corrected text for texts over 1000 characters.

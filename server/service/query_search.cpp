@@ -188,7 +188,7 @@ constexpr size_t kLongestNearlyNamedText = 300;
 // consecutive words the grammars lack (unknown or only routed: "egg form" gives egg, form and
 // egg-form, "a mushroom form" mushroom), joined as namesOfText joins them; and, for the first
 // three unknown words (no route either) of four to twenty letters that WordNet does not know
-// (dictionaryWord: "wall" is meant as it is, no misspelt ball; of a word it knows, only its base
+// (dictionaryBaseForms: "wall" is meant as it is, no misspelt ball; of a word it knows, only its base
 // forms one edit away: "spikes" gives spike), every spelling one edit away
 // (a letter left out, added, changed, or two swapped: "snowmn" gives snowman, "tabel" table).
 // Each name once, runs first.
@@ -257,11 +257,7 @@ void nearNames(const std::string& text, const KnownWordsReading& reading, std::v
       }
     // A word of the dictionary was meant as it is: of its spellings, only its own base forms
     // ("spikes": spike, "snowmen": snowman) name objects; "wall" is no misspelt ball.
-    std::vector<std::string> bases;
-    if (dictionaryWord(w))
-      if (const WordNet* wordnet = systemWordNet())
-        for (WordNet::Pos pos : {WordNet::Pos::kNoun, WordNet::Pos::kVerb, WordNet::Pos::kAdjective})
-          for (std::string& base : wordnet->baseForms(w, pos)) bases.push_back(std::move(base));
+    const std::vector<std::string> bases = dictionaryBaseForms(w);
     const bool meant = !bases.empty();
     for (std::string& name : near)
       if (name != w && (!meant || std::find(bases.begin(), bases.end(), name) != bases.end()))
@@ -684,7 +680,7 @@ nlohmann::json searchText(const Store& store, const nlohmann::json& request, con
   answer["search"] = csg ? "csg" : "linguistic";
   // Typical first among a structural search's ties, not for texts longer than a description is
   // (each leaf's part is made).
-  if (csg && text.size() <= kLongestTypicalText) orderCsgTiesTypicalFirst(store, &answer, csgLimits.maxNodes);
+  if (csg && text.size() <= kLongestTypicalText) orderCsgTiesTypicalFirst(store, graphs, &answer, csgLimits.maxNodes);
   // No object meets every condition (min is 0 for all): the closest partial matches instead, by
   // the mean of the conditions' scores, each marked partial, its explain showing which failed.
   // Not for relations: their mean reads every pair of components of every shape (seconds on the

@@ -11,6 +11,7 @@
 #include "query/linguistic/query_tokens.h"
 #include "query/linguistic/vocabulary.h"
 #include "server/service/descriptor_rows.h"
+#include "server/service/stored_graphs.h"
 
 namespace fsdb {
 
@@ -34,15 +35,22 @@ void namedDescriptors(const nlohmann::json& node, std::vector<std::string>* out)
   }
 }
 
+// The size and the four measures that a meaning (or a query leaf) does not name: a part's size is
+// the noun's default where the words say none, so these are left out of the distance.
+std::vector<std::string> unnamedExtents(const nlohmann::json& meaning) {
+  std::vector<std::string> named, skip;
+  namedDescriptors(meaning, &named);
+  for (const char* d : {"size", "length", "width", "thickness", "height"})
+    if (std::find(named.begin(), named.end(), d) == named.end()) skip.push_back(d);
+  return skip;
+}
+
 }  // namespace
 
 std::vector<double> typicalityDistances(const Store& store, const nlohmann::json& results,
                                         const std::vector<DescriptorValue>& prototype, const nlohmann::json& parsed) {
   std::vector<double> out(results.size(), std::numeric_limits<double>::infinity());
-  std::vector<std::string> named, skip;
-  namedDescriptors(parsed, &named);
-  for (const char* d : {"size", "length", "width", "thickness", "height"})
-    if (std::find(named.begin(), named.end(), d) == named.end()) skip.push_back(d);
+  const std::vector<std::string> skip = unnamedExtents(parsed);
   std::map<std::string, std::vector<int64_t>> idsByKind;
   std::unordered_map<int64_t, size_t> at;
   for (size_t i = 0; i < results.size(); ++i) {
@@ -110,7 +118,7 @@ void queryLeaves(const nlohmann::json& node, const std::string& path, bool cutte
 
 }  // namespace
 
-void orderCsgTiesTypicalFirst(const Store& store, nlohmann::json* answer, size_t maxNodes) {
+void orderCsgTiesTypicalFirst(const Store& store, StoredGraphCache& graphs, nlohmann::json* answer, size_t maxNodes) {
   if (!answer->contains("results") || !(*answer)["results"].is_array()) return;
   nlohmann::json& results = (*answer)["results"];
   std::vector<double> scores;
@@ -133,12 +141,7 @@ void orderCsgTiesTypicalFirst(const Store& store, nlohmann::json* answer, size_t
     if (leaf.cutter) continue;
     std::optional<std::vector<DescriptorValue>> prototype = leafPrototype((*leaf.node)["text"].get<std::string>());
     if (!prototype) continue;
-    std::vector<std::string> named;
-    namedDescriptors(*leaf.node, &named);
-    Prototype made{std::move(*prototype), {}};
-    for (const char* d : {"size", "length", "width", "thickness", "height"})
-      if (std::find(named.begin(), named.end(), d) == named.end()) made.skip.push_back(d);
-    prototypes.emplace(path, std::move(made));
+    prototypes.emplace(path, Prototype{std::move(*prototype), unnamedExtents(*leaf.node)});
   }
   if (prototypes.empty()) return;
   std::vector<double> distance(results.size(), 0.0);
@@ -146,6 +149,7 @@ void orderCsgTiesTypicalFirst(const Store& store, nlohmann::json* answer, size_t
   // order of the query's words, and "a cone on top of a cylinder on top of a box" must rank as
   // its read_as form, "the union of the box and the cylinder to its top and the cone to its top".
   std::vector<bool> whole(results.size(), false);
+  std::shared_ptr<const StoreVersions> versions;  // read once, at the first tie
   for (size_t i = 0; i < results.size(); ++i) {
     const nlohmann::json& r = results[i];
     const bool tied = std::count(scores.begin(), scores.end(), scores[i]) > 1;
@@ -154,22 +158,30 @@ void orderCsgTiesTypicalFirst(const Store& store, nlohmann::json* answer, size_t
     for (const nlohmann::json& m : r["mapping"]) mapped += m.value("op", "") == "leaf" ? 1 : 0;
     if (mapped != leaves.size()) continue;
     whole[i] = true;
-    std::vector<ShapeComponent> components;
+    // The graph the search matched (the cache's, its leaves described once): the mapping's
+    // stored nodes are its nodes.
+    // A shape changed since the search has the nodes of its new version: a mapping past them is
+    // skipped below, and the order of ties is all that reads them.
+    std::shared_ptr<const StoredGraph> graph;
     try {
-      components = storedShapeComponents(store, store.get("shape", r["id"].get<int64_t>()).documentJson, maxNodes);
+      if (!versions) versions = graphs.versions(store);
+      const int64_t id = r["id"].get<int64_t>();
+      const auto latest = versions->latest.find(id);
+      if (latest == versions->latest.end()) continue;  // deleted meanwhile: keeps its place
+      graph = graphs.graph(store, ObjectVersion{id, "", latest->second}, *versions, maxNodes);
     } catch (const Error&) {
       continue;  // deleted meanwhile, or past the limits: keeps its place
     }
+    const std::vector<CsgGraphNode>& nodes = graph->shape.graph.nodes;
     for (const nlohmann::json& m : r["mapping"]) {
       if (m.value("op", "") != "leaf") continue;
       const auto prototype = prototypes.find(m.value("query_path", ""));
-      if (prototype == prototypes.end()) continue;
-      const std::string stored = m.value("stored_path", "");
-      for (const ShapeComponent& c : components)
-        if (c.path == stored) {
-          distance[i] += descriptorDistance(c.descriptors, prototype->second.values, prototype->second.skip);
-          break;
-        }
+      const int node = m.value("stored_node", -1);
+      if (prototype == prototypes.end() || node < 0 || static_cast<size_t>(node) >= nodes.size()) continue;
+      const int leaf = nodes[static_cast<size_t>(node)].leaf;
+      if (leaf < 0 || static_cast<size_t>(leaf) >= graph->leafDescriptors.size()) continue;
+      distance[i] += descriptorDistance(graph->leafDescriptors[static_cast<size_t>(leaf)], prototype->second.values,
+                                        prototype->second.skip);
     }
   }
   std::vector<size_t> order(results.size());

@@ -15,6 +15,8 @@
 
 namespace fsdb {
 
+class StoredGraphCache;
+
 // brief: The descriptor values of the part `text` makes (describePart(partFromWords(text))).
 // note: nullopt where the words make no part: a relation, an operation, a noun with no shape of
 //   its own ("a slightly bent shape"), words the part grammar lacks. Never throws.
@@ -41,8 +43,10 @@ std::vector<double> typicalityDistances(const Store& store, const nlohmann::json
 //   cylinder": the part it runs through shapes it). Only results that map every query leaf are reordered, in the places
 //   they held among their equals (which leaf a partial match maps follows the order of the
 //   query's words); only the answer's own results (a tie past the limit is not read).
-// note: Reads the tied results' documents (one Store::get each). Never throws for a result it
-//   cannot read (deleted meanwhile, or no mapping): it keeps its place among its equals.
-void orderCsgTiesTypicalFirst(const Store& store, nlohmann::json* answer, size_t maxNodes);
+// note: Reads the tied results' leaf descriptors from `graphs`, the graphs the search matched
+//   (built once per shape version; nothing is parsed or described again). Never throws for a
+//   result it cannot read (deleted or changed meanwhile, or no mapping): it keeps its place
+//   among its equals.
+void orderCsgTiesTypicalFirst(const Store& store, StoredGraphCache& graphs, nlohmann::json* answer, size_t maxNodes);
 
 }  // namespace fsdb
